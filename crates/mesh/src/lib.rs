@@ -1,1 +1,28 @@
-//! placeholder
+//! surftopo-mesh: index-based half-edge triangulations of closed surfaces.
+//!
+//! - [`SurfaceMesh`]: the topology (struct of arrays, `twin(h) = h ^ 1`, tombstones).
+//! - [`build()`] / [`inspect`]: from a triangle soup, with typed validation errors ([`BuildError`]).
+//! - Edits with their checks: [`SurfaceMesh::flip`], [`SurfaceMesh::contract`] /
+//!   [`SurfaceMesh::split_vertex`], [`SurfaceMesh::compact`], [`reorder_morton`].
+//! - [`geometry`]: positions and edge lengths beside the topology.
+//! - [`generators`]: deterministic test and benchmark surfaces.
+//!
+
+mod build;
+mod compact;
+mod contract;
+mod error;
+mod flip;
+pub mod generators;
+pub mod geometry;
+mod ids;
+mod invariants;
+mod topology;
+
+pub use build::{BuildReport, Inspection, MAX_LISTED_PROBLEMS, build, build_topology, inspect};
+pub use compact::Renumbering;
+pub use contract::{Contraction, LinkScratch};
+pub use error::{BuildError, EditError, InvariantError};
+pub use geometry::{Point3, reorder_morton};
+pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
+pub use topology::{Outgoing, SurfaceMesh};
