@@ -97,6 +97,22 @@ pub enum BuildError {
         /// What overflowed.
         what: &'static str,
     },
+    /// A triangle side is not glued to any other side.
+    #[error("face {face}: side {side} is not glued to any side")]
+    SideUnglued {
+        /// Face index.
+        face: usize,
+        /// Side 0, 1 or 2 (from corner i to corner i + 1).
+        side: usize,
+    },
+    /// A triangle side is glued more than once, or to itself.
+    #[error("face {face}: side {side} is glued more than once or to itself")]
+    SideGluedTwice {
+        /// Face index.
+        face: usize,
+        /// Side 0, 1 or 2.
+        side: usize,
+    },
     /// A face is not a triangle.
     #[error("face {face}: has {sides} sides, a triangle is needed")]
     NotTriangle {
