@@ -1,1 +1,96 @@
-fn main() {}
+//! `surftopo`: triangulations of closed surfaces from the command line.
+//!
+//! A thin layer over the surftopo libraries. Exit code 0 on success, 2 on invalid input or usage
+//! (message on stderr starting with `error:`), 1 on an internal failure. Results go to stdout,
+//! progress and notes to stderr; output files are written atomically.
+
+mod commands;
+mod failure;
+mod input;
+mod output;
+mod progress;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Triangulations of closed surfaces: irreducible triangulations, quadrangulations, intrinsic
+/// Delaunay triangulations.
+#[derive(Parser, Debug)]
+#[command(name = "surftopo", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Vertices, edges, faces, genus, Euler characteristic, components, closed, orientable,
+    /// simplicial, and every problem found.
+    Info {
+        /// Mesh file (.obj, .off, .ply, .stl, optionally .gz).
+        mesh: PathBuf,
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+        /// Merge vertices with exactly equal positions first.
+        #[arg(long)]
+        weld: bool,
+        /// Exit with code 2 when the mesh is not a valid closed orientable surface.
+        #[arg(long)]
+        strict: bool,
+    },
+    /// Generate a surface.
+    Generate {
+        #[command(subcommand)]
+        kind: commands::generate::Kind,
+        #[command(flatten)]
+        modifiers: commands::generate::Modifiers,
+    },
+    /// Convert between mesh formats (polygons are kept).
+    Convert {
+        /// Input mesh file.
+        input: PathBuf,
+        /// Output mesh file (.obj, .off, .ply, optionally .gz).
+        output: PathBuf,
+        /// Merge vertices with exactly equal positions.
+        #[arg(long)]
+        weld: bool,
+    },
+    /// Run every capability on a built-in example and write the results into a folder.
+    Demo {
+        /// Folder for the results.
+        #[arg(long, default_value = "surftopo-demo")]
+        out: PathBuf,
+    },
+}
+
+fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Command::Info {
+            mesh,
+            json,
+            weld,
+            strict,
+        } => commands::info::run(&mesh, json, weld, strict),
+        Command::Generate { kind, modifiers } => commands::generate::run(&kind, &modifiers),
+        Command::Convert {
+            input,
+            output,
+            weld,
+        } => commands::convert::run(&input, &output, weld),
+        Command::Demo { out } => commands::demo::run(&out),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error:#}");
+            ExitCode::from(failure::exit_code(&error))
+        }
+    }
+}

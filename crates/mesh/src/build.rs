@@ -329,7 +329,55 @@ impl Pairing {
         drop(sorted);
         drop(bucket_start);
 
-        // 4. Components (over all shared edges).
+        // 4. Vertex manifoldness: the fan around each vertex must hold all its corners (checked
+        //    when every edge has two faces; the walk ignores orientation).
+        let all_paired =
+            valid.iter().all(|&ok| ok) && ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
+        if all_paired {
+            let mut corners = vec![0u32; nv];
+            for t in &remapped {
+                for &v in t {
+                    corners[v as usize] += 1;
+                }
+            }
+            let mut start_corner = vec![u32::MAX; nv];
+            for (c, &v) in remapped.iter().flatten().enumerate() {
+                start_corner[v as usize] = c as u32;
+            }
+            // The two corners of a face that touch the vertex at corner c: c itself (leaving it)
+            // and the previous corner (entering it). The walk enters a face through one and
+            // leaves through the other, whatever the faces' orientations.
+            let prev_corner = |c: u32| c - c % 3 + (c % 3 + 2) % 3;
+            for v in 0..nv {
+                let start = start_corner[v];
+                let (mut leave, mut steps) = (start, 0u32);
+                loop {
+                    steps += 1;
+                    let h = corner_halfedge[leave as usize];
+                    let entered = halfedge_corner[h.twin().idx()];
+                    let t = &remapped[(entered / 3) as usize];
+                    // `entered` is one of the two corners at v in the next face; leave by the other.
+                    leave = if t[(entered % 3) as usize] == v as u32 {
+                        prev_corner(entered)
+                    } else {
+                        entered - entered % 3 + (entered % 3 + 1) % 3
+                    };
+                    if leave / 3 == start / 3 || steps > corners[v] {
+                        break;
+                    }
+                }
+                if steps != corners[v] {
+                    ins.non_manifold_vertices += 1;
+                    ins.push(BuildError::NonManifoldVertex {
+                        vertex: new_to_old[v],
+                        faces: corners[v] as usize,
+                        first_fan: steps as usize,
+                    });
+                }
+            }
+        }
+
+        // 5. Components (over all shared edges).
         let first_valid = valid.iter().position(|&ok| ok);
         if let Some(f0) = first_valid {
             let root0 = uf.find(f0 as u32);
@@ -353,7 +401,7 @@ impl Pairing {
             }
         }
 
-        // 5. Orientation by breadth-first search across manifold edges.
+        // 6. Orientation by breadth-first search across manifold edges.
         let mut flip = vec![false; nf];
         let mut seen = vec![false; nf];
         let mut queue: Vec<u32> = Vec::new();
@@ -405,51 +453,6 @@ impl Pairing {
         }
         if ins.orientable {
             ins.reoriented_faces = flip.iter().filter(|&&b| b).count();
-        }
-
-        // 6. Vertex manifoldness: the fan around each vertex must hold all its corners.
-        if ins.problem_count == 0 {
-            let mut corners = vec![0u32; nv];
-            for t in &remapped {
-                for &v in t {
-                    corners[v as usize] += 1;
-                }
-            }
-            let mut start_corner = vec![u32::MAX; nv];
-            for (c, &v) in remapped.iter().flatten().enumerate() {
-                start_corner[v as usize] = c as u32;
-            }
-            // The two corners of a face that touch the vertex at corner c: c itself (leaving it)
-            // and the previous corner (entering it). The walk enters a face through one and
-            // leaves through the other, whatever the faces' orientations.
-            let prev_corner = |c: u32| c - c % 3 + (c % 3 + 2) % 3;
-            for v in 0..nv {
-                let start = start_corner[v];
-                let (mut leave, mut steps) = (start, 0u32);
-                loop {
-                    steps += 1;
-                    let h = corner_halfedge[leave as usize];
-                    let entered = halfedge_corner[h.twin().idx()];
-                    let t = &remapped[(entered / 3) as usize];
-                    // `entered` is one of the two corners at v in the next face; leave by the other.
-                    leave = if t[(entered % 3) as usize] == v as u32 {
-                        prev_corner(entered)
-                    } else {
-                        entered - entered % 3 + (entered % 3 + 1) % 3
-                    };
-                    if leave / 3 == start / 3 || steps > corners[v] {
-                        break;
-                    }
-                }
-                if steps != corners[v] {
-                    ins.non_manifold_vertices += 1;
-                    ins.push(BuildError::NonManifoldVertex {
-                        vertex: new_to_old[v],
-                        faces: corners[v] as usize,
-                        first_fan: steps as usize,
-                    });
-                }
-            }
         }
 
         p.inspection = ins;

@@ -1,0 +1,153 @@
+//! `surftopo info`: counts, topology and every problem found, valid mesh or not.
+
+use crate::failure::invalid;
+use crate::input::{locate, read_soup, triangles};
+use serde::Serialize;
+use std::path::Path;
+
+/// The facts `info` reports (JSON keys as named).
+#[derive(Serialize)]
+pub struct Info {
+    /// Referenced vertices.
+    pub vertices: usize,
+    /// Distinct edges.
+    pub edges: usize,
+    /// Faces.
+    pub faces: usize,
+    /// Genus, when the mesh is a closed connected orientable manifold.
+    pub genus: Option<i64>,
+    /// V - E + F.
+    pub euler_characteristic: i64,
+    /// Connected components.
+    pub components: usize,
+    /// Every edge in exactly two faces.
+    pub closed: bool,
+    /// A consistent orientation exists.
+    pub orientable: bool,
+    /// No degenerate or duplicate faces (a simplicial complex).
+    pub simplicial: bool,
+    /// A closed connected orientable surface surftopo accepts.
+    pub valid: bool,
+    /// Edges in one face.
+    pub boundary_edges: usize,
+    /// Edges in more than two faces.
+    pub non_manifold_edges: usize,
+    /// Vertices whose faces form several fans.
+    pub non_manifold_vertices: usize,
+    /// Faces that would be reversed for a consistent orientation.
+    pub reoriented_faces: usize,
+    /// Unreferenced vertices in the file.
+    pub dropped_vertices: usize,
+    /// Vertices merged by `--weld`.
+    pub welded_vertices: usize,
+    /// Total number of problems.
+    pub problem_count: usize,
+    /// The problems (at most 100), each saying where and what.
+    pub problems: Vec<String>,
+}
+
+/// Runs `info`; with `strict`, problems make it fail with exit code 2.
+pub fn run(path: &Path, json: bool, weld: bool, strict: bool) -> anyhow::Result<()> {
+    let (soup, welded) = read_soup(path, weld)?;
+    let triangles = triangles(path, &soup)?;
+    let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);
+    if let Err(e) = surftopo_mesh::geometry::check_finite(&soup.positions) {
+        inspection.problem_count += 1;
+        inspection.problems.insert(0, e);
+    }
+    let simplicial = !inspection.problems.iter().any(|p| {
+        matches!(
+            p,
+            surftopo_mesh::BuildError::RepeatedVertex { .. }
+                | surftopo_mesh::BuildError::DuplicateFace { .. }
+        )
+    });
+    let valid = inspection.problem_count == 0;
+    let chi = inspection.euler_characteristic();
+    let info = Info {
+        vertices: inspection.vertices,
+        edges: inspection.edges,
+        faces: inspection.faces,
+        genus: valid.then_some((2 - chi) / 2),
+        euler_characteristic: chi,
+        components: inspection.components,
+        closed: inspection.is_closed(),
+        orientable: inspection.orientable,
+        simplicial,
+        valid,
+        boundary_edges: inspection.boundary_edges,
+        non_manifold_edges: inspection.non_manifold_edges,
+        non_manifold_vertices: inspection.non_manifold_vertices,
+        reoriented_faces: inspection.reoriented_faces,
+        dropped_vertices: inspection.dropped_vertices,
+        welded_vertices: welded,
+        problem_count: inspection.problem_count,
+        problems: inspection
+            .problems
+            .iter()
+            .map(|p| locate(path, &soup, p))
+            .collect(),
+    };
+    if json {
+        crate::output::print_json(&info)?;
+    } else {
+        crate::output::emit(&text(path, &info))?;
+    }
+    if strict && !valid {
+        return Err(invalid(format!(
+            "{}: {} problem(s) found",
+            path.display(),
+            info.problem_count
+        )));
+    }
+    Ok(())
+}
+
+fn text(path: &Path, info: &Info) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    writeln!(s, "{}", path.display()).ok();
+    writeln!(s, "  vertices              {}", info.vertices).ok();
+    writeln!(s, "  edges                 {}", info.edges).ok();
+    writeln!(s, "  faces                 {}", info.faces).ok();
+    match info.genus {
+        Some(g) => writeln!(s, "  genus                 {g}"),
+        None => writeln!(
+            s,
+            "  genus                 - (not a closed connected orientable surface)"
+        ),
+    }
+    .ok();
+    writeln!(s, "  euler characteristic  {}", info.euler_characteristic).ok();
+    writeln!(s, "  components            {}", info.components).ok();
+    writeln!(s, "  closed                {}", yes(info.closed)).ok();
+    writeln!(s, "  orientable            {}", yes(info.orientable)).ok();
+    writeln!(s, "  simplicial            {}", yes(info.simplicial)).ok();
+    if info.reoriented_faces > 0 {
+        writeln!(s, "  faces to reorient     {}", info.reoriented_faces).ok();
+    }
+    if info.dropped_vertices > 0 {
+        writeln!(s, "  unreferenced vertices {}", info.dropped_vertices).ok();
+    }
+    if info.welded_vertices > 0 {
+        writeln!(s, "  welded vertices       {}", info.welded_vertices).ok();
+    }
+    if info.problem_count == 0 {
+        writeln!(s, "  problems              none").ok();
+    } else {
+        writeln!(s, "  problems              {}", info.problem_count).ok();
+        for p in &info.problems {
+            writeln!(s, "    {p}").ok();
+        }
+        if info.problem_count > info.problems.len() {
+            writeln!(
+                s,
+                "    ... and {} more",
+                info.problem_count - info.problems.len()
+            )
+            .ok();
+        }
+    }
+    s
+}

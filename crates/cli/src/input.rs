@@ -1,0 +1,108 @@
+//! Loading a mesh file into a validated surface, with errors that say where (file, line, face).
+
+use crate::failure::invalid;
+use std::path::Path;
+use surftopo_io::PolygonSoup;
+use surftopo_mesh::generators::Surface;
+use surftopo_mesh::{BuildError, BuildReport, geometry};
+
+/// A surface read from a file, with what building it changed.
+pub struct Loaded {
+    /// The validated surface.
+    pub surface: Surface,
+    /// Reoriented faces, dropped vertices.
+    pub report: BuildReport,
+    /// Vertices merged by welding.
+    pub welded: usize,
+}
+
+/// Reads a polygon soup, welding exactly coincident positions when asked (always for STL).
+pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)> {
+    let mut soup = surftopo_io::read_path(path)?;
+    let is_stl = surftopo_io::Format::from_path(path) == Some(surftopo_io::Format::Stl);
+    let mut welded = 0;
+    if weld || is_stl {
+        let (positions, map) = geometry::weld_exact(&soup.positions);
+        welded = soup.positions.len() - positions.len();
+        for i in &mut soup.face_indices {
+            *i = map[*i as usize];
+        }
+        soup.positions = positions;
+    }
+    Ok((soup, welded))
+}
+
+/// The input face a build error names, if any.
+fn face_of(error: &BuildError) -> Option<usize> {
+    match *error {
+        BuildError::IndexOutOfRange { face, .. }
+        | BuildError::RepeatedVertex { face, .. }
+        | BuildError::DuplicateFace { face, .. }
+        | BuildError::BoundaryEdge { face, .. }
+        | BuildError::NonManifoldEdge { face, .. }
+        | BuildError::NonOrientable { face, .. }
+        | BuildError::Disconnected { face, .. }
+        | BuildError::NotTriangle { face, .. } => Some(face),
+        _ => None,
+    }
+}
+
+/// Describes a build error with the file name and, where known, the line of the face it names.
+pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
+    let line = face_of(error)
+        .and_then(|f| soup.face_lines.get(f))
+        .map(|l| format!("line {l}: "))
+        .unwrap_or_default();
+    format!("{}: {line}{error}", path.display())
+}
+
+/// The soup's triangles, or an invalid-input error naming the first non-triangular face.
+pub fn triangles(path: &Path, soup: &PolygonSoup) -> anyhow::Result<Vec<[u32; 3]>> {
+    soup.triangles().map_err(|e| {
+        let error = BuildError::NotTriangle {
+            face: e.face,
+            sides: e.sides,
+        };
+        invalid(locate(path, soup, &error))
+    })
+}
+
+/// Reads and validates a closed, connected, orientable triangulated surface.
+pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
+    let (soup, welded) = read_soup(path, weld)?;
+    let triangles = triangles(path, &soup)?;
+    geometry::check_finite(&soup.positions).map_err(|e| invalid(locate(path, &soup, &e)))?;
+    let (mesh, report) = surftopo_mesh::build(soup.positions.len(), &triangles)
+        .map_err(|e| invalid(locate(path, &soup, &e)))?;
+    let mut positions = vec![[0.0; 3]; mesh.vertex_slots()];
+    for (old, new) in report.vertex_old_to_new.iter().enumerate() {
+        if new.is_valid() {
+            positions[new.idx()] = soup.positions[old];
+        }
+    }
+    Ok(Loaded {
+        surface: Surface { mesh, positions },
+        report,
+        welded,
+    })
+}
+
+/// Notes on stderr what building changed (reoriented faces, dropped or welded vertices).
+pub fn log_report(path: &Path, loaded: &Loaded) {
+    let name = path.display();
+    if loaded.welded > 0 {
+        eprintln!("note: {name}: welded {} coincident vertices", loaded.welded);
+    }
+    if !loaded.report.dropped_vertices.is_empty() {
+        eprintln!(
+            "note: {name}: dropped {} unreferenced vertices",
+            loaded.report.dropped_vertices.len()
+        );
+    }
+    if loaded.report.reoriented_faces > 0 {
+        eprintln!(
+            "note: {name}: reoriented {} faces to make the orientation consistent",
+            loaded.report.reoriented_faces
+        );
+    }
+}

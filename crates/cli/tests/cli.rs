@@ -1,0 +1,243 @@
+//! End-to-end tests of the `surftopo` binary: exit codes, JSON keys, malformed input classes.
+
+mod common;
+
+use common::{surftopo, write};
+use serde_json::Value;
+
+const TETRA: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+
+fn info_json(path: &std::path::Path, extra: &[&str]) -> Value {
+    let out = surftopo()
+        .arg("info")
+        .arg(path)
+        .arg("--json")
+        .args(extra)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn info_json_has_the_documented_keys() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "t.obj", TETRA);
+    let v = info_json(&path, &[]);
+    for key in [
+        "vertices",
+        "edges",
+        "faces",
+        "genus",
+        "euler_characteristic",
+        "components",
+        "closed",
+        "orientable",
+        "simplicial",
+    ] {
+        assert!(v.get(key).is_some(), "missing key {key}");
+    }
+    assert_eq!(v["vertices"], 4);
+    assert_eq!(v["edges"], 6);
+    assert_eq!(v["faces"], 4);
+    assert_eq!(v["genus"], 0);
+    assert_eq!(v["euler_characteristic"], 2);
+    assert_eq!(v["closed"], true);
+}
+
+/// Every malformed-input class: `info --strict` and `convert`-free loading both exit with 2 and
+/// a message starting with `error:` that names the file.
+#[test]
+fn malformed_inputs_exit_with_code_2_and_say_where() {
+    let cases: &[(&str, &str, &str)] = &[
+        ("empty.obj", "v 0 0 0\n", "empty mesh"),
+        (
+            "range.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n",
+            "out of range",
+        ),
+        (
+            "repeat.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n",
+            "repeated",
+        ),
+        ("duplicate.obj", &format!("{TETRA}f 1 3 2\n"), "duplicate"),
+        (
+            "boundary.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n",
+            "boundary edge",
+        ),
+        (
+            "nonmanifold_edge.obj",
+            &format!("{TETRA}v 1 1 1\nf 1 2 5\n"),
+            "non-manifold edge",
+        ),
+        (
+            "nonmanifold_vertex.obj",
+            &format!("{TETRA}v 2 0 0\nv 2 1 0\nv 2 0 1\nf 1 6 5\nf 1 5 7\nf 5 6 7\nf 1 7 6\n"),
+            "non-manifold vertex",
+        ),
+        (
+            "disconnected.obj",
+            &format!(
+                "{TETRA}v 5 0 0\nv 6 0 0\nv 5 1 0\nv 5 0 1\nf 5 7 6\nf 5 6 8\nf 6 7 8\nf 5 8 7\n"
+            ),
+            "connected components",
+        ),
+        (
+            "nan.obj",
+            &TETRA.replace("v 1 0 0", "v nan 0 0"),
+            "non-finite",
+        ),
+        (
+            "quad.obj",
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
+            "sides",
+        ),
+        (
+            "garbage.obj",
+            "v 0 zero 0\n",
+            "bad.obj".trim_end_matches(".obj"),
+        ),
+    ];
+    // The projective plane (6 vertices, 10 triangles): closed but not orientable.
+    let rp2 = "v 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 0\nv 0 1 1\nv 1 0 1\n\
+               f 1 2 3\nf 1 3 5\nf 1 5 6\nf 1 6 4\nf 1 4 2\nf 2 4 5\nf 2 5 3\nf 3 5 4\nf 3 4 6\nf 2 6 5\n";
+    let dir = tempfile::tempdir().unwrap();
+    let mut all: Vec<(String, String, String)> = cases
+        .iter()
+        .map(|(n, t, m)| (n.to_string(), t.to_string(), m.to_string()))
+        .collect();
+    all.push(("rp2.obj".into(), rp2.into(), "orient".into()));
+    for (name, text, message) in &all {
+        let path = write(dir.path(), name, text);
+        let out = surftopo()
+            .arg("info")
+            .arg(&path)
+            .arg("--strict")
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(stderr.starts_with("error:"), "{name}: {stderr}");
+        assert!(
+            stderr.contains(name.as_str()),
+            "{name}: message does not name the file: {stderr}"
+        );
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let said = format!("{stdout}{stderr}");
+        if name != "garbage.obj" {
+            assert!(
+                said.contains(message.as_str()),
+                "{name}: expected '{message}' in: {said}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_face_error_names_the_line_of_the_face() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = "# comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n";
+    let path = write(dir.path(), "open.obj", text);
+    let out = surftopo().arg("info").arg(&path).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("open.obj: line 6: boundary edge"),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn inconsistent_orientation_is_reported_and_fixable() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "flipped.obj",
+        &TETRA.replace("f 2 3 4", "f 2 4 3"),
+    );
+    let v = info_json(&path, &["--strict"]);
+    assert_eq!(v["valid"], true);
+    assert_eq!(v["reoriented_faces"], 1);
+    assert_eq!(v["genus"], 0);
+}
+
+#[test]
+fn usage_errors_exit_with_code_2() {
+    surftopo().arg("no-such-command").assert().code(2);
+    surftopo().args(["info"]).assert().code(2);
+    surftopo()
+        .args(["info", "missing-file.obj"])
+        .assert()
+        .code(2);
+    surftopo().args(["info", "file.xyz"]).assert().code(2);
+    surftopo()
+        .args(["generate", "torus", "--m", "2", "-o", "x.obj"])
+        .assert()
+        .code(2);
+}
+
+#[test]
+fn generate_convert_and_read_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = dir.path().join("torus.obj");
+    surftopo()
+        .args(["generate", "torus", "--m", "9", "--n", "5", "-o"])
+        .arg(&obj)
+        .assert()
+        .success();
+    for ext in ["off", "ply", "obj.gz", "ply.gz"] {
+        let out = dir.path().join(format!("torus.{ext}"));
+        surftopo()
+            .arg("convert")
+            .arg(&obj)
+            .arg(&out)
+            .assert()
+            .success();
+        let v = info_json(&out, &["--strict"]);
+        assert_eq!(
+            (v["vertices"].as_u64(), v["faces"].as_u64()),
+            (Some(45), Some(90))
+        );
+        assert_eq!(v["genus"], 1);
+    }
+}
+
+#[test]
+fn a_failed_write_leaves_no_file_behind() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "t.obj", TETRA);
+    let target = dir.path().join("out.stl");
+    surftopo()
+        .arg("convert")
+        .arg(&obj)
+        .arg(&target)
+        .assert()
+        .code(2);
+    assert!(!target.exists());
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(leftovers.len(), 1, "{leftovers:?}");
+}
+
+#[test]
+fn demo_writes_its_results() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("demo");
+    let assert = surftopo()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .success();
+    let stdout = String::from_utf8_lossy(&assert.get_output().stdout).to_string();
+    assert!(stdout.contains("surftopo demo"), "{stdout}");
+    let v = info_json(&out.join("input.obj"), &["--strict"]);
+    assert_eq!(v["genus"], 1);
+}
