@@ -16,22 +16,3 @@ pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     std::fs::write(&path, text).unwrap();
     path
 }
-
-/// The shared meshes folder from `SURFTOPO_MESHES`, or `None` (with a message) when unset.
-pub fn shared_meshes() -> Option<PathBuf> {
-    match std::env::var_os("SURFTOPO_MESHES") {
-        Some(dir) => {
-            let dir = PathBuf::from(dir);
-            assert!(
-                dir.join("manifest.json").is_file(),
-                "SURFTOPO_MESHES={} has no manifest.json",
-                dir.display()
-            );
-            Some(dir)
-        }
-        None => {
-            eprintln!("SURFTOPO_MESHES is not set: real-mesh tests skipped");
-            None
-        }
-    }
-}
