@@ -32,9 +32,9 @@ pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)
     Ok((soup, welded))
 }
 
-/// The input face a build error names, if any.
-fn face_of(error: &BuildError) -> Option<usize> {
-    match *error {
+/// The input face a build error names, if any (mutable, to renumber it).
+fn face_of(error: &mut BuildError) -> Option<&mut usize> {
+    match error {
         BuildError::IndexOutOfRange { face, .. }
         | BuildError::RepeatedVertex { face, .. }
         | BuildError::DuplicateFace { face, .. }
@@ -47,10 +47,33 @@ fn face_of(error: &BuildError) -> Option<usize> {
     }
 }
 
+/// Renumbers the face a build error names through `map` (e.g. triangle -> polygon).
+pub fn renumber_face(mut error: BuildError, map: &[u32]) -> BuildError {
+    if let Some(face) = face_of(&mut error) {
+        *face = map[*face] as usize;
+    }
+    error
+}
+
+/// Fan triangulation of a polygon soup: the triangles, and the polygon of each triangle.
+/// A polygon with k sides gives k - 2 triangles and k - 3 interior diagonals, so the Euler
+/// characteristic, closedness, orientability and vertex fans are those of the polygons.
+pub fn fan_triangles(soup: &PolygonSoup) -> (Vec<[u32; 3]>, Vec<u32>) {
+    let mut triangles = Vec::with_capacity(soup.face_count());
+    let mut polygon_of = Vec::with_capacity(soup.face_count());
+    for (k, face) in (0..soup.face_count()).map(|k| (k, soup.face(k))) {
+        for i in 1..face.len().saturating_sub(1) {
+            triangles.push([face[0], face[i], face[i + 1]]);
+            polygon_of.push(k as u32);
+        }
+    }
+    (triangles, polygon_of)
+}
+
 /// Describes a build error with the file name and, where known, the line of the face it names.
 pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
-    let line = face_of(error)
-        .and_then(|f| soup.face_lines.get(f))
+    let line = face_of(&mut error.clone())
+        .and_then(|f| soup.face_lines.get(*f))
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
     format!("{}: {line}{error}", path.display())

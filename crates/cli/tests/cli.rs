@@ -96,7 +96,7 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
         (
             "quad.obj",
             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
-            "sides",
+            "boundary edge",
         ),
         (
             "garbage.obj",
@@ -240,4 +240,31 @@ fn demo_writes_its_results() {
     assert!(stdout.contains("surftopo demo"), "{stdout}");
     let v = info_json(&out.join("input.obj"), &["--strict"]);
     assert_eq!(v["genus"], 1);
+}
+
+#[test]
+fn info_reads_polygon_meshes() {
+    let dir = tempfile::tempdir().unwrap();
+    let cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+                f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    let path = write(dir.path(), "cube.obj", cube);
+    let v = info_json(&path, &["--strict"]);
+    assert_eq!(
+        (
+            v["vertices"].as_u64(),
+            v["edges"].as_u64(),
+            v["faces"].as_u64()
+        ),
+        (Some(8), Some(12), Some(6))
+    );
+    assert_eq!(v["genus"], 0);
+    assert_eq!(v["simplicial"], false);
+    let open = write(
+        dir.path(),
+        "open_cube.obj",
+        &cube.replace("f 4 1 5 8\n", ""),
+    );
+    let out = surftopo().arg("info").arg(&open).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("line 13: boundary edge"), "{stdout}");
 }

@@ -14,13 +14,20 @@ fn every_shared_mesh_loads_with_the_manifest_counts() {
     assert_eq!(meshes.len(), 47);
     for mesh in meshes {
         let mut cmd = surftopo();
-        cmd.arg("info").arg(&mesh.path).arg("--json").arg("--strict");
+        cmd.arg("info")
+            .arg(&mesh.path)
+            .arg("--json")
+            .arg("--strict");
         if mesh.needs_weld {
             cmd.arg("--weld");
         }
         let out = cmd.output().unwrap();
         let file = &mesh.file;
-        assert!(out.status.success(), "{file}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{file}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let v: Value = serde_json::from_slice(&out.stdout).unwrap();
         assert_eq!(v["vertices"], mesh.vertices, "{file}: vertices");
         assert_eq!(v["edges"], mesh.edges, "{file}: edges");

@@ -1,7 +1,12 @@
 //! `surftopo info`: counts, topology and every problem found, valid mesh or not.
+//!
+//! Polygon meshes (quads from `surftopo quad`) are inspected through their fan triangulation, which
+//! has the same Euler characteristic, closedness, orientability and vertex fans; the edge count is
+//! corrected for the added diagonals. (A diagonal that coincides with an existing edge shows up as a
+//! non-manifold edge.)
 
 use crate::failure::invalid;
-use crate::input::{locate, read_soup, triangles};
+use crate::input::{fan_triangles, locate, read_soup, renumber_face};
 use serde::Serialize;
 use std::path::Path;
 
@@ -24,7 +29,7 @@ pub struct Info {
     pub closed: bool,
     /// A consistent orientation exists.
     pub orientable: bool,
-    /// No degenerate or duplicate faces (a simplicial complex).
+    /// All faces triangles, none degenerate or duplicate (a simplicial complex).
     pub simplicial: bool,
     /// A closed connected orientable surface surftopo accepts.
     pub valid: bool,
@@ -49,19 +54,31 @@ pub struct Info {
 /// Runs `info`; with `strict`, problems make it fail with exit code 2.
 pub fn run(path: &Path, json: bool, weld: bool, strict: bool) -> anyhow::Result<()> {
     let (soup, welded) = read_soup(path, weld)?;
-    let triangles = triangles(path, &soup)?;
+    // Polygon meshes are inspected through their fan triangulation (see `fan_triangles`).
+    let (triangles, polygon_of) = fan_triangles(&soup);
     let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);
+    let diagonals = triangles.len() - soup.face_count();
+    let all_triangles = diagonals == 0;
+    inspection.faces = soup.face_count();
+    inspection.edges -= diagonals.min(inspection.edges);
+    inspection.problems = inspection
+        .problems
+        .into_iter()
+        .map(|p| renumber_face(p, &polygon_of))
+        .collect();
+
     if let Err(e) = surftopo_mesh::geometry::check_finite(&soup.positions) {
         inspection.problem_count += 1;
         inspection.problems.insert(0, e);
     }
-    let simplicial = !inspection.problems.iter().any(|p| {
-        matches!(
-            p,
-            surftopo_mesh::BuildError::RepeatedVertex { .. }
-                | surftopo_mesh::BuildError::DuplicateFace { .. }
-        )
-    });
+    let simplicial = all_triangles
+        && !inspection.problems.iter().any(|p| {
+            matches!(
+                p,
+                surftopo_mesh::BuildError::RepeatedVertex { .. }
+                    | surftopo_mesh::BuildError::DuplicateFace { .. }
+            )
+        });
     let valid = inspection.problem_count == 0;
     let chi = inspection.euler_characteristic();
     let info = Info {
