@@ -156,3 +156,34 @@ fn compaction_keeps_the_surface() {
     assert_eq!(map.vertices.iter().filter(|x| x.is_valid()).count(), v);
     assert_eq!(mesh.genus(), 1);
 }
+
+#[test]
+fn morton_reordering_keeps_the_surface_and_its_geometry() {
+    use surftopo_mesh::geometry::{edge_lengths, reorder_morton};
+    let surface = torus(12, 9);
+    let (mut mesh, mut positions) = (surface.mesh.clone(), surface.positions.clone());
+    let sorted = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v
+    };
+    let before = sorted(edge_lengths(&mesh, &positions));
+    let map = reorder_morton(&mut mesh, &mut positions);
+    mesh.check_invariants().unwrap();
+    assert_eq!(mesh.genus(), 1);
+    assert_eq!(sorted(edge_lengths(&mesh, &positions)), before);
+    for v in surface.mesh.vertices() {
+        assert_eq!(
+            positions[map.vertices[v.idx()].idx()],
+            surface.positions[v.idx()]
+        );
+    }
+    for f in surface.mesh.faces() {
+        let old = surface.mesh.face_vertices(f).map(|v| map.vertices[v.idx()]);
+        let new = mesh.face_vertices(map.faces[f.idx()]);
+        let rotations = [[0, 1, 2], [1, 2, 0], [2, 0, 1]];
+        assert!(
+            rotations.iter().any(|r| r.map(|i| new[i]) == old),
+            "face {f:?} changed"
+        );
+    }
+}
