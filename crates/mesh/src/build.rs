@@ -264,6 +264,15 @@ impl Pairing {
             t[i].max(t[(i + 1) % 3])
         };
         let third_of = |c: u32| remapped[(c / 3) as usize][((c % 3) as usize + 2) % 3];
+        // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
+        // the smallest edge of the face.
+        let is_smallest_edge = |c: u32, lo: u32, hi: u32| {
+            let t = &remapped[(c / 3) as usize];
+            let smallest = (0..3)
+                .map(|i| (t[i].min(t[(i + 1) % 3]), t[i].max(t[(i + 1) % 3])))
+                .min();
+            smallest == Some((lo, hi))
+        };
         let forward = |c: u32| {
             let t = &remapped[(c / 3) as usize];
             let i = (c % 3) as usize;
@@ -301,7 +310,7 @@ impl Pairing {
                     }
                     2 => {
                         let (c1, c2) = (group[0], group[1]);
-                        if third_of(c1) == third_of(c2) {
+                        if third_of(c1) == third_of(c2) && is_smallest_edge(c2, v as u32, hi) {
                             ins.push(BuildError::DuplicateFace {
                                 face: (c2 / 3) as usize,
                                 duplicate_of: (c1 / 3) as usize,
@@ -315,6 +324,17 @@ impl Pairing {
                         same_direction.push(forward(c1) == forward(c2));
                     }
                     n => {
+                        // A repeated face shows as an edge in three or more faces: name it as such.
+                        for (k, &c2) in group.iter().enumerate().skip(1) {
+                            let first = group[..k].iter().find(|&&c1| third_of(c1) == third_of(c2));
+                            if let Some(&c1) = first.filter(|_| is_smallest_edge(c2, v as u32, hi))
+                            {
+                                ins.push(BuildError::DuplicateFace {
+                                    face: (c2 / 3) as usize,
+                                    duplicate_of: (c1 / 3) as usize,
+                                });
+                            }
+                        }
                         ins.non_manifold_edges += 1;
                         ins.push(BuildError::NonManifoldEdge {
                             edge,

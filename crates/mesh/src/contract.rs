@@ -1,8 +1,8 @@
 //! Edge contraction with the link condition, and its exact inverse, the vertex split.
 //!
 //! Contracting `h = u -> v` identifies v with u (Figure 7 of the irreducible-triangulations paper):
-//! vertex v, edges [u,v], [v,x], [v,y] and faces [u,v,x], [u,v,y] are removed (tombstoned);
-//! edges [u,x] and [u,y] keep their ids. The returned [`Contraction`] is the record pushed on the
+//! vertex v, edges `[u,v]`, `[v,x]`, `[v,y]` and faces `[u,v,x]`, `[u,v,y]` are removed (tombstoned);
+//! edges `[u,x]` and `[u,y]` keep their ids. The returned [`Contraction`] is the record pushed on the
 //! stack S of Algorithm 4.5, plus what [`SurfaceMesh::split_vertex`] needs to restore the mesh
 //! exactly (same ids, same orientation, same stored half-edges).
 
@@ -15,14 +15,14 @@ use crate::topology::SurfaceMesh;
 pub struct Contraction {
     /// `u -> v` before the contraction (u kept, v removed).
     h: HalfedgeId,
-    /// `v -> x`, `x -> u` (face [u,v,x]), `u -> y`, `y -> v` (face [u,v,y]).
+    /// `v -> x`, `x -> u` (face `[u,v,x]`), `u -> y`, `y -> v` (face `[u,v,y]`).
     a: HalfedgeId,
     b: HalfedgeId,
     c: HalfedgeId,
     d: HalfedgeId,
     /// Stored half-edges of u, v, x, y before the contraction.
     vertex_halfedges: [HalfedgeId; 4],
-    /// Stored half-edges of the faces [u,v,x], [u,v,y] and of the faces across [v,x] and [v,y].
+    /// Stored half-edges of the faces `[u,v,x]`, `[u,v,y]` and of the faces across `[v,x]` and `[v,y]`.
     face_halfedges: [HalfedgeId; 4],
     vertices: [VertexId; 4],
     faces: [FaceId; 4],
@@ -37,23 +37,23 @@ impl Contraction {
     pub fn removed(&self) -> VertexId {
         self.vertices[1]
     }
-    /// The two link vertices x and y of edge [u, v].
+    /// The two link vertices x and y of edge `[u, v]`.
     pub fn link(&self) -> [VertexId; 2] {
         [self.vertices[2], self.vertices[3]]
     }
-    /// The contracted edge [u, v].
+    /// The contracted edge `[u, v]`.
     pub fn edge_uv(&self) -> EdgeId {
         self.h.edge()
     }
-    /// The removed edges [v, x] and [v, y].
+    /// The removed edges `[v, x]` and `[v, y]`.
     pub fn removed_edges(&self) -> [EdgeId; 2] {
         [self.a.edge(), self.d.edge()]
     }
-    /// The surviving edges [u, x] and [u, y] ("split edges" of the quadrangulation paper, Alg. 3.2).
+    /// The surviving edges `[u, x]` and `[u, y]` ("split edges" of the quadrangulation paper, Alg. 3.2).
     pub fn split_edges(&self) -> [EdgeId; 2] {
         [self.b.edge(), self.c.edge()]
     }
-    /// The removed faces [u, v, x] and [u, v, y].
+    /// The removed faces `[u, v, x]` and `[u, v, y]`.
     pub fn removed_faces(&self) -> [FaceId; 2] {
         [self.faces[0], self.faces[1]]
     }
@@ -242,7 +242,7 @@ impl SurfaceMesh {
 
     /// Splits vertex u into u and a new vertex v (the inverse of a contraction, with fresh ids):
     /// the outgoing half-edges strictly between `to_y = u -> y` and `to_x = u -> x` in rotation order
-    /// move to v; new edges [u,v], [v,x], [v,y] and faces [u,v,x], [u,v,y] are created.
+    /// move to v; new edges `[u,v]`, `[v,x]`, `[v,y]` and faces `[u,v,x]`, `[u,v,y]` are created.
     /// Returns the record whose [`Self::split_vertex`] would redo this split after a contraction.
     ///
     /// # Errors

@@ -90,8 +90,8 @@ pub fn weld_exact(positions: &[Point3]) -> (Vec<Point3>, Vec<u32>) {
 fn morton3(x: u64, y: u64, z: u64) -> u64 {
     fn spread(mut v: u64) -> u64 {
         v &= 0x1f_ffff;
-        v = (v | v << 32) & 0x1f00_0000_00ff_ff;
-        v = (v | v << 16) & 0x1f_0000_ff00_00ff;
+        v = (v | v << 32) & 0x001f_0000_0000_ffff;
+        v = (v | v << 16) & 0x001f_0000_ff00_00ff;
         v = (v | v << 8) & 0x100f_00f0_0f00_f00f;
         v = (v | v << 4) & 0x10c3_0c30_c30c_30c3;
         v = (v | v << 2) & 0x1249_2492_4924_9249;

@@ -22,7 +22,7 @@ impl SurfaceMesh {
     /// The first violated invariant, described.
     pub fn check_invariants(&self) -> Result<(), InvariantError> {
         let nh = self.next.len();
-        ensure!(nh % 2 == 0, "odd half-edge count {nh}");
+        ensure!(nh.is_multiple_of(2), "odd half-edge count {nh}");
         ensure!(
             self.origin.len() == nh && self.face.len() == nh,
             "half-edge arrays differ in length"

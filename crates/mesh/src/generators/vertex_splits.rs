@@ -1,0 +1,64 @@
+//! Random vertex splits (the inverse of edge contractions, with fresh ids).
+
+use super::Surface;
+use crate::geometry::Point3;
+use crate::ids::{HalfedgeId, VertexId};
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+/// A copy of `surface` after `splits` random vertex splits ([`crate::SurfaceMesh::split_vertex_new`]).
+///
+/// Each split draws a vertex `u` uniformly (new vertices included) and two distinct outgoing
+/// half-edges `u -> y`, `u -> x` of it with `x != y`; the neighbours strictly between them in
+/// rotation order move to the new vertex `v`, which is joined to `u`, `x` and `y`. So each split
+/// adds 1 vertex, 3 edges and 2 faces and keeps the genus. The new vertex is placed at the
+/// midpoint of `u` and the centroid of its other neighbours (`x`, `y` and the moved ones).
+///
+/// A simplicial input stays simplicial (the new edges all end at the new vertex, and every moved
+/// neighbour was adjacent to `u` once); a vertex whose outgoing half-edges all reach one
+/// destination (possible only in a non-simplicial input) is skipped. Ids are dense. O(splits *
+/// degree). Same seed, same result.
+pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surface {
+    let mut out = surface.clone();
+    out.compact();
+    let simplicial_input = cfg!(debug_assertions) && out.mesh.is_simplicial();
+    let Surface { mesh, positions } = &mut out;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut ring: Vec<HalfedgeId> = Vec::new();
+    for _ in 0..splits {
+        let u = VertexId::new(rng.random_range(0..mesh.vertex_count()));
+        ring.clear();
+        ring.extend(mesh.outgoing(u));
+        let i = rng.random_range(0..ring.len());
+        let to_y = ring[i];
+        let choices = ring
+            .iter()
+            .filter(|&&h| mesh.dest(h) != mesh.dest(to_y))
+            .count();
+        if choices == 0 {
+            continue;
+        }
+        let pick = rng.random_range(0..choices);
+        let to_x = *ring
+            .iter()
+            .filter(|&&h| mesh.dest(h) != mesh.dest(to_y))
+            .nth(pick)
+            .expect("pick < choices");
+        let record = mesh
+            .split_vertex_new(to_y, to_x)
+            .expect("two outgoing half-edges of u with distinct destinations");
+        let v = record.removed();
+        let (mut sum, mut count) = ([0.0; 3], 0.0);
+        for w in mesh.neighbors(v).filter(|&w| w != u) {
+            let p = positions[w.idx()];
+            sum = [0, 1, 2].map(|k| sum[k] + p[k]);
+            count += 1.0;
+        }
+        let pu = positions[u.idx()];
+        let p: Point3 = [0, 1, 2].map(|k| 0.5 * (pu[k] + sum[k] / count));
+        debug_assert_eq!(v.idx(), positions.len());
+        positions.push(p);
+    }
+    debug_assert!(!simplicial_input || out.mesh.is_simplicial());
+    out
+}
