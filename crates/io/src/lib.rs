@@ -1,1 +1,155 @@
-//! placeholder
+//! Readers and writers for polygon soups (positions + faces, no topology).
+//!
+//! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
+//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY.
+//! Paths ending in `.gz` are read and written through gzip. Errors name the
+//! file and the line (text) or byte offset (binary); no input makes a reader
+//! panic, loop forever or allocate beyond what the input could hold.
+//!
+//! ```
+//! use surftopo_io::{Format, PolygonSoup, WriteOptions};
+//! let soup = PolygonSoup::from_triangles(
+//!     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+//!     &[[0, 1, 2]],
+//! );
+//! let mut bytes = Vec::new();
+//! surftopo_io::write(&mut bytes, &soup, Format::Obj, &WriteOptions::default()).unwrap();
+//! let back = surftopo_io::read(&bytes[..], Format::Obj, "memory.obj").unwrap();
+//! assert_eq!(back.face(0), &[0, 1, 2]);
+//! ```
+
+mod error;
+mod format;
+mod fs;
+mod obj;
+mod off;
+mod out;
+mod ply;
+mod ply_write;
+mod soup;
+mod stl;
+mod text;
+
+use std::io::{self, Read, Write};
+
+pub use error::{IoError, Location};
+pub use format::{Format, is_gzip_path};
+pub use fs::{read_path, write_path};
+pub use soup::{NotTriangles, PolygonSoup};
+
+use error::Ctx;
+
+/// Encoding of written PLY files.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum PlyEncoding {
+    /// `binary_little_endian` (the default).
+    #[default]
+    BinaryLittleEndian,
+    /// `binary_big_endian`.
+    BinaryBigEndian,
+    /// `ascii`.
+    Ascii,
+}
+
+/// Options of [`write()`] and [`write_path`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub struct WriteOptions {
+    /// Encoding of PLY output.
+    pub ply_encoding: PlyEncoding,
+    /// gzip level 0..=9 for `.gz` paths (default 6).
+    pub gzip_level: u32,
+}
+
+impl Default for WriteOptions {
+    fn default() -> Self {
+        WriteOptions {
+            ply_encoding: PlyEncoding::BinaryLittleEndian,
+            gzip_level: 6,
+        }
+    }
+}
+
+impl WriteOptions {
+    /// Options with the given PLY encoding.
+    pub fn with_ply_encoding(mut self, encoding: PlyEncoding) -> Self {
+        self.ply_encoding = encoding;
+        self
+    }
+
+    /// Options with the given gzip level (clamped to 0..=9).
+    pub fn with_gzip_level(mut self, level: u32) -> Self {
+        self.gzip_level = level.min(9);
+        self
+    }
+}
+
+/// Parses a mesh file held in memory (uncompressed).
+///
+/// `bytes`: the whole file; `format`: how to parse it; `name`: the file name
+/// used in error messages. Errors carry the 1-based line (text) or byte
+/// offset (binary) of the problem.
+pub fn read_bytes(bytes: &[u8], format: Format, name: &str) -> Result<PolygonSoup, IoError> {
+    let ctx = Ctx { name };
+    match format {
+        Format::Obj => obj::read(bytes, ctx),
+        Format::Off => off::read(bytes, ctx),
+        Format::Ply => ply::read(bytes, ctx),
+        Format::Stl => stl::read(bytes, ctx),
+    }
+}
+
+/// Reads a whole (uncompressed) stream and parses it.
+///
+/// `reader`: the file's bytes (read to the end; any `BufRead` or `Read`,
+/// e.g. `&[u8]` or a `File`); `format`: how to parse it; `name`: the file
+/// name used in error messages.
+pub fn read(mut reader: impl Read, format: Format, name: &str) -> Result<PolygonSoup, IoError> {
+    let mut bytes = Vec::new();
+    reader
+        .read_to_end(&mut bytes)
+        .map_err(|e| Ctx { name }.io(e))?;
+    read_bytes(&bytes, format, name)
+}
+
+/// Writes the soup in `format`, uncompressed.
+///
+/// `writer`: the destination (buffered internally); `soup`: what to write;
+/// `format`: OBJ, OFF or PLY; `options`: PLY encoding (gzip level is only
+/// used by [`write_path`]). Fails with [`IoError::InvalidSoup`] before
+/// writing anything if the soup is inconsistent (see
+/// [`PolygonSoup::validate`]), with [`IoError::UnsupportedWrite`] for STL,
+/// and with [`IoError::Io`] (file `<writer>`) if the writer fails.
+pub fn write(
+    writer: impl Write,
+    soup: &PolygonSoup,
+    format: Format,
+    options: &WriteOptions,
+) -> Result<(), IoError> {
+    check_writable(soup, format)?;
+    write_unchecked(writer, soup, format, options)
+        .map(drop)
+        .map_err(|e| Ctx { name: "<writer>" }.io(e))
+}
+
+fn check_writable(soup: &PolygonSoup, format: Format) -> Result<(), IoError> {
+    if !format.can_write() {
+        return Err(IoError::UnsupportedWrite { format });
+    }
+    soup.validate()
+        .map_err(|message| IoError::InvalidSoup { message })
+}
+
+fn write_unchecked<W: Write>(
+    writer: W,
+    soup: &PolygonSoup,
+    format: Format,
+    options: &WriteOptions,
+) -> io::Result<W> {
+    match format {
+        Format::Obj => obj::write(writer, soup),
+        Format::Off => off::write(writer, soup),
+        Format::Ply => ply_write::write(writer, soup, options.ply_encoding),
+        Format::Stl => Err(io::Error::other("writing STL is not supported")),
+    }
+}

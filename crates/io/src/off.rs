@@ -1,0 +1,183 @@
+//! Geomview OFF (`OFF`, `COFF`, `NOFF`, `STOFF`, `nOFF`, ... ascii only).
+//!
+//! Read line by line: a vertex is the first 3 numbers of its line, a face is
+//! `k i1 .. ik` and whatever follows on the line (colours, normals) is
+//! ignored; values may continue on following lines. If that fails, the file
+//! is re-read as a plain token stream (no values skipped), which accepts
+//! writers that split lines oddly or put everything on one line.
+
+use std::io::{self, Write};
+
+use crate::error::{Ctx, IoError};
+use crate::out::Out;
+use crate::soup::PolygonSoup;
+use crate::text::{Lexer, show};
+
+const COMMENT: Option<u8> = Some(b'#');
+
+/// Reads an OFF file held in memory.
+pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
+    match parse(buf, ctx, true) {
+        Ok(soup) => Ok(soup),
+        Err(e @ (IoError::BadHeader { .. } | IoError::TooLarge { .. })) => Err(e),
+        Err(e) => parse(buf, ctx, false).map_err(|_| e),
+    }
+}
+
+/// One pass; `lines`: skip the rest of each element's last line.
+fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> {
+    let mut lx = Lexer::new(buf);
+    let (nv, nf) = header(&mut lx, ctx, lines)?;
+    let remaining = buf.len().saturating_sub(lx.pos);
+    let mut soup = PolygonSoup::new();
+    // Cap reservations by what the rest of the input could hold.
+    soup.positions.reserve(nv.min(remaining / 6));
+    let nf_cap = nf.min(remaining / 8);
+    soup.face_offsets.reserve(nf_cap);
+    soup.face_lines.reserve(nf_cap);
+    soup.face_indices.reserve(nf_cap * 3);
+
+    for i in 0..nv {
+        let mut p = [0.0; 3];
+        for (axis, c) in p.iter_mut().enumerate() {
+            lx.skip_space(COMMENT);
+            *c = match lx.f64() {
+                Ok(v) if v.is_finite() => v,
+                Ok(v) => return Err(ctx.non_finite(lx.at(), v)),
+                Err(e) => {
+                    let what = format!("{} coordinate of vertex {} of {nv}", AXES[axis], i + 1);
+                    return Err(lx.num_error(ctx, e, &what));
+                }
+            };
+        }
+        soup.positions.push(p);
+        if lines {
+            lx.skip_line();
+        }
+    }
+
+    for j in 0..nf {
+        lx.skip_space(COMMENT);
+        let line = lx.line_u32();
+        let k = match lx.u64() {
+            Ok(k) => k,
+            Err(e) => {
+                let what = format!("vertex count of face {} of {nf}", j + 1);
+                return Err(lx.num_error(ctx, e, &what));
+            }
+        };
+        if k < 3 {
+            return Err(ctx.too_small(lx.at(), k));
+        }
+        for _ in 0..k {
+            lx.skip_space(COMMENT);
+            match lx.i64() {
+                Ok(v) if v >= 0 && (v as u64) < nv as u64 => soup.face_indices.push(v as u32),
+                Ok(v) => return Err(ctx.index(lx.at(), v, nv as u64)),
+                Err(e) => {
+                    let what = format!("vertex index of face {} of {nf}", j + 1);
+                    return Err(lx.num_error(ctx, e, &what));
+                }
+            }
+        }
+        if soup.close_face().is_none() {
+            return Err(ctx.too_large(lx.at(), "more than 2^32-1 face indices"));
+        }
+        soup.face_lines.push(line);
+        if lines {
+            lx.skip_line();
+        }
+    }
+    Ok(soup)
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// Reads the keyword (optional) and the counts; returns (vertices, faces).
+fn header(lx: &mut Lexer<'_>, ctx: Ctx<'_>, lines: bool) -> Result<(usize, usize), IoError> {
+    lx.skip_space(COMMENT);
+    let tok = lx.peek_token();
+    let mut dimension_follows = false;
+    if tok.len() >= 3 && tok[tok.len() - 3..].eq_ignore_ascii_case(b"OFF") {
+        let prefix = &tok[..tok.len() - 3];
+        if !prefix.iter().all(u8::is_ascii_alphanumeric) {
+            return Err(ctx.bad_header(lx.at(), format!("unknown keyword '{}'", show(tok))));
+        }
+        dimension_follows = prefix.last() == Some(&b'n');
+        lx.pos += tok.len();
+        if lx.peek_token().eq_ignore_ascii_case(b"BINARY") {
+            return Err(ctx.bad_header(lx.at(), "binary OFF is not supported"));
+        }
+    } else if !tok.first().is_some_and(u8::is_ascii_digit) {
+        return Err(if lx.is_eof() {
+            ctx.eof(lx.at(), "OFF header")
+        } else {
+            ctx.bad_header(
+                lx.at(),
+                format!("expected OFF keyword, found '{}'", show(tok)),
+            )
+        });
+    }
+    if dimension_follows {
+        let d = count(lx, ctx, "dimension")?;
+        if d < 3 {
+            return Err(ctx.bad_header(lx.at(), format!("dimension {d} < 3 is not supported")));
+        }
+    }
+    let nv = count(lx, ctx, "vertex count")?;
+    let nf = count(lx, ctx, "face count")?;
+    // The edge count is optional in practice; in line mode take it only from
+    // the same line.
+    lx.skip_blank();
+    if !lines || !(lx.at_eol() || lx.peek() == COMMENT) {
+        count(lx, ctx, "edge count")?;
+    }
+    if lines {
+        lx.skip_line();
+    }
+    if nv > u32::MAX as u64 {
+        return Err(ctx.too_large(lx.at(), format!("{nv} vertices (at most 2^32-1)")));
+    }
+    let nf = usize::try_from(nf).map_err(|_| ctx.too_large(lx.at(), format!("{nf} faces")))?;
+    Ok((nv as usize, nf))
+}
+
+fn count(lx: &mut Lexer<'_>, ctx: Ctx<'_>, what: &str) -> Result<u64, IoError> {
+    lx.skip_space(COMMENT);
+    match lx.u64() {
+        Ok(n) => Ok(n),
+        Err(e) => Err(match lx.num_error(ctx, e, what) {
+            IoError::Parse { file, at, message } => IoError::BadHeader { file, at, message },
+            other => other,
+        }),
+    }
+}
+
+/// Writes `OFF`, `V F 0`, vertex lines and `k i1 .. ik` face lines.
+pub(crate) fn write<W: Write>(w: W, soup: &PolygonSoup) -> io::Result<W> {
+    let mut out = Out::new(w);
+    out.bytes(b"OFF\n");
+    out.u64(soup.positions.len() as u64);
+    out.byte(b' ');
+    out.u64(soup.face_count() as u64);
+    out.bytes(b" 0\n");
+    for p in &soup.positions {
+        out.f64(p[0]);
+        out.byte(b' ');
+        out.f64(p[1]);
+        out.byte(b' ');
+        out.f64(p[2]);
+        out.byte(b'\n');
+        out.flush_if_full()?;
+    }
+    for f in soup.faces() {
+        out.u64(f.len() as u64);
+        for &i in f {
+            out.byte(b' ');
+            out.u64(u64::from(i));
+        }
+        out.byte(b'\n');
+        out.flush_if_full()?;
+    }
+    out.finish()
+}

@@ -1,0 +1,99 @@
+//! Buffered output with number formatting shared by the writers.
+
+use std::io::{self, Write};
+
+const CHUNK: usize = 1 << 16;
+
+/// Accumulates output in a buffer and hands it to the writer in chunks.
+pub(crate) struct Out<W: Write> {
+    w: W,
+    buf: Vec<u8>,
+}
+
+impl<W: Write> Out<W> {
+    pub fn new(w: W) -> Self {
+        Out {
+            w,
+            buf: Vec::with_capacity(CHUNK + 1024),
+        }
+    }
+
+    /// Passes the buffer on once it is full; call after each record.
+    #[inline]
+    pub fn flush_if_full(&mut self) -> io::Result<()> {
+        if self.buf.len() >= CHUNK {
+            self.w.write_all(&self.buf)?;
+            self.buf.clear();
+        }
+        Ok(())
+    }
+
+    /// Writes what is left, flushes and returns the writer.
+    pub fn finish(mut self) -> io::Result<W> {
+        self.w.write_all(&self.buf)?;
+        self.w.flush()?;
+        Ok(self.w)
+    }
+
+    #[inline]
+    pub fn bytes(&mut self, b: &[u8]) {
+        self.buf.extend_from_slice(b);
+    }
+
+    #[inline]
+    pub fn byte(&mut self, b: u8) {
+        self.buf.push(b);
+    }
+
+    /// Shortest decimal that reads back to the same bits (`-0` and
+    /// subnormals included); exponent form for very large or small values.
+    #[inline]
+    pub fn f64(&mut self, x: f64) {
+        // Debug is shortest-round-trip like Display but switches to exponent
+        // notation for large/small magnitudes (1e308 instead of 309 digits).
+        let _ = write!(self.buf, "{x:?}");
+        if self.buf.ends_with(b".0") {
+            self.buf.truncate(self.buf.len() - 2);
+        }
+    }
+
+    #[inline]
+    pub fn u64(&mut self, mut v: u64) {
+        let mut tmp = [0u8; 20];
+        let mut i = tmp.len();
+        loop {
+            i -= 1;
+            tmp[i] = b'0' + (v % 10) as u8;
+            v /= 10;
+            if v == 0 {
+                break;
+            }
+        }
+        self.buf.extend_from_slice(&tmp[i..]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fmt(x: f64) -> String {
+        let mut o = Out::new(Vec::new());
+        o.f64(x);
+        String::from_utf8(o.finish().unwrap()).unwrap()
+    }
+
+    #[test]
+    fn floats() {
+        assert_eq!(fmt(1.0), "1");
+        assert_eq!(fmt(-0.0), "-0");
+        assert_eq!(fmt(0.1), "0.1");
+        assert_eq!(fmt(1e308), "1e308");
+        assert_eq!(fmt(5e-324), "5e-324");
+        let mut o = Out::new(Vec::new());
+        o.u64(0);
+        o.byte(b' ');
+        o.u64(u64::MAX);
+        assert_eq!(o.finish().unwrap(), b"0 18446744073709551615");
+    }
+}

@@ -1,0 +1,832 @@
+//! Stanford PLY reader: ascii, binary little and big endian.
+//!
+//! Vertices come from the `vertex` element's `x`, `y`, `z` (any scalar
+//! type); faces from `face` elements (`vertex_indices` or `vertex_index`
+//! list) and `tristrips` elements (`vertex_indices` list, -1 restarts a
+//! strip). Other elements and properties are skipped.
+
+use crate::error::{Ctx, IoError, Location};
+use crate::soup::PolygonSoup;
+use crate::text::{Lexer, NumErr, show};
+
+/// Scalar property type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Scalar {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Scalar {
+    fn from_name(s: &[u8]) -> Option<Self> {
+        Some(match s {
+            b"char" | b"int8" => Scalar::I8,
+            b"uchar" | b"uint8" => Scalar::U8,
+            b"short" | b"int16" => Scalar::I16,
+            b"ushort" | b"uint16" => Scalar::U16,
+            b"int" | b"int32" => Scalar::I32,
+            b"uint" | b"uint32" => Scalar::U32,
+            b"float" | b"float32" => Scalar::F32,
+            b"double" | b"float64" => Scalar::F64,
+            _ => return None,
+        })
+    }
+
+    fn size(self) -> usize {
+        match self {
+            Scalar::I8 | Scalar::U8 => 1,
+            Scalar::I16 | Scalar::U16 => 2,
+            Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
+            Scalar::F64 => 8,
+        }
+    }
+
+    fn is_int(self) -> bool {
+        !matches!(self, Scalar::F32 | Scalar::F64)
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Scalar(Scalar),
+    List { count: Scalar, item: Scalar },
+}
+
+#[derive(Debug)]
+struct Property {
+    name: Vec<u8>,
+    kind: Kind,
+}
+
+#[derive(Debug)]
+struct Element {
+    name: Vec<u8>,
+    count: u64,
+    props: Vec<Property>,
+    line: u64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Encoding {
+    Ascii,
+    LittleEndian,
+    BigEndian,
+}
+
+struct Header {
+    encoding: Encoding,
+    elements: Vec<Element>,
+    /// Offset of the first body byte.
+    body: usize,
+    /// Line of the first body byte (ascii).
+    body_line: u64,
+}
+
+/// What an element contributes to the soup.
+#[derive(Clone, Copy)]
+enum Role {
+    /// Property indices of x, y, z.
+    Vertex([usize; 3]),
+    /// Property index of the vertex index list.
+    Faces(usize),
+    /// Property index of the strip list.
+    Strips(usize),
+    Skip,
+}
+
+/// Reads a PLY file held in memory.
+pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
+    let hdr = header(buf, ctx)?;
+    let roles = roles(&hdr, ctx)?;
+    let nv = hdr
+        .elements
+        .iter()
+        .zip(&roles)
+        .find(|(_, r)| matches!(r, Role::Vertex(_)))
+        .map_or(0, |(e, _)| e.count);
+    match hdr.encoding {
+        Encoding::Ascii => read_ascii(buf, &hdr, &roles, nv, ctx),
+        Encoding::LittleEndian => read_binary::<false>(buf, &hdr, &roles, nv, ctx),
+        Encoding::BigEndian => read_binary::<true>(buf, &hdr, &roles, nv, ctx),
+    }
+}
+
+fn header(buf: &[u8], ctx: Ctx<'_>) -> Result<Header, IoError> {
+    let mut lx = Lexer::new(buf);
+    if lx.token() != b"ply" || {
+        lx.skip_blank();
+        !lx.at_eol()
+    } {
+        return Err(ctx.bad_header(Location::Line(1), "missing 'ply' magic line"));
+    }
+    lx.skip_line();
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    loop {
+        if lx.is_eof() {
+            return Err(ctx.eof(lx.at(), "'end_header'"));
+        }
+        let at = lx.at();
+        let kw = lx.token();
+        match kw {
+            b"" | b"comment" | b"obj_info" => {}
+            b"format" => {
+                let enc = match lx.token() {
+                    b"ascii" => Encoding::Ascii,
+                    b"binary_little_endian" => Encoding::LittleEndian,
+                    b"binary_big_endian" => Encoding::BigEndian,
+                    other => {
+                        let msg = format!("unknown format '{}'", show(other));
+                        return Err(ctx.bad_header(at, msg));
+                    }
+                };
+                if encoding.replace(enc).is_some() {
+                    return Err(ctx.bad_header(at, "second 'format' line"));
+                }
+            }
+            b"element" => {
+                let name = lx.token().to_vec();
+                if name.is_empty() {
+                    return Err(ctx.bad_header(at, "element without a name"));
+                }
+                let count = match lx.u64() {
+                    Ok(n) => n,
+                    Err(NumErr::Missing) => {
+                        return Err(ctx.bad_header(at, "element without a count"));
+                    }
+                    Err(NumErr::Bad) => {
+                        let msg = format!("bad element count '{}'", show(lx.peek_token()));
+                        return Err(ctx.bad_header(at, msg));
+                    }
+                };
+                elements.push(Element {
+                    name,
+                    count,
+                    props: Vec::new(),
+                    line: lx.line,
+                });
+            }
+            b"property" => {
+                let Some(el) = elements.last_mut() else {
+                    return Err(ctx.bad_header(at, "property before any element"));
+                };
+                let ty = lx.token();
+                let kind = if ty == b"list" {
+                    let count = scalar(lx.token(), at, ctx)?;
+                    let item = scalar(lx.token(), at, ctx)?;
+                    if !count.is_int() {
+                        return Err(ctx.bad_header(at, "list count type must be an integer type"));
+                    }
+                    Kind::List { count, item }
+                } else {
+                    Kind::Scalar(scalar(ty, at, ctx)?)
+                };
+                let name = lx.token().to_vec();
+                if name.is_empty() {
+                    return Err(ctx.bad_header(at, "property without a name"));
+                }
+                el.props.push(Property { name, kind });
+            }
+            b"end_header" => {
+                lx.skip_line();
+                break;
+            }
+            other => {
+                let msg = format!("unknown header keyword '{}'", show(other));
+                return Err(ctx.bad_header(at, msg));
+            }
+        }
+        lx.skip_line();
+    }
+    let Some(encoding) = encoding else {
+        return Err(ctx.bad_header(Location::Line(2), "no 'format' line"));
+    };
+    Ok(Header {
+        encoding,
+        elements,
+        body: lx.pos,
+        body_line: lx.line,
+    })
+}
+
+fn scalar(name: &[u8], at: Location, ctx: Ctx<'_>) -> Result<Scalar, IoError> {
+    Scalar::from_name(name)
+        .ok_or_else(|| ctx.bad_header(at, format!("unknown property type '{}'", show(name))))
+}
+
+fn roles(hdr: &Header, ctx: Ctx<'_>) -> Result<Vec<Role>, IoError> {
+    let mut have_vertex = false;
+    let mut out = Vec::with_capacity(hdr.elements.len());
+    for el in &hdr.elements {
+        let at = Location::Line(el.line);
+        let find = |names: &[&[u8]]| el.props.iter().position(|p| names.contains(&&p.name[..]));
+        let role = match &el.name[..] {
+            b"vertex" if !have_vertex => {
+                have_vertex = true;
+                if el.count > u64::from(u32::MAX) {
+                    let msg = format!("{} vertices (at most 2^32-1)", el.count);
+                    return Err(ctx.too_large(at, msg));
+                }
+                let mut xyz = [0; 3];
+                for (slot, axis) in xyz.iter_mut().zip([b"x", b"y", b"z"]) {
+                    *slot = match find(&[axis]) {
+                        Some(i) if matches!(el.props[i].kind, Kind::Scalar(_)) => i,
+                        Some(_) => {
+                            let msg = format!("vertex property '{}' is a list", axis[0] as char);
+                            return Err(ctx.bad_header(at, msg));
+                        }
+                        None => {
+                            let msg =
+                                format!("vertex element has no '{}' property", axis[0] as char);
+                            return Err(ctx.bad_header(at, msg));
+                        }
+                    };
+                }
+                Role::Vertex(xyz)
+            }
+            b"face" | b"tristrips" => {
+                let names: &[&[u8]] = if el.name == b"face" {
+                    &[b"vertex_indices", b"vertex_index"]
+                } else {
+                    &[b"vertex_indices"]
+                };
+                let Some(i) = find(names) else {
+                    let msg = format!("'{}' element has no vertex_indices list", show(&el.name));
+                    return Err(ctx.bad_header(at, msg));
+                };
+                match el.props[i].kind {
+                    Kind::List { item, .. } if item.is_int() => {}
+                    _ => {
+                        let msg = "vertex_indices must be a list of an integer type";
+                        return Err(ctx.bad_header(at, msg));
+                    }
+                }
+                if el.name == b"face" {
+                    Role::Faces(i)
+                } else {
+                    Role::Strips(i)
+                }
+            }
+            _ => Role::Skip,
+        };
+        out.push(role);
+    }
+    Ok(out)
+}
+
+/// Checks a face vertex index against the vertex count.
+#[inline]
+fn check_index(v: i64, nv: u64, at: impl Fn() -> Location, ctx: Ctx<'_>) -> Result<u32, IoError> {
+    if v >= 0 && (v as u64) < nv {
+        Ok(v as u32)
+    } else {
+        Err(ctx.index(at(), v, nv))
+    }
+}
+
+/// Ends a face read into `soup.face_indices` from `start`.
+#[inline]
+fn close_face(
+    soup: &mut PolygonSoup,
+    start: usize,
+    at: Location,
+    line: Option<u32>,
+    ctx: Ctx<'_>,
+) -> Result<(), IoError> {
+    let sides = soup.face_indices.len() - start;
+    if sides < 3 {
+        return Err(ctx.too_small(at, sides as u64));
+    }
+    if soup.close_face().is_none() {
+        return Err(ctx.too_large(at, "more than 2^32-1 face indices"));
+    }
+    if let Some(l) = line {
+        soup.face_lines.push(l);
+    }
+    Ok(())
+}
+
+/// Appends the triangles of a strip list (-1 restarts; odd triangles are
+/// flipped; degenerate ones skipped). Indices must already be checked.
+fn push_strips(
+    soup: &mut PolygonSoup,
+    strip: &[i64],
+    at: Location,
+    line: Option<u32>,
+    ctx: Ctx<'_>,
+) -> Result<(), IoError> {
+    for seg in strip.split(|&v| v == -1) {
+        for (i, w) in seg.windows(3).enumerate() {
+            let [a, b, c] = [w[0] as u32, w[1] as u32, w[2] as u32];
+            if a == b || b == c || a == c {
+                continue;
+            }
+            let tri = if i % 2 == 0 { [a, b, c] } else { [b, a, c] };
+            let start = soup.face_indices.len();
+            soup.face_indices.extend_from_slice(&tri);
+            close_face(soup, start, at, line, ctx)?;
+        }
+    }
+    Ok(())
+}
+
+#[inline(always)]
+fn arr<const N: usize>(b: &[u8]) -> [u8; N] {
+    let mut a = [0u8; N];
+    a.copy_from_slice(&b[..N]);
+    a
+}
+
+/// Decodes a scalar at the start of `b` (which holds at least its size).
+#[inline(always)]
+fn load_f64<const BE: bool>(t: Scalar, b: &[u8]) -> f64 {
+    macro_rules! get {
+        ($ty:ty, $n:literal) => {{
+            let a = arr::<$n>(b);
+            if BE {
+                <$ty>::from_be_bytes(a)
+            } else {
+                <$ty>::from_le_bytes(a)
+            }
+        }};
+    }
+    match t {
+        Scalar::I8 => f64::from(get!(i8, 1)),
+        Scalar::U8 => f64::from(get!(u8, 1)),
+        Scalar::I16 => f64::from(get!(i16, 2)),
+        Scalar::U16 => f64::from(get!(u16, 2)),
+        Scalar::I32 => f64::from(get!(i32, 4)),
+        Scalar::U32 => f64::from(get!(u32, 4)),
+        Scalar::F32 => f64::from(get!(f32, 4)),
+        Scalar::F64 => get!(f64, 8),
+    }
+}
+
+/// Decodes an integer scalar at the start of `b`; floats are truncated.
+#[inline(always)]
+fn load_i64<const BE: bool>(t: Scalar, b: &[u8]) -> i64 {
+    macro_rules! get {
+        ($ty:ty, $n:literal) => {{
+            let a = arr::<$n>(b);
+            if BE {
+                <$ty>::from_be_bytes(a)
+            } else {
+                <$ty>::from_le_bytes(a)
+            }
+        }};
+    }
+    match t {
+        Scalar::I8 => i64::from(get!(i8, 1)),
+        Scalar::U8 => i64::from(get!(u8, 1)),
+        Scalar::I16 => i64::from(get!(i16, 2)),
+        Scalar::U16 => i64::from(get!(u16, 2)),
+        Scalar::I32 => i64::from(get!(i32, 4)),
+        Scalar::U32 => i64::from(get!(u32, 4)),
+        Scalar::F32 => get!(f32, 4) as i64,
+        Scalar::F64 => get!(f64, 8) as i64,
+    }
+}
+
+fn off(pos: usize) -> Location {
+    Location::Offset(pos as u64)
+}
+
+fn record_name(el: &Element, r: u64) -> String {
+    format!(
+        "record {} of {} of element '{}'",
+        r + 1,
+        el.count,
+        show(&el.name)
+    )
+}
+
+fn read_binary<const BE: bool>(
+    buf: &[u8],
+    hdr: &Header,
+    roles: &[Role],
+    nv: u64,
+    ctx: Ctx<'_>,
+) -> Result<PolygonSoup, IoError> {
+    let mut soup = PolygonSoup::new();
+    let mut pos = hdr.body;
+    let mut strip: Vec<i64> = Vec::new();
+    for (el, &role) in hdr.elements.iter().zip(roles) {
+        if el.props.is_empty() || el.count == 0 {
+            continue;
+        }
+        let remaining = buf.len() - pos;
+        let all_scalar = el.props.iter().all(|p| matches!(p.kind, Kind::Scalar(_)));
+        if all_scalar {
+            // Fixed-size records: check the whole element fits, then decode.
+            let stride: usize = el.props.iter().map(|p| prop_min_size(p.kind)).sum();
+            let need = usize::try_from(el.count)
+                .ok()
+                .and_then(|n| n.checked_mul(stride))
+                .filter(|&need| need <= remaining);
+            let Some(need) = need else {
+                let have = remaining / stride;
+                return Err(ctx.eof(off(buf.len()), record_name(el, have as u64)));
+            };
+            if let Role::Vertex(xyz) = role {
+                read_vertices_fixed::<BE>(
+                    &buf[pos..pos + need],
+                    pos,
+                    el,
+                    xyz,
+                    stride,
+                    &mut soup,
+                    ctx,
+                )?;
+            }
+            pos += need;
+            continue;
+        }
+        // Variable-size records.
+        if let (Role::Faces(0), [prop]) = (role, &el.props[..])
+            && let Kind::List { count, item } = prop.kind
+        {
+            // A valid face holds at least 3 indices.
+            let cap = usize::try_from(el.count)
+                .unwrap_or(usize::MAX)
+                .min(remaining / (count.size() + 3 * item.size()));
+            soup.face_offsets.reserve(cap);
+            soup.face_indices.reserve(cap.saturating_mul(3));
+            pos = faces_single_list::<BE>(buf, pos, el, count, item, nv, &mut soup, ctx)?;
+            continue;
+        }
+        let mut min_size: usize = el.props.iter().map(|p| prop_min_size(p.kind)).sum();
+        if let Role::Faces(k) = role
+            && let Kind::List { item, .. } = el.props[k].kind
+        {
+            min_size += 3 * item.size(); // a valid face holds at least 3 indices
+        }
+        let cap = usize::try_from(el.count)
+            .unwrap_or(usize::MAX)
+            .min(remaining / min_size);
+        match role {
+            Role::Vertex(_) => soup.positions.reserve(cap),
+            Role::Faces(_) => {
+                soup.face_offsets.reserve(cap);
+                soup.face_indices.reserve(cap.saturating_mul(3));
+            }
+            _ => {}
+        }
+        for r in 0..el.count {
+            let rec = pos;
+            let face_start = soup.face_indices.len();
+            let mut p3 = [0.0f64; 3];
+            for (pi, p) in el.props.iter().enumerate() {
+                match p.kind {
+                    Kind::Scalar(t) => {
+                        let Some(b) = buf.get(pos..pos + t.size()) else {
+                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                        };
+                        if let Role::Vertex(xyz) = role
+                            && let Some(axis) = xyz.iter().position(|&k| k == pi)
+                        {
+                            p3[axis] = load_f64::<BE>(t, b);
+                            if !p3[axis].is_finite() {
+                                return Err(ctx.non_finite(off(pos), p3[axis]));
+                            }
+                        }
+                        pos += t.size();
+                    }
+                    Kind::List { count, item } => {
+                        let Some(b) = buf.get(pos..pos + count.size()) else {
+                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                        };
+                        let n = load_i64::<BE>(count, b);
+                        if n < 0 {
+                            return Err(ctx.parse(off(pos), format!("negative list length {n}")));
+                        }
+                        pos += count.size();
+                        let isz = item.size();
+                        let end = (n as u64)
+                            .checked_mul(isz as u64)
+                            .and_then(|bytes| (pos as u64).checked_add(bytes))
+                            .filter(|&end| end <= buf.len() as u64);
+                        let Some(end) = end else {
+                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                        };
+                        let end = end as usize;
+                        let items = &buf[pos..end];
+                        match role {
+                            Role::Faces(k) if k == pi => {
+                                for (j, b) in items.chunks_exact(isz).enumerate() {
+                                    let v = load_i64::<BE>(item, b);
+                                    let i = check_index(v, nv, || off(pos + j * isz), ctx)?;
+                                    soup.face_indices.push(i);
+                                }
+                            }
+                            Role::Strips(k) if k == pi => {
+                                strip.clear();
+                                strip.reserve(n as usize);
+                                for (j, b) in items.chunks_exact(isz).enumerate() {
+                                    let v = load_i64::<BE>(item, b);
+                                    if v != -1 {
+                                        check_index(v, nv, || off(pos + j * isz), ctx)?;
+                                    }
+                                    strip.push(v);
+                                }
+                                push_strips(&mut soup, &strip, off(rec), None, ctx)?;
+                            }
+                            _ => {}
+                        }
+                        pos = end;
+                    }
+                }
+            }
+            match role {
+                Role::Vertex(_) => soup.positions.push(p3),
+                Role::Faces(_) => close_face(&mut soup, face_start, off(rec), None, ctx)?,
+                _ => {}
+            }
+        }
+    }
+    Ok(soup)
+}
+
+/// Size of a scalar, or of a list's count (its minimum size).
+fn prop_min_size(k: Kind) -> usize {
+    match k {
+        Kind::Scalar(t) => t.size(),
+        Kind::List { count, .. } => count.size(),
+    }
+}
+
+/// Decodes fixed-size vertex records; `data` holds exactly `count` records.
+fn read_vertices_fixed<const BE: bool>(
+    data: &[u8],
+    base: usize,
+    el: &Element,
+    xyz: [usize; 3],
+    stride: usize,
+    soup: &mut PolygonSoup,
+    ctx: Ctx<'_>,
+) -> Result<(), IoError> {
+    let mut offs = [0usize; 3];
+    let mut types = [Scalar::F32; 3];
+    for axis in 0..3 {
+        offs[axis] = el.props[..xyz[axis]]
+            .iter()
+            .map(|p| prop_min_size(p.kind))
+            .sum();
+        if let Kind::Scalar(t) = el.props[xyz[axis]].kind {
+            types[axis] = t;
+        }
+    }
+    soup.positions.reserve(data.len() / stride);
+    // Monomorphized loops for the usual all-float / all-double layouts.
+    match types {
+        [Scalar::F32, Scalar::F32, Scalar::F32] => {
+            vertex_loop(data, base, offs, stride, soup, ctx, |_, b| {
+                f64::from(load_f32::<BE>(b))
+            })
+        }
+        [Scalar::F64, Scalar::F64, Scalar::F64] => {
+            vertex_loop(data, base, offs, stride, soup, ctx, |_, b| {
+                let a = arr::<8>(b);
+                if BE {
+                    f64::from_be_bytes(a)
+                } else {
+                    f64::from_le_bytes(a)
+                }
+            })
+        }
+        _ => vertex_loop(data, base, offs, stride, soup, ctx, |axis, b| {
+            load_f64::<BE>(types[axis], b)
+        }),
+    }
+}
+
+#[inline(always)]
+fn load_f32<const BE: bool>(b: &[u8]) -> f32 {
+    let a = arr::<4>(b);
+    if BE {
+        f32::from_be_bytes(a)
+    } else {
+        f32::from_le_bytes(a)
+    }
+}
+
+#[inline(always)]
+fn vertex_loop(
+    data: &[u8],
+    base: usize,
+    offs: [usize; 3],
+    stride: usize,
+    soup: &mut PolygonSoup,
+    ctx: Ctx<'_>,
+    load: impl Fn(usize, &[u8]) -> f64,
+) -> Result<(), IoError> {
+    for (i, rec) in data.chunks_exact(stride).enumerate() {
+        let x = load(0, &rec[offs[0]..]);
+        let y = load(1, &rec[offs[1]..]);
+        let z = load(2, &rec[offs[2]..]);
+        let p = [x, y, z];
+        if !(x.is_finite() && y.is_finite() && z.is_finite()) {
+            let axis = p.iter().position(|c| !c.is_finite()).unwrap_or(0);
+            return Err(ctx.non_finite(off(base + i * stride + offs[axis]), p[axis]));
+        }
+        soup.positions.push(p);
+    }
+    Ok(())
+}
+
+/// Reads a `face` element whose only property is the index list; returns
+/// the position after it.
+#[allow(clippy::too_many_arguments)]
+fn faces_single_list<const BE: bool>(
+    buf: &[u8],
+    pos: usize,
+    el: &Element,
+    count: Scalar,
+    item: Scalar,
+    nv: u64,
+    soup: &mut PolygonSoup,
+    ctx: Ctx<'_>,
+) -> Result<usize, IoError> {
+    let i32_item = |b: &[u8]| {
+        let a = arr::<4>(b);
+        i64::from(if BE {
+            i32::from_be_bytes(a)
+        } else {
+            i32::from_le_bytes(a)
+        })
+    };
+    let u32_item = |b: &[u8]| {
+        let a = arr::<4>(b);
+        i64::from(if BE {
+            u32::from_be_bytes(a)
+        } else {
+            u32::from_le_bytes(a)
+        })
+    };
+    let u8_count = |b: &[u8]| i64::from(b[0]);
+    let any_count = |b: &[u8]| load_i64::<BE>(count, b);
+    let any_item = |b: &[u8]| load_i64::<BE>(item, b);
+    let (cs, is) = (count.size(), item.size());
+    match (count, item) {
+        (Scalar::U8, Scalar::I32) => {
+            face_loop(buf, pos, el, u8_count, 1, i32_item, 4, nv, soup, ctx)
+        }
+        (Scalar::U8, Scalar::U32) => {
+            face_loop(buf, pos, el, u8_count, 1, u32_item, 4, nv, soup, ctx)
+        }
+        _ => face_loop(buf, pos, el, any_count, cs, any_item, is, nv, soup, ctx),
+    }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn face_loop(
+    buf: &[u8],
+    mut pos: usize,
+    el: &Element,
+    load_count: impl Fn(&[u8]) -> i64,
+    cs: usize,
+    load_item: impl Fn(&[u8]) -> i64,
+    is: usize,
+    nv: u64,
+    soup: &mut PolygonSoup,
+    ctx: Ctx<'_>,
+) -> Result<usize, IoError> {
+    for r in 0..el.count {
+        let rec = pos;
+        let Some(cb) = buf.get(pos..pos + cs) else {
+            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+        };
+        let n = load_count(cb);
+        if n < 0 {
+            return Err(ctx.parse(off(pos), format!("negative list length {n}")));
+        }
+        pos += cs;
+        let end = (n as u64)
+            .checked_mul(is as u64)
+            .and_then(|bytes| (pos as u64).checked_add(bytes))
+            .filter(|&end| end <= buf.len() as u64);
+        let Some(end) = end else {
+            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+        };
+        let end = end as usize;
+        let start = soup.face_indices.len();
+        for (j, b) in buf[pos..end].chunks_exact(is).enumerate() {
+            let v = load_item(b);
+            if v < 0 || v as u64 >= nv {
+                return Err(ctx.index(off(pos + j * is), v, nv));
+            }
+            soup.face_indices.push(v as u32);
+        }
+        close_face(soup, start, off(rec), None, ctx)?;
+        pos = end;
+    }
+    Ok(pos)
+}
+
+fn read_ascii(
+    buf: &[u8],
+    hdr: &Header,
+    roles: &[Role],
+    nv: u64,
+    ctx: Ctx<'_>,
+) -> Result<PolygonSoup, IoError> {
+    let mut soup = PolygonSoup::new();
+    let mut lx = Lexer::new(buf);
+    lx.pos = hdr.body;
+    lx.line = hdr.body_line;
+    let mut strip: Vec<i64> = Vec::new();
+    for (el, &role) in hdr.elements.iter().zip(roles) {
+        if el.props.is_empty() {
+            continue;
+        }
+        let remaining = buf.len().saturating_sub(lx.pos);
+        let cap = usize::try_from(el.count).unwrap_or(usize::MAX);
+        match role {
+            Role::Vertex(_) => soup.positions.reserve(cap.min(remaining / 6)),
+            Role::Faces(_) => {
+                let cap = cap.min(remaining / 8);
+                soup.face_offsets.reserve(cap);
+                soup.face_lines.reserve(cap);
+                soup.face_indices.reserve(cap * 3);
+            }
+            _ => {}
+        }
+        for r in 0..el.count {
+            lx.skip_space(None);
+            if lx.is_eof() {
+                return Err(ctx.eof(lx.at(), record_name(el, r)));
+            }
+            let line = lx.line_u32();
+            let rec_at = lx.at();
+            let face_start = soup.face_indices.len();
+            let mut p3 = [0.0f64; 3];
+            for (pi, p) in el.props.iter().enumerate() {
+                lx.skip_space(None);
+                match p.kind {
+                    Kind::Scalar(_) => {
+                        let axis = match role {
+                            Role::Vertex(xyz) => xyz.iter().position(|&k| k == pi),
+                            _ => None,
+                        };
+                        if let Some(axis) = axis {
+                            p3[axis] = match lx.f64() {
+                                Ok(v) if v.is_finite() => v,
+                                Ok(v) => return Err(ctx.non_finite(lx.at(), v)),
+                                Err(e) => {
+                                    let what = format!("vertex {}", show(&p.name));
+                                    return Err(lx.num_error(ctx, e, &what));
+                                }
+                            };
+                        } else if lx.token().is_empty() {
+                            return Err(ctx.eof(lx.at(), record_name(el, r)));
+                        }
+                    }
+                    Kind::List { .. } => {
+                        let n = match lx.u64() {
+                            Ok(n) => n,
+                            Err(e) => return Err(lx.num_error(ctx, e, "list length")),
+                        };
+                        let target = matches!(role, Role::Faces(k) | Role::Strips(k) if k == pi);
+                        strip.clear();
+                        for _ in 0..n {
+                            lx.skip_space(None);
+                            if !target {
+                                if lx.token().is_empty() {
+                                    return Err(ctx.eof(lx.at(), record_name(el, r)));
+                                }
+                                continue;
+                            }
+                            let v = match lx.i64() {
+                                Ok(v) => v,
+                                Err(e) => return Err(lx.num_error(ctx, e, "vertex index")),
+                            };
+                            if let Role::Strips(_) = role {
+                                if v != -1 {
+                                    check_index(v, nv, || lx.at(), ctx)?;
+                                }
+                                strip.push(v);
+                            } else {
+                                let i = check_index(v, nv, || lx.at(), ctx)?;
+                                soup.face_indices.push(i);
+                            }
+                        }
+                        if target && matches!(role, Role::Strips(_)) {
+                            push_strips(&mut soup, &strip, rec_at, Some(line), ctx)?;
+                        }
+                    }
+                }
+            }
+            match role {
+                Role::Vertex(_) => soup.positions.push(p3),
+                Role::Faces(_) => close_face(&mut soup, face_start, rec_at, Some(line), ctx)?,
+                _ => {}
+            }
+        }
+    }
+    Ok(soup)
+}
