@@ -7,6 +7,7 @@
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::topology::SurfaceMesh;
+use std::borrow::Cow;
 
 /// At most this many problems are listed by [`inspect`] (counts are always complete).
 pub const MAX_LISTED_PROBLEMS: usize = 100;
@@ -94,7 +95,7 @@ pub fn build(
         vertex_old_to_new: std::mem::take(&mut p.old_to_new),
     };
     let mesh = if report.reoriented_faces > 0 {
-        let mut oriented = std::mem::take(&mut p.remapped);
+        let mut oriented = std::mem::take(&mut p.remapped).into_owned();
         for (t, &flip) in oriented.iter_mut().zip(&p.flip) {
             if flip {
                 t.swap(1, 2);
@@ -133,10 +134,11 @@ pub fn build_topology(
 }
 
 /// Internal state of the pairing pass.
-struct Pairing {
+struct Pairing<'a> {
     inspection: Inspection,
-    /// Triangles in new vertex ids (faces with bad indices are kept with `u32::MAX`).
-    remapped: Vec<[u32; 3]>,
+    /// Triangles in new vertex ids (faces with bad indices are kept with `u32::MAX`); the input
+    /// itself when nothing needed renumbering.
+    remapped: Cow<'a, [[u32; 3]]>,
     old_to_new: Vec<VertexId>,
     new_to_old: Vec<u32>,
     dropped: Vec<u32>,
@@ -148,8 +150,8 @@ struct Pairing {
     flip: Vec<bool>,
 }
 
-impl Pairing {
-    fn run(vertex_count: usize, triangles: &[[u32; 3]]) -> Self {
+impl<'a> Pairing<'a> {
+    fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
         let mut ins = Inspection {
             faces: triangles.len(),
             orientable: true,
@@ -157,7 +159,7 @@ impl Pairing {
         };
         let mut p = Pairing {
             inspection: Inspection::default(),
-            remapped: Vec::new(),
+            remapped: Cow::Borrowed(&[]),
             old_to_new: Vec::new(),
             new_to_old: Vec::new(),
             dropped: Vec::new(),
@@ -220,17 +222,22 @@ impl Pairing {
         let nv = new_to_old.len();
         ins.vertices = nv;
         ins.dropped_vertices = p.dropped.len();
-        let remapped: Vec<[u32; 3]> = triangles
-            .iter()
-            .zip(&valid)
-            .map(|(t, &ok)| {
-                if ok {
-                    t.map(|i| old_to_new[i as usize].0)
-                } else {
-                    [u32::MAX; 3]
-                }
-            })
-            .collect();
+        let identity = p.dropped.is_empty() && valid.iter().all(|&ok| ok);
+        let remapped: Cow<'a, [[u32; 3]]> = if identity {
+            Cow::Borrowed(triangles)
+        } else {
+            triangles
+                .iter()
+                .zip(&valid)
+                .map(|(t, &ok)| {
+                    if ok {
+                        t.map(|i| old_to_new[i as usize].0)
+                    } else {
+                        [u32::MAX; 3]
+                    }
+                })
+                .collect()
+        };
 
         // 2. Counting sort of corners by their smaller endpoint.
         let nf = triangles.len();
@@ -245,24 +252,21 @@ impl Pairing {
             bucket_start[v + 1] += bucket_start[v];
         }
         let mut fill = bucket_start.clone();
-        let mut sorted = vec![0u32; bucket_start[nv] as usize];
+        // (larger endpoint, corner) pairs, bucketed by the smaller endpoint.
+        let mut sorted = vec![(0u32, 0u32); bucket_start[nv] as usize];
         for (f, t) in remapped
             .iter()
             .enumerate()
             .filter(|(_, t)| t[0] != u32::MAX)
         {
             for i in 0..3 {
-                let lo = t[i].min(t[(i + 1) % 3]);
-                sorted[fill[lo as usize] as usize] = (3 * f + i) as u32;
+                let (a, b) = (t[i], t[(i + 1) % 3]);
+                let lo = a.min(b);
+                sorted[fill[lo as usize] as usize] = (a.max(b), (3 * f + i) as u32);
                 fill[lo as usize] += 1;
             }
         }
         drop(fill);
-        let hi_of = |c: u32| {
-            let t = &remapped[(c / 3) as usize];
-            let i = (c % 3) as usize;
-            t[i].max(t[(i + 1) % 3])
-        };
         let third_of = |c: u32| remapped[(c / 3) as usize][((c % 3) as usize + 2) % 3];
         // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
         // the smallest edge of the face.
@@ -284,17 +288,20 @@ impl Pairing {
         let mut halfedge_corner: Vec<u32> = Vec::with_capacity(3 * nf);
         let mut same_direction: Vec<bool> = Vec::with_capacity(3 * nf / 2);
         let mut uf = UnionFind::new(nf);
+        let mut group: Vec<u32> = Vec::new();
         for v in 0..nv {
             let bucket = &mut sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
-            bucket.sort_unstable_by_key(|&c| (hi_of(c), c));
+            bucket.sort_unstable();
             let mut i = 0;
             while i < bucket.len() {
-                let hi = hi_of(bucket[i]);
+                let hi = bucket[i].0;
                 let mut j = i + 1;
-                while j < bucket.len() && hi_of(bucket[j]) == hi {
+                while j < bucket.len() && bucket[j].0 == hi {
                     j += 1;
                 }
-                let group = &bucket[i..j];
+                group.clear();
+                group.extend(bucket[i..j].iter().map(|&(_, c)| c));
+                let group = &group[..];
                 ins.edges += 1;
                 let edge = [new_to_old[v], new_to_old[hi as usize]];
                 for w in group.windows(2) {
@@ -355,7 +362,7 @@ impl Pairing {
             valid.iter().all(|&ok| ok) && ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
         if all_paired {
             let mut corners = vec![0u32; nv];
-            for t in &remapped {
+            for t in remapped.iter() {
                 for &v in t {
                     corners[v as usize] += 1;
                 }
@@ -422,8 +429,10 @@ impl Pairing {
         }
 
         // 6. Orientation by breadth-first search across manifold edges.
+        // Skipped when every edge already joins opposite directions (the usual case).
         let mut flip = vec![false; nf];
-        let mut seen = vec![false; nf];
+        let consistent = !same_direction.iter().any(|&same| same);
+        let mut seen = vec![consistent; nf];
         let mut queue: Vec<u32> = Vec::new();
         for start in 0..nf {
             if seen[start] || !valid[start] {
