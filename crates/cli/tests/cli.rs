@@ -268,3 +268,61 @@ fn info_reads_polygon_meshes() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(stdout.contains("line 13: boundary edge"), "{stdout}");
 }
+
+#[test]
+fn every_generator_gives_a_valid_surface_of_its_genus() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: &[(&[&str], i64)] = &[
+        (&["tetrahedron"], 0),
+        (&["icosphere", "--subdivisions", "2"], 0),
+        (
+            &[
+                "torus", "--m", "8", "--n", "6", "--flips", "40", "--seed", "3",
+            ],
+            1,
+        ),
+        (
+            &["genus", "--genus", "3", "--size", "1", "--subdivide", "1"],
+            3,
+        ),
+        (
+            &[
+                "cavity-box",
+                "--cavities",
+                "8",
+                "--holes",
+                "2",
+                "--triangles",
+                "5000",
+                "--splits",
+                "30",
+            ],
+            2,
+        ),
+    ];
+    for (k, (args, genus)) in cases.iter().enumerate() {
+        let out = dir.path().join(format!("g{k}.off"));
+        surftopo()
+            .arg("generate")
+            .args(*args)
+            .arg("-o")
+            .arg(&out)
+            .assert()
+            .success();
+        let v = info_json(&out, &["--strict"]);
+        assert_eq!(v["genus"], *genus, "{args:?}");
+        assert_eq!(v["simplicial"], true, "{args:?}");
+    }
+    // Same seed, same file; another seed, another file.
+    let run = |seed: &str, name: &str| {
+        let out = dir.path().join(name);
+        surftopo()
+            .args(["generate", "torus", "--flips", "50", "--seed", seed, "-o"])
+            .arg(&out)
+            .assert()
+            .success();
+        std::fs::read(out).unwrap()
+    };
+    assert_eq!(run("5", "a.obj"), run("5", "b.obj"));
+    assert_ne!(run("5", "c.obj"), run("6", "d.obj"));
+}

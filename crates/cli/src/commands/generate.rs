@@ -25,6 +25,29 @@ pub enum Kind {
         #[arg(long, default_value_t = 12)]
         n: u32,
     },
+    /// A closed surface of any genus: a brick with `genus` through-holes in a grid.
+    Genus {
+        /// The genus.
+        #[arg(long, default_value_t = 2)]
+        genus: u32,
+        /// Resolution: lattice steps per pit side (triangles grow with its square).
+        #[arg(long, default_value_t = 2)]
+        size: u32,
+    },
+    /// The papers' brick with square pits: cavities (genus unchanged) and through-holes (genus +1
+    /// each), refined to about the requested number of triangles (irreducible-triangulations paper,
+    /// Section 5.1, Figure 14 and Tables 3-5).
+    CavityBox {
+        /// Pits with a floor.
+        #[arg(long, default_value_t = 3844)]
+        cavities: u32,
+        /// Pits through the brick.
+        #[arg(long, default_value_t = 0)]
+        holes: u32,
+        /// Target number of triangles (the nearest reachable size is used).
+        #[arg(long, default_value_t = 100_000)]
+        triangles: u64,
+    },
 }
 
 /// Options common to every generator.
@@ -63,14 +86,55 @@ pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
             if m < 3 || n < 3 {
                 return Err(crate::failure::invalid("torus: m and n must be at least 3"));
             }
+            check_size(2 * u64::from(m) * u64::from(n))?;
             generators::torus(m, n)
+        }
+        Kind::Genus { genus, size } => {
+            // F = 4 W^2 + 16 W s + 12 g s^2 with W = (2k + 1) s, k = ceil(sqrt(g)) (see genus_surface).
+            let (g, s) = (u64::from(genus), u64::from(size.max(1)));
+            let k = g.isqrt() + u64::from(g.isqrt().pow(2) < g);
+            let w = (2 * k + 1) * s;
+            check_size(4 * w * w + 16 * w * s + 12 * g * s * s)?;
+            generators::genus_surface(genus, size)
+        }
+        Kind::CavityBox {
+            cavities,
+            holes,
+            triangles,
+        } => {
+            check_size(triangles)?;
+            check_size(generators::CavityBox::fit(cavities, holes, triangles).triangle_count())?;
+            generators::cavity_box(cavities, holes, triangles)
         }
     })
 }
 
-/// Applies the modifiers to a generated surface.
-pub fn modify(surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Surface> {
-    let _ = modifiers;
+/// Refuses sizes beyond what `u32` ids (and this machine) can hold.
+fn check_size(triangles: u64) -> anyhow::Result<()> {
+    const MAX_TRIANGLES: u64 = 200_000_000;
+    if triangles > MAX_TRIANGLES {
+        return Err(crate::failure::invalid(format!(
+            "about {triangles} triangles asked for; at most {MAX_TRIANGLES} are supported"
+        )));
+    }
+    Ok(())
+}
+
+/// Applies the modifiers to a generated surface: subdivision, then flips, then splits.
+pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Surface> {
+    if modifiers.subdivide > 0 {
+        let grown = (surface.mesh.face_count() as u64)
+            .saturating_mul(4u64.saturating_pow(modifiers.subdivide));
+        check_size(grown)?;
+        surface = generators::subdivide_midpoint(&surface, modifiers.subdivide);
+    }
+    if modifiers.flips > 0 {
+        surface = generators::random_flips(&surface, modifiers.flips, modifiers.seed);
+    }
+    if modifiers.splits > 0 {
+        check_size(surface.mesh.face_count() as u64 + 2 * modifiers.splits as u64)?;
+        surface = generators::random_vertex_splits(&surface, modifiers.splits, modifiers.seed);
+    }
     Ok(surface)
 }
 
