@@ -172,7 +172,7 @@ impl<'a> Pairing<'a> {
             p.inspection = ins;
             return p;
         }
-        if triangles.len().saturating_mul(3) >= u32::MAX as usize
+        if triangles.len().saturating_mul(3) >= (u32::MAX >> 1) as usize
             || vertex_count >= u32::MAX as usize
         {
             ins.push(BuildError::TooLarge {
@@ -252,22 +252,23 @@ impl<'a> Pairing<'a> {
             bucket_start[v + 1] += bucket_start[v];
         }
         let mut fill = bucket_start.clone();
-        // (larger endpoint, corner) pairs, bucketed by the smaller endpoint.
-        let mut sorted = vec![(0u32, 0u32); bucket_start[nv] as usize];
+        // (larger endpoint, corner << 1 | forward, opposite vertex), bucketed by the smaller endpoint:
+        // grouping then reads nothing at random.
+        let mut sorted = vec![(0u32, 0u32, 0u32); bucket_start[nv] as usize];
         for (f, t) in remapped
             .iter()
             .enumerate()
             .filter(|(_, t)| t[0] != u32::MAX)
         {
             for i in 0..3 {
-                let (a, b) = (t[i], t[(i + 1) % 3]);
+                let (a, b, opposite) = (t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
                 let lo = a.min(b);
-                sorted[fill[lo as usize] as usize] = (a.max(b), (3 * f + i) as u32);
+                let corner = ((3 * f + i) as u32) << 1 | u32::from(a < b);
+                sorted[fill[lo as usize] as usize] = (a.max(b), corner, opposite);
                 fill[lo as usize] += 1;
             }
         }
         drop(fill);
-        let third_of = |c: u32| remapped[(c / 3) as usize][((c % 3) as usize + 2) % 3];
         // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
         // the smallest edge of the face.
         let is_smallest_edge = |c: u32, lo: u32, hi: u32| {
@@ -277,18 +278,13 @@ impl<'a> Pairing<'a> {
                 .min();
             smallest == Some((lo, hi))
         };
-        let forward = |c: u32| {
-            let t = &remapped[(c / 3) as usize];
-            let i = (c % 3) as usize;
-            t[i] < t[(i + 1) % 3]
-        };
 
         // 3. Group corners by edge; assign half-edge pairs to edges in two faces.
         let mut corner_halfedge = vec![HalfedgeId::INVALID; 3 * nf];
         let mut halfedge_corner: Vec<u32> = Vec::with_capacity(3 * nf);
         let mut same_direction: Vec<bool> = Vec::with_capacity(3 * nf / 2);
         let mut uf = UnionFind::new(nf);
-        let mut group: Vec<u32> = Vec::new();
+        let mut group: Vec<(u32, bool, u32)> = Vec::new();
         for v in 0..nv {
             let bucket = &mut sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
             bucket.sort_unstable();
@@ -299,54 +295,49 @@ impl<'a> Pairing<'a> {
                 while j < bucket.len() && bucket[j].0 == hi {
                     j += 1;
                 }
+                // (corner, forward, opposite vertex) of each face on this edge.
                 group.clear();
-                group.extend(bucket[i..j].iter().map(|&(_, c)| c));
-                let group = &group[..];
+                group.extend(
+                    bucket[i..j]
+                        .iter()
+                        .map(|&(_, c, opposite)| (c >> 1, c & 1 == 1, opposite)),
+                );
                 ins.edges += 1;
                 let edge = [new_to_old[v], new_to_old[hi as usize]];
                 for w in group.windows(2) {
-                    uf.union(w[0] / 3, w[1] / 3);
+                    uf.union(w[0].0 / 3, w[1].0 / 3);
                 }
-                match group.len() {
-                    1 => {
-                        ins.boundary_edges += 1;
-                        ins.push(BuildError::BoundaryEdge {
-                            edge,
-                            face: (group[0] / 3) as usize,
+                // A repeated face shares this edge and its opposite vertex with an earlier one.
+                for (k, &(c2, _, opposite)) in group.iter().enumerate().skip(1) {
+                    let first = group[..k].iter().find(|g| g.2 == opposite);
+                    if let Some(&(c1, _, _)) = first.filter(|_| is_smallest_edge(c2, v as u32, hi))
+                    {
+                        ins.push(BuildError::DuplicateFace {
+                            face: (c2 / 3) as usize,
+                            duplicate_of: (c1 / 3) as usize,
                         });
                     }
-                    2 => {
-                        let (c1, c2) = (group[0], group[1]);
-                        if third_of(c1) == third_of(c2) && is_smallest_edge(c2, v as u32, hi) {
-                            ins.push(BuildError::DuplicateFace {
-                                face: (c2 / 3) as usize,
-                                duplicate_of: (c1 / 3) as usize,
-                            });
-                        }
+                }
+                let face = (group[0].0 / 3) as usize;
+                match group[..] {
+                    [_] => {
+                        ins.boundary_edges += 1;
+                        ins.push(BuildError::BoundaryEdge { edge, face });
+                    }
+                    [(c1, forward1, _), (c2, forward2, _)] => {
                         let h = halfedge_corner.len();
                         corner_halfedge[c1 as usize] = HalfedgeId::new(h);
                         corner_halfedge[c2 as usize] = HalfedgeId::new(h + 1);
                         halfedge_corner.push(c1);
                         halfedge_corner.push(c2);
-                        same_direction.push(forward(c1) == forward(c2));
+                        same_direction.push(forward1 == forward2);
                     }
-                    n => {
-                        // A repeated face shows as an edge in three or more faces: name it as such.
-                        for (k, &c2) in group.iter().enumerate().skip(1) {
-                            let first = group[..k].iter().find(|&&c1| third_of(c1) == third_of(c2));
-                            if let Some(&c1) = first.filter(|_| is_smallest_edge(c2, v as u32, hi))
-                            {
-                                ins.push(BuildError::DuplicateFace {
-                                    face: (c2 / 3) as usize,
-                                    duplicate_of: (c1 / 3) as usize,
-                                });
-                            }
-                        }
+                    _ => {
                         ins.non_manifold_edges += 1;
                         ins.push(BuildError::NonManifoldEdge {
                             edge,
-                            face_count: n,
-                            face: (group[0] / 3) as usize,
+                            face_count: group.len(),
+                            face,
                         });
                     }
                 }
@@ -360,6 +351,7 @@ impl<'a> Pairing<'a> {
         //    when every edge has two faces; the walk ignores orientation).
         let all_paired =
             valid.iter().all(|&ok| ok) && ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
+        let consistent = !same_direction.iter().any(|&same| same);
         if all_paired {
             let mut corners = vec![0u32; nv];
             for t in remapped.iter() {
@@ -382,9 +374,11 @@ impl<'a> Pairing<'a> {
                     steps += 1;
                     let h = corner_halfedge[leave as usize];
                     let entered = halfedge_corner[h.twin().idx()];
-                    let t = &remapped[(entered / 3) as usize];
                     // `entered` is one of the two corners at v in the next face; leave by the other.
-                    leave = if t[(entered % 3) as usize] == v as u32 {
+                    // (With a consistent orientation, `entered` always ends at v.)
+                    let starts_at_v = !consistent
+                        && remapped[(entered / 3) as usize][(entered % 3) as usize] == v as u32;
+                    leave = if starts_at_v {
                         prev_corner(entered)
                     } else {
                         entered - entered % 3 + (entered % 3 + 1) % 3
@@ -431,7 +425,6 @@ impl<'a> Pairing<'a> {
         // 6. Orientation by breadth-first search across manifold edges.
         // Skipped when every edge already joins opposite directions (the usual case).
         let mut flip = vec![false; nf];
-        let consistent = !same_direction.iter().any(|&same| same);
         let mut seen = vec![consistent; nf];
         let mut queue: Vec<u32> = Vec::new();
         for start in 0..nf {

@@ -1,0 +1,26 @@
+//! `surftopo-bench`: the project's performance figures, side by side in one run, written to
+//! `results/*.jsonl` and printed as a table. Run with `--release`.
+
+mod read_build;
+
+use clap::{Parser, Subcommand};
+
+/// Benchmarks of surftopo (run with `cargo run --release -p surftopo-bench -- ...`).
+#[derive(Parser)]
+#[command(name = "surftopo-bench", about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Reading OBJ / binary PLY and building the half-edge mesh, at 1M and 4M triangles.
+    ReadBuild(read_build::Options),
+}
+
+fn main() -> anyhow::Result<()> {
+    match Cli::parse().command {
+        Command::ReadBuild(options) => read_build::run(&options),
+    }
+}
