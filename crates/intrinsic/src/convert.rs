@@ -1,0 +1,210 @@
+//! Conversions between [`IntrinsicTriangulation`] (topology + lengths) and [`Portalgon`]
+//! (polygons in the plane + side matching), through `SurfaceMesh::from_gluing`.
+//!
+//! Numbering, both ways: the `k`-th live face is the `k`-th polygon and its side `i` is the face's
+//! half-edge `face_halfedges(f)[i]`; edge `k` of a triangulation built from a gluing is its `k`-th
+//! matched pair (pairs listed by increasing first side); vertex labels are the dense vertex
+//! indices (the Laplacian's row numbers), and a triangulation built from a labelled portalgon gets
+//! exactly those vertex ids back.
+
+use crate::error::PortalgonError;
+use crate::laplacian::dense_vertex_index;
+use crate::portalgon::{Portalgon, SideId, signed_area};
+use crate::triangulation::IntrinsicTriangulation;
+use surftopo_mesh::{EdgeId, FaceId, Renumbering, Side, SurfaceMesh, VertexId};
+
+/// Triangles glued side to side, as read from a file or a portalgon.
+pub(crate) struct TriangleGluing<'a> {
+    /// Side lengths of each triangle (side i from corner i to corner i + 1).
+    pub sides: &'a [[f64; 3]],
+    /// The matched pairs of sides.
+    pub pairs: &'a [(Side, Side)],
+    /// Vertex label of each corner, if known.
+    pub labels: Option<&'a [[u32; 3]]>,
+    /// Input polygon index of each triangle, for error messages.
+    pub polygon_index: &'a [usize],
+    /// Relative tolerance on matched lengths.
+    pub tolerance: f64,
+}
+
+/// Builds the triangulation of a gluing: lengths of matched sides must agree within the tolerance
+/// (the edge gets their mean), the gluing must close up into a connected surface, and labels (if
+/// any) must give one label per vertex, a permutation of `0..V`. Triangle inequalities are *not*
+/// checked here (degenerate input may still be mollified): see [`IntrinsicTriangulation::validate`].
+pub(crate) fn triangulation_from_gluing(
+    g: &TriangleGluing<'_>,
+) -> Result<IntrinsicTriangulation, PortalgonError> {
+    let len = |s: Side| g.sides[s.face as usize][s.side as usize];
+    for &(s, t) in g.pairs {
+        let bad = |x: Side| x.face as usize >= g.sides.len() || x.side > 2;
+        if bad(s) || bad(t) {
+            continue; // from_gluing names it below
+        }
+        let (la, lb) = (len(s), len(t));
+        if (la - lb).abs() > g.tolerance * la.max(lb) {
+            return Err(PortalgonError::UnequalSides {
+                polygon_a: g.polygon_index[s.face as usize],
+                side_a: s.side as usize,
+                polygon_b: g.polygon_index[t.face as usize],
+                side_b: t.side as usize,
+                length_a: la,
+                length_b: lb,
+                tolerance: g.tolerance,
+            });
+        }
+    }
+    let (mut mesh, corner_vertex) =
+        SurfaceMesh::from_gluing(g.sides.len(), g.pairs).map_err(|e| match e {
+            surftopo_mesh::BuildError::SideUnglued { face, side } => PortalgonError::Unmatched {
+                polygon: g.polygon_index[face],
+                side,
+            },
+            surftopo_mesh::BuildError::SideGluedTwice { face, side } => {
+                PortalgonError::MatchedTwice {
+                    polygon: g.polygon_index.get(face).copied().unwrap_or(face),
+                    side,
+                }
+            }
+            other => PortalgonError::Gluing(other),
+        })?;
+    let lengths: Vec<f64> = g
+        .pairs
+        .iter()
+        .map(|&(s, t)| {
+            let (a, b) = (len(s), len(t));
+            if a == b { a } else { 0.5 * (a + b) }
+        })
+        .collect();
+    if let Some(labels) = g.labels {
+        let vertex_count = mesh.vertex_count();
+        let mut label_of = vec![u32::MAX; vertex_count];
+        let mut vertex_of = vec![u32::MAX; vertex_count];
+        for (c, v) in corner_vertex.iter().enumerate() {
+            let (f, i) = (c / 3, c % 3);
+            let l = labels[f][i];
+            let polygon = g.polygon_index[f];
+            if l as usize >= vertex_count {
+                return Err(PortalgonError::VertexLabels {
+                    polygon,
+                    detail: format!(
+                        "label {l} out of range: the gluing has {vertex_count} vertices"
+                    ),
+                });
+            }
+            if label_of[v.idx()] == u32::MAX {
+                if vertex_of[l as usize] != u32::MAX {
+                    return Err(PortalgonError::VertexLabels {
+                        polygon,
+                        detail: format!("label {l} names two different vertices of the gluing"),
+                    });
+                }
+                label_of[v.idx()] = l;
+                vertex_of[l as usize] = v.0;
+            } else if label_of[v.idx()] != l {
+                return Err(PortalgonError::VertexLabels {
+                    polygon,
+                    detail: format!(
+                        "corner {i} is labelled {l} but the gluing makes it vertex {}",
+                        label_of[v.idx()]
+                    ),
+                });
+            }
+        }
+        let map = Renumbering {
+            vertices: label_of.into_iter().map(VertexId).collect(),
+            edges: (0..mesh.edge_slots()).map(EdgeId::new).collect(),
+            faces: (0..mesh.face_slots()).map(FaceId::new).collect(),
+        };
+        mesh.renumber(&map);
+    }
+    Ok(IntrinsicTriangulation::from_parts(mesh, lengths)?)
+}
+
+impl IntrinsicTriangulation {
+    /// The triangulation of a closed triangular portalgon: side lengths from the corner
+    /// coordinates, matched lengths equal within `tolerance` (relative; the edge gets their mean),
+    /// vertex ids from the labels when every corner is labelled. Face `k` is the `k`-th live
+    /// polygon.
+    ///
+    /// # Errors
+    /// [`PortalgonError::Empty`], [`PortalgonError::NotTriangle`], [`PortalgonError::Unmatched`],
+    /// [`PortalgonError::UnequalSides`], [`PortalgonError::VertexLabels`],
+    /// [`PortalgonError::Gluing`] (not connected).
+    pub fn from_portalgon(p: &Portalgon, tolerance: f64) -> Result<Self, PortalgonError> {
+        let polygons: Vec<_> = p.polygons().collect();
+        if polygons.is_empty() {
+            return Err(PortalgonError::Empty);
+        }
+        let mut rank = vec![u32::MAX; p.polygon_slots()];
+        let mut sides = Vec::with_capacity(polygons.len());
+        let mut labels = Vec::with_capacity(polygons.len());
+        let mut all_labelled = true;
+        for (k, &q) in polygons.iter().enumerate() {
+            let s = p.polygon_sides(q);
+            if s.len() != 3 {
+                return Err(PortalgonError::NotTriangle {
+                    polygon: q.idx(),
+                    sides: s.len(),
+                });
+            }
+            rank[q.idx()] = k as u32;
+            sides.push([0, 1, 2].map(|i| p.side_length(s[i])));
+            let l = [0, 1, 2].map(|i| p.vertex_label(s[i]));
+            all_labelled &= l.iter().all(Option::is_some);
+            labels.push(l.map(|x| x.unwrap_or(u32::MAX)));
+        }
+        let as_side = |s: SideId| Side {
+            face: rank[p.owner(s).idx()],
+            side: p.side_index(s) as u8,
+        };
+        let mut pairs = Vec::with_capacity(p.side_count() / 2);
+        for s in p.sides() {
+            match p.mate(s) {
+                None => {
+                    return Err(PortalgonError::Unmatched {
+                        polygon: p.owner(s).idx(),
+                        side: p.side_index(s),
+                    });
+                }
+                Some(t) if s < t => pairs.push((as_side(s), as_side(t))),
+                Some(_) => {}
+            }
+        }
+        let polygon_index: Vec<usize> = polygons.iter().map(|q| q.idx()).collect();
+        triangulation_from_gluing(&TriangleGluing {
+            sides: &sides,
+            pairs: &pairs,
+            labels: all_labelled.then_some(&labels[..]),
+            polygon_index: &polygon_index,
+            tolerance,
+        })
+    }
+
+    /// The triangular portalgon of this triangulation: each live face laid out in its own plane
+    /// ([`IntrinsicTriangulation::layout_face`]), sides matched along edges, corners labelled with
+    /// dense vertex indices. Returns it with the side of each half-edge (indexed by half-edge id).
+    pub fn to_portalgon(&self) -> (Portalgon, Vec<SideId>) {
+        let mesh = self.mesh();
+        let (dense, _) = dense_vertex_index(self);
+        let mut p = Portalgon::new();
+        let mut side_of = vec![SideId::INVALID; mesh.halfedge_slots()];
+        for f in mesh.faces() {
+            let hs = mesh.face_halfedges(f);
+            let labels = hs.map(|h| dense[mesh.origin(h).idx()]);
+            let q = p.push_polygon(&self.layout_face(f), Some(&labels));
+            for (i, h) in hs.into_iter().enumerate() {
+                side_of[h.idx()] = p.side(q, i);
+            }
+        }
+        for e in mesh.edges() {
+            let h = e.halfedge();
+            p.set_mates(side_of[h.idx()], side_of[h.twin().idx()]);
+        }
+        (p, side_of)
+    }
+}
+
+/// Whether a triangle given by corners runs clockwise (negative signed area).
+pub(crate) fn is_clockwise(corners: &[[f64; 2]]) -> bool {
+    signed_area(corners) < 0.0
+}

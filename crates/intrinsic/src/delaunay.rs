@@ -1,0 +1,199 @@
+//! The intrinsic Delaunay triangulation by edge flipping.
+//!
+//! Bobenko & Springborn, "A discrete Laplace–Beltrami operator for simplicial surfaces", Discrete
+//! Comput. Geom. 38 (2007), Section 2 and Proposition 10: flipping, in any order, every edge whose
+//! two opposite angles sum to more than π reaches a Delaunay triangulation of the surface with the
+//! same vertex set; Indermitte, Liebling, Troyanov & Clémençon (Theor. Comput. Sci. 263, 2001)
+//! proved that the process terminates. The number of flips is *not* bounded by a function of the
+//! number of triangles (Dubois, Section 1.1 and Section 9: the flat torus T_x needs about x flips),
+//! so every run has a flip budget and fails with a typed error instead of running on.
+//!
+//! Numerics (see [`crate::trig`]): the test of an edge is `tan(γ/2) · tan(δ/2) > 1 + tolerance`
+//! with the half-angle tangents from Kahan's ordered factors — relative error a few ulps, no
+//! cancellation even for needles; the new length after a flip comes from a sum of non-negative
+//! terms (`|cd|² = (|ac| - |ad|)² + 4|ac||ad| sin²(θ/2)`). Every new length is checked: a
+//! non-finite length, or new triangles that fail the triangle inequality, stop the run with
+//! [`DelaunayError::NumericalBreakdown`] — that is where double precision ends (e.g. on T_x).
+//!
+//! Flips that create loops or multi-edges are allowed (real intrinsic Delaunay triangulations have
+//! them). An edge whose two sides are the same face is never non-Delaunay (its two opposite angles
+//! are the base angles of an isosceles triangle) and is never flipped.
+
+use crate::error::DelaunayError;
+use crate::mollify::mollify;
+use crate::triangulation::IntrinsicTriangulation;
+use surftopo_mesh::EdgeId;
+
+/// Default [`DelaunayOptions::tolerance`]: an edge is flipped when `tan(γ/2) tan(δ/2)` exceeds
+/// `1 + 1e-10` (γ + δ > π + about 1e-10 radians for well-shaped triangles). Lengths computed by
+/// flips carry rounding errors that grow with the triangles' aspect ratios (on T_x, about
+/// `1e-16 · x³` in relative terms); a tolerance well above them keeps co-circular configurations
+/// from being flipped back and forth. 1e-10 leaves T_x's flip count exact up to x ≈ 10³ (see the
+/// benchmark for where it breaks down).
+pub const DEFAULT_TOLERANCE: f64 = 1e-10;
+
+/// Default flip budget: `10_000_000 + 1000 · edges` (see [`DelaunayOptions::max_flips`]).
+pub fn default_max_flips(edges: usize) -> u64 {
+    10_000_000 + 1000 * edges as u64
+}
+
+/// Options of [`flip_to_delaunay`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DelaunayOptions {
+    /// Stop with [`DelaunayError::MaxFlips`] after this many flips; `None` means
+    /// [`default_max_flips`] of the edge count (so nothing ever runs unbounded).
+    pub max_flips: Option<u64>,
+    /// Mollify degenerate input first ([`crate::mollify()`]) with this ε relative to the mean edge
+    /// length; `None` rejects degenerate input with a [`crate::GeometryError`].
+    pub mollify: Option<f64>,
+    /// Relative tolerance of the Delaunay test (see [`DEFAULT_TOLERANCE`]).
+    pub tolerance: f64,
+}
+
+impl Default for DelaunayOptions {
+    fn default() -> Self {
+        Self {
+            max_flips: None,
+            mollify: None,
+            tolerance: DEFAULT_TOLERANCE,
+        }
+    }
+}
+
+/// What [`flip_to_delaunay`] did.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FlipReport {
+    /// Number of flips.
+    pub flips: u64,
+    /// The δ added to every length by mollification (`None` when not asked; `Some(0.0)` when asked
+    /// but not needed).
+    pub mollify_delta: Option<f64>,
+    /// Edges still not Delaunay up to the tolerance at the end (0 on success; counted independently
+    /// of the work queue).
+    pub non_delaunay_edges: usize,
+}
+
+/// Flips `tri` to an intrinsic Delaunay triangulation of the same surface with the same vertices.
+///
+/// Takes any closed intrinsic triangulation; on success every edge satisfies
+/// `tan(γ/2) tan(δ/2) <= 1 + tolerance`, the surface (total area, every vertex's angle sum) is
+/// unchanged up to rounding, and edge ids are kept (a flip keeps its edge id). Work: one test per
+/// edge (a sweep in id order), then O(1) per flip (each flip re-queues the four edges of its quad
+/// on a stack, emptied before the sweep moves on); the number of flips is finite but unbounded in
+/// the input size.
+///
+/// # Errors
+/// [`DelaunayError::Geometry`] for unusable input (zero or non-finite length, violated triangle
+/// inequality, zero-area face) unless `mollify` is set; [`DelaunayError::MaxFlips`] when the budget
+/// is exhausted (the triangulation is left valid, partly flipped);
+/// [`DelaunayError::NumericalBreakdown`] when double precision no longer yields valid triangles;
+/// [`DelaunayError::InvalidMollify`], [`DelaunayError::InvalidTolerance`].
+pub fn flip_to_delaunay(
+    tri: &mut IntrinsicTriangulation,
+    options: &DelaunayOptions,
+) -> Result<FlipReport, DelaunayError> {
+    let tol = options.tolerance;
+    if !(tol.is_finite() && tol >= 0.0) {
+        return Err(DelaunayError::InvalidTolerance(tol));
+    }
+    let mut report = FlipReport::default();
+    if let Some(eps) = options.mollify {
+        report.mollify_delta = Some(mollify(tri, eps)?);
+    }
+    // Validation and the half-angle cache in one pass: t2[h] = tan²(θ/2) of the angle opposite h.
+    for e in tri.mesh().edges() {
+        let value = tri.length(e);
+        if !(value.is_finite() && value > 0.0) {
+            tri.validate()?;
+        }
+    }
+    let mut t2 = vec![f64::NAN; tri.mesh().halfedge_slots()];
+    for f in tri.mesh().faces() {
+        let smallest = tri.store_face_tan_half_sq(f, &mut t2);
+        if smallest.is_nan() || smallest <= 0.0 {
+            tri.validate()?;
+        }
+    }
+    let max_flips = options
+        .max_flips
+        .unwrap_or_else(|| default_max_flips(tri.mesh().edge_count()));
+    let bound = (1.0 + tol) * (1.0 + tol);
+
+    // A sweep over the edges in id order; each flip pushes the four edges of its quad on a stack,
+    // emptied before the sweep goes on. Every edge is thus tested after its last change.
+    let slots = tri.mesh().edge_slots();
+    let mut queued = vec![false; slots];
+    let mut stack: Vec<EdgeId> = Vec::new();
+    for sweep in 0..slots {
+        let first = EdgeId::new(sweep);
+        if !tri.mesh().is_edge_live(first) {
+            continue;
+        }
+        let mut next = Some(first);
+        while let Some(e) = next {
+            let h = e.halfedge();
+            let t = h.twin();
+            let mesh = tri.mesh();
+            let product = t2[h.idx()] * t2[t.idx()];
+            if product > bound && mesh.face(h) != mesh.face(t) {
+                if report.flips >= max_flips {
+                    return Err(DelaunayError::MaxFlips {
+                        flips: report.flips,
+                        pending: stack.len() + 1,
+                    });
+                }
+                // Quad a -> b with c on the left, d on the right; the angles at a are opposite
+                // next(h) (in the left triangle) and prev(t) (in the right one).
+                let (ca, ad) = (
+                    tri.halfedge_length(mesh.prev(h)),
+                    tri.halfedge_length(mesh.next(t)),
+                );
+                let length =
+                    crate::trig::chord(t2[mesh.next(h).idx()], t2[mesh.prev(t).idx()], ca, ad);
+                if !(length.is_finite() && length > 0.0) {
+                    return Err(DelaunayError::NumericalBreakdown {
+                        edge: e.0,
+                        flips: report.flips,
+                        length,
+                    });
+                }
+                tri.apply_flip(e, length);
+                let (f0, f1) = (tri.mesh().face(h), tri.mesh().face(t));
+                let s0 = tri.store_face_tan_half_sq(f0, &mut t2);
+                let s1 = tri.store_face_tan_half_sq(f1, &mut t2);
+                if s0.is_nan() || s0 <= 0.0 || s1.is_nan() || s1 <= 0.0 {
+                    // The new triangles fail the triangle inequality: rounding has taken over.
+                    return Err(DelaunayError::NumericalBreakdown {
+                        edge: e.0,
+                        flips: report.flips,
+                        length,
+                    });
+                }
+                report.flips += 1;
+                let mesh = tri.mesh();
+                for g in [mesh.next(h), mesh.prev(h), mesh.next(t), mesh.prev(t)] {
+                    let ge = g.edge();
+                    if !queued[ge.idx()] {
+                        queued[ge.idx()] = true;
+                        stack.push(ge);
+                    }
+                }
+            }
+            next = stack.pop();
+            if let Some(e) = next {
+                queued[e.idx()] = false;
+            }
+        }
+    }
+    // Counted afresh over every edge, independently of the work queue.
+    let mesh = tri.mesh();
+    report.non_delaunay_edges = mesh
+        .edges()
+        .filter(|&e| {
+            let h = e.halfedge();
+            let p = t2[h.idx()] * t2[h.twin().idx()];
+            mesh.face(h) != mesh.face(h.twin()) && (p.is_nan() || p > bound)
+        })
+        .count();
+    Ok(report)
+}

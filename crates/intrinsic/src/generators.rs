@@ -1,0 +1,130 @@
+//! Test and benchmark surfaces: the flat torus T_x (Dubois, Section 9), sheared tori, and random
+//! isometric re-triangulations by intrinsic flips.
+
+use crate::convert::{TriangleGluing, triangulation_from_gluing};
+use crate::error::{PortalgonError, SoupError};
+use crate::triangulation::IntrinsicTriangulation;
+use rand::RngExt;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use surftopo_mesh::generators::Surface;
+use surftopo_mesh::{EdgeId, Side};
+
+/// The flat torus T_x of Section 9, refined `m × m`.
+///
+/// T_x is `R² / Λ` with Λ spanned by `u = (1, 0)` and `w = (x, 2)`: two triangles, the first with
+/// corners `(0, 0)`, `(1, 0)`, `(x, 2)`, the second its image under the half-turn about the middle
+/// of the side from `(1, 0)` to `(x, 2)`, each side glued to the corresponding side of the other
+/// (one vertex, three edges). With `m > 1` the same torus is cut into the `m × m` grid of
+/// parallelograms spanned by `u/m` and `w/m`, each split into two triangles along its
+/// `u/m → w/m` diagonal, like the original: `m²` vertices (all flat), `3m²` edges, `2m²` faces.
+/// Triangle `2(jm + i)` has corners `p(i, j), p(i+1, j), p(i, j+1)`, triangle `2(jm + i) + 1` has
+/// `p(i+1, j), p(i+1, j+1), p(i, j+1)`, where `p(i, j) = (i u + j w) / m`.
+///
+/// For integer x the flip algorithm needs exactly `x - 1` flips on T_x (m = 1) and ends with the
+/// 1 × 2 rectangle split by a diagonal: lengths 1, 2, √5.
+///
+/// # Errors
+/// [`PortalgonError::NonFinite`] unless `x` is finite and `m >= 1`; a gluing error is impossible.
+pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonError> {
+    if !x.is_finite() || m == 0 || m > 30_000 {
+        return Err(PortalgonError::NonFinite {
+            polygon: 0,
+            index: 0,
+        });
+    }
+    let mf = f64::from(m);
+    let len_u = 1.0 / mf;
+    let len_w = x.hypot(2.0) / mf;
+    let len_d = (x - 1.0).hypot(2.0) / mf;
+    let cell = |i: u32, j: u32| (j % m) * m + (i % m);
+    let n = (m * m) as usize;
+    let mut sides = Vec::with_capacity(2 * n);
+    for _ in 0..n {
+        // A: u, w - u, -w;  B: w, -u, u - w.
+        sides.push([len_u, len_d, len_w]);
+        sides.push([len_w, len_u, len_d]);
+    }
+    let side = |face: u32, side: u8| Side { face, side };
+    let mut pairs = Vec::with_capacity(3 * n);
+    for j in 0..m {
+        for i in 0..m {
+            let c = cell(i, j);
+            let (a, b) = (2 * c, 2 * c + 1);
+            // Bottom of A(i, j) with the top of B(i, j - 1).
+            pairs.push((side(a, 0), side(2 * cell(i, j + m - 1) + 1, 1)));
+            // The diagonal.
+            pairs.push((side(a, 1), side(b, 2)));
+            // Left of A(i, j) with the right of B(i - 1, j).
+            pairs.push((side(a, 2), side(2 * cell(i + m - 1, j) + 1, 0)));
+        }
+    }
+    let polygon_index: Vec<usize> = (0..2 * n).collect();
+    triangulation_from_gluing(&TriangleGluing {
+        sides: &sides,
+        pairs: &pairs,
+        labels: None,
+        polygon_index: &polygon_index,
+        tolerance: 0.0,
+    })
+}
+
+/// A torus of revolution (radii 1 and 0.4) on an `m × n` grid whose triangulation is sheared:
+/// the quad of grid vertex `(i, j)` is `(i, j), (i+1, j+shear), (i+1, j+shear+1), (i, j+1)`, split
+/// along its first diagonal. `shear = 0` is the usual grid; larger shears give long thin triangles
+/// winding around the tube, which the flip algorithm must straighten.
+///
+/// # Errors
+/// [`SoupError::Build`] if the grid is too small to be a valid closed surface (use `m, n >= 3`).
+pub fn sheared_torus(m: u32, n: u32, shear: u32) -> Result<Surface, SoupError> {
+    let (big, small) = (1.0, 0.4);
+    let tau = std::f64::consts::TAU;
+    let mut positions = Vec::with_capacity((m * n) as usize);
+    for i in 0..m {
+        let phi = tau * f64::from(i) / f64::from(m);
+        for j in 0..n {
+            let theta = tau * f64::from(j) / f64::from(n);
+            let r = big + small * theta.cos();
+            positions.push([r * phi.cos(), r * phi.sin(), small * theta.sin()]);
+        }
+    }
+    let id = |i: u32, j: u32| (i % m) * n + (j % n);
+    let mut triangles = Vec::with_capacity(2 * (m * n) as usize);
+    for i in 0..m {
+        for j in 0..n {
+            let (a, b, c, d) = (
+                id(i, j),
+                id(i + 1, j + shear),
+                id(i + 1, j + shear + 1),
+                id(i, j + 1),
+            );
+            triangles.push([a, b, c]);
+            triangles.push([a, c, d]);
+        }
+    }
+    Ok(Surface::from_triangles(positions, &triangles)?)
+}
+
+/// Re-triangulates `tri` isometrically by up to `count` random intrinsic flips: edges drawn
+/// uniformly (seeded `ChaCha8Rng`), flipped only when their quad is convex with margin
+/// (`tan(α₁/2) tan(α₂/2) < 0.9` at both ends, i.e. angles below about 168°, so no new triangle is
+/// nearly degenerate). At most `20 · count` draws, so it always returns. Returns the number of
+/// flips made. Same seed, same result.
+pub fn random_flips(tri: &mut IntrinsicTriangulation, count: u64, seed: u64) -> u64 {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let slots = tri.mesh().edge_slots();
+    if slots == 0 {
+        return 0;
+    }
+    let mut flips = 0;
+    for _ in 0..count.saturating_mul(20) {
+        if flips == count {
+            break;
+        }
+        let e = EdgeId::new(rng.random_range(0..slots));
+        if tri.mesh().is_edge_live(e) && tri.flip_if_convex_with_margin(e, 0.9) {
+            flips += 1;
+        }
+    }
+    flips
+}

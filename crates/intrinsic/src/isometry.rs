@@ -1,0 +1,408 @@
+//! The isometry test of Dubois, Corollary 2 (Appendix A.3).
+//!
+//! Two closed polyhedral surfaces are isometric iff their canonical Delaunay tessellations — whose
+//! vertices are the singularities (one vertex for a flat torus) — are equal as portalgons: there
+//! is a one-to-one correspondence φ of polygon sides mapping polygons to polygons (their boundary
+//! walks, cyclically) and the matching to the matching, such that each polygon is carried onto its
+//! image by a rigid motion. Appendix A.3: fix a side s of the first; for each candidate image s'
+//! build φ from s ↦ s' by propagation (unique if it exists, since the surface is connected), in
+//! O(n), and check the polygons; O(n²) overall.
+//!
+//! Here the canonical tessellation is computed by the classical route, not the paper's algorithm
+//! (which comes later): flip to Delaunay ([`crate::flip_to_delaunay`]), remove the flat vertices
+//! ([`crate::remove_flat_vertices`]), flip again, merge co-circular triangles
+//! ([`crate::delaunay_tessellation`]). Candidates for s' are restricted by invariants: first the
+//! counts (polygons, sides, vertices), the histogram of polygon sizes and the sorted side lengths
+//! must agree; then s is the side of the first surface with the fewest sides of the second of the
+//! same polygon size and the same length within the tolerance, and only those are tried.
+//!
+//! Decisions: lengths and corners are compared with an absolute tolerance `length_tolerance ·
+//! (longest side)` (rounding makes exact comparison meaningless). The paper's correspondence
+//! preserves orientation; isometries may also reverse it (a surface and its mirror image are
+//! isometric), so with [`IsometryOptions::allow_reflection`] (default) the mirror image of the
+//! second tessellation is tried too, and the outcome says which one matched.
+
+use crate::delaunay::{DelaunayOptions, flip_to_delaunay};
+use crate::error::{IsometryError, PortalgonError};
+use crate::flat::remove_flat_vertices;
+use crate::portalgon::{Point2, Portalgon, SideId};
+use crate::quality::DEFAULT_ANGLE_TOLERANCE;
+use crate::tessellation::delaunay_tessellation;
+use crate::triangulation::IntrinsicTriangulation;
+use std::fmt;
+
+/// Default co-circularity tolerance of the isometry test (looser than the tessellation's
+/// [`crate::DEFAULT_COCIRCULAR_TOLERANCE`]): removing "flat" vertices whose angle sums are only
+/// within [`DEFAULT_ANGLE_TOLERANCE`] of 2π perturbs the metric slightly, differently for
+/// different triangulations of the same surface; on real meshes (fandisk) exactly co-circular
+/// quads then come out up to ~1e-8 off. The two tessellations compared must make the same
+/// merging decisions, so the test merges up to 1e-6.
+pub const ISOMETRY_COCIRCULAR_TOLERANCE: f64 = 1e-6;
+
+/// Options of [`isometric`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IsometryOptions {
+    /// Flip algorithm options (flip budget, mollification, Delaunay tolerance).
+    pub delaunay: DelaunayOptions,
+    /// A vertex is flat if its angle sum is within this many radians of 2π.
+    pub angle_tolerance: f64,
+    /// Co-circularity tolerance of the tessellation.
+    pub cocircular_tolerance: f64,
+    /// Lengths and corner positions agree if within this fraction of the longest side.
+    pub length_tolerance: f64,
+    /// Also accept orientation-reversing isometries.
+    pub allow_reflection: bool,
+}
+
+impl Default for IsometryOptions {
+    fn default() -> Self {
+        Self {
+            delaunay: DelaunayOptions::default(),
+            angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
+            cocircular_tolerance: ISOMETRY_COCIRCULAR_TOLERANCE,
+            length_tolerance: 1e-7,
+            allow_reflection: true,
+        }
+    }
+}
+
+/// Why two tessellations are, or are not, equal.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// A correspondence was found mapping side `side_a` of the first to side `side_b` of the
+    /// second (of its mirror image when `reflected`).
+    Isometric {
+        /// Seed side of the first tessellation.
+        side_a: u32,
+        /// Its image.
+        side_b: u32,
+        /// Whether the second tessellation was mirrored.
+        reflected: bool,
+    },
+    /// Different numbers of polygons, sides or vertices.
+    Counts {
+        /// `[polygons, sides, vertices]` of the first.
+        a: [usize; 3],
+        /// `[polygons, sides, vertices]` of the second.
+        b: [usize; 3],
+    },
+    /// The numbers of polygons with k sides differ for some k.
+    PolygonSizes {
+        /// The polygon size.
+        sides: usize,
+        /// How many in the first.
+        a: usize,
+        /// How many in the second.
+        b: usize,
+    },
+    /// With sides sorted by (polygon size, length), the lengths differ at some rank.
+    Lengths {
+        /// Rank in the sorted order.
+        rank: usize,
+        /// Length in the first.
+        a: f64,
+        /// Length in the second.
+        b: f64,
+    },
+    /// Some side of the first has no side of the second with the same length and polygon size.
+    NoCandidate {
+        /// The side of the first.
+        side_a: u32,
+    },
+    /// Every candidate correspondence failed.
+    NoCorrespondence {
+        /// Number of candidate seeds tried (both orientations).
+        candidates: usize,
+    },
+}
+
+impl Outcome {
+    /// Whether the outcome is [`Outcome::Isometric`].
+    pub fn is_isometric(&self) -> bool {
+        matches!(self, Outcome::Isometric { .. })
+    }
+}
+
+impl fmt::Display for Outcome {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Outcome::Isometric {
+                side_a,
+                side_b,
+                reflected,
+            } => write!(
+                f,
+                "isometric: side {side_a} maps to side {side_b}{}",
+                if *reflected {
+                    " (orientation-reversing)"
+                } else {
+                    ""
+                }
+            ),
+            Outcome::Counts { a, b } => write!(
+                f,
+                "not isometric: [polygons, sides, vertices] {a:?} vs {b:?}"
+            ),
+            Outcome::PolygonSizes { sides, a, b } => {
+                write!(f, "not isometric: {a} vs {b} polygons with {sides} sides")
+            }
+            Outcome::Lengths { rank, a, b } => write!(
+                f,
+                "not isometric: side lengths differ at rank {rank} of the sides sorted by polygon \
+                 size and length ({a} vs {b})"
+            ),
+            Outcome::NoCandidate { side_a } => write!(
+                f,
+                "not isometric: side {side_a} of the first has no counterpart of the same length"
+            ),
+            Outcome::NoCorrespondence { candidates } => write!(
+                f,
+                "not isometric: none of the {candidates} candidate correspondences is consistent"
+            ),
+        }
+    }
+}
+
+/// The canonical Delaunay tessellation of a closed surface (Dubois, Section 1.2): flip to
+/// Delaunay, remove flat vertices, flip again, merge co-circular triangles. Consumes the
+/// triangulation (it is flipped in place). Returns the tessellation's portalgon.
+///
+/// # Errors
+/// [`IsometryError::Delaunay`] or [`IsometryError::Removal`] (with `surface` = `surface`).
+pub fn canonical_tessellation(
+    mut tri: IntrinsicTriangulation,
+    options: &IsometryOptions,
+    surface: usize,
+) -> Result<Portalgon, IsometryError> {
+    let delaunay = |tri: &mut IntrinsicTriangulation, options: &DelaunayOptions| {
+        flip_to_delaunay(tri, options).map_err(|source| IsometryError::Delaunay { surface, source })
+    };
+    delaunay(&mut tri, &options.delaunay)?;
+    remove_flat_vertices(&mut tri, options.angle_tolerance)
+        .map_err(|source| IsometryError::Removal { surface, source })?;
+    let again = DelaunayOptions {
+        mollify: None,
+        ..options.delaunay
+    };
+    delaunay(&mut tri, &again)?;
+    Ok(delaunay_tessellation(&tri, options.cocircular_tolerance).portalgon)
+}
+
+/// Whether two closed surfaces are isometric (Corollary 2), with the reason.
+///
+/// # Errors
+/// As [`canonical_tessellation`] for either surface.
+pub fn isometric(
+    a: IntrinsicTriangulation,
+    b: IntrinsicTriangulation,
+    options: &IsometryOptions,
+) -> Result<Outcome, IsometryError> {
+    let ta = canonical_tessellation(a, options, 0)?;
+    let tb = canonical_tessellation(b, options, 1)?;
+    compare_tessellations(&ta, &tb, options.length_tolerance, options.allow_reflection)
+        .map_err(|(surface, source)| IsometryError::Portalgon { surface, source })
+}
+
+/// Whether two closed portalgons are equal up to rigid motions of their polygons and renaming
+/// (Appendix A.3), with `tolerance` relative to the longest side. O(n) per candidate seed, O(n²)
+/// in the worst case.
+///
+/// # Errors
+/// `(0 or 1, PortalgonError::Unmatched or Empty)` if a portalgon is not closed.
+pub fn compare_tessellations(
+    a: &Portalgon,
+    b: &Portalgon,
+    tolerance: f64,
+    allow_reflection: bool,
+) -> Result<Outcome, (usize, PortalgonError)> {
+    let dense =
+        |p: &Portalgon| p.polygon_slots() == p.polygon_count() && p.side_slots() == p.side_count();
+    let (a_copy, b_copy);
+    let a = if dense(a) {
+        a
+    } else {
+        a_copy = a.compacted().0;
+        &a_copy
+    };
+    let b = if dense(b) {
+        b
+    } else {
+        b_copy = b.compacted().0;
+        &b_copy
+    };
+    a.check_closed().map_err(|e| (0, e))?;
+    b.check_closed().map_err(|e| (1, e))?;
+    let counts = |p: &Portalgon| [p.polygon_count(), p.side_count(), p.vertex_classes().1];
+    if counts(a) != counts(b) {
+        return Ok(Outcome::Counts {
+            a: counts(a),
+            b: counts(b),
+        });
+    }
+    let histogram = |p: &Portalgon| {
+        let mut h = vec![0usize; p.side_count() + 1];
+        for q in p.polygons() {
+            h[p.polygon_sides(q).len()] += 1;
+        }
+        h
+    };
+    let (ha, hb) = (histogram(a), histogram(b));
+    if let Some(k) = (0..ha.len()).find(|&k| ha[k] != hb[k]) {
+        return Ok(Outcome::PolygonSizes {
+            sides: k,
+            a: ha[k],
+            b: hb[k],
+        });
+    }
+    // Sides sorted by (polygon size, length): with equal size histograms the two lists align
+    // rank by rank, and their lengths must agree (this also seeds the search below).
+    let keyed = |p: &Portalgon| {
+        let mut v: Vec<(usize, f64, SideId)> = p
+            .sides()
+            .map(|s| (p.polygon_sides(p.owner(s)).len(), p.side_length(s), s))
+            .collect();
+        v.sort_by(|x, y| x.0.cmp(&y.0).then(x.1.total_cmp(&y.1)));
+        v
+    };
+    let (keyed_a, keyed_b) = (keyed(a), keyed(b));
+    let longest = keyed_a
+        .iter()
+        .chain(&keyed_b)
+        .fold(0.0f64, |m, x| m.max(x.1));
+    let eps = tolerance * longest;
+    if let Some(rank) = (0..keyed_a.len()).find(|&k| (keyed_a[k].1 - keyed_b[k].1).abs() > eps) {
+        return Ok(Outcome::Lengths {
+            rank,
+            a: keyed_a[rank].1,
+            b: keyed_b[rank].1,
+        });
+    }
+    let mut tried = 0usize;
+    // Seed: the side of a with the fewest candidates in b (same polygon size, same length within
+    // eps), found by sweeping both sorted lists with two pointers.
+    let (mut lo, mut hi) = (0usize, 0usize);
+    let mut best: Option<(usize, SideId, std::ops::Range<usize>)> = None;
+    for &(k, l, s) in &keyed_a {
+        while lo < keyed_b.len() && (keyed_b[lo].0, keyed_b[lo].1) < (k, l - eps) {
+            lo += 1;
+        }
+        hi = hi.max(lo);
+        while hi < keyed_b.len() && (keyed_b[hi].0, keyed_b[hi].1) <= (k, l + eps) {
+            hi += 1;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|(count, s0, _)| (hi - lo, s.0) < (*count, s0.0))
+        {
+            best = Some((hi - lo, s, lo..hi));
+        }
+    }
+    let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    if candidates.is_empty() {
+        return Ok(Outcome::NoCandidate { side_a: seed.0 });
+    }
+    for reflected in [false, true] {
+        if reflected && !allow_reflection {
+            break;
+        }
+        let mirrored;
+        let target = if reflected {
+            mirrored = b.mirrored();
+            &mirrored
+        } else {
+            b
+        };
+        for &(_, _, s_b) in &keyed_b[candidates.clone()] {
+            // The mirror keeps polygon ids; side i of a k-gon becomes side k - 1 - i.
+            let s_t = if reflected {
+                let p = b.owner(s_b);
+                let k = b.polygon_sides(p).len();
+                target.side(p, k - 1 - b.side_index(s_b))
+            } else {
+                s_b
+            };
+            tried += 1;
+            if correspondence(a, target, seed, s_t, eps) {
+                return Ok(Outcome::Isometric {
+                    side_a: seed.0,
+                    side_b: s_b.0,
+                    reflected,
+                });
+            }
+        }
+    }
+    Ok(Outcome::NoCorrespondence { candidates: tried })
+}
+
+/// Rigid motion of the plane taking segment (p0, p1) onto (q0, q1) (directions; p0 to q0).
+fn motion(p0: Point2, p1: Point2, q0: Point2, q1: Point2) -> impl Fn(Point2) -> Point2 {
+    let (u, w) = (
+        [p1[0] - p0[0], p1[1] - p0[1]],
+        [q1[0] - q0[0], q1[1] - q0[1]],
+    );
+    let norm = u[0].hypot(u[1]) * w[0].hypot(w[1]);
+    let cos = (u[0] * w[0] + u[1] * w[1]) / norm;
+    let sin = (u[0] * w[1] - u[1] * w[0]) / norm;
+    move |x: Point2| {
+        let d = [x[0] - p0[0], x[1] - p0[1]];
+        [
+            q0[0] + cos * d[0] - sin * d[1],
+            q0[1] + sin * d[0] + cos * d[1],
+        ]
+    }
+}
+
+/// Tries to build the side correspondence from `seed_a ↦ seed_b` by propagation through polygons
+/// and the matching; checks each polygon is congruent to its image (corners within `eps`).
+fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, eps: f64) -> bool {
+    let mut phi = vec![SideId::INVALID; a.side_slots()];
+    let mut inverse = vec![SideId::INVALID; b.side_slots()];
+    let mut stack = vec![(seed_a, seed_b)];
+    let mut polygons_done = 0usize;
+    while let Some((sa, sb)) = stack.pop() {
+        if phi[sa.idx()].is_valid() {
+            if phi[sa.idx()] != sb {
+                return false;
+            }
+            continue;
+        }
+        let (pa, pb) = (a.owner(sa), b.owner(sb));
+        let (sides_a, sides_b) = (a.polygon_sides(pa), b.polygon_sides(pb));
+        let k = sides_a.len();
+        if sides_b.len() != k || (a.side_length(sa) - b.side_length(sb)).abs() > eps {
+            return false;
+        }
+        let moved = motion(a.start(sa), a.end(sa), b.start(sb), b.end(sb));
+        let (ia, ib) = (a.side_index(sa), b.side_index(sb));
+        for m in 0..k {
+            let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);
+            if phi[xa.idx()].is_valid() || inverse[xb.idx()].is_valid() {
+                return false;
+            }
+            let (p, q) = (moved(a.start(xa)), b.start(xb));
+            if (p[0] - q[0]).hypot(p[1] - q[1]) > 4.0 * eps {
+                return false;
+            }
+            phi[xa.idx()] = xb;
+            inverse[xb.idx()] = xa;
+        }
+        for m in 0..k {
+            let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);
+            match (a.mate(xa), b.mate(xb)) {
+                (Some(ma), Some(mb)) => {
+                    if phi[ma.idx()].is_valid() {
+                        if phi[ma.idx()] != mb {
+                            return false;
+                        }
+                    } else {
+                        stack.push((ma, mb));
+                    }
+                }
+                (None, None) => {}
+                _ => return false,
+            }
+        }
+        polygons_done += 1;
+    }
+    polygons_done == a.polygon_count()
+}

@@ -1,0 +1,89 @@
+//! surftopo-intrinsic: portalgons and intrinsic Delaunay triangulations.
+//!
+//! Paper: L. Dubois, "Computing the Intrinsic Delaunay Triangulation of a Closed Polyhedral
+//! Surface" (2025) — Sections 1–2 (portalgons, aspect ratio), Section 9 (the flat torus T_x),
+//! Appendix A (Corollary 2, the isometry test), Appendix C (the Delaunay tessellation of Bobenko &
+//! Springborn). This crate holds the portalgon model and the classical edge-flip algorithm the
+//! paper contrasts with its own; the paper's algorithm (Sections 3–8) builds on [`Portalgon`]'s
+//! edits: [`Portalgon::cut`] and [`Portalgon::shortcut`] (INSERTEDGES),
+//! [`Portalgon::delete_vertex`] (DELETEVERTICES), [`Portalgon::merge`], [`Portalgon::glue`] /
+//! [`Portalgon::unglue`], [`Portalgon::sub_portalgon`] and [`Regions`] (Section 4.4's active and
+//! inactive regions). Not here yet: tubes, bifaces and SIMPLIFYTUBES (Section 3, Appendix B), the
+//! wave algorithm (Appendix D).
+//!
+//! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
+//!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
+//!   and positions ([`IntrinsicTriangulation::from_soup`]), from a [`Portalgon`], or from JSON
+//!   ([`PortalgonDoc`], format in [`mod@format`] and `PORTALGON_FORMAT.md`).
+//! - [`flip_to_delaunay`]: Bobenko–Springborn edge flipping with robust half-angle formulas
+//!   ([`trig`]), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
+//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation.
+//! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
+//!   ([`write_matrix_market`]). Convention: the Laplacian is positive semidefinite.
+//! - [`quality()`]: aspect ratio, local aspect ratio, singular vertices (Section 2.2).
+//! - [`isometric`]: Corollary 2's test on canonical tessellations ([`remove_flat_vertices`] first).
+//! - [`generators`]: T_x ([`generators::flat_torus`]), sheared tori, random isometric flips.
+//!
+//! ```
+//! use surftopo_intrinsic::generators::flat_torus;
+//! use surftopo_intrinsic::{
+//!     DEFAULT_COCIRCULAR_TOLERANCE, DelaunayOptions, PortalgonDoc, TriangleStyle, cotan_laplacian,
+//!     delaunay_tessellation, flip_to_delaunay,
+//! };
+//! // The flat torus T_10 of Section 9: one vertex, two triangles, three (loop) edges.
+//! let mut tri = flat_torus(10.0, 1).unwrap();
+//! let report = flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
+//! assert_eq!((report.flips, report.non_delaunay_edges), (9, 0));
+//! // Its Delaunay tessellation is the 1 x 2 rectangle with opposite sides glued.
+//! let t = delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE);
+//! assert_eq!((t.portalgon.polygon_count(), t.portalgon.side_count()), (1, 4));
+//! // One vertex, only loops: the Laplacian is the 1 x 1 zero matrix.
+//! assert_eq!(cotan_laplacian(&tri).get(0, 0), 0.0);
+//! let json = PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths).to_json().unwrap();
+//! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
+//! ```
+
+mod convert;
+mod delaunay;
+mod error;
+mod flat;
+pub mod format;
+pub mod generators;
+mod isometry;
+mod laplacian;
+mod matrix_market;
+mod mollify;
+mod portalgon;
+mod quality;
+mod stats;
+mod tessellation;
+mod triangulation;
+pub mod trig;
+
+pub use delaunay::{
+    DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
+};
+pub use error::{
+    DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
+};
+pub use flat::{RemovalReport, remove_flat_vertices};
+pub use format::{PolygonDoc, PortalgonDoc, TriangleStyle};
+pub use isometry::{
+    ISOMETRY_COCIRCULAR_TOLERANCE, IsometryOptions, Outcome, canonical_tessellation,
+    compare_tessellations, isometric,
+};
+pub use laplacian::{
+    SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, lumped_mass,
+};
+pub use matrix_market::{read_matrix_market, write_matrix_market};
+pub use mollify::mollify;
+pub use portalgon::{
+    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
+    signed_area,
+};
+pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
+pub use stats::{DelaunayStats, delaunay_with_stats};
+pub use tessellation::{
+    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
+};
+pub use triangulation::IntrinsicTriangulation;

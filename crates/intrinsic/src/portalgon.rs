@@ -1,0 +1,920 @@
+//! Portalgons (Dubois, Section 2.1): polygons in the plane with a partial matching of sides.
+//!
+//! A [`Portalgon`] is a collection of counter-clockwise polygons, each given by its corners in its
+//! own copy of the plane (the paper's real-RAM *representation*: displacing a polygon gives
+//! another representation of the same portalgon), with a partial matching of equally long sides.
+//! Gluing matched sides, respecting the polygons' orientations, gives the surface `S(T)`;
+//! unmatched sides are its boundary (e.g. the boundary of a *sub-portalgon*, Section 2.1, or of a
+//! *region*, Section 4.4). Side `i` of a polygon runs from its corner `i` to corner `i + 1`.
+//!
+//! Ids are stable: sides ([`SideId`]) and polygons ([`PolygonId`]) keep their ids through the
+//! elementary edits the paper's algorithm is made of, and removed ones become tombstones:
+//! - [`Portalgon::cut`]: cut a polygon along a vertex-to-vertex arc, the two new sides matched to
+//!   each other (INSERTEDGES, Section 4.1; [`Portalgon::shortcut`] finds the arc it inserts, and
+//!   [`Portalgon::triangulate_by_shortcuts`] is INSERTEDGES on one polygon);
+//! - [`Portalgon::merge`]: the inverse, gluing two polygons along a matched pair of sides after
+//!   displacing one rigidly (Section 2.3's elementary operation);
+//! - [`Portalgon::delete_vertex`]: DELETEVERTICES' step (Section 4.2), merging the polygons around
+//!   a weak flat vertex into one and closing the slit left at it;
+//! - [`Portalgon::glue`] / [`Portalgon::unglue`]: change the matching (cutting the surface, as in
+//!   Appendix B's proof of Lemma 25, or closing it up);
+//! - [`Portalgon::sub_portalgon`]: the sub-portalgon of a set of polygons, and [`Regions`], the
+//!   partition into regions with one active region of Section 4.4.
+//!
+//! What is checked: [`Portalgon::add_polygon`] validates a polygon (at least three finite corners,
+//! no zero side, counter-clockwise, simple); [`Portalgon::glue`] requires equal lengths up to a
+//! relative tolerance (`|a - b| <= tolerance · max(a, b)`, [`DEFAULT_LENGTH_TOLERANCE`]).
+//! [`Portalgon::merge`] does not check that the merged polygon is simple (merging all polygons
+//! around a vertex whose angle exceeds 2π overlaps itself in the plane), nor does it need to.
+
+use crate::error::PortalgonError;
+
+/// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
+pub const DEFAULT_LENGTH_TOLERANCE: f64 = 1e-9;
+
+macro_rules! portalgon_id {
+    ($(#[$doc:meta])* $name:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub struct $name(pub u32);
+
+        impl $name {
+            /// The "none" value.
+            pub const INVALID: Self = Self(u32::MAX);
+            /// The id as an index.
+            #[inline(always)]
+            pub const fn idx(self) -> usize {
+                self.0 as usize
+            }
+            /// Whether this is not [`Self::INVALID`].
+            #[inline(always)]
+            pub const fn is_valid(self) -> bool {
+                self.0 != u32::MAX
+            }
+        }
+    };
+}
+
+portalgon_id!(
+    /// A side of a polygon of a portalgon.
+    SideId
+);
+portalgon_id!(
+    /// A polygon of a portalgon.
+    PolygonId
+);
+
+/// A 2D point.
+pub type Point2 = [f64; 2];
+
+#[inline]
+fn sub(a: Point2, b: Point2) -> Point2 {
+    [a[0] - b[0], a[1] - b[1]]
+}
+#[inline]
+fn cross(a: Point2, b: Point2) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
+}
+#[inline]
+fn dot(a: Point2, b: Point2) -> f64 {
+    a[0] * b[0] + a[1] * b[1]
+}
+#[inline]
+fn dist(a: Point2, b: Point2) -> f64 {
+    let d = sub(a, b);
+    d[0].hypot(d[1])
+}
+/// Orientation of c relative to the line a -> b: > 0 left, < 0 right.
+#[inline]
+fn orient(a: Point2, b: Point2, c: Point2) -> f64 {
+    cross(sub(b, a), sub(c, a))
+}
+
+/// Whether the closed segments pq and rs intersect.
+fn segments_intersect(p: Point2, q: Point2, r: Point2, s: Point2) -> bool {
+    let (d1, d2) = (orient(r, s, p), orient(r, s, q));
+    let (d3, d4) = (orient(p, q, r), orient(p, q, s));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+    {
+        return true;
+    }
+    let on = |a: Point2, b: Point2, c: Point2, o: f64| {
+        o == 0.0
+            && c[0] >= a[0].min(b[0])
+            && c[0] <= a[0].max(b[0])
+            && c[1] >= a[1].min(b[1])
+            && c[1] <= a[1].max(b[1])
+    };
+    on(r, s, p, d1) || on(r, s, q, d2) || on(p, q, r, d3) || on(p, q, s, d4)
+}
+
+/// Signed area of a closed polygon (positive when counter-clockwise).
+pub fn signed_area(corners: &[Point2]) -> f64 {
+    let k = corners.len();
+    let o = corners[0];
+    (1..k.saturating_sub(1))
+        .map(|i| cross(sub(corners[i], o), sub(corners[i + 1], o)))
+        .sum::<f64>()
+        / 2.0
+}
+
+/// Whether direction `d` from corner `cur` points strictly into the interior angle of a
+/// counter-clockwise polygon at `cur` (neighbours `prev` and `next`).
+fn points_inside(prev: Point2, cur: Point2, next: Point2, d: Point2) -> bool {
+    let (e1, e2) = (sub(next, cur), sub(prev, cur));
+    if cross(e1, e2) >= 0.0 {
+        // Convex (or straight) corner: strictly between e1 and e2 counter-clockwise.
+        cross(e1, d) > 0.0 && cross(d, e2) > 0.0
+    } else {
+        // Reflex corner: anywhere but the closed exterior wedge from e2 to e1.
+        !(cross(e2, d) >= 0.0 && cross(d, e1) >= 0.0)
+    }
+}
+
+/// Validates the corners of a polygon: at least three, finite, no zero side, counter-clockwise and
+/// simple (no two sides meet except consecutive ones at their common corner). O(k²).
+///
+/// # Errors
+/// The first problem, naming `polygon` and the corner or side.
+pub fn check_polygon(polygon: usize, corners: &[Point2]) -> Result<(), PortalgonError> {
+    let k = corners.len();
+    if k < 3 {
+        return Err(PortalgonError::TooFewCorners {
+            polygon,
+            corners: k,
+        });
+    }
+    if let Some(index) = corners
+        .iter()
+        .position(|c| !(c[0].is_finite() && c[1].is_finite()))
+    {
+        return Err(PortalgonError::NonFinite { polygon, index });
+    }
+    for i in 0..k {
+        if corners[i] == corners[(i + 1) % k] {
+            return Err(PortalgonError::ZeroSide { polygon, side: i });
+        }
+    }
+    let area = signed_area(corners);
+    if area.is_nan() || area <= 0.0 {
+        return Err(PortalgonError::NotCounterClockwise { polygon, area });
+    }
+    for a in 0..k {
+        let (p, q) = (corners[a], corners[(a + 1) % k]);
+        // Consecutive sides must not fold back onto each other.
+        let r = corners[(a + 2) % k];
+        if orient(p, q, r) == 0.0 && dot(sub(q, p), sub(r, q)) < 0.0 {
+            return Err(PortalgonError::NotSimple {
+                polygon,
+                a,
+                b: (a + 1) % k,
+            });
+        }
+        for b in a + 2..k {
+            if a == 0 && b == k - 1 {
+                continue;
+            }
+            if segments_intersect(p, q, corners[b], corners[(b + 1) % k]) {
+                return Err(PortalgonError::NotSimple { polygon, a, b });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A portalgon: polygons with a partial matching of their sides (see the module doc).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Portalgon {
+    /// Per side: its start corner, in its polygon's plane.
+    start: Vec<Point2>,
+    /// Per side: its polygon (`INVALID` for a removed side).
+    owner: Vec<PolygonId>,
+    /// Per side: the matched side (`INVALID` when unmatched).
+    mate: Vec<SideId>,
+    /// Per side: the vertex label of its start corner (`u32::MAX` when unknown).
+    label: Vec<u32>,
+    /// Per side: its index in its polygon's side list.
+    slot: Vec<u32>,
+    /// Per side: the next side of its polygon (cached from the side lists).
+    next: Vec<SideId>,
+    /// Per polygon: its sides, counter-clockwise (empty for a removed polygon).
+    polygons: Vec<Vec<SideId>>,
+    live_polygons: usize,
+    live_sides: usize,
+}
+
+impl Portalgon {
+    /// An empty portalgon.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Number of live polygons.
+    pub fn polygon_count(&self) -> usize {
+        self.live_polygons
+    }
+    /// Number of live sides.
+    pub fn side_count(&self) -> usize {
+        self.live_sides
+    }
+    /// Size of the polygon id range (live and removed).
+    pub fn polygon_slots(&self) -> usize {
+        self.polygons.len()
+    }
+    /// Size of the side id range (live and removed).
+    pub fn side_slots(&self) -> usize {
+        self.start.len()
+    }
+    /// Whether a polygon id is live.
+    pub fn is_polygon_live(&self, p: PolygonId) -> bool {
+        self.polygons.get(p.idx()).is_some_and(|s| !s.is_empty())
+    }
+    /// Whether a side id is live.
+    pub fn is_side_live(&self, s: SideId) -> bool {
+        self.owner.get(s.idx()).is_some_and(|p| p.is_valid())
+    }
+    /// Live polygon ids.
+    pub fn polygons(&self) -> impl Iterator<Item = PolygonId> + '_ {
+        (0..self.polygons.len() as u32)
+            .map(PolygonId)
+            .filter(|&p| self.is_polygon_live(p))
+    }
+    /// Live side ids.
+    pub fn sides(&self) -> impl Iterator<Item = SideId> + '_ {
+        (0..self.start.len() as u32)
+            .map(SideId)
+            .filter(|&s| self.is_side_live(s))
+    }
+
+    /// The sides of a polygon, counter-clockwise.
+    pub fn polygon_sides(&self, p: PolygonId) -> &[SideId] {
+        &self.polygons[p.idx()]
+    }
+    /// Side `i` of polygon `p`.
+    pub fn side(&self, p: PolygonId, i: usize) -> SideId {
+        self.polygons[p.idx()][i]
+    }
+    /// The polygon of a side.
+    pub fn owner(&self, s: SideId) -> PolygonId {
+        self.owner[s.idx()]
+    }
+    /// The index of a side in its polygon.
+    pub fn side_index(&self, s: SideId) -> usize {
+        self.slot[s.idx()] as usize
+    }
+    /// The next side counter-clockwise in the same polygon.
+    #[inline]
+    pub fn next_side(&self, s: SideId) -> SideId {
+        self.next[s.idx()]
+    }
+    /// The previous side in the same polygon.
+    pub fn prev_side(&self, s: SideId) -> SideId {
+        let sides = &self.polygons[self.owner(s).idx()];
+        sides[(self.side_index(s) + sides.len() - 1) % sides.len()]
+    }
+    /// Start corner of a side.
+    pub fn start(&self, s: SideId) -> Point2 {
+        self.start[s.idx()]
+    }
+    /// End corner of a side (the start of the next side).
+    pub fn end(&self, s: SideId) -> Point2 {
+        self.start(self.next_side(s))
+    }
+    /// Length of a side.
+    pub fn side_length(&self, s: SideId) -> f64 {
+        dist(self.start(s), self.end(s))
+    }
+    /// The side matched with `s`, if any.
+    pub fn mate(&self, s: SideId) -> Option<SideId> {
+        let m = self.mate[s.idx()];
+        m.is_valid().then_some(m)
+    }
+    /// The vertex label of the start corner of `s`, if known.
+    pub fn vertex_label(&self, s: SideId) -> Option<u32> {
+        let l = self.label[s.idx()];
+        (l != u32::MAX).then_some(l)
+    }
+    /// The corners of a polygon, counter-clockwise.
+    pub fn corners(&self, p: PolygonId) -> Vec<Point2> {
+        self.polygons[p.idx()]
+            .iter()
+            .map(|&s| self.start(s))
+            .collect()
+    }
+    /// Signed area of a polygon.
+    pub fn polygon_area(&self, p: PolygonId) -> f64 {
+        signed_area(&self.corners(p))
+    }
+    /// Total area of the live polygons.
+    pub fn area(&self) -> f64 {
+        self.polygons().map(|p| self.polygon_area(p)).sum()
+    }
+
+    /// Adds a validated polygon ([`check_polygon`]) with unmatched sides and no vertex labels.
+    ///
+    /// # Errors
+    /// As [`check_polygon`], naming the new polygon's id.
+    pub fn add_polygon(&mut self, corners: &[Point2]) -> Result<PolygonId, PortalgonError> {
+        check_polygon(self.polygons.len(), corners)?;
+        Ok(self.push_polygon(corners, None))
+    }
+
+    /// Adds a polygon without validation (crate-internal: shapes known to be valid).
+    pub(crate) fn push_polygon(&mut self, corners: &[Point2], labels: Option<&[u32]>) -> PolygonId {
+        let p = PolygonId(self.polygons.len() as u32);
+        let mut sides = Vec::with_capacity(corners.len());
+        for (i, &c) in corners.iter().enumerate() {
+            let s = SideId(self.start.len() as u32);
+            self.start.push(c);
+            self.owner.push(p);
+            self.mate.push(SideId::INVALID);
+            self.label.push(labels.map_or(u32::MAX, |l| l[i]));
+            self.slot.push(i as u32);
+            self.next.push(SideId(s.0 + 1));
+            sides.push(s);
+        }
+        let last = sides[sides.len() - 1];
+        self.next[last.idx()] = sides[0];
+        self.polygons.push(sides);
+        self.live_polygons += 1;
+        self.live_sides += corners.len();
+        p
+    }
+
+    /// Sets the vertex labels of a polygon's corners (`labels[i]` for corner `i`).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchPolygon`], or [`PortalgonError::VertexLabels`] when the count is wrong.
+    pub fn set_vertex_labels(
+        &mut self,
+        p: PolygonId,
+        labels: &[u32],
+    ) -> Result<(), PortalgonError> {
+        if !self.is_polygon_live(p) {
+            return Err(PortalgonError::NoSuchPolygon(p.idx()));
+        }
+        let sides = &self.polygons[p.idx()];
+        if labels.len() != sides.len() {
+            return Err(PortalgonError::VertexLabels {
+                polygon: p.idx(),
+                detail: format!("{} labels for {} corners", labels.len(), sides.len()),
+            });
+        }
+        for (&s, &l) in sides.iter().zip(labels) {
+            self.label[s.idx()] = l;
+        }
+        Ok(())
+    }
+
+    fn side_ref(&self, s: SideId) -> (usize, usize) {
+        if self.is_side_live(s) {
+            (self.owner(s).idx(), self.side_index(s))
+        } else {
+            (usize::MAX, s.idx())
+        }
+    }
+
+    /// Matches sides `s` and `t` (of the same or different polygons); their lengths must agree up to
+    /// `tolerance` relative to the longer one.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`] (already matched, or
+    /// `s == t`), [`PortalgonError::UnequalSides`].
+    pub fn glue(&mut self, s: SideId, t: SideId, tolerance: f64) -> Result<(), PortalgonError> {
+        for x in [s, t] {
+            if !self.is_side_live(x) {
+                return Err(PortalgonError::NoSuchSide {
+                    polygon: usize::MAX,
+                    side: x.idx(),
+                });
+            }
+            if self.mate[x.idx()].is_valid() || s == t {
+                let (polygon, side) = self.side_ref(x);
+                return Err(PortalgonError::MatchedTwice { polygon, side });
+            }
+        }
+        let (la, lb) = (self.side_length(s), self.side_length(t));
+        if (la - lb).abs() > tolerance * la.max(lb) {
+            let (polygon_a, side_a) = self.side_ref(s);
+            let (polygon_b, side_b) = self.side_ref(t);
+            return Err(PortalgonError::UnequalSides {
+                polygon_a,
+                side_a,
+                polygon_b,
+                side_b,
+                length_a: la,
+                length_b: lb,
+                tolerance,
+            });
+        }
+        self.mate[s.idx()] = t;
+        self.mate[t.idx()] = s;
+        Ok(())
+    }
+
+    /// Unmatches `s` from its mate (cutting the surface along that side); returns the former mate.
+    pub fn unglue(&mut self, s: SideId) -> Option<SideId> {
+        let m = self.mate(s)?;
+        self.mate[s.idx()] = SideId::INVALID;
+        self.mate[m.idx()] = SideId::INVALID;
+        Some(m)
+    }
+
+    /// The unmatched live sides (the boundary of the surface).
+    pub fn unmatched_sides(&self) -> impl Iterator<Item = SideId> + '_ {
+        self.sides().filter(|&s| self.mate(s).is_none())
+    }
+
+    /// Checks that the portalgon is non-empty and every side is matched.
+    ///
+    /// # Errors
+    /// [`PortalgonError::Empty`] or [`PortalgonError::Unmatched`] naming the first unmatched side.
+    pub fn check_closed(&self) -> Result<(), PortalgonError> {
+        if self.live_polygons == 0 {
+            return Err(PortalgonError::Empty);
+        }
+        match self.unmatched_sides().next() {
+            Some(s) => {
+                let (polygon, side) = self.side_ref(s);
+                Err(PortalgonError::Unmatched { polygon, side })
+            }
+            None => Ok(()),
+        }
+    }
+
+    /// The vertices of the surface: the class of each side's start corner under the gluing
+    /// (indexed by side id, `u32::MAX` for removed sides; classes numbered by first side), and the
+    /// number of classes. O(n α(n)).
+    pub fn vertex_classes(&self) -> (Vec<u32>, usize) {
+        let n = self.start.len();
+        let mut parent: Vec<u32> = (0..n as u32).collect();
+        fn find(parent: &mut [u32], mut x: u32) -> u32 {
+            while parent[x as usize] != x {
+                let g = parent[parent[x as usize] as usize];
+                parent[x as usize] = g;
+                x = g;
+            }
+            x
+        }
+        for s in self.sides() {
+            if let Some(t) = self.mate(s) {
+                // start(s) ~ end(t) = start(next(t)).
+                let (a, b) = (
+                    find(&mut parent, s.0),
+                    find(&mut parent, self.next_side(t).0),
+                );
+                parent[a.max(b) as usize] = a.min(b);
+            }
+        }
+        let mut class = vec![u32::MAX; n];
+        let mut root_class = vec![u32::MAX; n];
+        let mut count = 0u32;
+        for s in self.sides() {
+            let r = find(&mut parent, s.0) as usize;
+            if root_class[r] == u32::MAX {
+                root_class[r] = count;
+                count += 1;
+            }
+            class[s.idx()] = root_class[r];
+        }
+        (class, count as usize)
+    }
+
+    /// Whether the segment between corners `i` and `j` of polygon `p` is a vertex-to-vertex arc
+    /// (Section 4.1): distinct, non-consecutive corners whose open segment lies in the interior of
+    /// the polygon. O(k).
+    pub fn is_arc(&self, p: PolygonId, i: usize, j: usize) -> bool {
+        let c = self.corners(p);
+        let k = c.len();
+        if i >= k || j >= k || i == j || (i + 1) % k == j || (j + 1) % k == i {
+            return false;
+        }
+        let (a, b) = (c[i], c[j]);
+        if a == b {
+            return false;
+        }
+        if !points_inside(c[(i + k - 1) % k], a, c[(i + 1) % k], sub(b, a))
+            || !points_inside(c[(j + k - 1) % k], b, c[(j + 1) % k], sub(a, b))
+        {
+            return false;
+        }
+        for s in 0..k {
+            let e = (s + 1) % k;
+            if s == i || e == i || s == j || e == j {
+                continue;
+            }
+            if segments_intersect(a, b, c[s], c[e]) {
+                return false;
+            }
+        }
+        // Sides through an endpoint may still run along the segment; the wedge tests at both
+        // endpoints exclude that for the sides at them, and the other sides were tested above.
+        true
+    }
+
+    /// A shortcut of polygon `p` (Section 4.1): a shortest vertex-to-vertex arc, as its two corner
+    /// indices `(i, j)` with `i < j`; `None` for triangles. Ties go to the smallest `(i, j)`. O(k³).
+    pub fn shortcut(&self, p: PolygonId) -> Option<(usize, usize)> {
+        let c = self.corners(p);
+        let k = c.len();
+        let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+        for i in 0..k {
+            for j in i + 2..k {
+                if !(i == 0 && j == k - 1) {
+                    pairs.push((dist(c[i], c[j]), i, j));
+                }
+            }
+        }
+        pairs.sort_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
+        pairs
+            .into_iter()
+            .find(|&(_, i, j)| self.is_arc(p, i, j))
+            .map(|(_, i, j)| (i, j))
+    }
+
+    /// Cuts polygon `p` along the arc between its corners `i` and `j` (INSERTEDGES' elementary
+    /// step, Section 4.1): `p` keeps corners `i..=j` and a new polygon gets corners `j..=i`; the two
+    /// new sides (from j to i in `p`, from i to j in the new polygon) are matched to each other
+    /// and returned in that order. O(k).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchPolygon`], [`PortalgonError::NotAnArc`].
+    pub fn cut(
+        &mut self,
+        p: PolygonId,
+        i: usize,
+        j: usize,
+    ) -> Result<(SideId, SideId), PortalgonError> {
+        if !self.is_polygon_live(p) {
+            return Err(PortalgonError::NoSuchPolygon(p.idx()));
+        }
+        if !self.is_arc(p, i, j) {
+            return Err(PortalgonError::NotAnArc {
+                polygon: p.idx(),
+                i,
+                j,
+            });
+        }
+        let sides = std::mem::take(&mut self.polygons[p.idx()]);
+        let k = sides.len();
+        let q = PolygonId(self.polygons.len() as u32);
+        self.polygons.push(Vec::new());
+        let (corner_i, corner_j) = (self.start(sides[i]), self.start(sides[j]));
+        let (label_i, label_j) = (self.label[sides[i].idx()], self.label[sides[j].idx()]);
+        let new_side = |me: &mut Self, start: Point2, label: u32, owner: PolygonId| {
+            let s = SideId(me.start.len() as u32);
+            me.start.push(start);
+            me.owner.push(owner);
+            me.mate.push(SideId::INVALID);
+            me.label.push(label);
+            me.slot.push(0);
+            me.next.push(SideId::INVALID);
+            s
+        };
+        let in_p = new_side(self, corner_j, label_j, p);
+        let in_q = new_side(self, corner_i, label_i, q);
+        self.mate[in_p.idx()] = in_q;
+        self.mate[in_q.idx()] = in_p;
+        let j_after = if j > i { j } else { j + k };
+        let i_after = if i > j { i } else { i + k };
+        let mut first: Vec<SideId> = (i..j_after).map(|m| sides[m % k]).collect();
+        first.push(in_p);
+        let mut second: Vec<SideId> = (j..i_after).map(|m| sides[m % k]).collect();
+        second.push(in_q);
+        self.set_polygon(p, first);
+        self.set_polygon(q, second);
+        self.live_polygons += 1;
+        self.live_sides += 2;
+        Ok((in_p, in_q))
+    }
+
+    fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
+        let k = sides.len();
+        for (n, &s) in sides.iter().enumerate() {
+            self.owner[s.idx()] = p;
+            self.slot[s.idx()] = n as u32;
+            self.next[s.idx()] = sides[(n + 1) % k];
+        }
+        self.polygons[p.idx()] = sides;
+    }
+
+    /// Matches two fresh sides without checks (crate-internal: built from a closed triangulation).
+    pub(crate) fn set_mates(&mut self, s: SideId, t: SideId) {
+        self.mate[s.idx()] = t;
+        self.mate[t.idx()] = s;
+    }
+
+    /// Merges the polygon across side `s` into the polygon of `s` (the inverse of [`Self::cut`]):
+    /// the other polygon is displaced rigidly so that the mate of `s` lies on `s`, the two sides
+    /// disappear, and the merged polygon keeps the id of `s`'s polygon (returned). Other side ids
+    /// are kept. O(k).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchSide`]; [`PortalgonError::CannotMerge`] when `s` is unmatched or
+    /// matched to a side of its own polygon.
+    pub fn merge(&mut self, s: SideId) -> Result<PolygonId, PortalgonError> {
+        if !self.is_side_live(s) {
+            return Err(PortalgonError::NoSuchSide {
+                polygon: usize::MAX,
+                side: s.idx(),
+            });
+        }
+        let (p, side) = (self.owner(s), self.side_index(s));
+        let t = match self.mate(s) {
+            Some(t) if self.owner(t) != p => t,
+            _ => {
+                return Err(PortalgonError::CannotMerge {
+                    polygon: p.idx(),
+                    side,
+                });
+            }
+        };
+        let q = self.owner(t);
+        // Rigid motion taking start(t) to end(s) and end(t) to start(s).
+        let (t0, t1) = (self.start(t), self.end(t));
+        let (s0, s1) = (self.start(s), self.end(s));
+        let (u, w) = (sub(t1, t0), sub(s0, s1));
+        let norm = dist(t1, t0) * dist(s0, s1);
+        let (cos, sin) = (dot(u, w) / norm, cross(u, w) / norm);
+        let q_sides = std::mem::take(&mut self.polygons[q.idx()]);
+        for &x in &q_sides {
+            let d = sub(self.start[x.idx()], t0);
+            self.start[x.idx()] = [
+                s1[0] + cos * d[0] - sin * d[1],
+                s1[1] + sin * d[0] + cos * d[1],
+            ];
+        }
+        let p_sides = std::mem::take(&mut self.polygons[p.idx()]);
+        let (kp, kq) = (p_sides.len(), q_sides.len());
+        let tq = q_sides
+            .iter()
+            .position(|&x| x == t)
+            .expect("t is a side of q");
+        let mut merged: Vec<SideId> = (1..kp).map(|m| p_sides[(side + m) % kp]).collect();
+        merged.extend((1..kq).map(|m| q_sides[(tq + m) % kq]));
+        for x in [s, t] {
+            self.owner[x.idx()] = PolygonId::INVALID;
+            self.mate[x.idx()] = SideId::INVALID;
+            self.next[x.idx()] = SideId::INVALID;
+        }
+        self.set_polygon(p, merged);
+        self.live_polygons -= 1;
+        self.live_sides -= 2;
+        Ok(p)
+    }
+
+    /// Deletes the vertex at the start corner of side `s` (DELETEVERTICES' elementary step,
+    /// Section 4.2): the polygons around it are merged one by one across its incident sides
+    /// ([`Self::merge`]) until the last two sides at it are matched to each other; those two are
+    /// removed, and the vertex with them. The vertex must be weak (interior, not on a loop: every
+    /// side at it matched, to a side of another polygon until the end) and flat (angle 2π, so the
+    /// two corners beside the slit coincide within `tolerance` relative to the polygon's longest
+    /// side). Returns the polygon that replaces the star (it is usually not a triangle:
+    /// [`Self::triangulate_by_shortcuts`] is INSERTEDGES). O(size of the star).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchSide`]; [`PortalgonError::CannotMerge`] naming an unmatched side or
+    /// a side matched within its own polygon before the end (the vertex is on the boundary or on a
+    /// loop); [`PortalgonError::NotFlat`]. The merges done before an error stay done (they do not
+    /// change the surface).
+    pub fn delete_vertex(
+        &mut self,
+        s: SideId,
+        tolerance: f64,
+    ) -> Result<PolygonId, PortalgonError> {
+        if !self.is_side_live(s) {
+            return Err(PortalgonError::NoSuchSide {
+                polygon: usize::MAX,
+                side: s.idx(),
+            });
+        }
+        let mut out = s;
+        loop {
+            let into = self.prev_side(out);
+            if self.mate(out) == Some(into) {
+                break;
+            }
+            let t = match self.mate(out) {
+                Some(t) if self.owner(t) != self.owner(out) => t,
+                _ => {
+                    return Err(PortalgonError::CannotMerge {
+                        polygon: self.owner(out).idx(),
+                        side: self.side_index(out),
+                    });
+                }
+            };
+            // After merging across `out`, the side leaving the vertex is the one after t.
+            let next_out = self.next_side(t);
+            self.merge(out)?;
+            out = next_out;
+        }
+        // `into` ends at the vertex and `out` leaves it, glued to each other: a slit. The corners
+        // at its two ends (start of `into`, end of `out`) must coincide.
+        let into = self.prev_side(out);
+        let p = self.owner(out);
+        let (a, b) = (self.start(into), self.end(out));
+        let longest = self.polygons[p.idx()]
+            .iter()
+            .map(|&x| self.side_length(x))
+            .fold(0.0, f64::max);
+        let gap = dist(a, b);
+        if gap > tolerance * longest || self.polygons[p.idx()].len() < 5 {
+            return Err(PortalgonError::NotFlat {
+                polygon: p.idx(),
+                gap,
+            });
+        }
+        let after = self.next_side(out);
+        let sides: Vec<SideId> = self.polygons[p.idx()]
+            .iter()
+            .copied()
+            .filter(|&x| x != into && x != out)
+            .collect();
+        // The corner kept is the start of `into` (its label), now the start of `after`.
+        self.label[after.idx()] = self.label[into.idx()];
+        self.start[after.idx()] = a;
+        for x in [into, out] {
+            self.owner[x.idx()] = PolygonId::INVALID;
+            self.mate[x.idx()] = SideId::INVALID;
+            self.next[x.idx()] = SideId::INVALID;
+        }
+        self.live_sides -= 2;
+        self.set_polygon(p, sides);
+        Ok(p)
+    }
+
+    /// INSERTEDGES (Section 4.1) on one polygon: as long as a piece is not a triangle, cut it along
+    /// a shortcut. Returns the resulting triangles (the first is `p`). O(k⁴) in the worst case.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchPolygon`]; [`PortalgonError::NotAnArc`] if a piece has no arc at all
+    /// (only possible for a polygon that overlaps itself).
+    pub fn triangulate_by_shortcuts(
+        &mut self,
+        p: PolygonId,
+    ) -> Result<Vec<PolygonId>, PortalgonError> {
+        if !self.is_polygon_live(p) {
+            return Err(PortalgonError::NoSuchPolygon(p.idx()));
+        }
+        let mut todo = vec![p];
+        let mut done = Vec::new();
+        while let Some(x) = todo.pop() {
+            if self.polygon_sides(x).len() == 3 {
+                done.push(x);
+                continue;
+            }
+            let (i, j) = self.shortcut(x).ok_or(PortalgonError::NotAnArc {
+                polygon: x.idx(),
+                i: 0,
+                j: 0,
+            })?;
+            let (_, in_q) = self.cut(x, i, j)?;
+            todo.push(self.owner(in_q));
+            todo.push(x);
+        }
+        done.sort();
+        Ok(done)
+    }
+
+    /// The sub-portalgon of the given polygons (Section 2.1): a copy with their corners and labels,
+    /// two sides matched iff they are matched here and both belong to the subset (so sides matched
+    /// across the subset's border become boundary). Returns it and the old-to-new side map
+    /// (`INVALID` for sides not copied). Polygon `k` of the copy is `polygons[k]`.
+    pub fn sub_portalgon(&self, polygons: &[PolygonId]) -> (Portalgon, Vec<SideId>) {
+        let mut sub_p = Portalgon::new();
+        let mut map = vec![SideId::INVALID; self.start.len()];
+        for &p in polygons {
+            if !self.is_polygon_live(p) {
+                continue;
+            }
+            let labels: Vec<u32> = self
+                .polygon_sides(p)
+                .iter()
+                .map(|s| self.label[s.idx()])
+                .collect();
+            let np = sub_p.push_polygon(&self.corners(p), Some(&labels));
+            for (i, &s) in self.polygon_sides(p).iter().enumerate() {
+                map[s.idx()] = sub_p.side(np, i);
+            }
+        }
+        for s in self.sides() {
+            if let Some(t) = self.mate(s)
+                && map[s.idx()].is_valid()
+                && map[t.idx()].is_valid()
+            {
+                sub_p.mate[map[s.idx()].idx()] = map[t.idx()];
+            }
+        }
+        (sub_p, map)
+    }
+
+    /// A copy with dense ids (live polygons and sides in id order), and the old-to-new side map.
+    pub fn compacted(&self) -> (Portalgon, Vec<SideId>) {
+        let live: Vec<PolygonId> = self.polygons().collect();
+        self.sub_portalgon(&live)
+    }
+
+    /// The mirror image (every polygon reflected across the x axis, orientations kept
+    /// counter-clockwise by reversing the corner order; the matching carried over): the surface
+    /// with the opposite orientation. Side `i` of a `k`-gon becomes side `k - 1 - i`.
+    pub fn mirrored(&self) -> Portalgon {
+        let (dense, _) = self.compacted();
+        let mut out = Portalgon::new();
+        for p in dense.polygons() {
+            let sides = dense.polygon_sides(p);
+            let k = sides.len();
+            // New side m is old side k-1-m reversed; it starts at the old end corner.
+            let corners: Vec<Point2> = (0..k)
+                .map(|m| {
+                    let c = dense.end(sides[k - 1 - m]);
+                    [c[0], -c[1]]
+                })
+                .collect();
+            let labels: Vec<u32> = (0..k)
+                .map(|m| dense.label[dense.next_side(sides[k - 1 - m]).idx()])
+                .collect();
+            out.push_polygon(&corners, Some(&labels));
+        }
+        let image = |s: SideId| {
+            let p = dense.owner(s);
+            let k = dense.polygon_sides(p).len();
+            out.side(p, k - 1 - dense.side_index(s))
+        };
+        let pairs: Vec<(SideId, SideId)> = dense
+            .sides()
+            .filter_map(|s| dense.mate(s).map(|t| (image(s), image(t))))
+            .collect();
+        for (a, b) in pairs {
+            out.mate[a.idx()] = b;
+        }
+        out
+    }
+}
+
+/// The partition of a portalgon's polygons into regions, one of them active (Dubois,
+/// Section 4.4, Figure 4): the data structure of the paper's ALGORITHM. A side matched to a side
+/// of a polygon in another region lies on a *separating* edge. Regions are plain labels per
+/// polygon id; after [`Portalgon::cut`] the caller assigns the new polygon (usually to the region
+/// of the cut one), and [`Regions::sub_portalgon`] extracts a region with its border as boundary.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Regions {
+    region: Vec<u32>,
+    active: u32,
+    count: u32,
+}
+
+impl Regions {
+    /// Every polygon of `portalgon` in region 0, which is active.
+    pub fn new(portalgon: &Portalgon) -> Self {
+        Self {
+            region: vec![0; portalgon.polygon_slots()],
+            active: 0,
+            count: 1,
+        }
+    }
+    /// The region of a polygon (polygons created after [`Regions::new`] and never assigned are
+    /// in the active region).
+    pub fn region(&self, p: PolygonId) -> u32 {
+        self.region.get(p.idx()).copied().unwrap_or(self.active)
+    }
+    /// Puts polygon `p` in region `r`.
+    pub fn assign(&mut self, p: PolygonId, r: u32) {
+        if self.region.len() <= p.idx() {
+            self.region.resize(p.idx() + 1, self.active);
+        }
+        self.region[p.idx()] = r;
+        self.count = self.count.max(r + 1);
+    }
+    /// A fresh region label.
+    pub fn new_region(&mut self) -> u32 {
+        self.count += 1;
+        self.count - 1
+    }
+    /// The active region.
+    pub fn active(&self) -> u32 {
+        self.active
+    }
+    /// Makes region `r` the active one.
+    pub fn set_active(&mut self, r: u32) {
+        self.active = r;
+        self.count = self.count.max(r + 1);
+    }
+    /// The live polygons of region `r`, increasing ids.
+    pub fn polygons_in(&self, portalgon: &Portalgon, r: u32) -> Vec<PolygonId> {
+        portalgon
+            .polygons()
+            .filter(|&p| self.region(p) == r)
+            .collect()
+    }
+    /// Whether side `s` is matched to a side of a polygon in another region.
+    pub fn is_separating(&self, portalgon: &Portalgon, s: SideId) -> bool {
+        portalgon
+            .mate(s)
+            .is_some_and(|t| self.region(portalgon.owner(s)) != self.region(portalgon.owner(t)))
+    }
+    /// The sub-portalgon of region `r` (see [`Portalgon::sub_portalgon`]).
+    pub fn sub_portalgon(&self, portalgon: &Portalgon, r: u32) -> (Portalgon, Vec<SideId>) {
+        portalgon.sub_portalgon(&self.polygons_in(portalgon, r))
+    }
+}

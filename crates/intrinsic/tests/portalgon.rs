@@ -1,0 +1,435 @@
+//! Portalgons: the JSON format (round trips, typed errors) and the elementary edits (cut, merge,
+//! shortcuts, sub-portalgons, regions, mirror images).
+
+mod common;
+
+use surftopo_intrinsic::generators::flat_torus;
+use surftopo_intrinsic::{
+    DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, IntrinsicTriangulation, PolygonId, Portalgon,
+    PortalgonDoc, PortalgonError, Regions, TriangleStyle, check_polygon, flip_to_delaunay,
+};
+use surftopo_mesh::generators::icosphere;
+
+const T3: &str = r#"{
+  "format": "surftopo-portalgon",
+  "version": 1,
+  "comment": "the flat torus T_3 of Dubois, Section 9",
+  "polygons": [
+    { "corners": [[0, 0], [1, 0], [3, 2]], "vertices": [0, 0, 0] },
+    { "lengths": [1, 2.8284271247461903, 3.605551275463989], "vertices": [0, 0, 0] }
+  ],
+  "matching": [ [[0, 0], [1, 0]], [[0, 1], [1, 1]], [[0, 2], [1, 2]] ]
+}"#;
+
+#[test]
+fn the_documented_example_is_t_3() {
+    let doc = PortalgonDoc::from_json(T3).unwrap();
+    let mut tri = doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE).unwrap();
+    let m = tri.mesh();
+    assert_eq!(
+        (m.vertex_count(), m.edge_count(), m.face_count()),
+        (1, 3, 2)
+    );
+    assert!((common::area(&tri) - 2.0).abs() < 1e-12);
+    let report = flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
+    assert_eq!(report.flips, 2);
+    // As a general portalgon too.
+    let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).unwrap();
+    assert_eq!((p.polygon_count(), p.side_count()), (2, 6));
+    assert_eq!(p.vertex_classes().1, 1);
+    assert!((p.area() - 2.0).abs() < 1e-12);
+    p.check_closed().unwrap();
+}
+
+#[test]
+fn triangulations_round_trip_through_json() {
+    let s = icosphere(2);
+    let mut tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
+    flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
+    let text = PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths)
+        .to_json()
+        .unwrap();
+    let back = PortalgonDoc::from_json(&text)
+        .unwrap()
+        .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
+        .unwrap();
+    // Same ids, same orientation, bit-identical lengths.
+    assert_same_faces(&back, &tri, 0.0);
+    assert_eq!(back.lengths(), tri.lengths());
+    for e in tri.mesh().edges() {
+        assert_eq!(back.mesh().edge_vertices(e), tri.mesh().edge_vertices(e));
+    }
+    // With corners: same combinatorics, lengths up to the layout's rounding.
+    let mut bytes = Vec::new();
+    tri.write_json(&mut bytes, TriangleStyle::Corners).unwrap();
+    let back = IntrinsicTriangulation::read_json(&bytes[..], DEFAULT_LENGTH_TOLERANCE).unwrap();
+    assert_same_faces(&back, &tri, 1e-14);
+    for e in tri.mesh().edges() {
+        assert_eq!(back.mesh().edge_vertices(e), tri.mesh().edge_vertices(e));
+    }
+    // Through the general portalgon as well (edges are then numbered by the portalgon's sides).
+    let (p, _) = tri.to_portalgon();
+    let back = IntrinsicTriangulation::from_portalgon(&p, DEFAULT_LENGTH_TOLERANCE).unwrap();
+    assert_same_faces(&back, &tri, 1e-14);
+}
+
+#[test]
+fn loops_and_multi_edges_round_trip() {
+    for (x, m) in [(3.0, 1), (2.5, 2)] {
+        let mut tri = flat_torus(x, m).unwrap();
+        flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
+        let text = PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths)
+            .to_json()
+            .unwrap();
+        let back = IntrinsicTriangulation::read_json(text.as_bytes(), 0.0).unwrap();
+        assert_same_faces(&back, &tri, 0.0);
+        assert_eq!(back.lengths(), tri.lengths());
+    }
+}
+
+/// Same faces (ids, corner vertices, side lengths within `tol` relative), whatever the edge ids
+/// and the stored half-edges.
+fn assert_same_faces(a: &IntrinsicTriangulation, b: &IntrinsicTriangulation, tol: f64) {
+    let (ma, mb) = (a.mesh(), b.mesh());
+    assert_eq!(ma.face_slots(), mb.face_slots());
+    assert_eq!(ma.edge_count(), mb.edge_count());
+    for f in ma.faces() {
+        assert_eq!(ma.face_vertices(f), mb.face_vertices(f), "face {f:?}");
+        let (la, lb) = (common::sides(a, f), common::sides(b, f));
+        for k in 0..3 {
+            assert!(
+                (la[k] - lb[k]).abs() <= tol * la[k],
+                "face {f:?}: {la:?} vs {lb:?}"
+            );
+        }
+        // Neighbours across each side are the same faces.
+        for (ha, hb) in ma.face_halfedges(f).into_iter().zip(mb.face_halfedges(f)) {
+            assert_eq!(ma.face(ha.twin()), mb.face(hb.twin()));
+        }
+    }
+}
+
+fn error_of(text: &str) -> PortalgonError {
+    match PortalgonDoc::from_json(text).and_then(|d| d.to_triangulation(1e-9)) {
+        Err(e) => e,
+        Ok(_) => panic!("accepted: {text}"),
+    }
+}
+
+#[test]
+fn bad_files_get_typed_errors_naming_the_element() {
+    let tri = |a: &str, b: &str, matching: &str| {
+        format!(r#"{{"polygons": [{a}, {b}], "matching": {matching}}}"#)
+    };
+    let p0 = r#"{"lengths": [1, 2.8284271247461903, 3.605551275463989]}"#;
+    let ok_matching = "[[[0,0],[1,0]], [[0,1],[1,1]], [[0,2],[1,2]]]";
+    // Unequal matched sides: polygon 1 side 1 is a bit longer.
+    let p1 = r#"{"lengths": [1, 2.83, 3.605551275463989]}"#;
+    match error_of(&tri(p0, p1, ok_matching)) {
+        PortalgonError::UnequalSides {
+            polygon_a: 0,
+            side_a: 1,
+            polygon_b: 1,
+            side_b: 1,
+            ..
+        } => {}
+        e => panic!("{e}"),
+    }
+    // An unmatched side.
+    match error_of(&tri(p0, p0, "[[[0,0],[1,0]], [[0,1],[1,1]]]")) {
+        PortalgonError::Unmatched {
+            polygon: 0,
+            side: 2,
+        } => {}
+        e => panic!("{e}"),
+    }
+    // A side matched twice.
+    match error_of(&tri(
+        p0,
+        p0,
+        "[[[0,0],[1,0]], [[0,0],[1,1]], [[0,2],[1,2]]]",
+    )) {
+        PortalgonError::MatchedTwice {
+            polygon: 0,
+            side: 0,
+        } => {}
+        e => panic!("{e}"),
+    }
+    // A side that does not exist.
+    match error_of(&tri(p0, p0, "[[[0,0],[1,3]]]")) {
+        PortalgonError::NoSuchSide {
+            polygon: 1,
+            side: 3,
+        } => {}
+        e => panic!("{e}"),
+    }
+    // A quadrilateral where a triangulation is needed, and lengths for it.
+    let quad = r#"{"corners": [[0,0],[1,0],[1,1],[0,1]]}"#;
+    assert!(matches!(
+        error_of(&tri(p0, quad, "[]")),
+        PortalgonError::NotTriangle {
+            polygon: 1,
+            sides: 4
+        }
+    ));
+    let four = r#"{"lengths": [1, 1, 1, 1]}"#;
+    assert!(matches!(
+        error_of(&tri(p0, four, "[]")),
+        PortalgonError::LengthsNotTriangle {
+            polygon: 1,
+            count: 4
+        }
+    ));
+    // A clockwise triangle.
+    let cw = r#"{"corners": [[0,0],[3,2],[1,0]]}"#;
+    assert!(matches!(
+        error_of(&tri(p0, cw, ok_matching)),
+        PortalgonError::NotCounterClockwise { polygon: 1, .. }
+    ));
+    // Labels that contradict the gluing (T_3 has one vertex).
+    let l0 = r#"{"lengths": [1, 2.8284271247461903, 3.605551275463989], "vertices": [0, 1, 0]}"#;
+    assert!(matches!(
+        error_of(&tri(l0, l0, ok_matching)),
+        PortalgonError::VertexLabels { .. }
+    ));
+    // Labels on some polygons only.
+    let l1 = r#"{"lengths": [1, 2.8284271247461903, 3.605551275463989], "vertices": [0, 0, 0]}"#;
+    assert!(matches!(
+        error_of(&tri(l1, p0, ok_matching)),
+        PortalgonError::VertexLabels { polygon: 1, .. }
+    ));
+    // Not JSON, a typo'd field, another format, no polygons, both shapes.
+    assert!(matches!(error_of("{"), PortalgonError::Json(_)));
+    assert!(matches!(
+        error_of(r#"{"polygons": [], "matchings": []}"#),
+        PortalgonError::Json(_)
+    ));
+    assert!(matches!(
+        error_of(r#"{"format": "obj", "polygons": []}"#),
+        PortalgonError::Version { .. }
+    ));
+    assert!(matches!(
+        error_of(r#"{"polygons": []}"#),
+        PortalgonError::Empty
+    ));
+    let both = r#"{"corners": [[0,0],[1,0],[0,1]], "lengths": [1,1,1]}"#;
+    assert!(matches!(
+        error_of(&tri(p0, both, ok_matching)),
+        PortalgonError::Shape { polygon: 1 }
+    ));
+    // Two components.
+    let four_tris = r#"{"polygons": [{"lengths":[1,1,1]},{"lengths":[1,1,1]},{"lengths":[1,1,1]},{"lengths":[1,1,1]}],
+        "matching": [[[0,0],[1,2]],[[0,1],[1,1]],[[0,2],[1,0]],[[2,0],[3,2]],[[2,1],[3,1]],[[2,2],[3,0]]]}"#;
+    assert!(matches!(error_of(four_tris), PortalgonError::Gluing(_)));
+}
+
+#[test]
+fn degenerate_triangles_are_read_and_left_to_validation() {
+    // A zero-area triangle given by lengths is read (it may still be mollified).
+    let text = r#"{"polygons": [{"lengths": [1, 1, 2]}, {"lengths": [1, 1, 2]}],
+        "matching": [[[0,0],[1,1]], [[0,1],[1,0]], [[0,2],[1,2]]]}"#;
+    let tri = PortalgonDoc::from_json(text)
+        .unwrap()
+        .to_triangulation(1e-9)
+        .unwrap();
+    assert!(tri.validate().is_err());
+    // The general portalgon refuses it outright.
+    assert!(matches!(
+        PortalgonDoc::from_json(text).unwrap().to_portalgon(1e-9),
+        Err(PortalgonError::TriangleInequality { polygon: 0, .. })
+    ));
+}
+
+#[test]
+fn polygon_validation() {
+    assert!(check_polygon(0, &[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]).is_ok());
+    assert!(matches!(
+        check_polygon(3, &[[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]]),
+        Err(PortalgonError::NotCounterClockwise { polygon: 3, .. })
+    ));
+    // A bow tie with positive signed area.
+    let bow = [[0.0, 0.0], [2.0, 0.0], [0.0, 1.0], [3.0, 1.0]];
+    assert!(matches!(
+        check_polygon(0, &bow),
+        Err(PortalgonError::NotSimple { .. }) | Err(PortalgonError::NotCounterClockwise { .. })
+    ));
+    let bow = [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [1.0, -1.0], [0.0, 3.0]];
+    assert!(matches!(
+        check_polygon(0, &bow),
+        Err(PortalgonError::NotSimple { .. })
+    ));
+    assert!(matches!(
+        check_polygon(0, &[[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
+        Err(PortalgonError::ZeroSide { side: 1, .. })
+    ));
+    assert!(matches!(
+        check_polygon(0, &[[0.0, 0.0], [f64::NAN, 0.0], [0.0, 1.0]]),
+        Err(PortalgonError::NonFinite { index: 1, .. })
+    ));
+    assert!(matches!(
+        check_polygon(0, &[[0.0, 0.0], [1.0, 0.0]]),
+        Err(PortalgonError::TooFewCorners { corners: 2, .. })
+    ));
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+#[test]
+fn cut_and_merge_are_inverse() {
+    let mut p = Portalgon::new();
+    let square = p
+        .add_polygon(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+        .unwrap();
+    let before = p.corners(square);
+    // 0-1 is a side, not an arc; 0-2 is a diagonal.
+    assert!(!p.is_arc(square, 0, 1));
+    assert!(p.is_arc(square, 0, 2) && p.is_arc(square, 3, 1));
+    let (in_p, in_q) = p.cut(square, 0, 2).unwrap();
+    assert_eq!(p.mate(in_p), Some(in_q));
+    assert_eq!((p.polygon_count(), p.side_count()), (2, 6));
+    let q = p.owner(in_q);
+    assert_eq!(p.polygon_sides(square).len(), 3);
+    assert_eq!(p.polygon_sides(q).len(), 3);
+    assert!((p.area() - 4.0).abs() < 1e-15);
+    assert!((p.side_length(in_p) - 8f64.sqrt()).abs() < 1e-15);
+    // Displace q (another representation of the same portalgon), then merge back.
+    let merged = p.merge(in_p).unwrap();
+    assert_eq!(merged, square);
+    assert_eq!((p.polygon_count(), p.side_count()), (1, 4));
+    let after = p.corners(square);
+    for (a, b) in before.iter().zip(&after) {
+        assert!(dist(*a, *b) < 1e-15, "{before:?} vs {after:?}");
+    }
+    // Merging across an unmatched side is refused.
+    let s0 = p.side(square, 0);
+    assert!(matches!(
+        p.merge(s0),
+        Err(PortalgonError::CannotMerge { .. })
+    ));
+}
+
+#[test]
+fn merge_displaces_the_other_polygon_rigidly() {
+    // Two unit right triangles in unrelated positions, glued along their hypotenuses.
+    let mut p = Portalgon::new();
+    let a = p
+        .add_polygon(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+        .unwrap();
+    let b = p
+        .add_polygon(&[[10.0, 10.0], [10.0, 9.0], [11.0, 10.0]])
+        .unwrap();
+    // a: side 1 from (1,0) to (0,1); b: side 1 from (10,9) to (11,10), also √2 long.
+    p.glue(p.side(a, 1), p.side(b, 1), 1e-12).unwrap();
+    let merged = p.merge(p.side(a, 1)).unwrap();
+    let c = p.corners(merged);
+    assert_eq!(c.len(), 4);
+    // A unit square: sides 1, diagonals √2.
+    for i in 0..4 {
+        assert!((dist(c[i], c[(i + 1) % 4]) - 1.0).abs() < 1e-14, "{c:?}");
+    }
+    assert!((dist(c[0], c[2]) - 2f64.sqrt()).abs() < 1e-14);
+    assert!((p.polygon_area(merged) - 1.0).abs() < 1e-14);
+}
+
+#[test]
+fn shortcuts_and_insert_edges() {
+    let mut p = Portalgon::new();
+    // A kite: the diagonal 1-3 (length 2) is shorter than 0-2 (length 4).
+    let kite = p
+        .add_polygon(&[[0.0, 0.0], [1.0, 1.0], [0.0, 4.0], [-1.0, 1.0]])
+        .unwrap();
+    assert_eq!(p.shortcut(kite), Some((1, 3)));
+    // An arrowhead (reflex corner 2): 0-2 lies inside, 1-3 passes outside.
+    let arrow = p
+        .add_polygon(&[[0.0, 0.0], [2.0, -1.0], [0.5, 0.0], [2.0, 1.0]])
+        .unwrap();
+    assert!(!p.is_arc(arrow, 1, 3));
+    assert!(p.is_arc(arrow, 0, 2));
+    assert_eq!(p.shortcut(arrow), Some((0, 2)));
+    // A regular hexagon: INSERTEDGES gives 4 triangles, 3 new matched pairs, same area.
+    let hex: Vec<[f64; 2]> = (0..6)
+        .map(|k| {
+            let t = std::f64::consts::PI / 3.0 * f64::from(k);
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let h = p.add_polygon(&hex).unwrap();
+    let area = p.polygon_area(h);
+    let tris = p.triangulate_by_shortcuts(h).unwrap();
+    assert_eq!(tris.len(), 4);
+    let total: f64 = tris.iter().map(|&t| p.polygon_area(t)).sum();
+    assert!((total - area).abs() < 1e-14);
+    let matched = tris
+        .iter()
+        .flat_map(|&t| p.polygon_sides(t).to_vec())
+        .filter(|&s| p.mate(s).is_some())
+        .count();
+    assert_eq!(matched, 6);
+    // The first shortcut of a regular hexagon is a short diagonal (√3), not a long one (2); the
+    // greedy sequence may then be left with a rectangle whose diagonals are both long.
+    let mut q = Portalgon::new();
+    let h = q.add_polygon(&hex).unwrap();
+    let (i, j) = q.shortcut(h).unwrap();
+    assert!((dist(hex[i], hex[j]) - 3f64.sqrt()).abs() < 1e-12);
+    for &t in &tris {
+        for &s in p.polygon_sides(t) {
+            let l = p.side_length(s);
+            assert!(
+                [1.0, 3f64.sqrt(), 2.0]
+                    .iter()
+                    .any(|w| (l - w).abs() < 1e-12),
+                "{l}"
+            );
+        }
+    }
+}
+
+#[test]
+fn sub_portalgons_regions_and_vertex_classes() {
+    let mut tri = flat_torus(2.5, 3).unwrap();
+    flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
+    let (p, _) = tri.to_portalgon();
+    assert_eq!(p.vertex_classes().1, 9);
+    p.check_closed().unwrap();
+    // Half of the triangles as one region.
+    let mut regions = Regions::new(&p);
+    let r = regions.new_region();
+    let half: Vec<PolygonId> = p.polygons().take(9).collect();
+    for &q in &half {
+        regions.assign(q, r);
+    }
+    let (sub, map) = regions.sub_portalgon(&p, r);
+    assert_eq!(sub.polygon_count(), 9);
+    // A side of the sub-portalgon is boundary iff it was matched across the region border.
+    for s in p.sides() {
+        if !map[s.idx()].is_valid() {
+            continue;
+        }
+        let boundary = sub.mate(map[s.idx()]).is_none();
+        assert_eq!(boundary, regions.is_separating(&p, s));
+    }
+    assert!(sub.unmatched_sides().count() > 0);
+    assert!(sub.check_closed().is_err());
+    assert!((sub.area() + regions.sub_portalgon(&p, 0).0.area() - 2.0).abs() < 1e-12);
+    // Ungluing and gluing back.
+    let mut q = p.clone();
+    let s = q.sides().next().unwrap();
+    let t = q.unglue(s).unwrap();
+    assert!(q.check_closed().is_err());
+    q.glue(s, t, 1e-12).unwrap();
+    assert_eq!(q, p);
+}
+
+#[test]
+fn the_mirror_image_of_the_mirror_image_is_the_original() {
+    let s = icosphere(1);
+    let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
+    let (p, _) = tri.to_portalgon();
+    let m = p.mirrored();
+    assert_eq!(m.vertex_classes().1, p.vertex_classes().1);
+    assert!((m.area() - p.area()).abs() < 1e-12);
+    assert_ne!(m, p);
+    assert_eq!(m.mirrored(), p);
+}
