@@ -57,6 +57,20 @@ enum Command {
         #[arg(long)]
         weld: bool,
     },
+    /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
+    /// Laplacian and the lumped mass matrix.
+    Delaunay(commands::delaunay::Options),
+    /// Whether two closed polyhedral surfaces are isometric: prints `isometric` (exit 0) or
+    /// `not isometric` (exit 1).
+    Isometric {
+        /// First surface (mesh or portalgon JSON).
+        a: PathBuf,
+        /// Second surface (mesh or portalgon JSON).
+        b: PathBuf,
+        /// Merge vertices with exactly equal positions first (mesh input).
+        #[arg(long)]
+        weld: bool,
+    },
     /// Run every capability on a built-in example and write the results into a folder.
     Demo {
         /// Folder for the results.
@@ -65,28 +79,35 @@ enum Command {
     },
 }
 
-fn run(cli: Cli) -> anyhow::Result<()> {
+fn run(cli: Cli) -> anyhow::Result<ExitCode> {
+    let done = |r: anyhow::Result<()>| r.map(|()| ExitCode::SUCCESS);
     match cli.command {
         Command::Info {
             mesh,
             json,
             weld,
             strict,
-        } => commands::info::run(&mesh, json, weld, strict),
-        Command::Generate { kind, modifiers } => commands::generate::run(&kind, &modifiers),
+        } => done(commands::info::run(&mesh, json, weld, strict)),
+        Command::Generate { kind, modifiers } => done(commands::generate::run(&kind, &modifiers)),
         Command::Convert {
             input,
             output,
             weld,
-        } => commands::convert::run(&input, &output, weld),
-        Command::Demo { out } => commands::demo::run(&out),
+        } => done(commands::convert::run(&input, &output, weld)),
+        Command::Delaunay(options) => done(commands::delaunay::run(&options)),
+        Command::Isometric { a, b, weld } => Ok(if commands::isometric::run(&a, &b, weld)? {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        }),
+        Command::Demo { out } => done(commands::demo::run(&out)),
     }
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,
         Err(error) => {
             eprintln!("error: {error:#}");

@@ -41,3 +41,29 @@ pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
             .is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe)
     })
 }
+
+/// Writes a file atomically (temporary sibling, then rename) with `fill` writing its contents.
+pub fn write_file(
+    path: &Path,
+    fill: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    use std::io::Write;
+    let mut failure = None;
+    let result = surftopo_io::atomic_write(path, |mut file| {
+        let mut writer = std::io::BufWriter::new(&mut file);
+        if let Err(e) = fill(&mut writer) {
+            failure = Some(e);
+            return Err(std::io::Error::other("writing failed"));
+        }
+        writer.flush()?;
+        drop(writer);
+        Ok(file)
+    });
+    match (failure, result) {
+        (Some(e), _) => Err(e.context(format!("{}: not written", path.display()))),
+        (None, Err(e)) => {
+            Err(anyhow::Error::new(e).context(format!("{}: not written", path.display())))
+        }
+        (None, Ok(())) => Ok(()),
+    }
+}

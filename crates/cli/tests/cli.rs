@@ -239,7 +239,15 @@ fn demo_writes_its_results() {
     let stdout = String::from_utf8_lossy(&assert.get_output().stdout).to_string();
     assert!(stdout.contains("surftopo demo"), "{stdout}");
     let v = info_json(&out.join("input.obj"), &["--strict"]);
-    assert_eq!(v["genus"], 1);
+    assert_eq!(v["genus"], 2);
+    let delaunay = surftopo()
+        .arg("isometric")
+        .arg(out.join("input.obj"))
+        .arg(out.join("delaunay.json"))
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&delaunay.stdout).trim(), "isometric");
+    assert!(out.join("laplacian.mtx").is_file());
 }
 
 #[test]
@@ -325,4 +333,127 @@ fn every_generator_gives_a_valid_surface_of_its_genus() {
     };
     assert_eq!(run("5", "a.obj"), run("5", "b.obj"));
     assert_ne!(run("5", "c.obj"), run("6", "d.obj"));
+}
+
+#[test]
+fn delaunay_writes_its_outputs_and_isometric_answers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    surftopo()
+        .args(["generate", "flat-torus", "--x", "12", "-o"])
+        .arg(d("t.json"))
+        .assert()
+        .success();
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(d("t.json"))
+        .arg("-o")
+        .arg(d("td.json"))
+        .arg("--tessellation")
+        .arg(d("tt.json"))
+        .arg("--laplacian")
+        .arg(d("L.mtx"))
+        .arg("--mass")
+        .arg(d("M.mtx"))
+        .arg("--json")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in [
+        "vertices",
+        "edges",
+        "faces",
+        "flips",
+        "non_delaunay_edges",
+        "seconds",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["flips"], 11);
+    assert_eq!(v["non_delaunay_edges"], 0);
+    for f in ["td.json", "tt.json", "L.mtx", "M.mtx"] {
+        assert!(d(f).is_file(), "{f} not written");
+    }
+    assert!(
+        std::fs::read_to_string(d("L.mtx"))
+            .unwrap()
+            .starts_with("%%MatrixMarket")
+    );
+    // The flipped torus is isometric to the original; another torus is not.
+    surftopo()
+        .arg("isometric")
+        .arg(d("t.json"))
+        .arg(d("td.json"))
+        .assert()
+        .code(0);
+    surftopo()
+        .args(["generate", "flat-torus", "--x", "12.5", "-o"])
+        .arg(d("other.json"))
+        .assert()
+        .success();
+    let out = surftopo()
+        .arg("isometric")
+        .arg(d("t.json"))
+        .arg(d("other.json"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "not isometric");
+    // Exceeding --max-flips is a clear error; nothing is written.
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(d("t.json"))
+        .args(["--max-flips", "2", "-o"])
+        .arg(d("never.json"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("stopped after 2 flips"));
+    assert!(!d("never.json").exists());
+    // A degenerate triangle (zero area) is a typed error; mollification repairs it.
+    let flat = write(
+        dir.path(),
+        "flat.obj",
+        &TETRA.replace("v 0 0 1", "v 0.5 0.5 0"),
+    );
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&flat)
+        .arg("-o")
+        .arg(d("f.json"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    surftopo()
+        .arg("delaunay")
+        .arg(&flat)
+        .args(["--mollify", "1e-4", "-o"])
+        .arg(d("f.json"))
+        .assert()
+        .success();
+    // A broken portalgon file names itself.
+    let bad = write(
+        dir.path(),
+        "bad.json",
+        "{\"format\": \"surftopo-portalgon\"",
+    );
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&bad)
+        .arg("-o")
+        .arg(d("b.json"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("bad.json"));
 }

@@ -99,7 +99,7 @@ fn temp_path(path: &Path) -> io::Result<PathBuf> {
 
 /// Runs `fill` on a new temporary file next to `path`, syncs it and renames
 /// it over `path`; removes the temporary file on any error.
-pub(crate) fn atomic_write(
+pub fn atomic_write(
     path: &Path,
     fill: impl FnOnce(File) -> io::Result<File>,
 ) -> io::Result<()> {

@@ -34,7 +34,7 @@ use std::io::{self, Read, Write};
 
 pub use error::{IoError, Location};
 pub use format::{Format, is_gzip_path};
-pub use fs::{read_path, write_path};
+pub use fs::{atomic_write, read_path, write_path};
 pub use soup::{NotTriangles, PolygonSoup};
 
 use error::Ctx;

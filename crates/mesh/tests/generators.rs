@@ -494,3 +494,15 @@ fn surface_compact_keeps_positions() {
     }
     soup_counts(&s);
 }
+
+#[test]
+fn random_flips_on_flat_regions_make_no_flat_triangles() {
+    use surftopo_mesh::generators::{genus_surface, random_flips, subdivide_midpoint};
+    let brick = subdivide_midpoint(&genus_surface(2, 2), 1);
+    let flipped = random_flips(&brick, 5000, 11);
+    assert_ne!(flipped.mesh, brick.mesh);
+    for f in flipped.mesh.faces() {
+        let area = surftopo_mesh::geometry::face_area(&flipped.mesh, &flipped.positions, f);
+        assert!(area > 1e-9, "face {f:?} has area {area}");
+    }
+}

@@ -1,17 +1,24 @@
 //! `surftopo demo`: the main job on a built-in example, needing no file.
 
 use crate::commands::generate::{self, Kind, Modifiers};
+use crate::output::{emit, write_file};
+use std::fmt::Write as _;
 use std::path::Path;
+use surftopo_intrinsic::{
+    DelaunayOptions, IntrinsicTriangulation, TriangleStyle, cotan_laplacian, delaunay_with_stats,
+    write_matrix_market,
+};
 
-/// Generates a surface, runs every capability on it, writes the results into `out_dir` and prints
-/// a summary.
+/// Generates a surface (a genus-2 brick with irregular connectivity), runs every capability on it,
+/// writes the results into `out_dir` and prints a summary.
 pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     std::fs::create_dir_all(out_dir)?;
-    let kind = Kind::Torus { m: 24, n: 12 };
+    let mut summary = String::new();
+    let kind = Kind::Genus { genus: 2, size: 2 };
     let modifiers = Modifiers {
         output: None,
-        subdivide: 0,
-        flips: 200,
+        subdivide: 1,
+        flips: 2000,
         splits: 0,
         seed: 7,
     };
@@ -19,14 +26,41 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     let input = out_dir.join("input.obj");
     crate::output::write_surface(&input, &surface)?;
     let mesh = &surface.mesh;
-    println!("surftopo demo: results in {}", out_dir.display());
-    println!(
-        "  input        {}: {} vertices, {} edges, {} faces, genus {}",
+    writeln!(summary, "surftopo demo: results in {}", out_dir.display())?;
+    writeln!(
+        summary,
+        "  input         {}: genus-2 brick, subdivided, 2000 random flips: {} vertices, {} edges, {} faces, genus {}",
         input.display(),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),
         mesh.genus()
-    );
-    Ok(())
+    )?;
+
+    let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;
+    let stats = delaunay_with_stats(&mut tri, &DelaunayOptions::default())?;
+    let delaunay = out_dir.join("delaunay.json");
+    write_file(
+        &delaunay,
+        |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?),
+    )?;
+    let laplacian = out_dir.join("laplacian.mtx");
+    write_file(&laplacian, |w| {
+        Ok(write_matrix_market(
+            w,
+            &cotan_laplacian(&tri),
+            "cotan Laplacian (positive semidefinite)",
+        )?)
+    })?;
+    writeln!(
+        summary,
+        "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {:.3} s; Laplacian in {}",
+        delaunay.display(),
+        stats.flips,
+        stats.non_delaunay_edges,
+        stats.multi_edges,
+        stats.seconds,
+        laplacian.display()
+    )?;
+    emit(&summary)
 }

@@ -3,6 +3,7 @@
 
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
+use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
 use surftopo_mesh::generators::{self, Surface};
 
 /// The surface to generate.
@@ -48,6 +49,45 @@ pub enum Kind {
         #[arg(long, default_value_t = 100_000)]
         triangles: u64,
     },
+    /// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles
+    /// (0,0), (1,0), (x,2); refined m x m when m > 1. Written as portalgon JSON (`-o OUT.json`).
+    FlatTorus {
+        /// The parameter x (the flip algorithm needs x - 1 flips for integer x).
+        #[arg(long)]
+        x: f64,
+        /// Refinement: the same torus as an m x m grid of parallelograms.
+        #[arg(long, default_value_t = 1)]
+        m: u32,
+    },
+    /// A torus of revolution whose grid diagonals wind `shear` times around the tube (many flips).
+    ShearedTorus {
+        /// Grid size around the axis.
+        #[arg(long, default_value_t = 64)]
+        m: u32,
+        /// Grid size around the tube.
+        #[arg(long, default_value_t = 16)]
+        n: u32,
+        /// Windings of the diagonals.
+        #[arg(long, default_value_t = 4)]
+        shear: u32,
+    },
+    /// Random intrinsic flips of any input (an isometric re-triangulation), as portalgon JSON.
+    IntrinsicFlips {
+        /// A mesh or portalgon JSON file.
+        #[arg(long)]
+        input: PathBuf,
+        /// Number of flips.
+        #[arg(long, default_value_t = 1000)]
+        count: u64,
+    },
+}
+
+/// What a generator makes: a surface with positions, or an intrinsic triangulation (lengths only).
+pub enum Generated {
+    /// Topology and 3D positions.
+    Surface(Surface),
+    /// Topology and edge lengths.
+    Intrinsic(IntrinsicTriangulation),
 }
 
 /// Options common to every generator.
@@ -70,9 +110,42 @@ pub struct Modifiers {
     pub seed: u64,
 }
 
-/// Generates the surface of `kind` (without modifiers).
+/// Generates the surface or intrinsic triangulation of `kind` (without modifiers).
+pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
+    let invalid = |e: &dyn std::fmt::Display| crate::failure::invalid(format!("{e}"));
+    Ok(match kind {
+        Kind::FlatTorus { x, m } => {
+            check_size(2 * u64::from(*m).pow(2))?;
+            Generated::Intrinsic(
+                intrinsic::generators::flat_torus(*x, *m).map_err(|e| invalid(&e))?,
+            )
+        }
+        Kind::ShearedTorus { m, n, shear } => {
+            check_size(2 * u64::from(*m) * u64::from(*n))?;
+            Generated::Surface(
+                intrinsic::generators::sheared_torus(*m, *n, *shear).map_err(|e| invalid(&e))?,
+            )
+        }
+        Kind::IntrinsicFlips { input, count } => {
+            let mut tri = crate::commands::delaunay::load_intrinsic(input, false)?;
+            intrinsic::generators::random_flips(&mut tri, *count, seed);
+            Generated::Intrinsic(tri)
+        }
+        other => Generated::Surface(generate(other)?),
+    })
+}
+
+/// Generates the surface of `kind` (without modifiers); intrinsic kinds are refused.
 pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
     Ok(match *kind {
+        Kind::FlatTorus { .. } | Kind::ShearedTorus { .. } | Kind::IntrinsicFlips { .. } => {
+            return match generate_any(kind, 0)? {
+                Generated::Surface(surface) => Ok(surface),
+                Generated::Intrinsic(_) => Err(crate::failure::invalid(
+                    "an intrinsic triangulation has no positions",
+                )),
+            };
+        }
         Kind::Tetrahedron => generators::tetrahedron(),
         Kind::Icosphere { subdivisions } => {
             if subdivisions > 10 {
@@ -144,12 +217,43 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
         .output
         .as_ref()
         .ok_or_else(|| crate::failure::invalid("generate: an output file is needed (-o OUT)"))?;
-    let surface = crate::progress::step("generating", || generate(kind))?;
-    let surface = modify(surface, modifiers)?;
-    crate::progress::step("writing", || crate::output::write_surface(output, &surface))?;
-    let mesh = &surface.mesh;
+    let generated = crate::progress::step("generating", || generate_any(kind, modifiers.seed))?;
+    let (mesh, what) = match generated {
+        Generated::Surface(surface) => {
+            let surface = modify(surface, modifiers)?;
+            crate::progress::step("writing", || crate::output::write_surface(output, &surface))?;
+            (surface.mesh, "")
+        }
+        Generated::Intrinsic(mut tri) => {
+            if modifiers.subdivide > 0 || modifiers.splits > 0 {
+                return Err(crate::failure::invalid(
+                    "--subdivide and --splits need positions; this generator makes an intrinsic triangulation",
+                ));
+            }
+            if modifiers.flips > 0 {
+                intrinsic::generators::random_flips(
+                    &mut tri,
+                    modifiers.flips as u64,
+                    modifiers.seed,
+                );
+            }
+            let is_json = output
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+            if !is_json {
+                return Err(crate::failure::invalid(format!(
+                    "{}: an intrinsic triangulation is written as portalgon JSON (.json)",
+                    output.display()
+                )));
+            }
+            crate::output::write_file(output, |w| {
+                Ok(tri.write_json(w, intrinsic::TriangleStyle::Lengths)?)
+            })?;
+            (tri.into_parts().0, " (intrinsic)")
+        }
+    };
     eprintln!(
-        "wrote {}: {} vertices, {} edges, {} faces, genus {}",
+        "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}",
         output.display(),
         mesh.vertex_count(),
         mesh.edge_count(),

@@ -1,6 +1,8 @@
 //! One module per subcommand.
 
 pub mod convert;
+pub mod delaunay;
 pub mod demo;
 pub mod generate;
 pub mod info;
+pub mod isometric;
