@@ -60,7 +60,10 @@ fn measure(name: &str, surface: &Surface, dir: &Path, repeat: usize) -> anyhow::
         let (read_seconds, read) = best(repeat, || surftopo_io::read_path(&path));
         let read = read?;
         let (build_seconds, mesh) = best(repeat, || build(&read));
-        anyhow::ensure!(mesh?.face_count() == triangles.len(), "{name}: face count changed");
+        anyhow::ensure!(
+            mesh?.face_count() == triangles.len(),
+            "{name}: face count changed"
+        );
         let (both, _) = best(repeat, || surftopo_io::read_path(&path).map(|s| build(&s)));
         rows.push(Row {
             input: name.to_string(),

@@ -246,7 +246,10 @@ fn demo_writes_its_results() {
         .arg(out.join("delaunay.json"))
         .output()
         .unwrap();
-    assert_eq!(String::from_utf8_lossy(&delaunay.stdout).trim(), "isometric");
+    assert_eq!(
+        String::from_utf8_lossy(&delaunay.stdout).trim(),
+        "isometric"
+    );
     assert!(out.join("laplacian.mtx").is_file());
 }
 

@@ -99,10 +99,7 @@ fn temp_path(path: &Path) -> io::Result<PathBuf> {
 
 /// Runs `fill` on a new temporary file next to `path`, syncs it and renames
 /// it over `path`; removes the temporary file on any error.
-pub fn atomic_write(
-    path: &Path,
-    fill: impl FnOnce(File) -> io::Result<File>,
-) -> io::Result<()> {
+pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) -> io::Result<()> {
     let tmp = temp_path(path)?;
     let file = OpenOptions::new().write(true).create_new(true).open(&tmp)?;
     let result = (|| {
