@@ -192,12 +192,20 @@ impl SurfaceMesh {
     /// Undoes a contraction exactly: the mesh becomes identical (ids, orientation, stored
     /// half-edges) to the one before [`Self::contract`]. Contractions must be undone in reverse
     /// order (last in, first out). O(deg v).
+    ///
+    /// Edges may be flipped between contractions and splits (the LRS expansion of the
+    /// quadrangulation paper does), as long as the split edges `[u,x]` and `[u,y]` of pending
+    /// records are not flipped: v then takes the half-edges between `[u,y]` and `[u,x]` in the
+    /// current rotation at u, and the result is a valid triangulation (no longer identical to the
+    /// one before the contraction).
     pub fn split_vertex(&mut self, record: &Contraction) {
         let Contraction { h, a, b, c, d, .. } = *record;
         let t = h.twin();
         let (a2, d2) = (a.twin(), d.twin());
         let [u, v, x, y] = record.vertices;
-        let [f0, f1, fa, fd] = record.faces;
+        let [f0, f1, _, _] = record.faces;
+        // The faces that b and c are in now (flips since the contraction may have moved them).
+        let (fa, fd) = (self.face(b), self.face(c));
         // v's fan is the rotation at u strictly between c and b's twin.
         let mut k = self.rotate(c);
         while k != b.twin() {
@@ -226,14 +234,24 @@ impl SurfaceMesh {
         ] {
             self.origin[s.idx()] = o;
         }
-        for (w, s) in [u, v, x, y].into_iter().zip(record.vertex_halfedges) {
-            self.vertex_halfedge[w.idx()] = s;
+        // The stored half-edges as they were, unless flips made since the contraction moved them:
+        // then the split's own half-edges (`h`, `t`, `b`, `d` leave u, v, x, y; `h`, `t`, `a2`, `d2`
+        // bound the four faces). Without intervening flips the restoration is exact.
+        let leaves = |mesh: &Self, s: HalfedgeId, w: VertexId| mesh.origin[s.idx()] == w;
+        for ((w, s), own) in [u, v, x, y]
+            .into_iter()
+            .zip(record.vertex_halfedges)
+            .zip([h, t, b, d])
+        {
+            self.vertex_halfedge[w.idx()] = if leaves(self, s, w) { s } else { own };
         }
-        for (f, s) in [fd, fa, f1, f0]
+        for ((f, s), own) in [fd, fa, f1, f0]
             .into_iter()
             .zip([3, 2, 1, 0].map(|i| record.face_halfedges[i]))
+            .zip([d2, a2, t, h])
         {
-            self.face_halfedge[f.idx()] = s;
+            let bounds = self.origin[s.idx()].is_valid() && self.face[s.idx()] == f;
+            self.face_halfedge[f.idx()] = if bounds { s } else { own };
         }
         self.live_vertices += 1;
         self.live_edges += 3;

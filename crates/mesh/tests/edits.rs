@@ -187,3 +187,40 @@ fn morton_reordering_keeps_the_surface_and_its_geometry() {
         );
     }
 }
+
+/// LRS-style replay: contract down, then split back while flipping edges in between that are not
+/// split edges of pending records; every intermediate mesh keeps its invariants.
+#[test]
+fn splits_stay_valid_when_edges_are_flipped_in_between() {
+    use surftopo_mesh::generators::{genus_surface, random_flips};
+    for seed in 0..6 {
+        let mut mesh = random_flips(&genus_surface(2, 2), 500, seed).mesh;
+        let mut scratch = LinkScratch::default();
+        let mut stack = Vec::new();
+        loop {
+            let next = mesh
+                .halfedges()
+                .find(|&h| mesh.satisfies_link_condition(h, &mut scratch));
+            let Some(h) = next else { break };
+            stack.push(mesh.contract(h, &mut scratch).unwrap());
+        }
+        let mut k = seed as usize;
+        while let Some(record) = stack.pop() {
+            mesh.split_vertex(&record);
+            mesh.check_invariants().unwrap();
+            let pending: std::collections::HashSet<EdgeId> =
+                stack.iter().flat_map(|r| r.split_edges()).collect();
+            let edges: Vec<EdgeId> = mesh.edges().collect();
+            for _ in 0..3 {
+                k = (k * 7919 + 13) % edges.len();
+                let e = edges[k];
+                if !pending.contains(&e) && mesh.can_flip_simplicial(e) {
+                    mesh.flip(e).unwrap();
+                }
+            }
+            mesh.check_invariants().unwrap();
+            assert!(mesh.is_simplicial());
+        }
+        assert_eq!(mesh.genus(), 2);
+    }
+}
