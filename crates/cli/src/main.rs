@@ -57,6 +57,27 @@ enum Command {
         #[arg(long)]
         weld: bool,
     },
+    /// An irreducible triangulation (every edge fails the link condition) by topology-preserving
+    /// edge contractions; its vertices are surviving input vertices, with their positions.
+    Irreducible {
+        /// Input mesh (a closed orientable simplicial surface).
+        mesh: PathBuf,
+        /// Output mesh file.
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The algorithm.
+        #[arg(long, value_enum, default_value_t)]
+        algorithm: commands::irreducible::AlgorithmName,
+        /// Seed of the brute force's edge shuffle.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print the figures as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Merge vertices with exactly equal positions first.
+        #[arg(long)]
+        weld: bool,
+    },
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
     Delaunay(commands::delaunay::Options),
@@ -94,6 +115,16 @@ fn run(cli: Cli) -> anyhow::Result<ExitCode> {
             output,
             weld,
         } => done(commands::convert::run(&input, &output, weld)),
+        Command::Irreducible {
+            mesh,
+            output,
+            algorithm,
+            seed,
+            json,
+            weld,
+        } => done(commands::irreducible::run(
+            &mesh, &output, algorithm, seed, json, weld,
+        )),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
         Command::Isometric { a, b, weld } => Ok(if commands::isometric::run(&a, &b, weld)? {
             ExitCode::SUCCESS

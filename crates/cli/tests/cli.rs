@@ -460,3 +460,119 @@ fn delaunay_writes_its_outputs_and_isometric_answers() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("bad.json"));
 }
+
+/// Independent irreducibility check of a triangle soup: every edge's endpoints have more than the
+/// two common neighbours of its triangles (so contracting it would break the surface), unless the
+/// surface is the tetrahedron.
+fn is_irreducible_soup(triangles: &[[u32; 3]]) -> bool {
+    use std::collections::{BTreeMap, BTreeSet};
+    let mut neighbours: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
+    for t in triangles {
+        for i in 0..3 {
+            neighbours.entry(t[i]).or_default().insert(t[(i + 1) % 3]);
+            neighbours.entry(t[(i + 1) % 3]).or_default().insert(t[i]);
+        }
+    }
+    if neighbours.len() == 4 {
+        return true;
+    }
+    neighbours.iter().all(|(a, na)| {
+        na.iter()
+            .all(|b| na.intersection(&neighbours[b]).count() > 2)
+    })
+}
+
+#[test]
+fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("g3.off");
+    surftopo()
+        .args([
+            "generate", "genus", "--genus", "3", "--size", "2", "--flips", "300", "-o",
+        ])
+        .arg(&input)
+        .assert()
+        .success();
+    for algorithm in ["rs", "schipper", "brute-force"] {
+        let output = dir.path().join(format!("irr-{algorithm}.obj"));
+        let out = surftopo()
+            .arg("irreducible")
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .args(["--algorithm", algorithm, "--seed", "9", "--json"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        for key in [
+            "algorithm",
+            "input",
+            "output",
+            "link_tests",
+            "edges_tested_more_than_once",
+            "contractions",
+            "seconds",
+        ] {
+            assert!(v.get(key).is_some(), "missing {key}");
+        }
+        assert_eq!(v["algorithm"], algorithm);
+        assert_eq!(v["input"]["genus"], 3);
+        assert_eq!(v["output"]["genus"], 3);
+        if algorithm == "rs" {
+            assert_eq!(v["edges_tested_more_than_once"], 0);
+        }
+        let soup = surftopo_io::read_path(&output).unwrap();
+        let triangles = soup.triangles().unwrap();
+        assert!(
+            is_irreducible_soup(&triangles),
+            "{algorithm}: output is not irreducible"
+        );
+        let info = info_json(&output, &["--strict"]);
+        assert_eq!(info["genus"], 3);
+        assert_eq!(info["vertices"], v["output"]["vertices"]);
+        assert!(info["vertices"].as_i64().unwrap() <= 26 * 3 - 4);
+    }
+}
+
+#[test]
+fn irreducible_refuses_input_that_is_not_a_triangulated_closed_surface() {
+    let dir = tempfile::tempdir().unwrap();
+    let quad = write(
+        dir.path(),
+        "cube.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n",
+    );
+    let out = surftopo()
+        .arg("irreducible")
+        .arg(&quad)
+        .arg("-o")
+        .arg(dir.path().join("x.obj"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("line 9: face 0: has 4 sides"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let open = write(
+        dir.path(),
+        "open.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n",
+    );
+    let out = surftopo()
+        .arg("irreducible")
+        .arg(&open)
+        .arg("-o")
+        .arg(dir.path().join("x.obj"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("boundary edge"));
+    assert!(!dir.path().join("x.obj").exists());
+}

@@ -1,6 +1,7 @@
 //! `surftopo demo`: the main job on a built-in example, needing no file.
 
 use crate::commands::generate::{self, Kind, Modifiers};
+use crate::commands::irreducible::{AlgorithmName, reduce_surface};
 use crate::output::{emit, write_file};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -35,6 +36,23 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         mesh.edge_count(),
         mesh.face_count(),
         mesh.genus()
+    )?;
+
+    let (irreducible, report) = reduce_surface(&surface, AlgorithmName::Rs, 0)?;
+    let irreducible_path = out_dir.join("irreducible.obj");
+    crate::output::write_surface(&irreducible_path, &irreducible)?;
+    writeln!(
+        summary,
+        "  irreducible   {}: {} vertices, {} edges, {} faces, genus {} (RS: {} contractions, {} link tests, {} edges tested twice, {:.4} s)",
+        irreducible_path.display(),
+        report.output.vertices,
+        report.output.edges,
+        report.output.faces,
+        report.output.genus,
+        report.contractions,
+        report.link_tests,
+        report.edges_tested_more_than_once,
+        report.seconds
     )?;
 
     let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;

@@ -5,4 +5,5 @@ pub mod delaunay;
 pub mod demo;
 pub mod generate;
 pub mod info;
+pub mod irreducible;
 pub mod isometric;

@@ -1,0 +1,115 @@
+//! surftopo-irreducible: irreducible triangulations of closed orientable surfaces by edge contractions.
+//!
+//! Paper: S. Ramaswami, M. Siqueira, "A fast algorithm for computing irreducible triangulations of
+//! closed surfaces in E^d" (`irreducible-triangulations.txt`). A triangulation is *irreducible* when
+//! every edge fails the link condition (Section 2); the only irreducible triangulation of the sphere
+//! is the tetrahedron boundary T4, the torus has 21 (7 to 10 vertices), and an irreducible
+//! triangulation of genus g > 0 has at most 26g − 4 vertices (Theorem 4).
+//!
+//! Three algorithms, each in its own module, all reachable through [`reduce`]:
+//! - [`ramaswami_siqueira`] — the paper's algorithm (Section 4, Algorithms 4.1–4.7): O(g² + gn) time,
+//!   linear for genus 0, and no edge is ever tested twice against the link condition;
+//! - [`schipper`] — Schipper's algorithm as Section 3 describes it (per-vertex link dictionaries, a
+//!   lowest-degree vertex first);
+//! - [`brute_force`] — the randomised brute force of Section 5 (seeded shuffle, passes until a pass
+//!   contracts nothing).
+//!
+//! Each returns a [`Reduction`]: the irreducible triangulation (surviving vertices keep their input
+//! ids; removed elements are tombstones), the contraction history — the stack S of Algorithm 4.5,
+//! whose records [`SurfaceMesh::split_vertex`] replays exactly in reverse order — and the paper's
+//! [`Counters`] (link-condition tests ℓ, edges tested more than once ε, contractions, seconds).
+//! [`is_irreducible`] is an independent check of the result.
+//!
+//! Input must be a closed, connected, orientable *simplicial* surface: the mesh type guarantees the
+//! first three (see `surftopo_mesh::build`); loops, multi-edges and the two-triangle sphere are
+//! refused with an [`IrreducibleError`] naming the offending element, before any work is done.
+
+mod brute_force;
+mod edge_lists;
+mod error;
+mod ramaswami_siqueira;
+mod schipper;
+mod tally;
+mod validate;
+mod verify;
+
+pub use brute_force::brute_force;
+pub use error::IrreducibleError;
+pub use ramaswami_siqueira::ramaswami_siqueira;
+pub use schipper::schipper;
+pub use validate::check_simplicial;
+pub use verify::is_irreducible;
+
+pub use surftopo_mesh::{Contraction, SurfaceMesh};
+
+/// Which algorithm [`reduce`] runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Algorithm {
+    /// Ramaswami–Siqueira (Section 4 of the paper): [`ramaswami_siqueira`].
+    RamaswamiSiqueira,
+    /// Schipper's algorithm (Section 3): [`schipper`].
+    Schipper,
+    /// The randomised brute force of Section 5, with the seed of its shuffle: [`brute_force`].
+    BruteForce {
+        /// Seed of the `ChaCha8Rng` that shuffles the edges.
+        seed: u64,
+    },
+}
+
+impl Algorithm {
+    /// Short name: `rs`, `schipper` or `brute-force` (the CLI's `--algorithm` values).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Algorithm::RamaswamiSiqueira => "rs",
+            Algorithm::Schipper => "schipper",
+            Algorithm::BruteForce { .. } => "brute-force",
+        }
+    }
+}
+
+impl std::fmt::Display for Algorithm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The paper's per-run figures (Section 5.3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Counters {
+    /// ℓ: number of link-condition tests (RS does not count the degree-3 shortcut of Proposition 6,
+    /// which is not a test; S and BF count every test they make).
+    pub link_tests: u64,
+    /// ε: number of edges (edge ids) tested more than once. Always 0 for RS.
+    pub edges_tested_more_than_once: u64,
+    /// Number of edge contractions (= length of the history).
+    pub contractions: u64,
+    /// Seconds spent in the algorithm alone (as the paper's `run()`): the input check is excluded,
+    /// the algorithm's own set-up (attributes, dictionaries, shuffle) is included.
+    pub seconds: f64,
+}
+
+/// The result of a reduction.
+#[derive(Clone, Debug)]
+pub struct Reduction {
+    /// The irreducible triangulation, with tombstones: surviving vertices keep their input ids.
+    pub mesh: SurfaceMesh,
+    /// The stack S of Algorithm 4.5 in contraction order: record `i` is the `i`-th contraction.
+    /// Replaying `mesh.split_vertex(&history[i])` for `i` from last to first gives back the input
+    /// mesh exactly (same ids, same half-edges).
+    pub history: Vec<Contraction>,
+    /// ℓ, ε, contractions and seconds.
+    pub counters: Counters,
+}
+
+/// Computes an irreducible triangulation of `mesh` with the chosen algorithm.
+///
+/// # Errors
+/// [`IrreducibleError`] if the input is not simplicial (see [`check_simplicial`]); nothing is done
+/// then.
+pub fn reduce(mesh: SurfaceMesh, algorithm: Algorithm) -> Result<Reduction, IrreducibleError> {
+    match algorithm {
+        Algorithm::RamaswamiSiqueira => ramaswami_siqueira(mesh),
+        Algorithm::Schipper => schipper(mesh),
+        Algorithm::BruteForce { seed } => brute_force(mesh, seed),
+    }
+}

@@ -1,0 +1,48 @@
+//! All three algorithms on every mesh of $SURFTOPO_MESHES (mandatory when the variable is set; the
+//! largest, igea, has 268,686 triangles), each result checked by `support::verify`, including the
+//! forward replay of every contraction.
+
+mod support;
+
+use std::path::PathBuf;
+
+use support::{all_algorithms, load_mesh, meshes_dir, run_and_verify};
+use surftopo_irreducible::Algorithm;
+
+#[test]
+fn every_shared_mesh() {
+    let Some(dir) = meshes_dir("every_shared_mesh") else {
+        return;
+    };
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|entry| entry.expect("directory entry").path())
+        .filter(|p| p.to_string_lossy().ends_with(".gz"))
+        .collect();
+    paths.sort();
+    assert!(
+        paths.len() >= 40,
+        "expected the 47 shared meshes in {}",
+        dir.display()
+    );
+    for (i, path) in paths.iter().enumerate() {
+        let mesh = load_mesh(path);
+        let genus = mesh.genus();
+        for a in all_algorithms(i as u64) {
+            let red = run_and_verify(&mesh, a, true);
+            eprintln!(
+                "{:28} g={genus:2} {:9} V {} -> {}, ℓ {} ε {}",
+                path.file_name().unwrap_or_default().to_string_lossy(),
+                a.name(),
+                mesh.vertex_count(),
+                red.mesh.vertex_count(),
+                red.counters.link_tests,
+                red.counters.edges_tested_more_than_once,
+            );
+            if a == Algorithm::RamaswamiSiqueira && genus == 0 {
+                let first = mesh.vertices().next().expect("a vertex");
+                assert!(red.history.iter().all(|r| r.kept() == first), "Section 4.6");
+            }
+        }
+    }
+}
