@@ -476,7 +476,7 @@ fn is_irreducible_soup(triangles: &[[u32; 3]]) -> bool {
     if neighbours.len() == 4 {
         return true;
     }
-    neighbours.iter().all(|(a, na)| {
+    neighbours.iter().all(|(_, na)| {
         na.iter()
             .all(|b| na.intersection(&neighbours[b]).count() > 2)
     })

@@ -2,12 +2,11 @@
 //! isometric re-triangulations by intrinsic flips.
 
 use crate::convert::{TriangleGluing, triangulation_from_gluing};
-use crate::error::{PortalgonError, SoupError};
+use crate::error::PortalgonError;
 use crate::triangulation::IntrinsicTriangulation;
 use rand::RngExt;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use surftopo_mesh::generators::Surface;
 use surftopo_mesh::{EdgeId, Side};
 
 /// The flat torus T_x of Section 9, refined `m × m`.
@@ -69,41 +68,9 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
     })
 }
 
-/// A torus of revolution (radii 1 and 0.4) on an `m × n` grid whose triangulation is sheared:
-/// the quad of grid vertex `(i, j)` is `(i, j), (i+1, j+shear), (i+1, j+shear+1), (i, j+1)`, split
-/// along its first diagonal. `shear = 0` is the usual grid; larger shears give long thin triangles
-/// winding around the tube, which the flip algorithm must straighten.
-///
-/// # Errors
-/// [`SoupError::Build`] if the grid is too small to be a valid closed surface (use `m, n >= 3`).
-pub fn sheared_torus(m: u32, n: u32, shear: u32) -> Result<Surface, SoupError> {
-    let (big, small) = (1.0, 0.4);
-    let tau = std::f64::consts::TAU;
-    let mut positions = Vec::with_capacity((m * n) as usize);
-    for i in 0..m {
-        let phi = tau * f64::from(i) / f64::from(m);
-        for j in 0..n {
-            let theta = tau * f64::from(j) / f64::from(n);
-            let r = big + small * theta.cos();
-            positions.push([r * phi.cos(), r * phi.sin(), small * theta.sin()]);
-        }
-    }
-    let id = |i: u32, j: u32| (i % m) * n + (j % n);
-    let mut triangles = Vec::with_capacity(2 * (m * n) as usize);
-    for i in 0..m {
-        for j in 0..n {
-            let (a, b, c, d) = (
-                id(i, j),
-                id(i + 1, j + shear),
-                id(i + 1, j + shear + 1),
-                id(i, j + 1),
-            );
-            triangles.push([a, b, c]);
-            triangles.push([a, c, d]);
-        }
-    }
-    Ok(Surface::from_triangles(positions, &triangles)?)
-}
+/// Sheared tori (a torus of revolution whose grid diagonals wind around the tube): the mesh
+/// crate's generator, re-exported here beside the other intrinsic test surfaces.
+pub use surftopo_mesh::generators::sheared_torus;
 
 /// Re-triangulates `tri` isometrically by up to `count` random intrinsic flips: edges drawn
 /// uniformly (seeded `ChaCha8Rng`), flipped only when their quad is convex with margin

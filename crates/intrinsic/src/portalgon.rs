@@ -32,36 +32,15 @@ use crate::error::PortalgonError;
 /// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
 pub const DEFAULT_LENGTH_TOLERANCE: f64 = 1e-9;
 
-macro_rules! portalgon_id {
-    ($(#[$doc:meta])* $name:ident) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-        pub struct $name(pub u32);
-
-        impl $name {
-            /// The "none" value.
-            pub const INVALID: Self = Self(u32::MAX);
-            /// The id as an index.
-            #[inline(always)]
-            pub const fn idx(self) -> usize {
-                self.0 as usize
-            }
-            /// Whether this is not [`Self::INVALID`].
-            #[inline(always)]
-            pub const fn is_valid(self) -> bool {
-                self.0 != u32::MAX
-            }
-        }
-    };
-}
-
-portalgon_id!(
+surftopo_mesh::id_type!(
     /// A side of a polygon of a portalgon.
-    SideId
+    SideId,
+    "s"
 );
-portalgon_id!(
+surftopo_mesh::id_type!(
     /// A polygon of a portalgon.
-    PolygonId
+    PolygonId,
+    "p"
 );
 
 /// A 2D point.

@@ -3,6 +3,9 @@
 //! Half-edges come in pairs: `twin(h) = h ^ 1` and `edge(h) = h >> 1`, so per-edge data is a plain
 //! `Vec` indexed by [`EdgeId`]. `u32::MAX` means "none".
 
+/// Declares a `u32` id newtype with `INVALID`, `idx`, `is_valid`, `new` and a `Debug`/`Display`
+/// showing `prefix` and the index (used here and by other crates' ids, e.g. portalgon sides).
+#[macro_export]
 macro_rules! id_type {
     ($(#[$doc:meta])* $name:ident, $prefix:literal) => {
         $(#[$doc])*

@@ -121,10 +121,13 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
             )
         }
         Kind::ShearedTorus { m, n, shear } => {
+            if *m < 3 || *n < 3 {
+                return Err(crate::failure::invalid(
+                    "sheared-torus: m and n must be at least 3",
+                ));
+            }
             check_size(2 * u64::from(*m) * u64::from(*n))?;
-            Generated::Surface(
-                intrinsic::generators::sheared_torus(*m, *n, *shear).map_err(|e| invalid(&e))?,
-            )
+            Generated::Surface(generators::sheared_torus(*m, *n, *shear))
         }
         Kind::IntrinsicFlips { input, count } => {
             let mut tri = crate::commands::delaunay::load_intrinsic(input, false)?;

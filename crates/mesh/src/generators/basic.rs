@@ -1,4 +1,4 @@
-//! Tetrahedron, icosphere and torus.
+//! Tetrahedron, icosphere and (sheared) tori.
 
 use super::Surface;
 use crate::geometry::Point3;
@@ -90,6 +90,16 @@ pub fn icosphere(subdivisions: u32) -> Surface {
 /// # Panics
 /// If `m < 3` or `n < 3`.
 pub fn torus(m: u32, n: u32) -> Surface {
+    sheared_torus(m, n, 0)
+}
+
+/// [`torus`] with the grid sheared: the quad at `(i, j)` joins row `i` to row `i + 1` shifted by
+/// `shear`, so the grid lines wind `shear` times around the tube (long, thin triangles that the
+/// intrinsic Delaunay flip algorithm must straighten).
+///
+/// # Panics
+/// If `m < 3` or `n < 3`.
+pub fn sheared_torus(m: u32, n: u32, shear: u32) -> Surface {
     assert!(m >= 3 && n >= 3, "torus needs m, n >= 3");
     let (big, small) = (1.0, 0.4);
     let tau = std::f64::consts::TAU;
@@ -103,10 +113,16 @@ pub fn torus(m: u32, n: u32) -> Surface {
         }
     }
     let id = |i: u32, j: u32| (i % m) * n + (j % n);
+    let shear = shear % n;
     let mut triangles = Vec::with_capacity(2 * (m * n) as usize);
     for i in 0..m {
         for j in 0..n {
-            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            let (a, b, c, d) = (
+                id(i, j),
+                id(i + 1, j + shear),
+                id(i + 1, j + shear + 1),
+                id(i, j + 1),
+            );
             triangles.push([a, b, c]);
             triangles.push([a, c, d]);
         }

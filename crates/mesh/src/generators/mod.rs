@@ -24,7 +24,7 @@ mod polycube;
 mod subdivide;
 mod vertex_splits;
 
-pub use basic::{icosphere, tetrahedron, torus};
+pub use basic::{icosphere, sheared_torus, tetrahedron, torus};
 pub use cavity_box::{CavityBox, cavity_box};
 pub use flips::random_flips;
 pub use genus::genus_surface;
