@@ -78,6 +78,27 @@ enum Command {
         #[arg(long)]
         weld: bool,
     },
+    /// A quadrangulation with the same vertices, by a perfect pairing of the triangles (each quad is
+    /// two adjacent triangles of the input, or of a flipped triangulation K for `lrs`).
+    Quad {
+        /// Input mesh (a closed orientable triangulated surface).
+        mesh: PathBuf,
+        /// Output mesh file (OBJ, OFF or PLY, with quads).
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The initial pairing.
+        #[arg(long, value_enum, default_value_t)]
+        algorithm: commands::quad::AlgorithmName,
+        /// Seed of the greedy orders (sg, ps).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print the figures (Table 4.3's columns) as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Merge vertices with exactly equal positions first.
+        #[arg(long)]
+        weld: bool,
+    },
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
     Delaunay(commands::delaunay::Options),
@@ -123,6 +144,16 @@ fn run(cli: Cli) -> anyhow::Result<ExitCode> {
             json,
             weld,
         } => done(commands::irreducible::run(
+            &mesh, &output, algorithm, seed, json, weld,
+        )),
+        Command::Quad {
+            mesh,
+            output,
+            algorithm,
+            seed,
+            json,
+            weld,
+        } => done(commands::quad::run(
             &mesh, &output, algorithm, seed, json, weld,
         )),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),

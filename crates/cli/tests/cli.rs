@@ -251,6 +251,11 @@ fn demo_writes_its_results() {
         "isometric"
     );
     assert!(out.join("laplacian.mtx").is_file());
+    for quads in ["quads-ps.obj", "quads-lrs.obj"] {
+        let v = info_json(&out.join(quads), &["--strict"]);
+        assert_eq!(v["genus"], 2, "{quads}");
+        assert_eq!(v["simplicial"], false, "{quads}: not quads");
+    }
 }
 
 #[test]
@@ -575,4 +580,97 @@ fn irreducible_refuses_input_that_is_not_a_triangulated_closed_surface() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("boundary edge"));
     assert!(!dir.path().join("x.obj").exists());
+}
+
+#[test]
+fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
+    use std::collections::HashSet;
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("g2.obj");
+    surftopo()
+        .args([
+            "generate", "genus", "--genus", "2", "--size", "2", "--flips", "300", "-o",
+        ])
+        .arg(&input)
+        .assert()
+        .success();
+    let soup = surftopo_io::read_path(&input).unwrap();
+    // Input triangles as rotation-invariant oriented keys.
+    let key = |t: [u32; 3]| {
+        let r = (0..3).min_by_key(|&i| t[i]).unwrap();
+        [t[r], t[(r + 1) % 3], t[(r + 2) % 3]]
+    };
+    let triangles: HashSet<[u32; 3]> = soup.triangles().unwrap().into_iter().map(key).collect();
+    for algorithm in ["sg", "ps", "lrs", "ds"] {
+        let output = dir.path().join(format!("q-{algorithm}.obj"));
+        let out = surftopo()
+            .arg("quad")
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .args(["--algorithm", algorithm, "--json"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{algorithm}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        for key in [
+            "algorithm",
+            "faces",
+            "initial_pairing_seconds",
+            "paired_percent",
+            "unpaired",
+            "augmentation_seconds",
+            "total_seconds",
+            "flipped_edges",
+        ] {
+            assert!(v.get(key).is_some(), "{algorithm}: missing {key}");
+        }
+        let quads = surftopo_io::read_path(&output).unwrap();
+        assert_eq!(
+            quads.positions, soup.positions,
+            "{algorithm}: vertex list changed"
+        );
+        let polygons: Vec<Vec<u32>> = quads.faces().map(<[u32]>::to_vec).collect();
+        assert!(
+            polygons.iter().all(|p| p.len() == 4),
+            "{algorithm}: not all quads"
+        );
+        assert_eq!(2 * polygons.len(), triangles.len());
+        let chi = surftopo_testkit::check_closed_oriented_manifold(&polygons)
+            .unwrap_or_else(|e| panic!("{algorithm}: {e}"));
+        assert_eq!(chi, -2, "{algorithm}: genus changed");
+        let used: HashSet<u32> = polygons.iter().flatten().copied().collect();
+        assert_eq!(
+            used.len(),
+            soup.positions.len(),
+            "{algorithm}: a vertex is unused"
+        );
+        if algorithm != "lrs" {
+            // Each quad [a, d, b, c] is the input triangles (a, b, c) and (b, a, d) joined along a-b.
+            let mut covered = HashSet::new();
+            for q in &polygons {
+                let halves = [[q[0], q[2], q[3]], [q[2], q[0], q[1]]].map(key);
+                let other = [[q[1], q[3], q[0]], [q[3], q[1], q[2]]].map(key);
+                let pair = if halves.iter().all(|t| triangles.contains(t)) {
+                    halves
+                } else {
+                    other
+                };
+                for t in pair {
+                    assert!(
+                        triangles.contains(&t),
+                        "{algorithm}: quad {q:?} is not two input triangles"
+                    );
+                    assert!(
+                        covered.insert(t),
+                        "{algorithm}: triangle {t:?} in two quads"
+                    );
+                }
+            }
+        }
+    }
 }

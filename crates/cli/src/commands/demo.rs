@@ -2,6 +2,7 @@
 
 use crate::commands::generate::{self, Kind, Modifiers};
 use crate::commands::irreducible::{AlgorithmName, reduce_surface};
+use crate::commands::quad::{AlgorithmName as QuadName, quad_soup, quadrangulate_surface};
 use crate::output::{emit, write_file};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -54,6 +55,24 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         report.edges_tested_more_than_once,
         report.seconds
     )?;
+
+    for name in [QuadName::Ps, QuadName::Lrs] {
+        let result = quadrangulate_surface(&surface, name, 7)?;
+        let label = result.stats.algorithm.clone();
+        let path = out_dir.join(format!("quads-{label}.obj"));
+        crate::output::write_soup(&path, &quad_soup(&surface, &result))?;
+        let stats = &result.stats;
+        writeln!(
+            summary,
+            "  quad ({label:<3})    {}: {} quads; initial pairing {:.1}% ({} unpaired), {} flipped edges, {:.4} s in all",
+            path.display(),
+            result.quads.len(),
+            stats.paired_percent,
+            stats.unpaired,
+            stats.flipped_edges,
+            stats.total_seconds
+        )?;
+    }
 
     let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;
     let stats = delaunay_with_stats(&mut tri, &DelaunayOptions::default())?;

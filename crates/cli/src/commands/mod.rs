@@ -7,3 +7,4 @@ pub mod generate;
 pub mod info;
 pub mod irreducible;
 pub mod isometric;
+pub mod quad;

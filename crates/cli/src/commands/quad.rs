@@ -1,0 +1,91 @@
+//! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
+
+use crate::failure::invalid;
+use std::path::Path;
+use surftopo_io::PolygonSoup;
+use surftopo_mesh::generators::Surface;
+use surftopo_quad::{QuadAlgorithm, QuadError, QuadResult, quadrangulate};
+
+/// The `--algorithm` values.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
+pub enum AlgorithmName {
+    /// Simple greedy pairing (seeded edge order), then augmenting paths.
+    Sg,
+    /// Pulli–Segal priority pairing (seeded triangle order), then augmenting paths.
+    #[default]
+    Ps,
+    /// Contraction/expansion (Ramaswami–Siqueira, Algorithm 3.1 with flips), then augmenting paths.
+    Lrs,
+    /// Diks–Stanczyk: a perfect matching directly, by Frink reductions.
+    Ds,
+}
+
+/// Quadrangulates `surface`; quads use its vertex ids.
+pub fn quadrangulate_surface(
+    surface: &Surface,
+    name: AlgorithmName,
+    seed: u64,
+) -> anyhow::Result<QuadResult> {
+    let algorithm = match name {
+        AlgorithmName::Sg => QuadAlgorithm::SimpleGreedy { seed },
+        AlgorithmName::Ps => QuadAlgorithm::PulliSegal { seed },
+        AlgorithmName::Lrs => QuadAlgorithm::Lrs,
+        AlgorithmName::Ds => QuadAlgorithm::DiksStanczyk,
+    };
+    quadrangulate(&surface.mesh, algorithm).map_err(|e| match e {
+        QuadError::Internal(_) => anyhow::Error::new(e),
+        other => invalid(other.to_string()),
+    })
+}
+
+/// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions).
+pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
+    let mut soup = PolygonSoup::new();
+    soup.positions = surface.positions.clone();
+    for quad in &result.quads {
+        soup.push_face(&quad.map(|v| v.0));
+    }
+    soup
+}
+
+/// Runs `quad`.
+pub fn run(
+    input: &Path,
+    output: &Path,
+    name: AlgorithmName,
+    seed: u64,
+    json: bool,
+    weld: bool,
+) -> anyhow::Result<()> {
+    let loaded = crate::progress::step("reading", || crate::input::load_surface(input, weld))?;
+    crate::input::log_report(input, &loaded);
+    if !loaded.report.dropped_vertices.is_empty() {
+        eprintln!(
+            "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
+        );
+    }
+    let result = crate::progress::step("pairing triangles", || {
+        quadrangulate_surface(&loaded.surface, name, seed)
+    })
+    .map_err(|e| e.context(input.display().to_string()))?;
+    crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
+    let stats = &result.stats;
+    if json {
+        crate::output::print_json(stats)?;
+    } else {
+        crate::output::emit(&format!(
+            "{}: {} quads from {} triangles ({}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges\n",
+            output.display(),
+            result.quads.len(),
+            stats.faces,
+            stats.algorithm,
+            stats.paired_percent,
+            stats.initial_pairing_seconds,
+            stats.unpaired,
+            stats.augmentation_seconds,
+            stats.total_seconds,
+            stats.flipped_edges
+        ))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,35 @@
+//! Perfect matchings of the dual graphs of closed triangle meshes: connected, bridgeless, 3-regular
+//! multigraphs ([`CubicGraph`]), paired by the algorithms of the quadrangulation paper
+//! (`tri-quad-conversion-long.txt`, Section 3), each result checked by an independent verifier
+//! ([`verify`]).
+//!
+//! * [`diks_stanczyk`] — Frink's reductions with Diks and Stanczyk's dynamic connectivity,
+//!   O(n log² n) amortized, always perfect.
+//! * [`dynamic_connectivity`] — the fully dynamic connectivity / spanning-forest structure it uses.
+//! * [`generators`] — seeded random bridgeless cubic multigraphs and mesh duals, for tests and
+//!   benchmarks.
+
+pub mod cubic_graph;
+pub mod diks_stanczyk;
+pub mod dynamic_connectivity;
+pub mod generators;
+pub mod verify;
+
+pub use cubic_graph::{CubicGraph, GraphError};
+pub use diks_stanczyk::DsStats;
+pub use dynamic_connectivity::{DynamicConnectivity, DynamicStats};
+pub use verify::{
+    MatchingError, PerfectMatching, verify_perfect_matching, verify_perfect_matching_edges,
+    verify_perfect_matching_on,
+};
+
+// Pairing on the (implicit) dual graph: greedy, Pulli–Segal, augmenting paths.
+pub mod augment;
+pub mod dual_graph;
+pub mod greedy;
+pub mod pulli_segal;
+
+pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
+pub use dual_graph::{CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph};
+pub use greedy::simple_greedy;
+pub use pulli_segal::pulli_segal;

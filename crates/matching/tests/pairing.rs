@@ -1,0 +1,302 @@
+//! Greedy (SG), Pulli–Segal (PS) and augmenting paths on cubic multigraphs and mesh duals, checked
+//! by the crate's independent verifier and by `petgraph`'s maximum matching (small graphs only).
+
+use petgraph::algo::maximum_matching;
+use petgraph::graph::UnGraph;
+use surftopo_matching::generators::{random_bridgeless_cubic, random_cubic_pairing};
+use surftopo_matching::{
+    AugmentError, AugmentStrategy, CubicGraph, DualGraph, Pairing, PairingError,
+    augment_to_perfect, pulli_segal, simple_greedy, verify_perfect_matching,
+    verify_perfect_matching_on,
+};
+use surftopo_mesh::generators::{icosphere, torus};
+
+const STRATEGIES: [AugmentStrategy; 4] = [
+    AugmentStrategy::Forest,
+    AugmentStrategy::Global,
+    AugmentStrategy::Local { initial_budget: 2 },
+    AugmentStrategy::Local {
+        initial_budget: 256,
+    },
+];
+
+/// Independent check that `mates` is a matching of the edge list: every mate edge exists, is at
+/// its node, and its other end has the same mate edge. Returns the number of unmatched nodes.
+fn check_matching(node_count: usize, edges: &[[u32; 2]], mates: &[u32]) -> usize {
+    assert_eq!(mates.len(), node_count);
+    let mut unmatched = 0;
+    for (v, &e) in mates.iter().enumerate() {
+        if e == u32::MAX {
+            unmatched += 1;
+            continue;
+        }
+        let [a, b] = edges[e as usize];
+        assert!(a != b, "loop {e} matched");
+        assert!(
+            a as usize == v || b as usize == v,
+            "edge {e} not at node {v}"
+        );
+        let other = if a as usize == v { b } else { a };
+        assert_eq!(mates[other as usize], e, "edge {e} matched at one end only");
+    }
+    unmatched
+}
+
+/// No edge joins two unmatched nodes.
+fn check_maximal(edges: &[[u32; 2]], mates: &[u32]) {
+    for (e, &[a, b]) in edges.iter().enumerate() {
+        assert!(
+            a == b || mates[a as usize] != u32::MAX || mates[b as usize] != u32::MAX,
+            "edge {e} joins two unmatched nodes"
+        );
+    }
+}
+
+fn petgraph_matching_size(node_count: u32, edges: &[[u32; 2]]) -> usize {
+    let graph = UnGraph::<(), ()>::from_edges(edges.iter().map(|&[a, b]| (a, b)));
+    assert_eq!(graph.node_count(), node_count as usize);
+    maximum_matching(&graph).len()
+}
+
+fn graphs() -> Vec<CubicGraph> {
+    let mut out = Vec::new();
+    for seed in 0..12u64 {
+        let n = 2 + 2 * (seed as u32 * 7 % 60);
+        out.push(random_bridgeless_cubic(n, seed));
+        out.push(random_cubic_pairing(n.max(4), seed));
+    }
+    out
+}
+
+#[test]
+fn greedy_pairings_are_maximal_matchings() {
+    for graph in graphs() {
+        for seed in 0..3 {
+            for pairing in [simple_greedy(&graph, seed), pulli_segal(&graph, seed)] {
+                check_matching(graph.node_count() as usize, graph.edges(), pairing.mates());
+                check_maximal(graph.edges(), pairing.mates());
+            }
+        }
+    }
+}
+
+#[test]
+fn same_seed_same_pairing() {
+    let graph = random_bridgeless_cubic(400, 3);
+    assert_eq!(simple_greedy(&graph, 11), simple_greedy(&graph, 11));
+    assert_eq!(pulli_segal(&graph, 11), pulli_segal(&graph, 11));
+    assert_ne!(simple_greedy(&graph, 11), simple_greedy(&graph, 12));
+}
+
+#[test]
+fn augmentation_gives_perfect_matchings_agreeing_with_petgraph() {
+    for graph in graphs() {
+        let n = graph.node_count();
+        assert_eq!(
+            petgraph_matching_size(n, graph.edges()),
+            n as usize / 2,
+            "petgraph: perfect"
+        );
+        for seed in 0..3 {
+            for start in [
+                simple_greedy(&graph, seed),
+                pulli_segal(&graph, seed),
+                Pairing::empty(n as usize),
+            ] {
+                let before = start.unmatched_count(&graph);
+                for strategy in STRATEGIES {
+                    let mut pairing = start.clone();
+                    let stats = augment_to_perfect(&graph, &mut pairing, strategy).unwrap();
+                    assert_eq!(stats.unmatched_before, before);
+                    assert_eq!(stats.augmentations, before / 2);
+                    let flags = pairing.edge_flags(graph.edge_count() as usize);
+                    verify_perfect_matching(&graph, &flags).unwrap();
+                    assert_eq!(pairing.unmatched_count(&graph), 0);
+                    assert_eq!(flags.iter().filter(|&&f| f).count(), n as usize / 2);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn augmentation_from_random_matchings() {
+    // Random (non-maximal) starting matchings exercise long paths and nested blossoms.
+    use rand::seq::SliceRandom;
+    use rand::{RngExt, SeedableRng};
+    for seed in 0..40u64 {
+        let graph = random_cubic_pairing(30 + 2 * (seed as u32 % 20), seed);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let mut order: Vec<u32> = (0..graph.edge_count()).collect();
+        order.shuffle(&mut rng);
+        let mut chosen = Vec::new();
+        let mut used = vec![false; graph.node_count() as usize];
+        for e in order {
+            let [a, b] = graph.endpoints(e);
+            if !used[a as usize] && !used[b as usize] && rng.random_bool(0.6) {
+                used[a as usize] = true;
+                used[b as usize] = true;
+                chosen.push(e);
+            }
+        }
+        let start = Pairing::from_edges(&graph, chosen).unwrap();
+        for strategy in STRATEGIES {
+            let mut pairing = start.clone();
+            augment_to_perfect(&graph, &mut pairing, strategy).unwrap();
+            verify_perfect_matching(&graph, &pairing.edge_flags(graph.edge_count() as usize))
+                .unwrap();
+        }
+    }
+}
+
+#[test]
+fn mesh_duals_are_read_implicitly() {
+    for surface in [icosphere(2), torus(7, 9), torus(3, 3)] {
+        let mesh = &surface.mesh;
+        let edges: Vec<[u32; 2]> = mesh
+            .edges()
+            .map(|e| {
+                let h = e.halfedge();
+                [mesh.face(h).0, mesh.face(h.twin()).0]
+            })
+            .collect();
+        for f in mesh.faces() {
+            let adjacent = DualGraph::adjacent(mesh, f.0);
+            for (e, w) in adjacent {
+                let [a, b] = edges[e as usize];
+                assert!((a, b) == (f.0, w) || (a, b) == (w, f.0));
+            }
+        }
+        for seed in 0..4 {
+            for mut pairing in [simple_greedy(mesh, seed), pulli_segal(mesh, seed)] {
+                check_maximal(&edges, pairing.mates());
+                augment_to_perfect(mesh, &mut pairing, AugmentStrategy::default()).unwrap();
+                verify_perfect_matching_on(
+                    mesh.face_count() as u32,
+                    &edges,
+                    &pairing.edge_flags(mesh.edge_slots()),
+                )
+                .unwrap();
+            }
+        }
+        let graph = surftopo_matching::mesh_dual_graph(mesh).unwrap();
+        assert_eq!(graph.edges(), &edges[..]);
+        assert_eq!(
+            petgraph_matching_size(mesh.face_count() as u32, &edges),
+            mesh.face_count() / 2,
+            "petgraph: the dual has a perfect matching"
+        );
+    }
+}
+
+/// A cubic graph given by an edge list without validation (bridges allowed), for failure tests.
+struct RawCubic {
+    edges: Vec<[u32; 2]>,
+    incidence: Vec<Vec<u32>>,
+}
+
+impl RawCubic {
+    fn new(n: usize, edges: Vec<[u32; 2]>) -> Self {
+        let mut incidence = vec![Vec::new(); n];
+        for (e, &[a, b]) in edges.iter().enumerate() {
+            incidence[a as usize].push(e as u32);
+            incidence[b as usize].push(e as u32);
+        }
+        assert!(incidence.iter().all(|i| i.len() == 3));
+        RawCubic { edges, incidence }
+    }
+}
+
+impl DualGraph for RawCubic {
+    fn node_slots(&self) -> usize {
+        self.incidence.len()
+    }
+    fn edge_slots(&self) -> usize {
+        self.edges.len()
+    }
+    fn is_node(&self, v: u32) -> bool {
+        (v as usize) < self.incidence.len()
+    }
+    fn is_edge(&self, e: u32) -> bool {
+        (e as usize) < self.edges.len()
+    }
+    fn node_count(&self) -> usize {
+        self.incidence.len()
+    }
+    fn adjacent(&self, v: u32) -> [(u32, u32); 3] {
+        let i = &self.incidence[v as usize];
+        [0, 1, 2].map(|k| (i[k], self.opposite(i[k], v)))
+    }
+    fn endpoints(&self, e: u32) -> [u32; 2] {
+        self.edges[e as usize]
+    }
+}
+
+/// Sylvester's graph-like counterexample: a centre joined by bridges to three copies of K4 with
+/// one subdivided edge, so removing the centre leaves three odd components. 16 nodes, cubic, no
+/// perfect matching.
+fn no_perfect_matching() -> RawCubic {
+    let mut edges = vec![];
+    for k in 0..3u32 {
+        let b = 1 + 5 * k; // nodes b..b+4: K4 on b+1..b+4 with edge (b+1, b+2) subdivided by b
+        edges.extend([
+            [0, b],
+            [b, b + 1],
+            [b, b + 2],
+            [b + 1, b + 3],
+            [b + 1, b + 4],
+            [b + 2, b + 3],
+            [b + 2, b + 4],
+            [b + 3, b + 4],
+        ]);
+    }
+    RawCubic::new(16, edges)
+}
+
+#[test]
+fn missing_perfect_matching_is_an_error_not_a_partial_result() {
+    let graph = no_perfect_matching();
+    assert_eq!(petgraph_matching_size(16, &graph.edges), 7);
+    for strategy in STRATEGIES {
+        for seed in 0..5 {
+            let mut pairing = pulli_segal(&graph, seed);
+            let err = augment_to_perfect(&graph, &mut pairing, strategy).unwrap_err();
+            assert!(
+                matches!(err, AugmentError::NoAugmentingPath { unmatched, .. } if unmatched >= 2),
+                "{err}"
+            );
+            // Whatever was augmented is still a matching, no larger than the maximum.
+            let unmatched = check_matching(16, &graph.edges, pairing.mates());
+            assert!(unmatched >= 2 && unmatched.is_multiple_of(2));
+        }
+    }
+}
+
+#[test]
+fn bad_pairings_are_refused() {
+    let graph = random_bridgeless_cubic(10, 1);
+    let e = 0;
+    let [a, _] = graph.endpoints(e);
+    let other = graph
+        .incident_edges(a)
+        .into_iter()
+        .find(|&f| f != e)
+        .unwrap();
+    assert_eq!(
+        Pairing::from_edges(&graph, [e, other]),
+        Err(PairingError::CoveredTwice {
+            node: a,
+            first: e,
+            second: other
+        })
+    );
+    assert_eq!(
+        Pairing::from_edges(&graph, [99]),
+        Err(PairingError::NotAnEdge { edge: 99 })
+    );
+    let mut short = Pairing::empty(3);
+    assert!(matches!(
+        augment_to_perfect(&graph, &mut short, AugmentStrategy::Global),
+        Err(AugmentError::BadPairing(_))
+    ));
+}

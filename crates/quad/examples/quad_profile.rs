@@ -1,0 +1,152 @@
+//! Where the time goes: CPU seconds (this thread's on-CPU time from `/proc/thread-self/schedstat`,
+//! robust to a shared machine; tick granularity, so averaged over repetitions) of each stage of
+//! the pairing algorithms on one mesh, with the nodes reached by the augmenting searches, and how
+//! far apart adjacent faces are in id order (locality of the input).
+//!
+//! ```text
+//! cargo run --release -p surftopo-quad --example quad_profile -- MESH_FILE|box:C:H:T [REPEAT]
+//! ```
+//! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
+
+use std::error::Error;
+use std::time::Instant;
+
+use surftopo_matching::{
+    AugmentStrategy, DualGraph, augment_to_perfect, pulli_segal, simple_greedy,
+};
+use surftopo_mesh::generators::Surface;
+
+/// On-CPU nanoseconds of the current thread (`/proc/thread-self/schedstat`), or wall time when
+/// unavailable.
+fn cpu_ns(start: &Instant) -> u128 {
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse().ok())
+        .unwrap_or_else(|| start.elapsed().as_nanos())
+}
+
+/// Average on-CPU seconds of `f` over `repeat` runs (the accounting has tick granularity, so the
+/// runs are timed together), and the last result.
+fn time<T>(repeat: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let wall = Instant::now();
+    let t0 = cpu_ns(&wall);
+    let mut out = None;
+    for _ in 0..repeat {
+        out = Some(f());
+    }
+    let spent = cpu_ns(&wall) - t0;
+    (
+        spent as f64 * 1e-9 / repeat as f64,
+        out.expect("repeat >= 1"),
+    )
+}
+
+/// A mesh file, or `box:CAVITIES:HOLES:TRIANGLES` for the generated brick of groups A and B.
+fn load(path: &str) -> Result<Surface, Box<dyn Error>> {
+    if let Some(spec) = path.strip_prefix("box:") {
+        let v: Vec<u64> = spec.split(':').map(str::parse).collect::<Result<_, _>>()?;
+        let [c, h, t] = v[..] else {
+            return Err("box:CAVITIES:HOLES:TRIANGLES".into());
+        };
+        return Ok(surftopo_mesh::generators::cavity_box(c as u32, h as u32, t));
+    }
+    let soup = surftopo_io::read_path(std::path::Path::new(path))?;
+    let triangles = soup.triangles()?;
+    Ok(Surface::from_triangles(soup.positions, &triangles)?)
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let surface = load(&args[1])?;
+    let repeat: usize = args.get(2).map_or(Ok(5), |s| s.parse())?;
+    let mesh = &surface.mesh;
+    println!(
+        "{}: {} faces, genus {}",
+        args[1],
+        mesh.face_count(),
+        mesh.genus()
+    );
+    let local = match std::env::var("BUDGET") {
+        Ok(b) => AugmentStrategy::Local {
+            initial_budget: b.parse()?,
+        },
+        Err(_) => AugmentStrategy::Forest,
+    };
+    let (t, sg) = time(repeat, || simple_greedy(mesh, 1));
+    println!(
+        "sg pairing            {t:.5}  unpaired {}",
+        sg.unmatched_count(mesh)
+    );
+    let (t, stats) = time(repeat, || {
+        let mut p = sg.clone();
+        augment_to_perfect(mesh, &mut p, local).unwrap()
+    });
+    println!(
+        "sg augment (mesh)     {t:.5}  reached {} searches {}",
+        stats.reached, stats.searches
+    );
+    let (t, ps) = time(repeat, || pulli_segal(mesh, 1));
+    println!(
+        "ps pairing            {t:.5}  unpaired {}",
+        ps.unmatched_count(mesh)
+    );
+    let (t, stats) = time(repeat, || {
+        let mut p = ps.clone();
+        augment_to_perfect(mesh, &mut p, local).unwrap()
+    });
+    println!(
+        "ps augment (mesh)     {t:.5}  reached {} searches {}",
+        stats.reached, stats.searches
+    );
+    let (t, stats) = time(repeat, || {
+        let mut p = ps.clone();
+        augment_to_perfect(mesh, &mut p, AugmentStrategy::Global).unwrap()
+    });
+    println!(
+        "ps augment global     {t:.5}  reached {} searches {}",
+        stats.reached, stats.searches
+    );
+    let (t, _) = time(repeat, || mesh.clone());
+    println!("mesh clone            {t:.5}");
+    let (t, reduction) = time(repeat, || {
+        surftopo_irreducible::ramaswami_siqueira(mesh.clone()).unwrap()
+    });
+    println!(
+        "rs (incl. clone)      {t:.5}  contractions {}",
+        reduction.history.len()
+    );
+    let (t, expansion) = time(repeat, || {
+        surftopo_quad::expand(reduction.mesh.clone(), &reduction.history).unwrap()
+    });
+    println!(
+        "lrs expansion         {t:.5}  flipped {}",
+        expansion.flipped_edges
+    );
+    let (t, stats) = time(repeat, || {
+        let mut p = expansion.pairing.clone();
+        augment_to_perfect(&expansion.mesh, &mut p, local).unwrap()
+    });
+    println!(
+        "lrs augment           {t:.5}  reached {} searches {}",
+        stats.reached, stats.searches
+    );
+    let (t, n) = time(repeat, || {
+        (0..mesh.face_slots() as u32)
+            .map(|f| DualGraph::adjacent(mesh, f)[2].1 as u64)
+            .sum::<u64>()
+    });
+    println!("one adjacency pass    {t:.5}  ({n})");
+    let mut gaps: Vec<u64> = (0..mesh.face_slots() as u32)
+        .flat_map(|f| {
+            DualGraph::adjacent(mesh, f).map(|(_, g)| (g as i64 - f as i64).unsigned_abs())
+        })
+        .collect();
+    gaps.sort_unstable();
+    println!(
+        "face id gap to neighbours: median {} p90 {} p99 {}",
+        gaps[gaps.len() / 2],
+        gaps[gaps.len() * 9 / 10],
+        gaps[gaps.len() * 99 / 100]
+    );
+    Ok(())
+}

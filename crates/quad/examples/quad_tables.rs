@@ -1,0 +1,461 @@
+//! Tables 4.3 and 4.4 of the quadrangulation paper (`tri-quad-conversion-long.txt`, Section 4):
+//! for SG, PS, LRS (and DS on the smaller inputs), (a) initial pairing seconds, (b) percentage
+//! paired, (c) unpaired triangles, (d) augmentation seconds, (e) total seconds, and LRS's flipped
+//! edges — on the shared meshes and on the paper's groups A (genus-0 brick with 3,844 cavities)
+//! and B (the brick with 3,500 of its pits through-holes, genus 3,500), from the generators.
+//!
+//! Each algorithm runs with the default augmenting search (`forest`), with the budgeted
+//! single-root one (`local`) and, where affordable, with the paper's global one. With `--lemon BIN` (build it with `make -C crates/quad/peer`), every dual
+//! graph is also exported and matched by LEMON's `MaxMatching`, and the ratio of the fastest
+//! surftopo total to LEMON's `run()` time is recorded.
+//!
+//! ```text
+//! SURFTOPO_MESHES=/work/shared/meshes cargo run --release -p surftopo-quad --example quad_tables -- \
+//!     [--max-triangles N] [--runs R] [--no-shared] [--no-groups] [--ds-max-triangles N] \
+//!     [--global-max-work W] [--lemon crates/quad/peer/lemon_matching] [--out results/quad]
+//! ```
+//! Writes `<out>.jsonl` (one record per input and algorithm) and `<out>.md`.
+
+use std::collections::BTreeMap;
+use std::error::Error;
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::process::Command;
+
+use surftopo_mesh::generators::{Surface, cavity_box};
+use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_with};
+
+/// Group A: Table 4.2(a) triangle counts (genus 0, 3,844 cavities).
+const GROUP_A: [(&str, u64); 5] = [
+    ("A5", 344_704),
+    ("A4", 836_142),
+    ("A3", 1_491_390),
+    ("A2", 1_982_828),
+    ("A1", 4_194_296),
+];
+/// Group B: Table 4.2(b) triangle counts (genus 3,500).
+const GROUP_B: [(&str, u64); 5] = [
+    ("B5", 360_736),
+    ("B4", 853_700),
+    ("B3", 1_510_988),
+    ("B2", 2_003_954),
+    ("B1", 4_222_296),
+];
+
+struct Args {
+    max_triangles: u64,
+    runs: u64,
+    shared: bool,
+    groups: bool,
+    ds_max_triangles: u64,
+    global_max_work: f64,
+    lemon: Option<PathBuf>,
+    out: PathBuf,
+}
+
+fn parse_args() -> Result<Args, Box<dyn Error>> {
+    let mut args = Args {
+        max_triangles: 5_000_000,
+        runs: 3,
+        shared: true,
+        groups: true,
+        ds_max_triangles: 300_000,
+        global_max_work: 3e9,
+        lemon: None,
+        out: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../results/quad")),
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(flag) = it.next() {
+        let mut value = || it.next().ok_or(format!("{flag} needs a value"));
+        match flag.as_str() {
+            "--max-triangles" => args.max_triangles = value()?.parse()?,
+            "--runs" => args.runs = value()?.parse::<u64>()?.max(1),
+            "--no-shared" => args.shared = false,
+            "--no-groups" => args.groups = false,
+            "--ds-max-triangles" => args.ds_max_triangles = value()?.parse()?,
+            "--global-max-work" => args.global_max_work = value()?.parse()?,
+            "--lemon" => args.lemon = Some(PathBuf::from(value()?)),
+            "--out" => args.out = PathBuf::from(value()?),
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    Ok(args)
+}
+
+/// One line of the results file.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+struct Record {
+    input: String,
+    group: String,
+    genus: i64,
+    vertices: usize,
+    faces: usize,
+    algorithm: String,
+    /// `forest`, `local`, `global` or `lemon`.
+    augment: String,
+    runs: u64,
+    initial_pairing_seconds: f64,
+    paired_percent: f64,
+    unpaired: f64,
+    augmentation_seconds: f64,
+    total_seconds: f64,
+    /// Median over the runs of the total (the other times are minima).
+    total_seconds_median: f64,
+    /// Mean on-CPU seconds of the whole call (this thread's run time, robust to a loaded
+    /// machine; LEMON: of `run()`).
+    cpu_seconds: f64,
+    flipped_edges: f64,
+    /// Nodes reached by the augmenting searches (average per run).
+    augment_reached: f64,
+    /// Searches started (average per run).
+    augment_searches: f64,
+    /// LEMON only: seconds to build its graph (not in `total_seconds`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lemon_build_seconds: Option<f64>,
+}
+
+/// Runs `algorithm` (`runs` seeds for SG and PS): counts are averaged over the runs, times are the
+/// minimum over the runs (the machine is shared; the minimum is the least disturbed estimate),
+/// with the median total kept as well.
+fn measure(
+    surface: &Surface,
+    base: &Record,
+    algorithm: impl Fn(u64) -> QuadAlgorithm,
+    augment: AugmentStrategy,
+    runs: u64,
+) -> Result<Record, Box<dyn Error>> {
+    let mut r = Record {
+        runs,
+        augment: match augment {
+            AugmentStrategy::Global => "global".into(),
+            AugmentStrategy::Local { .. } => "local".into(),
+            AugmentStrategy::Forest => "forest".into(),
+        },
+        initial_pairing_seconds: f64::INFINITY,
+        augmentation_seconds: f64::INFINITY,
+        total_seconds: f64::INFINITY,
+        ..base.clone()
+    };
+    let mut totals = Vec::new();
+    let cpu_start = cpu_ns();
+    for seed in 0..runs {
+        let a = algorithm(seed);
+        let result = quadrangulate_with(&surface.mesh, a, &QuadOptions { augment })?;
+        let s = &result.stats;
+        r.algorithm = s.algorithm.clone();
+        r.initial_pairing_seconds = r.initial_pairing_seconds.min(s.initial_pairing_seconds);
+        r.augmentation_seconds = r.augmentation_seconds.min(s.augmentation_seconds);
+        r.total_seconds = r.total_seconds.min(s.total_seconds);
+        totals.push(s.total_seconds);
+        r.paired_percent += s.paired_percent;
+        r.unpaired += s.unpaired as f64;
+        r.flipped_edges += s.flipped_edges as f64;
+        r.augment_reached += result.augmentation.reached as f64;
+        r.augment_searches += result.augmentation.searches as f64;
+    }
+    r.cpu_seconds = (cpu_ns().saturating_sub(cpu_start)) as f64 * 1e-9 / runs as f64;
+    totals.sort_by(f64::total_cmp);
+    r.total_seconds_median = totals[totals.len() / 2];
+    let n = runs as f64;
+    for x in [
+        &mut r.paired_percent,
+        &mut r.unpaired,
+        &mut r.flipped_edges,
+        &mut r.augment_reached,
+        &mut r.augment_searches,
+    ] {
+        *x /= n;
+    }
+    Ok(r)
+}
+
+/// On-CPU nanoseconds of the current thread (`/proc/thread-self/schedstat`; updated at scheduler
+/// ticks, so meaningful as a mean over several runs), 0 where unavailable.
+fn cpu_ns() -> u64 {
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse().ok())
+        .unwrap_or(0)
+}
+
+/// Exports the dual graph and times LEMON's MaxMatching on it.
+fn lemon(
+    binary: &PathBuf,
+    surface: &Surface,
+    base: &Record,
+    runs: u64,
+) -> Result<Record, Box<dyn Error>> {
+    let mesh = &surface.mesh;
+    assert_eq!(mesh.face_slots(), mesh.face_count(), "dense ids expected");
+    let path = std::env::temp_dir().join(format!("surftopo-dual-{}.bin", std::process::id()));
+    {
+        let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
+        out.write_all(&(mesh.face_count() as u32).to_le_bytes())?;
+        out.write_all(&(mesh.edge_count() as u32).to_le_bytes())?;
+        for e in mesh.edges() {
+            let h = e.halfedge();
+            out.write_all(&mesh.face(h).0.to_le_bytes())?;
+            out.write_all(&mesh.face(h.twin()).0.to_le_bytes())?;
+        }
+    }
+    let output = Command::new(binary)
+        .arg(&path)
+        .arg(runs.to_string())
+        .output()?;
+    std::fs::remove_file(&path)?;
+    if !output.status.success() {
+        return Err(format!("LEMON harness: {}", String::from_utf8_lossy(&output.stderr)).into());
+    }
+    let v: serde_json::Value = serde_json::from_slice(&output.stdout)?;
+    let size = v["matching_size"].as_u64().ok_or("no matching_size")? as usize;
+    if 2 * size != mesh.face_count() {
+        return Err(format!("LEMON matched {size} pairs of {} faces", mesh.face_count()).into());
+    }
+    let run = v["run_seconds"].as_f64().ok_or("no run_seconds")?;
+    Ok(Record {
+        algorithm: "lemon".into(),
+        augment: "lemon".into(),
+        runs,
+        total_seconds_median: v["median_run_seconds"].as_f64().unwrap_or(run),
+        cpu_seconds: v["cpu_run_seconds"].as_f64().unwrap_or(run),
+        paired_percent: 100.0,
+        total_seconds: run,
+        lemon_build_seconds: v["build_seconds"].as_f64(),
+        ..base.clone()
+    })
+}
+
+/// An input: its name, its group and how to make it (lazily, one at a time in memory).
+type Input = (String, String, Box<dyn Fn() -> Surface>);
+
+fn inputs(args: &Args) -> Vec<Input> {
+    let mut out: Vec<Input> = Vec::new();
+    if args.shared {
+        for shared in surftopo_testkit::shared_meshes() {
+            if shared.faces as u64 <= args.max_triangles {
+                let name = shared.file.trim_end_matches(".gz").to_string();
+                out.push((
+                    name,
+                    "shared".into(),
+                    Box::new(move || surftopo_testkit::load(&shared)),
+                ));
+            }
+        }
+    }
+    if args.groups {
+        for (group, table, cavities, holes) in [("A", GROUP_A, 3844, 0), ("B", GROUP_B, 344, 3500)]
+        {
+            for (name, target) in table {
+                if target <= args.max_triangles {
+                    out.push((
+                        name.into(),
+                        group.into(),
+                        Box::new(move || cavity_box(cavities, holes, target)),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let args = parse_args()?;
+    if let Some(dir) = args.out.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let mut records: Vec<Record> = Vec::new();
+    let forest = AugmentStrategy::default();
+    for (name, group, make) in inputs(&args) {
+        let surface = make();
+        let mesh = &surface.mesh;
+        let base = Record {
+            input: name.clone(),
+            group: group.clone(),
+            genus: mesh.genus(),
+            vertices: mesh.vertex_count(),
+            faces: mesh.face_count(),
+            ..Record::default()
+        };
+        eprintln!("{name}: {} triangles, genus {}", base.faces, base.genus);
+        let mut mine = vec![
+            measure(
+                &surface,
+                &base,
+                |s| QuadAlgorithm::SimpleGreedy { seed: s },
+                forest,
+                args.runs,
+            )?,
+            measure(
+                &surface,
+                &base,
+                |s| QuadAlgorithm::PulliSegal { seed: s },
+                forest,
+                args.runs,
+            )?,
+            measure(&surface, &base, |_| QuadAlgorithm::Lrs, forest, args.runs)?,
+        ];
+        if base.faces as u64 <= args.ds_max_triangles {
+            mine.push(measure(
+                &surface,
+                &base,
+                |_| QuadAlgorithm::DiksStanczyk,
+                forest,
+                1,
+            )?);
+        }
+        let afford = |r: &Record| r.unpaired / 2.0 * r.faces as f64 <= args.global_max_work;
+        let mut global = Vec::new();
+        for (i, algorithm) in [
+            QuadAlgorithm::SimpleGreedy { seed: 0 },
+            QuadAlgorithm::PulliSegal { seed: 0 },
+            QuadAlgorithm::Lrs,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let pick = move |s: u64| match algorithm {
+                QuadAlgorithm::SimpleGreedy { .. } => QuadAlgorithm::SimpleGreedy { seed: s },
+                QuadAlgorithm::PulliSegal { .. } => QuadAlgorithm::PulliSegal { seed: s },
+                other => other,
+            };
+            let local = AugmentStrategy::Local {
+                initial_budget: 256,
+            };
+            global.push(measure(&surface, &base, pick, local, args.runs)?);
+            if afford(&mine[i]) {
+                global.push(measure(
+                    &surface,
+                    &base,
+                    pick,
+                    AugmentStrategy::Global,
+                    args.runs,
+                )?);
+            }
+        }
+        for r in mine.iter().chain(&global) {
+            eprintln!(
+                "  {:>4} {:>6}: (a) {:.4} (b) {:.4}% (c) {:.1} (d) {:.4} (e) {:.4} flipped {:.0}",
+                r.algorithm,
+                r.augment,
+                r.initial_pairing_seconds,
+                r.paired_percent,
+                r.unpaired,
+                r.augmentation_seconds,
+                r.total_seconds,
+                r.flipped_edges
+            );
+        }
+        records.extend(mine);
+        records.extend(global);
+        if let Some(binary) = &args.lemon {
+            let r = lemon(binary, &surface, &base, args.runs)?;
+            eprintln!("  LEMON MaxMatching run(): {:.4} s", r.total_seconds);
+            records.push(r);
+        }
+    }
+    let mut jsonl = String::new();
+    for r in &records {
+        writeln!(jsonl, "{}", serde_json::to_string(r)?)?;
+    }
+    std::fs::write(args.out.with_extension("jsonl"), jsonl)?;
+    std::fs::write(args.out.with_extension("md"), markdown(&records, &args))?;
+    eprintln!("wrote {}.{{jsonl,md}}", args.out.display());
+    Ok(())
+}
+
+fn markdown(records: &[Record], args: &Args) -> String {
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "# Quadrangulation by triangle pairing: Tables 4.3 / 4.4\n\n\
+         Generated by `cargo run --release -p surftopo-quad --example quad_tables -- \
+         --max-triangles {} --runs {}{}` (machine: see the closing note). Columns as in the \
+         paper: (a) initial pairing seconds, (b) % paired, (c) unpaired triangles, (d) \
+         augmentation seconds, (e) total seconds. SG and PS: averages over {} seeds; `forest` is \
+         the default augmenting search, `local` the budgeted single-root one. Times are the \
+         minimum over the runs, counts the average, `global` the paper's (run only when unpaired/2 x faces <= \
+         {:.0e}). `lemon`: LEMON 1.3 `MaxMatching::run()` on the same dual graph.\n",
+        args.max_triangles,
+        args.runs,
+        if args.lemon.is_some() {
+            " --lemon crates/quad/peer/lemon_matching"
+        } else {
+            ""
+        },
+        args.runs,
+        args.global_max_work,
+    );
+    let _ = writeln!(
+        md,
+        "| input | faces | genus | alg. | augment | (a) | (b) | (c) | (d) | (e) | flipped | CPU s |\n\
+         |---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|"
+    );
+    for r in records {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {:.4} | {:.4}% | {:.1} | {:.4} | {:.4} | {:.0} | {:.4} |",
+            r.input,
+            r.faces,
+            r.genus,
+            r.algorithm,
+            r.augment,
+            r.initial_pairing_seconds,
+            r.paired_percent,
+            r.unpaired,
+            r.augmentation_seconds,
+            r.total_seconds,
+            r.flipped_edges,
+            r.cpu_seconds
+        );
+    }
+    // Summary: fastest surftopo total per input vs LEMON.
+    let mut by_input: BTreeMap<(String, String), Vec<&Record>> = BTreeMap::new();
+    for r in records {
+        by_input
+            .entry((r.group.clone(), r.input.clone()))
+            .or_default()
+            .push(r);
+    }
+    let _ = writeln!(
+        md,
+        "\n## Fastest surftopo algorithm vs LEMON\n\n\
+         Wall: minimum over the runs. CPU: mean on-CPU time of the thread (surftopo: the whole \
+         `quadrangulate` call; LEMON: `MaxMatching::run()`), which the other processes of the \
+         shared machine disturb much less.\n\n\
+         | input | faces | genus | fastest (CPU) | CPU s | its (d)/(e) | LEMON CPU s | CPU ratio | \
+         fastest (wall) | wall s | LEMON wall s | wall ratio |\n\
+         |---|---:|---:|---|---:|---:|---:|---:|---|---:|---:|---:|"
+    );
+    for ((_, input), rs) in &by_input {
+        let ours = || rs.iter().filter(|r| r.augment != "lemon");
+        let (Some(best_cpu), Some(best_wall)) = (
+            ours().min_by(|a, b| a.cpu_seconds.total_cmp(&b.cpu_seconds)),
+            ours().min_by(|a, b| a.total_seconds.total_cmp(&b.total_seconds)),
+        ) else {
+            continue;
+        };
+        let lemon = rs.iter().find(|r| r.augment == "lemon");
+        let ratio =
+            |a: f64, b: Option<f64>| b.map_or("-".into(), |b| format!("{:.3}", a / b.max(1e-12)));
+        let _ = writeln!(
+            md,
+            "| {input} | {} | {} | {} ({}) | {:.4} | {:.2} | {} | {} | {} ({}) | {:.4} | {} | {} |",
+            best_cpu.faces,
+            best_cpu.genus,
+            best_cpu.algorithm,
+            best_cpu.augment,
+            best_cpu.cpu_seconds,
+            best_cpu.augmentation_seconds / best_cpu.total_seconds.max(1e-12),
+            lemon.map_or("-".into(), |l| format!("{:.4}", l.cpu_seconds)),
+            ratio(best_cpu.cpu_seconds, lemon.map(|l| l.cpu_seconds)),
+            best_wall.algorithm,
+            best_wall.augment,
+            best_wall.total_seconds,
+            lemon.map_or("-".into(), |l| format!("{:.4}", l.total_seconds)),
+            ratio(best_wall.total_seconds, lemon.map(|l| l.total_seconds)),
+        );
+    }
+    md
+}

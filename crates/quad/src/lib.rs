@@ -1,0 +1,25 @@
+//! surftopo-quad: quadrangulations of closed triangle meshes by triangle pairing.
+//!
+//! Paper: T. Lemos, S. Ramaswami, M. Siqueira, "An experimental comparison of algorithms for
+//! converting triangulations of closed surfaces into quadrangulations" (long version
+//! `tri-quad-conversion-long.txt`, IMR 2015 note `tri-quad-conversion-imr.txt`).
+//!
+//! - [`quadrangulate`] / [`quadrangulate_with`]: the pipeline for every algorithm ([`QuadAlgorithm`]:
+//!   SG, PS, LRS, DS): initial pairing, augmenting paths until the pairing is perfect, one quad per
+//!   pair, with the figures of Table 4.3 ([`QuadStats`]).
+//! - [`lrs`]: the expansion step of LRS (Algorithms 3.1–3.4), which pairs the triangles of a
+//!   triangulation K obtained from the input by edge flips.
+//!
+//! The pairing algorithms themselves (SG, PS, augmenting paths, DS) live in `surftopo-matching`
+//! and work on the dual graph read implicitly from the half-edge mesh.
+
+mod error;
+pub mod lrs;
+mod quadrangulate;
+
+pub use error::QuadError;
+pub use lrs::{Expansion, ExpansionCases, expand};
+pub use quadrangulate::{
+    QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
+};
+pub use surftopo_matching::{AugmentStats, AugmentStrategy};

@@ -1,0 +1,232 @@
+//! The expansion step of LRS (Lemos, Ramaswami, Siqueira): Section 3.3.1 of the quadrangulation
+//! paper (`tri-quad-conversion-long.txt`), Algorithm 3.1 (EXPANSIONS) with Algorithms 3.2
+//! (EXPANDMATCHDEGREE3), 3.3 (EXPANDMATCHDEGREE4) and 3.4 (EXPANDMATCHDEGREEGREATERTHAN4).
+//!
+//! The contraction step (Ramaswami–Siqueira, `surftopo-irreducible`) leaves an irreducible
+//! triangulation T′ and the stack S of its contractions. Here the contractions are undone in
+//! reverse order with [`SurfaceMesh::split_vertex`], which restores the input T exactly (same
+//! ids), while a matching M (a set of primal edges) and a per-edge `flipped` flag are maintained as
+//! the paper's pseudocode says. The triangulation K of the paper is T with the flagged flips
+//! applied; M's dual edges match every triangle of K except those of T′ (Proposition 3.3), so at
+//! most `max(4, 56g − 12)` triangles are left unmatched.
+//!
+//! # Decisions
+//! 1. **When the flips happen.** The paper only flags flips ("there is no need to explicitly
+//!    construct K during the execution of Algorithm 3.1"). A vertex split needs the mesh exactly as
+//!    the contraction left it, so the mesh is kept equal to T during the expansion and the flips
+//!    are applied at the end. They are recorded as a chronological list of flip operations (an
+//!    "unflip" of Algorithm 3.2, line 3, is one more flip of the same edge) and replayed in that
+//!    order, because consecutive flips in one region do not commute (Figure 3.9: the face across
+//!    [v, x] in K may itself come from a flip). Replaying at the end is exact: a flip never touches
+//!    the split edges [u, x], [u, y] of a later split (they are not safe, so never flipped — this
+//!    is checked before every split), so the flip's quadrilateral lies on one side of the path
+//!    x–u–y and commutes with the split.
+//! 2. **The flags** are read by edge id (`Vec<bool>`): `flipped(e)` is the paper's flag, toggled by
+//!    every flip operation of `e`. The `flipped_edges` figure counts edges whose final flag is set
+//!    (an edge flipped and unflipped counts as not flipped), as the paper's "flips 3392 edges".
+//! 3. **Local configuration.** After splitting `h = u → v` (Figure 3.1, faces [u, v, x] and
+//!    [v, u, y]), `next(h)` is v → x and `prev(twin h)` is y → v. With v of degree 3 the face across
+//!    [v, x] is [x, v, y] and [x, y] is its third edge; with degree 4 it is [x, v, z], z is the
+//!    fourth neighbour, [x, z] its third edge, and [y, z] the third edge of the face across [v, y].
+//!    Each identification is checked, as is every paper invariant below; a violation is reported as
+//!    [`QuadError::Internal`] with the record index (a wrong history or a bug), never as a result.
+//! 4. **Checks at the end.** Every flip replays (`SurfaceMesh::flip` succeeds), M contains no
+//!    flipped edge and is a matching of K's dual (no triangle in two pairs; Claim 3.1 (ii)).
+//!
+//! Complexity: O(n) (one split per record, O(degree of v) to read the degree, at most two flips
+//! per split), memory O(n).
+
+use surftopo_matching::Pairing;
+use surftopo_mesh::{Contraction, EdgeId, HalfedgeId, SurfaceMesh};
+
+use crate::QuadError;
+
+/// How many expansions each branch of Algorithm 3.1 handled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct ExpansionCases {
+    /// Line 7: neither split edge in M; [u, v] inserted.
+    pub neither_split_edge_matched: u64,
+    /// Line 9: EXPANDMATCHDEGREE3 (Algorithm 3.2).
+    pub degree3: u64,
+    /// Of those, the ones that unflipped [x, y] (Algorithm 3.2, line 3).
+    pub degree3_unflips: u64,
+    /// Line 13: EXPANDMATCHDEGREE4 (Algorithm 3.3).
+    pub degree4: u64,
+    /// Line 15: degree 4 but [x, z] or [y, z] flipped: Algorithm 3.4.
+    pub degree4_with_flipped_edge: u64,
+    /// Line 18: degree above 4: Algorithm 3.4.
+    pub degree_above4: u64,
+}
+
+/// The result of the expansion: K and the matching M on its dual.
+#[derive(Clone, Debug)]
+pub struct Expansion {
+    /// K: the input triangulation (same vertex, edge and face ids) with the flips applied.
+    pub mesh: SurfaceMesh,
+    /// M, as a pairing of K's triangles (face ids of `mesh`).
+    pub pairing: Pairing,
+    /// The final `flipped` flag per edge id: whether K holds the flip of the input's edge.
+    pub flipped: Vec<bool>,
+    /// Number of edges whose final flag is set.
+    pub flipped_edges: usize,
+    /// Number of flip operations replayed (flips and unflips).
+    pub flip_operations: usize,
+    /// Branch counts of Algorithm 3.1.
+    pub cases: ExpansionCases,
+}
+
+/// Algorithm 3.1 (EXPANSIONS): replays `history` (contraction order, as returned by
+/// `surftopo_irreducible::ramaswami_siqueira`) backwards on `reduced`, building the matching M and
+/// the flips, then applies the flips, giving K and M on K's dual.
+///
+/// Takes the irreducible triangulation T′ with tombstones (surviving ids = input ids) and its
+/// contraction history; the history must come from a contraction step that processes vertices one
+/// at a time, contracting edges [u, v] into u until u is trapped (Section 3.3.1), as RS does.
+/// Guarantees: K is a triangulation of the same surface with the input's vertex, edge and face ids;
+/// every triangle of K not in T′ is matched by M (Proposition 3.3). O(n) time and memory.
+///
+/// # Errors
+/// [`QuadError::Internal`] when the history does not replay on `reduced` or a paper invariant is
+/// violated (a bug, or a history from another contraction order); the message names the record.
+pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion, QuadError> {
+    let mut mesh = reduced;
+    let slots = mesh.edge_slots();
+    let mut in_m = vec![false; slots];
+    let mut flipped = vec![false; slots];
+    let mut operations: Vec<EdgeId> = Vec::new();
+    let mut cases = ExpansionCases::default();
+    let mut toggle = |e: EdgeId, flipped: &mut Vec<bool>| {
+        flipped[e.idx()] ^= true;
+        operations.push(e);
+    };
+    for (index, record) in history.iter().enumerate().rev() {
+        let fail = |what: &str| {
+            QuadError::Internal(format!(
+                "LRS expansion, contraction record {index} (kept {:?}, removed {:?}): {what}",
+                record.kept(),
+                record.removed()
+            ))
+        };
+        let (u, v) = (record.kept(), record.removed());
+        let [x, y] = record.link();
+        let [ux, uy] = record.split_edges();
+        let uv = record.edge_uv();
+        let [vx, vy] = record.removed_edges();
+        let replays = mesh.is_vertex_live(u)
+            && !mesh.is_vertex_live(v)
+            && mesh.is_edge_live(ux)
+            && mesh.is_edge_live(uy)
+            && !mesh.is_edge_live(uv)
+            && [uv, vx, vy].iter().all(|e| e.idx() < slots);
+        if !replays {
+            return Err(fail("the history does not replay on this mesh"));
+        }
+        if flipped[ux.idx()] || flipped[uy.idx()] {
+            return Err(fail(
+                "a split edge is flipped (it must be unsafe, hence never flipped)",
+            ));
+        }
+        mesh.split_vertex(record);
+        let (x_matched, y_matched) = (in_m[ux.idx()], in_m[uy.idx()]);
+        if !x_matched && !y_matched {
+            in_m[uv.idx()] = true; // line 7
+            cases.neither_split_edge_matched += 1;
+            continue;
+        }
+        let h = record.halfedge_uv();
+        let to_x = mesh.next(h); // v -> x
+        let from_y = mesh.prev(h.twin()); // y -> v
+        let ends = |g: HalfedgeId| (mesh.origin(g), mesh.dest(g));
+        if ends(to_x) != (v, x) || ends(from_y) != (y, v) {
+            return Err(fail("split faces are not [u, v, x] and [v, u, y]"));
+        }
+        let degree = mesh.degree(v);
+        let mut greater_than_4 = false;
+        if degree == 3 {
+            // Algorithm 3.2: faces [u, v, x], [x, v, y], [v, u, y].
+            let y_to_x = mesh.prev(to_x.twin());
+            if ends(y_to_x) != (y, x) {
+                return Err(fail("degree 3 but the face across [v, x] is not [x, v, y]"));
+            }
+            let xy = y_to_x.edge();
+            if flipped[xy.idx()] {
+                toggle(xy, &mut flipped);
+                cases.degree3_unflips += 1;
+            }
+            let inserted = match (x_matched, y_matched) {
+                (true, true) => xy,
+                (true, false) => vy,
+                _ => vx,
+            };
+            in_m[inserted.idx()] = true;
+            cases.degree3 += 1;
+        } else if degree == 4 {
+            // Faces [u, v, x], [x, v, z], [z, v, y], [v, u, y].
+            let v_to_z = mesh.next(to_x.twin());
+            let z = mesh.dest(v_to_z);
+            let z_to_x = mesh.prev(to_x.twin());
+            let y_to_z = mesh.next(from_y.twin());
+            if ends(z_to_x) != (z, x) || ends(y_to_z) != (y, z) {
+                return Err(fail(
+                    "degree 4 but the faces at v are not [x, v, z], [z, v, y]",
+                ));
+            }
+            if !flipped[z_to_x.edge().idx()] && !flipped[y_to_z.edge().idx()] {
+                // Algorithm 3.3.
+                match (x_matched, y_matched) {
+                    (true, true) => in_m[v_to_z.edge().idx()] = true,
+                    (true, false) => {
+                        toggle(vx, &mut flipped);
+                        in_m[uv.idx()] = true;
+                    }
+                    _ => {
+                        toggle(vy, &mut flipped);
+                        in_m[uv.idx()] = true;
+                    }
+                }
+                cases.degree4 += 1;
+            } else {
+                greater_than_4 = true;
+                cases.degree4_with_flipped_edge += 1;
+            }
+        } else {
+            greater_than_4 = true;
+            cases.degree_above4 += 1;
+        }
+        if greater_than_4 {
+            // Algorithm 3.4.
+            if x_matched {
+                toggle(vx, &mut flipped);
+            }
+            if y_matched {
+                toggle(vy, &mut flipped);
+            }
+            in_m[uv.idx()] = true;
+        }
+    }
+    for (i, &e) in operations.iter().enumerate() {
+        mesh.flip(e).map_err(|err| {
+            QuadError::Internal(format!(
+                "LRS: flip operation {i} of {} ({e:?}) does not replay on T: {err}",
+                operations.len()
+            ))
+        })?;
+    }
+    let matched: Vec<u32> = (0..slots as u32).filter(|&e| in_m[e as usize]).collect();
+    if let Some(&e) = matched.iter().find(|&&e| flipped[e as usize]) {
+        return Err(QuadError::Internal(format!(
+            "LRS: edge e{e} is in M but flipped (Claim 3.1 (ii))"
+        )));
+    }
+    let pairing = Pairing::from_edges(&mesh, matched)
+        .map_err(|err| QuadError::Internal(format!("LRS: M is not a matching of K: {err}")))?;
+    let flipped_edges = flipped.iter().filter(|&&f| f).count();
+    Ok(Expansion {
+        mesh,
+        pairing,
+        flipped,
+        flipped_edges,
+        flip_operations: operations.len(),
+        cases,
+    })
+}

@@ -1,0 +1,274 @@
+//! The quad-mesh pipeline for every pairing algorithm: initial pairing, augmenting paths, quads.
+//!
+//! Section 2 of the quadrangulation paper (`tri-quad-conversion-long.txt`): a perfect matching M
+//! of the dual graph gives a quadrangulation with the same vertices by removing the primal edge of
+//! every matched dual edge. Section 4 defines the figures reported in [`QuadStats`] (the columns
+//! of Table 4.3).
+//!
+//! Quad orientation: for a removed edge with half-edge `h = a → b` in triangle (a, b, c) and its
+//! twin in (b, a, d), the quad is `[a, d, b, c]`, counter-clockwise like the triangles.
+
+use std::time::Instant;
+
+use surftopo_matching::{
+    AugmentError, AugmentStats, AugmentStrategy, Pairing, augment_to_perfect, pulli_segal,
+    simple_greedy,
+};
+use surftopo_mesh::{EdgeId, SurfaceMesh, VertexId};
+
+use crate::QuadError;
+use crate::lrs::{ExpansionCases, expand};
+
+/// Which initial pairing [`quadrangulate`] computes before the augmenting paths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum QuadAlgorithm {
+    /// SG: simple greedy over a seeded random edge order (Section 3.1).
+    SimpleGreedy {
+        /// Seed of the edge shuffle.
+        seed: u64,
+    },
+    /// PS: Pulli and Segal's priority sets over a seeded random triangle order (Section 3.1).
+    PulliSegal {
+        /// Seed of the triangle shuffle.
+        seed: u64,
+    },
+    /// LRS: Ramaswami–Siqueira contractions, then the expansion of Algorithm 3.1 with flips
+    /// (Section 3.3). Deterministic. The quads pair triangles of K, not of the input.
+    Lrs,
+    /// DS: Diks and Stanczyk's perfect matching (Section 3.2, `surftopo-matching`), on the dual
+    /// materialised as a [`surftopo_matching::CubicGraph`]. Deterministic, always perfect.
+    DiksStanczyk,
+}
+
+impl QuadAlgorithm {
+    /// Short name: `sg`, `ps`, `lrs` or `ds` (the CLI's `--algorithm` values and the `algorithm`
+    /// field of [`QuadStats`]).
+    pub fn name(&self) -> &'static str {
+        match self {
+            QuadAlgorithm::SimpleGreedy { .. } => "sg",
+            QuadAlgorithm::PulliSegal { .. } => "ps",
+            QuadAlgorithm::Lrs => "lrs",
+            QuadAlgorithm::DiksStanczyk => "ds",
+        }
+    }
+}
+
+impl std::fmt::Display for QuadAlgorithm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Options of [`quadrangulate_with`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QuadOptions {
+    /// How augmenting paths are searched for (default: [`AugmentStrategy::Forest`]).
+    pub augment: AugmentStrategy,
+}
+
+/// The figures of one run: the columns of Table 4.3 (what `surftopo quad --json` prints).
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct QuadStats {
+    /// `sg`, `ps`, `lrs` or `ds`.
+    pub algorithm: String,
+    /// Number of triangles of the input.
+    pub faces: usize,
+    /// (a) Seconds to compute the initial pairing (LRS: contraction, expansion and flips).
+    pub initial_pairing_seconds: f64,
+    /// (b) Percentage of triangles paired by the initial pairing.
+    pub paired_percent: f64,
+    /// (c) Triangles left unpaired by the initial pairing.
+    pub unpaired: usize,
+    /// (d) Seconds spent on augmenting paths.
+    pub augmentation_seconds: f64,
+    /// (e) Seconds for the whole call (pairing, augmentation and building the quads).
+    pub total_seconds: f64,
+    /// Edges of the input whose flip is in K (LRS; 0 for the other algorithms).
+    pub flipped_edges: usize,
+}
+
+/// A quadrangulation and how it was obtained.
+#[derive(Clone, Debug)]
+pub struct QuadResult {
+    /// The quads, counter-clockwise, as vertex ids of the input (same vertex set and positions).
+    pub quads: Vec<[VertexId; 4]>,
+    /// For each quad, the removed edge: its two triangles are the faces of this edge in
+    /// [`QuadResult::triangulation`] (or in the input when that is `None`). Edge ids are the
+    /// input's (flips keep edge ids).
+    pub diagonals: Vec<EdgeId>,
+    /// K, the triangulation whose triangles were paired, when it differs from the input (LRS).
+    pub triangulation: Option<SurfaceMesh>,
+    /// The Table 4.3 figures.
+    pub stats: QuadStats,
+    /// Details of the augmenting-path phase.
+    pub augmentation: AugmentStats,
+    /// Branch counts of Algorithm 3.1 (LRS only).
+    pub expansion: Option<ExpansionCases>,
+}
+
+/// [`quadrangulate_with`] with default options.
+///
+/// # Errors
+/// See [`quadrangulate_with`].
+pub fn quadrangulate(
+    mesh: &SurfaceMesh,
+    algorithm: QuadAlgorithm,
+) -> Result<QuadResult, QuadError> {
+    quadrangulate_with(mesh, algorithm, &QuadOptions::default())
+}
+
+/// Converts a closed triangle mesh into a quad mesh on the same vertices: an initial pairing by
+/// `algorithm`, completed into a perfect pairing by augmenting paths (Section 3), then one quad per
+/// pair.
+///
+/// Takes any closed mesh (tombstones allowed; LRS needs a simplicial one). Guarantees: every live
+/// triangle of the paired triangulation (the input, or K for LRS) is in exactly one quad; the quads
+/// are consistently oriented and form a closed manifold quad mesh of the input's genus on all its
+/// vertices (when the input is simplicial). For LRS, the number of triangles the expansion leaves
+/// unpaired is checked against the paper's bound `max(4, 56g − 12)`.
+///
+/// Complexity: SG and PS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
+/// O(g n + g²) (Theorem 3.2) plus the augmentation; DS O(n log² n) amortized.
+///
+/// # Errors
+/// - [`QuadError::Empty`]: no faces.
+/// - [`QuadError::NotSimplicial`]: LRS on a non-simplicial mesh.
+/// - [`QuadError::NoPerfectPairing`]: a non-simplicial mesh whose dual has no perfect matching.
+/// - [`QuadError::Internal`]: a broken invariant (a bug), with diagnostics; never a partial result.
+pub fn quadrangulate_with(
+    mesh: &SurfaceMesh,
+    algorithm: QuadAlgorithm,
+    options: &QuadOptions,
+) -> Result<QuadResult, QuadError> {
+    let start = Instant::now();
+    let faces = mesh.face_count();
+    if faces == 0 {
+        return Err(QuadError::Empty);
+    }
+    let mut flipped_edges = 0;
+    let mut expansion_cases = None;
+    let (triangulation, mut pairing) = match algorithm {
+        QuadAlgorithm::SimpleGreedy { seed } => (None, simple_greedy(mesh, seed)),
+        QuadAlgorithm::PulliSegal { seed } => (None, pulli_segal(mesh, seed)),
+        QuadAlgorithm::Lrs => {
+            let genus = mesh.genus();
+            let reduction = surftopo_irreducible::ramaswami_siqueira(mesh.clone())?;
+            let expansion = expand(reduction.mesh, &reduction.history)?;
+            let unpaired = expansion.pairing.unmatched_count(&expansion.mesh);
+            let bound = (56 * genus - 12).max(4);
+            if unpaired as i64 > bound {
+                return Err(QuadError::Internal(format!(
+                    "LRS left {unpaired} triangles unpaired, above the bound max(4, 56g - 12) = \
+                     {bound} for genus {genus}"
+                )));
+            }
+            flipped_edges = expansion.flipped_edges;
+            expansion_cases = Some(expansion.cases);
+            (Some(expansion.mesh), expansion.pairing)
+        }
+        QuadAlgorithm::DiksStanczyk => (None, diks_stanczyk_pairing(mesh)?),
+    };
+    let initial_pairing_seconds = start.elapsed().as_secs_f64();
+    let paired_mesh = triangulation.as_ref().unwrap_or(mesh);
+    let unpaired = pairing.unmatched_count(paired_mesh);
+    let augment_start = Instant::now();
+    let augmentation = augment_to_perfect(paired_mesh, &mut pairing, options.augment)
+        .map_err(|err| augmentation_error(paired_mesh, err))?;
+    let augmentation_seconds = augment_start.elapsed().as_secs_f64();
+    let (quads, diagonals) = quads_of(paired_mesh, &pairing)?;
+    let stats = QuadStats {
+        algorithm: algorithm.name().to_string(),
+        faces,
+        initial_pairing_seconds,
+        paired_percent: 100.0 * (faces - unpaired) as f64 / faces as f64,
+        unpaired,
+        augmentation_seconds,
+        total_seconds: start.elapsed().as_secs_f64(),
+        flipped_edges,
+    };
+    Ok(QuadResult {
+        quads,
+        diagonals,
+        triangulation,
+        stats,
+        augmentation,
+        expansion: expansion_cases,
+    })
+}
+
+/// A failed augmentation is the input's fault only when the mesh is not simplicial.
+fn augmentation_error(mesh: &SurfaceMesh, err: AugmentError) -> QuadError {
+    match err {
+        AugmentError::NoAugmentingPath { .. } if !mesh.is_simplicial() => {
+            QuadError::NoPerfectPairing(err)
+        }
+        _ => QuadError::Internal(format!(
+            "augmenting paths on the dual of a simplicial closed surface (which has a perfect \
+             matching by Petersen's theorem): {err}"
+        )),
+    }
+}
+
+/// DS on the materialised dual (a compacted copy when the mesh has tombstones), mapped back to
+/// the mesh's face and edge ids.
+fn diks_stanczyk_pairing(mesh: &SurfaceMesh) -> Result<Pairing, QuadError> {
+    let compacted;
+    let (dense, map) = if mesh.face_slots() == mesh.face_count()
+        && SurfaceMesh::edge_slots(mesh) == mesh.edge_count()
+    {
+        (mesh, None)
+    } else {
+        let mut copy = mesh.clone();
+        let map = copy.compact();
+        compacted = copy;
+        (&compacted, Some(map))
+    };
+    let graph = surftopo_matching::mesh_dual_graph(dense).map_err(|err| {
+        QuadError::Internal(format!("the dual graph is not cubic and bridgeless: {err}"))
+    })?;
+    let matching = surftopo_matching::diks_stanczyk::perfect_matching(&graph);
+    let mut new_to_old = vec![u32::MAX; dense.edge_count()];
+    match &map {
+        Some(map) => {
+            for (old, new) in map.edges.iter().enumerate() {
+                if new.is_valid() {
+                    new_to_old[new.idx()] = old as u32;
+                }
+            }
+        }
+        None => new_to_old
+            .iter_mut()
+            .enumerate()
+            .for_each(|(e, o)| *o = e as u32),
+    }
+    let edges = matching.edges().into_iter().map(|e| new_to_old[e as usize]);
+    Pairing::from_edges(mesh, edges)
+        .map_err(|err| QuadError::Internal(format!("DS result is not a matching: {err}")))
+}
+
+/// One counter-clockwise quad per matched edge, in increasing edge id order (one sequential pass
+/// over the edges).
+fn quads_of(
+    mesh: &SurfaceMesh,
+    pairing: &Pairing,
+) -> Result<(Vec<[VertexId; 4]>, Vec<EdgeId>), QuadError> {
+    let flags = pairing.edge_flags(SurfaceMesh::edge_slots(mesh));
+    let mut quads = Vec::with_capacity(mesh.face_count() / 2);
+    let mut diagonals = Vec::with_capacity(mesh.face_count() / 2);
+    for (e, _) in flags.iter().enumerate().filter(|&(_, &m)| m) {
+        let e = EdgeId::new(e);
+        let h = e.halfedge();
+        let (a, b) = (mesh.origin(h), mesh.dest(h));
+        let (c, d) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
+        quads.push([a, d, b, c]);
+        diagonals.push(e);
+    }
+    if 2 * quads.len() != mesh.face_count() {
+        return Err(QuadError::Internal(format!(
+            "{} pairs for {} triangles after augmentation",
+            quads.len(),
+            mesh.face_count()
+        )));
+    }
+    Ok((quads, diagonals))
+}

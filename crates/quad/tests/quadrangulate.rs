@@ -1,0 +1,301 @@
+//! All algorithms on generated families (genus 0 to high genus, regular and irregular
+//! connectivity) and on every shared mesh, each result checked by the independent checks of
+//! `support`.
+
+mod support;
+
+use support::{check_result, check_same_surface, naive_contractions};
+use surftopo_mesh::SurfaceMesh;
+use surftopo_mesh::generators::{
+    CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits, tetrahedron,
+    torus,
+};
+use surftopo_quad::{
+    AugmentStrategy, QuadAlgorithm, QuadError, QuadOptions, expand, quadrangulate,
+    quadrangulate_with,
+};
+
+const ALGORITHMS: [QuadAlgorithm; 5] = [
+    QuadAlgorithm::SimpleGreedy { seed: 1 },
+    QuadAlgorithm::SimpleGreedy { seed: 2 },
+    QuadAlgorithm::PulliSegal { seed: 1 },
+    QuadAlgorithm::Lrs,
+    QuadAlgorithm::DiksStanczyk,
+];
+
+fn families() -> Vec<(String, Surface)> {
+    let mut out: Vec<(String, Surface)> = vec![
+        ("tetrahedron".into(), tetrahedron()),
+        ("icosphere0".into(), icosphere(0)),
+        ("icosphere3".into(), icosphere(3)),
+        ("torus3x3".into(), torus(3, 3)),
+        ("torus20x7".into(), torus(20, 7)),
+        (
+            "cavities".into(),
+            CavityBox::new(6, 3, 1, 1, 1, 1).generate(),
+        ),
+    ];
+    for g in [1, 2, 3, 7, 20, 45, 200] {
+        out.push((format!("genus{g}"), genus_surface(g, 1)));
+    }
+    let base: Vec<(String, Surface)> = out.clone();
+    for (name, s) in &base {
+        let e = s.mesh.edge_count();
+        out.push((format!("{name}+flips"), random_flips(s, e, 7)));
+        out.push((
+            format!("{name}+splits"),
+            random_vertex_splits(s, s.mesh.vertex_count(), 9),
+        ));
+    }
+    // High genus relative to size, very irregular.
+    out.push((
+        "genus45+flips+flips".into(),
+        random_flips(&random_flips(&genus_surface(45, 1), 5000, 1), 5000, 2),
+    ));
+    out
+}
+
+#[test]
+fn every_algorithm_on_generated_families() {
+    for (name, surface) in families() {
+        let mesh = &surface.mesh;
+        for algorithm in ALGORITHMS {
+            let result = quadrangulate(mesh, algorithm)
+                .unwrap_or_else(|e| panic!("{name} {algorithm}: {e}"));
+            check_result(&format!("{name} {algorithm}"), mesh, algorithm, &result);
+        }
+    }
+}
+
+#[test]
+fn both_augmenting_strategies_give_perfect_pairings() {
+    let surface = random_flips(&genus_surface(5, 2), 3000, 4);
+    let strategies = [
+        AugmentStrategy::Forest,
+        AugmentStrategy::Global,
+        AugmentStrategy::Local { initial_budget: 2 },
+        AugmentStrategy::Local {
+            initial_budget: 1 << 30,
+        },
+    ];
+    for augment in strategies {
+        for algorithm in [
+            QuadAlgorithm::SimpleGreedy { seed: 3 },
+            QuadAlgorithm::PulliSegal { seed: 3 },
+            QuadAlgorithm::Lrs,
+        ] {
+            let result =
+                quadrangulate_with(&surface.mesh, algorithm, &QuadOptions { augment }).unwrap();
+            check_result(
+                &format!("{algorithm} {augment:?}"),
+                &surface.mesh,
+                algorithm,
+                &result,
+            );
+        }
+    }
+}
+
+#[test]
+fn same_seed_same_quads() {
+    let mesh = &random_flips(&torus(12, 9), 200, 5).mesh;
+    for algorithm in [
+        QuadAlgorithm::SimpleGreedy { seed: 9 },
+        QuadAlgorithm::PulliSegal { seed: 9 },
+        QuadAlgorithm::Lrs,
+        QuadAlgorithm::DiksStanczyk,
+    ] {
+        let a = quadrangulate(mesh, algorithm).unwrap();
+        let b = quadrangulate(mesh, algorithm).unwrap();
+        assert_eq!(a.quads, b.quads, "{algorithm}");
+    }
+    let a = quadrangulate(mesh, QuadAlgorithm::PulliSegal { seed: 1 }).unwrap();
+    let b = quadrangulate(mesh, QuadAlgorithm::PulliSegal { seed: 2 }).unwrap();
+    assert_ne!(a.quads, b.quads);
+}
+
+/// The expansion on a contraction history made by the tests' own contraction step: K is a
+/// triangulation of the same surface, M matches every triangle except those of T′.
+#[test]
+fn expansion_of_an_independent_contraction_sequence() {
+    let mut seen = surftopo_quad::ExpansionCases::default();
+    for (name, surface) in families() {
+        let input = &surface.mesh;
+        let (reduced, history) = naive_contractions(input);
+        let irreducible_faces = reduced.face_count();
+        let expansion = expand(reduced, &history).unwrap_or_else(|e| panic!("{name}: {e}"));
+        check_same_surface(input, &expansion.mesh);
+        let unmatched = expansion.pairing.unmatched_count(&expansion.mesh);
+        assert_eq!(
+            unmatched, irreducible_faces,
+            "{name}: only T' triangles unmatched"
+        );
+        assert!(
+            unmatched as i64 <= (56 * input.genus() - 12).max(4),
+            "{name}"
+        );
+        // M pairs triangles of K along unflipped edges.
+        for e in 0..input.edge_slots() {
+            if let Some(m) = expansion.pairing.mate_edge(
+                expansion
+                    .mesh
+                    .face(surftopo_mesh::EdgeId::new(e).halfedge())
+                    .0,
+            ) && m as usize == e
+            {
+                assert!(
+                    !expansion.flipped[e],
+                    "{name}: matched edge e{e} is flipped"
+                );
+                let mut a = input.edge_vertices(surftopo_mesh::EdgeId::new(e));
+                let mut b = expansion.mesh.edge_vertices(surftopo_mesh::EdgeId::new(e));
+                a.sort();
+                b.sort();
+                assert_eq!(a, b, "{name}: matched edge e{e} differs from the input's");
+            }
+        }
+        let cases = expansion.cases;
+        let total = cases.neither_split_edge_matched
+            + cases.degree3
+            + cases.degree4
+            + cases.degree4_with_flipped_edge
+            + cases.degree_above4;
+        assert_eq!(
+            total as usize,
+            history.len(),
+            "{name}: one branch per record"
+        );
+        seen.neither_split_edge_matched += cases.neither_split_edge_matched;
+        seen.degree3 += cases.degree3;
+        seen.degree3_unflips += cases.degree3_unflips;
+        seen.degree4 += cases.degree4;
+        seen.degree4_with_flipped_edge += cases.degree4_with_flipped_edge;
+        seen.degree_above4 += cases.degree_above4;
+    }
+    // Every branch of Algorithms 3.1-3.4 was exercised.
+    eprintln!("{seen:?}");
+    assert!(seen.neither_split_edge_matched > 0 && seen.degree3 > 0 && seen.degree4 > 0);
+    assert!(seen.degree3_unflips > 0, "{seen:?}");
+    assert!(
+        seen.degree4_with_flipped_edge > 0 && seen.degree_above4 > 0,
+        "{seen:?}"
+    );
+}
+
+#[test]
+fn a_history_that_does_not_replay_is_an_internal_error() {
+    let surface = icosphere(1);
+    let (reduced, history) = naive_contractions(&surface.mesh);
+    // Dropping the last record leaves a vertex removed that the earlier records do not restore.
+    let err = expand(reduced, &history[..history.len() - 1]).unwrap_err();
+    assert!(matches!(err, QuadError::Internal(_)), "{err}");
+}
+
+#[test]
+fn non_simplicial_input() {
+    // A flipped tetrahedron edge doubles an edge: a closed mesh with a multi-edge.
+    let mut mesh = surftopo_mesh::SurfaceMesh::tetrahedron();
+    mesh.flip(surftopo_mesh::EdgeId(0)).unwrap();
+    mesh.check_invariants().unwrap();
+    assert!(!mesh.is_simplicial());
+    for algorithm in [
+        QuadAlgorithm::SimpleGreedy { seed: 0 },
+        QuadAlgorithm::PulliSegal { seed: 0 },
+    ] {
+        let result = quadrangulate(&mesh, algorithm).unwrap();
+        assert_eq!(result.quads.len(), 2);
+    }
+    assert!(matches!(
+        quadrangulate(&mesh, QuadAlgorithm::Lrs),
+        Err(QuadError::NotSimplicial(_))
+    ));
+}
+
+#[test]
+fn tombstoned_input_is_paired_on_live_faces() {
+    let mut mesh: SurfaceMesh = icosphere(2).mesh;
+    let mut scratch = surftopo_mesh::LinkScratch::default();
+    let h = mesh.vertex_halfedge(surftopo_mesh::VertexId(5));
+    mesh.contract(h, &mut scratch).unwrap();
+    for algorithm in ALGORITHMS {
+        let result = quadrangulate(&mesh, algorithm).unwrap();
+        assert_eq!(2 * result.quads.len(), mesh.face_count());
+        let polygons: Vec<Vec<u32>> = result
+            .quads
+            .iter()
+            .map(|q| q.iter().map(|v| v.0).collect())
+            .collect();
+        assert_eq!(
+            surftopo_testkit::check_closed_oriented_manifold(&polygons),
+            Ok(2),
+            "{algorithm}"
+        );
+    }
+}
+
+/// Every shared mesh with SG, PS and LRS; DS (slower, tested in its own crate) on the small ones.
+fn shared_meshes(keep: impl Fn(usize) -> bool) {
+    for shared in surftopo_testkit::shared_meshes() {
+        if !keep(shared.faces) {
+            continue;
+        }
+        let surface = surftopo_testkit::load(&shared);
+        let mesh = &surface.mesh;
+        let mut algorithms = vec![
+            QuadAlgorithm::SimpleGreedy { seed: 1 },
+            QuadAlgorithm::PulliSegal { seed: 1 },
+            QuadAlgorithm::Lrs,
+        ];
+        if shared.faces <= 20_000 {
+            algorithms.push(QuadAlgorithm::DiksStanczyk);
+        }
+        for algorithm in algorithms {
+            let result = quadrangulate(mesh, algorithm)
+                .unwrap_or_else(|e| panic!("{} {algorithm}: {e}", shared.file));
+            check_result(
+                &format!("{} {algorithm}", shared.file),
+                mesh,
+                algorithm,
+                &result,
+            );
+        }
+    }
+}
+
+#[test]
+fn every_shared_mesh_up_to_60k_faces() {
+    shared_meshes(|faces| faces <= 60_000);
+}
+
+#[test]
+fn every_shared_mesh_above_60k_faces() {
+    shared_meshes(|faces| faces > 60_000);
+}
+
+#[test]
+fn stats_serialise_with_the_table_columns() {
+    let result = quadrangulate(&torus(6, 5).mesh, QuadAlgorithm::Lrs).unwrap();
+    let json = serde_json::to_value(&result.stats).unwrap();
+    let keys: Vec<&str> = json
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(String::as_str)
+        .collect();
+    let mut expected = vec![
+        "algorithm",
+        "faces",
+        "initial_pairing_seconds",
+        "paired_percent",
+        "unpaired",
+        "augmentation_seconds",
+        "total_seconds",
+        "flipped_edges",
+    ];
+    let mut got = keys.clone();
+    got.sort_unstable();
+    expected.sort_unstable();
+    assert_eq!(got, expected);
+    assert_eq!(json["algorithm"], "lrs");
+    assert_eq!(json["faces"], 60);
+}
