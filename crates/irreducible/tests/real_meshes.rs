@@ -4,29 +4,19 @@
 
 mod support;
 
-use std::path::PathBuf;
-
-use support::{all_algorithms, load_mesh, meshes_dir, run_and_verify};
+use support::{all_algorithms, run_and_verify};
 use surftopo_irreducible::Algorithm;
 
 #[test]
 fn every_shared_mesh() {
-    let Some(dir) = meshes_dir("every_shared_mesh") else {
+    let meshes = surftopo_testkit::shared_meshes();
+    if meshes.is_empty() {
         return;
-    };
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|entry| entry.expect("directory entry").path())
-        .filter(|p| p.to_string_lossy().ends_with(".gz"))
-        .collect();
-    paths.sort();
-    assert!(
-        paths.len() >= 40,
-        "expected the 47 shared meshes in {}",
-        dir.display()
-    );
-    for (i, path) in paths.iter().enumerate() {
-        let mesh = load_mesh(path);
+    }
+    assert_eq!(meshes.len(), 47, "expected the 47 shared meshes");
+    for (i, shared) in meshes.iter().enumerate() {
+        let mesh = surftopo_testkit::load(shared).mesh;
+        let path = &shared.path;
         let genus = mesh.genus();
         for a in all_algorithms(i as u64) {
             let red = run_and_verify(&mesh, a, true);

@@ -4,7 +4,6 @@
 #![allow(dead_code)]
 
 use std::collections::HashSet;
-use std::path::PathBuf;
 
 use surftopo_irreducible::{Algorithm, Reduction, SurfaceMesh, is_irreducible, reduce};
 use surftopo_mesh::VertexId;
@@ -136,34 +135,4 @@ pub fn all_algorithms(seed: u64) -> [Algorithm; 3] {
         Algorithm::Schipper,
         Algorithm::BruteForce { seed },
     ]
-}
-
-/// The directory of the shared test meshes, or `None` (with a message) when SURFTOPO_MESHES is unset.
-pub fn meshes_dir(test: &str) -> Option<PathBuf> {
-    match std::env::var_os("SURFTOPO_MESHES") {
-        Some(dir) => Some(PathBuf::from(dir)),
-        None => {
-            eprintln!("{test}: SURFTOPO_MESHES is not set; skipping the real-mesh test");
-            None
-        }
-    }
-}
-
-/// Reads one shared mesh and builds it; a soup that is not a closed surface as stored
-/// (chair_soup.off.gz) is built again after welding exactly equal positions.
-pub fn load_mesh(path: &std::path::Path) -> SurfaceMesh {
-    let fail = |e: &dyn std::fmt::Display| -> ! { panic!("{}: {e}", path.display()) };
-    let soup = surftopo_io::read_path(path).unwrap_or_else(|e| fail(&e));
-    let triangles = soup.triangles().unwrap_or_else(|e| fail(&e));
-    if let Ok((mesh, _)) = surftopo_mesh::build(soup.positions.len(), &triangles) {
-        return mesh;
-    }
-    let (positions, remap) = surftopo_mesh::geometry::weld_exact(&soup.positions);
-    let triangles: Vec<[u32; 3]> = triangles
-        .iter()
-        .map(|t| t.map(|i| remap[i as usize]))
-        .collect();
-    surftopo_mesh::build(positions.len(), &triangles)
-        .unwrap_or_else(|e| fail(&e))
-        .0
 }
