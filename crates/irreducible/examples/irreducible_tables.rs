@@ -2,13 +2,22 @@
 //! paper: the shared meshes and the paper's groups B (Table 3: genus-0 brick with 3,844 cavities),
 //! C (Table 4: 344 cavities and 3,500 holes, genus 3,500) and D (Table 5: about 4.2M triangles,
 //! genus 10 to 3,500), regenerated with `surftopo_mesh::generators::cavity_box`, plus a genus-0
-//! scaling series for RS.
+//! scaling series for RS. The brick cannot be coarser than 95,252 triangles (B) or 109,252 (C):
+//! where a paper size is below that, the input is, as in the paper, "obtained from B_{i-1} by a
+//! simplification process" — here `surftopo_mesh::generators::simplify` (random link-condition
+//! contractions, seed [`SIMPLIFY_SEED`]) from the previous input of the group, labelled
+//! "(simplified)": B7, B8, B9 and C7.
 //!
 //! ```text
 //! cargo run --release -p surftopo-irreducible --example irreducible_tables -- \
-//!     [--groups shared,B,C,D,scaling] [--max-triangles N] [--time-limit SECONDS] \
-//!     [--algorithms rs,schipper,bf] [--bf-seed N] [--meshes DIR] [--out-dir DIR]
+//!     [--groups shared,B,C,D,scaling] [--only B7,B8,B9,C7] [--merge] [--max-triangles N] \
+//!     [--time-limit SECONDS] [--algorithms rs,schipper,bf] [--bf-seed N] [--meshes DIR] \
+//!     [--out-dir DIR]
 //! ```
+//!
+//! `--only` keeps the inputs whose name (first word) is listed; `--merge` keeps the rows already in
+//! `irreducible.jsonl`, replacing those of the same group and input and inserting the others after
+//! the last row of their group.
 //!
 //! Every (input, algorithm) run happens in a child process of this binary (which builds the input
 //! again, untimed), so that `--time-limit` (default 600 s) can stop it; a stopped run is reported
@@ -31,7 +40,7 @@ use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 use surftopo_irreducible::{Algorithm, Counters, SurfaceMesh, is_irreducible, reduce};
-use surftopo_mesh::generators::{CavityBox, icosphere};
+use surftopo_mesh::generators::{CavityBox, Surface, icosphere, simplify};
 
 /// Table 3 (group B): triangle counts of B0..B9.
 const GROUP_B: [u64; 10] = [
@@ -59,6 +68,9 @@ const SCALING: [u64; 8] = [
     100_000, 200_000, 400_000, 800_000, 1_600_000, 2_400_000, 3_200_000, 4_194_296,
 ];
 
+/// Seed of the simplifications that give the inputs below the coarsest brick.
+const SIMPLIFY_SEED: u64 = 1;
+
 /// How to build one input (also the child-process argument).
 #[derive(Clone, Debug, PartialEq)]
 enum Spec {
@@ -72,6 +84,12 @@ enum Spec {
     },
     /// `icosphere(s)`.
     Icosphere(u32),
+    /// `simplify(base, target, seed)`.
+    Simplified {
+        base: Box<Spec>,
+        target: u64,
+        seed: u64,
+    },
 }
 
 impl Spec {
@@ -84,6 +102,9 @@ impl Spec {
                 target,
             } => format!("box:{cavities}:{holes}:{target}"),
             Spec::Icosphere(s) => format!("icosphere:{s}"),
+            Spec::Simplified { base, target, seed } => {
+                format!("simplify:{target}:{seed}:{}", base.to_arg())
+            }
         }
     }
 
@@ -92,6 +113,14 @@ impl Spec {
         match kind {
             "mesh" => Spec::Mesh(PathBuf::from(rest)),
             "icosphere" => Spec::Icosphere(rest.parse().expect("subdivisions")),
+            "simplify" => {
+                let mut it = rest.splitn(3, ':');
+                let mut number = || it.next().expect("simplify:target:seed:base");
+                let target = number().parse().expect("target");
+                let seed = number().parse().expect("seed");
+                let base = Box::new(Spec::from_arg(number()));
+                Spec::Simplified { base, target, seed }
+            }
             "box" => {
                 let v: Vec<u64> = rest
                     .split(':')
@@ -117,18 +146,30 @@ impl Spec {
                 target,
             } => Some(CavityBox::fit(*cavities, *holes, *target).triangle_count()),
             Spec::Icosphere(s) => Some(20 * 4u64.pow(*s)),
+            Spec::Simplified { target, .. } => Some(*target),
         }
     }
 
     fn build(&self) -> SurfaceMesh {
         match self {
             Spec::Mesh(p) => load_mesh(p),
+            _ => self.surface().mesh,
+        }
+    }
+
+    /// The generated surface (positions included); not for shared meshes.
+    fn surface(&self) -> Surface {
+        match self {
+            Spec::Mesh(p) => panic!("{}: only generated inputs are simplified", p.display()),
             Spec::Box {
                 cavities,
                 holes,
                 target,
-            } => CavityBox::fit(*cavities, *holes, *target).generate().mesh,
-            Spec::Icosphere(s) => icosphere(*s).mesh,
+            } => CavityBox::fit(*cavities, *holes, *target).generate(),
+            Spec::Icosphere(s) => icosphere(*s),
+            Spec::Simplified { base, target, seed } => {
+                simplify(&base.surface(), *target as usize, *seed)
+            }
         }
     }
 }
@@ -185,7 +226,7 @@ fn thread_cpu_seconds() -> f64 {
 }
 
 /// One table row.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 struct Row {
     group: String,
     input: String,
@@ -202,6 +243,8 @@ struct Row {
 
 struct Options {
     groups: Vec<String>,
+    only: Option<Vec<String>>,
+    merge: bool,
     max_triangles: u64,
     time_limit: f64,
     algorithms: Vec<String>,
@@ -215,6 +258,8 @@ fn parse_options(args: &[String]) -> Options {
         groups: ["shared", "B", "C", "D", "scaling"]
             .map(String::from)
             .to_vec(),
+        only: None,
+        merge: false,
         max_triangles: u64::MAX,
         time_limit: 600.0,
         algorithms: ["rs", "schipper", "bf"].map(String::from).to_vec(),
@@ -232,6 +277,8 @@ fn parse_options(args: &[String]) -> Options {
         let list = |v: String| v.split(',').map(String::from).collect::<Vec<_>>();
         match flag.as_str() {
             "--groups" => o.groups = list(value()),
+            "--only" => o.only = Some(list(value())),
+            "--merge" => o.merge = true,
             "--max-triangles" => o.max_triangles = value().parse().expect("--max-triangles N"),
             "--time-limit" => o.time_limit = value().parse().expect("--time-limit SECONDS"),
             "--algorithms" => o.algorithms = list(value()),
@@ -373,7 +420,12 @@ fn inputs(o: &Options) -> Vec<(String, String, Spec)> {
             *s == spec
                 || matches!((s, &spec), (Spec::Box { .. }, Spec::Box { .. }) if s.triangles() == spec.triangles())
         };
+        let listed = |name: &str| {
+            let first = name.split(' ').next().unwrap_or(name);
+            o.only.as_ref().is_none_or(|l| l.iter().any(|x| x == first))
+        };
         if spec.triangles().is_none_or(|f| f <= o.max_triangles)
+            && listed(&name)
             && !v.iter().any(|(g, _, s)| g == group && same(s))
         {
             v.push((group.into(), name, spec));
@@ -398,23 +450,13 @@ fn inputs(o: &Options) -> Vec<(String, String, Spec)> {
                 }
             }
             "B" => {
-                for (i, &t) in GROUP_B.iter().enumerate() {
-                    let spec = Spec::Box {
-                        cavities: 3844,
-                        holes: 0,
-                        target: t,
-                    };
-                    push("B", format!("B{i}"), spec);
+                for (name, spec) in bricks_then_simplified("B", 3844, 0, &GROUP_B) {
+                    push("B", name, spec);
                 }
             }
             "C" => {
-                for (i, &t) in GROUP_C.iter().enumerate() {
-                    let spec = Spec::Box {
-                        cavities: 344,
-                        holes: 3500,
-                        target: t,
-                    };
-                    push("C", format!("C{i}"), spec);
+                for (name, spec) in bricks_then_simplified("C", 344, 3500, &GROUP_C) {
+                    push("C", name, spec);
                 }
             }
             "D" => {
@@ -444,6 +486,66 @@ fn inputs(o: &Options) -> Vec<(String, String, Spec)> {
         }
     }
     v
+}
+
+/// The inputs of group `prefix`: the brick nearest each size in `sizes`, or, once the brick
+/// cannot get coarser (the same brick as the previous size), the previous input simplified to the
+/// size.
+fn bricks_then_simplified(
+    prefix: &str,
+    cavities: u32,
+    holes: u32,
+    sizes: &[u64],
+) -> Vec<(String, Spec)> {
+    let mut out: Vec<(String, Spec)> = Vec::new();
+    let mut previous_brick: Option<u64> = None;
+    for (i, &target) in sizes.iter().enumerate() {
+        let brick = Spec::Box {
+            cavities,
+            holes,
+            target,
+        };
+        let triangles = brick.triangles();
+        match out.last() {
+            Some((_, last)) if triangles == previous_brick => {
+                let spec = Spec::Simplified {
+                    base: Box::new(last.clone()),
+                    target,
+                    seed: SIMPLIFY_SEED,
+                };
+                out.push((format!("{prefix}{i} (simplified)"), spec));
+            }
+            _ => out.push((format!("{prefix}{i}"), brick)),
+        }
+        previous_brick = triangles;
+    }
+    out
+}
+
+/// The rows of an earlier `irreducible.jsonl` in `dir` (none if it is missing).
+fn read_rows(dir: &Path) -> Vec<Row> {
+    let Ok(text) = std::fs::read_to_string(dir.join("irreducible.jsonl")) else {
+        return Vec::new();
+    };
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| serde_json::from_str(l).expect("a row of irreducible.jsonl"))
+        .collect()
+}
+
+/// Puts `row` in place of the row of the same group and input, or after the last row of its
+/// group, or at the end.
+fn merge_row(rows: &mut Vec<Row>, row: Row) {
+    if let Some(old) = rows
+        .iter_mut()
+        .find(|r| r.group == row.group && r.input == row.input)
+    {
+        *old = row;
+    } else if let Some(i) = rows.iter().rposition(|r| r.group == row.group) {
+        rows.insert(i + 1, row);
+    } else {
+        rows.push(row);
+    }
 }
 
 /// CPU-time ratio of two successful runs.
@@ -553,7 +655,11 @@ fn main() {
     }
     let o = parse_options(&args);
     let load_at_start = load_average();
-    let mut rows: Vec<Row> = Vec::new();
+    let mut rows: Vec<Row> = if o.merge {
+        read_rows(&o.out_dir)
+    } else {
+        Vec::new()
+    };
     for (group, name, spec) in inputs(&o) {
         let algorithms: Vec<&str> = if group == "scaling" {
             vec!["rs"]
@@ -592,7 +698,7 @@ fn main() {
         }
         row.t_s_over_t_rs = ratio(&row.schipper, &row.rs);
         row.t_bf_over_t_rs = ratio(&row.brute_force, &row.rs);
-        rows.push(row);
+        merge_row(&mut rows, row);
         write_results(&o, &rows, &load_at_start);
         std::io::stderr().flush().ok();
     }

@@ -506,3 +506,87 @@ fn random_flips_on_flat_regions_make_no_flat_triangles() {
         assert!(area > 1e-9, "face {f:?} has area {area}");
     }
 }
+
+/// Whether no edge of the soup satisfies the link condition (recomputed from the triangles):
+/// every edge has a common neighbour besides its two opposite vertices, or the soup is the
+/// tetrahedron.
+fn soup_is_irreducible(surface: &Surface) -> bool {
+    let (positions, triangles) = surface.to_triangles();
+    if positions.len() == 4 {
+        return true;
+    }
+    let mut adjacent = vec![HashSet::new(); positions.len()];
+    for t in &triangles {
+        for i in 0..3 {
+            adjacent[t[i] as usize].insert(t[(i + 1) % 3]);
+            adjacent[t[(i + 1) % 3] as usize].insert(t[i]);
+        }
+    }
+    triangles.iter().all(|t| {
+        (0..3).all(|i| {
+            let (a, b) = (t[i] as usize, t[(i + 1) % 3] as usize);
+            adjacent[a].intersection(&adjacent[b]).count() > 2
+        })
+    })
+}
+
+#[test]
+fn simplify_reaches_the_target_and_keeps_the_genus() {
+    use surftopo_mesh::generators::simplify;
+    // torus(20, 20): V 400, E 1200, F 800; 300 contractions down to 200 faces.
+    let torus = torus(20, 20);
+    let s = simplify(&torus, 200, 3);
+    check_surface(&s, 100, 300, 200, 1);
+    let input: HashSet<[u64; 3]> = torus
+        .positions
+        .iter()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+    assert!(
+        s.positions
+            .iter()
+            .all(|p| input.contains(&p.map(f64::to_bits))),
+        "a kept vertex moved"
+    );
+    // An odd target ends one face below it; genus 3 is kept.
+    let slab = genus_surface(3, 3);
+    let f = slab.mesh.face_count();
+    let s = simplify(&slab, f / 2 + 1, 5);
+    let contractions = (f - f / 2) / 2;
+    assert_eq!(s.mesh.face_count(), f - 2 * contractions);
+    assert!(s.mesh.face_count() <= f / 2 + 1 && s.mesh.face_count() + 2 > f / 2 + 1);
+    check_surface(
+        &s,
+        slab.mesh.vertex_count() - contractions,
+        slab.mesh.edge_count() - 3 * contractions,
+        f - 2 * contractions,
+        3,
+    );
+    assert!(!soup_is_irreducible(&s));
+}
+
+#[test]
+fn simplify_stops_at_an_irreducible_triangulation() {
+    use surftopo_mesh::generators::simplify;
+    let sphere = simplify(&icosphere(2), 0, 7);
+    check_surface(&sphere, 4, 6, 4, 0);
+    let t = simplify(&torus(12, 9), 0, 7);
+    let (v, e, f, g) = soup_counts(&t);
+    assert_eq!(g, 1);
+    check_surface(&t, v, e, f, 1);
+    assert!(soup_is_irreducible(&t), "an edge is still contractible");
+    // Nothing to do: a compacted copy of the input.
+    let same = simplify(&torus(6, 5), 60, 1);
+    assert_eq!(same, torus(6, 5));
+}
+
+#[test]
+fn simplify_is_deterministic_per_seed() {
+    use surftopo_mesh::generators::simplify;
+    let input = random_flips(&torus(16, 12), 200, 2);
+    let a = simplify(&input, 150, 9);
+    assert_eq!(a, simplify(&input, 150, 9));
+    assert_ne!(a.mesh, simplify(&input, 150, 10).mesh);
+    // torus(16, 12): V 192, E 576, F 384; 117 contractions down to 150 faces.
+    check_surface(&a, 192 - 117, 576 - 3 * 117, 150, 1);
+}

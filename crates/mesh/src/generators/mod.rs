@@ -14,6 +14,7 @@
 //! | [`random_flips`]`(surface, k, seed)` | `k` random simplicial edge flips (irregular connectivity) |
 //! | [`subdivide_midpoint`]`(surface, levels)` | 1-to-4 midpoint subdivision, `levels` times |
 //! | [`random_vertex_splits`]`(surface, k, seed)` | `k` random vertex splits (the inverse of contractions) |
+//! | [`simplify`]`(surface, faces, seed)` | random link-condition edge contractions down to `faces` faces (same genus) |
 
 mod basic;
 mod cavity_box;
@@ -21,6 +22,7 @@ mod dense;
 mod flips;
 mod genus;
 mod polycube;
+mod simplify;
 mod subdivide;
 mod vertex_splits;
 
@@ -28,6 +30,7 @@ pub use basic::{icosphere, sheared_torus, tetrahedron, torus};
 pub use cavity_box::{CavityBox, cavity_box};
 pub use flips::random_flips;
 pub use genus::genus_surface;
+pub use simplify::simplify;
 pub use subdivide::subdivide_midpoint;
 pub use vertex_splits::random_vertex_splits;
 
