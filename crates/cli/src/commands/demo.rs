@@ -20,6 +20,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     let modifiers = Modifiers {
         output: None,
         subdivide: 1,
+        simplify: None,
         flips: 2000,
         splits: 0,
         seed: 7,

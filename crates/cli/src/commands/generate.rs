@@ -99,7 +99,11 @@ pub struct Modifiers {
     /// Levels of 1-to-4 midpoint subdivision applied after generation.
     #[arg(long, default_value_t = 0, global = true)]
     pub subdivide: u32,
-    /// Random simplicial edge flips applied after subdivision (irregular connectivity).
+    /// Simplify to at most this many faces by random link-condition contractions (topology kept),
+    /// applied after subdivision.
+    #[arg(long, global = true)]
+    pub simplify: Option<usize>,
+    /// Random simplicial edge flips applied after simplification (irregular connectivity).
     #[arg(long, default_value_t = 0, global = true)]
     pub flips: usize,
     /// Random vertex splits applied last.
@@ -196,13 +200,16 @@ fn check_size(triangles: u64) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Applies the modifiers to a generated surface: subdivision, then flips, then splits.
+/// Applies the modifiers to a generated surface: subdivision, simplification, flips, splits.
 pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Surface> {
     if modifiers.subdivide > 0 {
         let grown = (surface.mesh.face_count() as u64)
             .saturating_mul(4u64.saturating_pow(modifiers.subdivide));
         check_size(grown)?;
         surface = generators::subdivide_midpoint(&surface, modifiers.subdivide);
+    }
+    if let Some(target) = modifiers.simplify {
+        surface = generators::simplify(&surface, target, modifiers.seed);
     }
     if modifiers.flips > 0 {
         surface = generators::random_flips(&surface, modifiers.flips, modifiers.seed);
@@ -228,9 +235,9 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
-            if modifiers.subdivide > 0 || modifiers.splits > 0 {
+            if modifiers.subdivide > 0 || modifiers.splits > 0 || modifiers.simplify.is_some() {
                 return Err(crate::failure::invalid(
-                    "--subdivide and --splits need positions; this generator makes an intrinsic triangulation",
+                    "--subdivide, --simplify and --splits need positions; this generator makes an intrinsic triangulation",
                 ));
             }
             if modifiers.flips > 0 {
