@@ -60,44 +60,20 @@ enum Command {
     /// An irreducible triangulation (every edge fails the link condition) by topology-preserving
     /// edge contractions; its vertices are surviving input vertices, with their positions.
     Irreducible {
-        /// Input mesh (a closed orientable simplicial surface).
-        mesh: PathBuf,
-        /// Output mesh file.
-        #[arg(short, long)]
-        output: PathBuf,
+        #[command(flatten)]
+        job: input::MeshJob,
         /// The algorithm.
         #[arg(long, value_enum, default_value_t)]
         algorithm: commands::irreducible::AlgorithmName,
-        /// Seed of the brute force's edge shuffle.
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
-        /// Print the figures as JSON.
-        #[arg(long)]
-        json: bool,
-        /// Merge vertices with exactly equal positions first.
-        #[arg(long)]
-        weld: bool,
     },
     /// A quadrangulation with the same vertices, by a perfect pairing of the triangles (each quad is
     /// two adjacent triangles of the input, or of a flipped triangulation K for `lrs`).
     Quad {
-        /// Input mesh (a closed orientable triangulated surface).
-        mesh: PathBuf,
-        /// Output mesh file (OBJ, OFF or PLY, with quads).
-        #[arg(short, long)]
-        output: PathBuf,
+        #[command(flatten)]
+        job: input::MeshJob,
         /// The initial pairing.
         #[arg(long, value_enum, default_value_t)]
         algorithm: commands::quad::AlgorithmName,
-        /// Seed of the greedy orders (sg, ps).
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
-        /// Print the figures (Table 4.3's columns) as JSON.
-        #[arg(long)]
-        json: bool,
-        /// Merge vertices with exactly equal positions first.
-        #[arg(long)]
-        weld: bool,
     },
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
@@ -136,26 +112,10 @@ fn run(cli: Cli) -> anyhow::Result<ExitCode> {
             output,
             weld,
         } => done(commands::convert::run(&input, &output, weld)),
-        Command::Irreducible {
-            mesh,
-            output,
-            algorithm,
-            seed,
-            json,
-            weld,
-        } => done(commands::irreducible::run(
-            &mesh, &output, algorithm, seed, json, weld,
-        )),
-        Command::Quad {
-            mesh,
-            output,
-            algorithm,
-            seed,
-            json,
-            weld,
-        } => done(commands::quad::run(
-            &mesh, &output, algorithm, seed, json, weld,
-        )),
+        Command::Irreducible { job, algorithm } => {
+            done(commands::irreducible::run(&job, algorithm))
+        }
+        Command::Quad { job, algorithm } => done(commands::quad::run(&job, algorithm)),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
         Command::Isometric { a, b, weld } => Ok(if commands::isometric::run(&a, &b, weld)? {
             ExitCode::SUCCESS

@@ -7,20 +7,26 @@ use serde_json::Value;
 
 const TETRA: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
 
-fn info_json(path: &std::path::Path, extra: &[&str]) -> Value {
-    let out = surftopo()
-        .arg("info")
-        .arg(path)
-        .arg("--json")
-        .args(extra)
-        .output()
-        .unwrap();
+/// Runs a command that must succeed and prints JSON with at least `keys`; returns the JSON.
+fn json_of(cmd: &mut assert_cmd::Command, keys: &[&str]) -> Value {
+    let out = cmd.output().unwrap();
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    serde_json::from_slice(&out.stdout).unwrap()
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in keys {
+        assert!(v.get(key).is_some(), "missing key {key} in {v}");
+    }
+    v
+}
+
+fn info_json(path: &std::path::Path, extra: &[&str]) -> Value {
+    json_of(
+        surftopo().arg("info").arg(path).arg("--json").args(extra),
+        &[],
+    )
 }
 
 #[test]
@@ -352,36 +358,28 @@ fn delaunay_writes_its_outputs_and_isometric_answers() {
         .arg(d("t.json"))
         .assert()
         .success();
-    let out = surftopo()
-        .arg("delaunay")
-        .arg(d("t.json"))
-        .arg("-o")
-        .arg(d("td.json"))
-        .arg("--tessellation")
-        .arg(d("tt.json"))
-        .arg("--laplacian")
-        .arg(d("L.mtx"))
-        .arg("--mass")
-        .arg(d("M.mtx"))
-        .arg("--json")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = json_of(
+        surftopo()
+            .arg("delaunay")
+            .arg(d("t.json"))
+            .arg("-o")
+            .arg(d("td.json"))
+            .arg("--tessellation")
+            .arg(d("tt.json"))
+            .arg("--laplacian")
+            .arg(d("L.mtx"))
+            .arg("--mass")
+            .arg(d("M.mtx"))
+            .arg("--json"),
+        &[
+            "vertices",
+            "edges",
+            "faces",
+            "flips",
+            "non_delaunay_edges",
+            "seconds",
+        ],
     );
-    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-    for key in [
-        "vertices",
-        "edges",
-        "faces",
-        "flips",
-        "non_delaunay_edges",
-        "seconds",
-    ] {
-        assert!(v.get(key).is_some(), "missing {key}");
-    }
     assert_eq!(v["flips"], 11);
     assert_eq!(v["non_delaunay_edges"], 0);
     for f in ["td.json", "tt.json", "L.mtx", "M.mtx"] {
@@ -500,31 +498,23 @@ fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
         .success();
     for algorithm in ["rs", "schipper", "brute-force"] {
         let output = dir.path().join(format!("irr-{algorithm}.obj"));
-        let out = surftopo()
-            .arg("irreducible")
-            .arg(&input)
-            .arg("-o")
-            .arg(&output)
-            .args(["--algorithm", algorithm, "--seed", "9", "--json"])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+        let v = json_of(
+            surftopo()
+                .arg("irreducible")
+                .arg(&input)
+                .arg("-o")
+                .arg(&output)
+                .args(["--algorithm", algorithm, "--seed", "9", "--json"]),
+            &[
+                "algorithm",
+                "input",
+                "output",
+                "link_tests",
+                "edges_tested_more_than_once",
+                "contractions",
+                "seconds",
+            ],
         );
-        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-        for key in [
-            "algorithm",
-            "input",
-            "output",
-            "link_tests",
-            "edges_tested_more_than_once",
-            "contractions",
-            "seconds",
-        ] {
-            assert!(v.get(key).is_some(), "missing {key}");
-        }
         assert_eq!(v["algorithm"], algorithm);
         assert_eq!(v["input"]["genus"], 3);
         assert_eq!(v["output"]["genus"], 3);
@@ -603,32 +593,24 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
     let triangles: HashSet<[u32; 3]> = soup.triangles().unwrap().into_iter().map(key).collect();
     for algorithm in ["sg", "ps", "lrs", "ds"] {
         let output = dir.path().join(format!("q-{algorithm}.obj"));
-        let out = surftopo()
-            .arg("quad")
-            .arg(&input)
-            .arg("-o")
-            .arg(&output)
-            .args(["--algorithm", algorithm, "--json"])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{algorithm}: {}",
-            String::from_utf8_lossy(&out.stderr)
+        json_of(
+            surftopo()
+                .arg("quad")
+                .arg(&input)
+                .arg("-o")
+                .arg(&output)
+                .args(["--algorithm", algorithm, "--json"]),
+            &[
+                "algorithm",
+                "faces",
+                "initial_pairing_seconds",
+                "paired_percent",
+                "unpaired",
+                "augmentation_seconds",
+                "total_seconds",
+                "flipped_edges",
+            ],
         );
-        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-        for key in [
-            "algorithm",
-            "faces",
-            "initial_pairing_seconds",
-            "paired_percent",
-            "unpaired",
-            "augmentation_seconds",
-            "total_seconds",
-            "flipped_edges",
-        ] {
-            assert!(v.get(key).is_some(), "{algorithm}: missing {key}");
-        }
         let quads = surftopo_io::read_path(&output).unwrap();
         assert_eq!(
             quads.positions, soup.positions,

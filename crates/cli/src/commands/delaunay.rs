@@ -55,8 +55,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         )
         .map_err(|e| invalid(format!("{}: {e}", path.display())));
     }
-    let loaded = crate::input::load_surface(path, weld)?;
-    crate::input::log_report(path, &loaded);
+    let loaded = crate::input::read_surface(path, weld)?;
     IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
         .map_err(|e| invalid(format!("{}: {e}", path.display())))
 }

@@ -2,7 +2,6 @@
 
 use crate::failure::invalid;
 use serde::Serialize;
-use std::path::Path;
 use surftopo_irreducible::{Algorithm, Counters, reduce};
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::Surface;
@@ -105,22 +104,15 @@ pub fn reduce_surface(
 }
 
 /// Runs `irreducible`.
-pub fn run(
-    input: &Path,
-    output: &Path,
-    name: AlgorithmName,
-    seed: u64,
-    json: bool,
-    weld: bool,
-) -> anyhow::Result<()> {
-    let loaded = crate::progress::step("reading", || crate::input::load_surface(input, weld))?;
-    crate::input::log_report(input, &loaded);
+pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<()> {
+    let (input, output, seed) = (job.mesh.as_path(), job.output.as_path(), job.seed);
+    let loaded = crate::input::read_surface(input, job.weld)?;
     let (irreducible, report) = crate::progress::step("contracting", || {
         reduce_surface(&loaded.surface, name, seed)
     })
     .map_err(|e| e.context(input.display().to_string()))?;
     crate::output::write_surface(output, &irreducible)?;
-    if json {
+    if job.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(

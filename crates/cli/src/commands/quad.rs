@@ -1,7 +1,6 @@
 //! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
 
 use crate::failure::invalid;
-use std::path::Path;
 use surftopo_io::PolygonSoup;
 use surftopo_mesh::generators::Surface;
 use surftopo_quad::{QuadAlgorithm, QuadError, QuadResult, quadrangulate};
@@ -49,16 +48,9 @@ pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
 }
 
 /// Runs `quad`.
-pub fn run(
-    input: &Path,
-    output: &Path,
-    name: AlgorithmName,
-    seed: u64,
-    json: bool,
-    weld: bool,
-) -> anyhow::Result<()> {
-    let loaded = crate::progress::step("reading", || crate::input::load_surface(input, weld))?;
-    crate::input::log_report(input, &loaded);
+pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<()> {
+    let (input, output, seed) = (job.mesh.as_path(), job.output.as_path(), job.seed);
+    let loaded = crate::input::read_surface(input, job.weld)?;
     if !loaded.report.dropped_vertices.is_empty() {
         eprintln!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
@@ -70,7 +62,7 @@ pub fn run(
     .map_err(|e| e.context(input.display().to_string()))?;
     crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
     let stats = &result.stats;
-    if json {
+    if job.json {
         crate::output::print_json(stats)?;
     } else {
         crate::output::emit(&format!(
