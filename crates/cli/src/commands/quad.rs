@@ -11,9 +11,9 @@ pub enum AlgorithmName {
     /// Simple greedy pairing (seeded edge order), then augmenting paths.
     Sg,
     /// Pulli–Segal priority pairing (seeded triangle order), then augmenting paths.
-    #[default]
     Ps,
     /// Contraction/expansion (Ramaswami–Siqueira, Algorithm 3.1 with flips), then augmenting paths.
+    #[default]
     Lrs,
     /// Diks–Stanczyk: a perfect matching directly, by Frink reductions.
     Ds,
