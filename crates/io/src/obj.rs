@@ -159,23 +159,11 @@ fn forward_reference_error(soup: &PolygonSoup, ctx: Ctx<'_>) -> IoError {
 pub(crate) fn write<W: Write>(w: W, soup: &PolygonSoup) -> io::Result<W> {
     let mut out = Out::new(w);
     for p in &soup.positions {
-        out.bytes(b"v ");
-        out.f64(p[0]);
-        out.byte(b' ');
-        out.f64(p[1]);
-        out.byte(b' ');
-        out.f64(p[2]);
-        out.byte(b'\n');
-        out.flush_if_full()?;
+        out.point_line(b"v ", *p)?;
     }
     for f in soup.faces() {
         out.byte(b'f');
-        for &i in f {
-            out.byte(b' ');
-            out.u64(u64::from(i) + 1);
-        }
-        out.byte(b'\n');
-        out.flush_if_full()?;
+        out.index_line(f, 1)?;
     }
     out.finish()
 }

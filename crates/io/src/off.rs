@@ -162,22 +162,11 @@ pub(crate) fn write<W: Write>(w: W, soup: &PolygonSoup) -> io::Result<W> {
     out.u64(soup.face_count() as u64);
     out.bytes(b" 0\n");
     for p in &soup.positions {
-        out.f64(p[0]);
-        out.byte(b' ');
-        out.f64(p[1]);
-        out.byte(b' ');
-        out.f64(p[2]);
-        out.byte(b'\n');
-        out.flush_if_full()?;
+        out.point_line(b"", *p)?;
     }
     for f in soup.faces() {
         out.u64(f.len() as u64);
-        for &i in f {
-            out.byte(b' ');
-            out.u64(u64::from(i));
-        }
-        out.byte(b'\n');
-        out.flush_if_full()?;
+        out.index_line(f, 0)?;
     }
     out.finish()
 }

@@ -57,6 +57,30 @@ impl<W: Write> Out<W> {
         }
     }
 
+    /// One text line `prefix x y z` of a vertex position.
+    #[inline]
+    pub fn point_line(&mut self, prefix: &[u8], p: [f64; 3]) -> io::Result<()> {
+        self.bytes(prefix);
+        self.f64(p[0]);
+        self.byte(b' ');
+        self.f64(p[1]);
+        self.byte(b' ');
+        self.f64(p[2]);
+        self.byte(b'\n');
+        self.flush_if_full()
+    }
+
+    /// The rest of a face's text line: ` i1 i2 ...` (each index plus `base`), then a newline.
+    #[inline]
+    pub fn index_line(&mut self, face: &[u32], base: u64) -> io::Result<()> {
+        for &i in face {
+            self.byte(b' ');
+            self.u64(u64::from(i) + base);
+        }
+        self.byte(b'\n');
+        self.flush_if_full()
+    }
+
     #[inline]
     pub fn u64(&mut self, mut v: u64) {
         let mut tmp = [0u8; 20];

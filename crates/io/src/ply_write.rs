@@ -30,22 +30,11 @@ pub(crate) fn write<W: Write>(w: W, soup: &PolygonSoup, enc: PlyEncoding) -> io:
     match enc {
         PlyEncoding::Ascii => {
             for p in &soup.positions {
-                out.f64(p[0]);
-                out.byte(b' ');
-                out.f64(p[1]);
-                out.byte(b' ');
-                out.f64(p[2]);
-                out.byte(b'\n');
-                out.flush_if_full()?;
+                out.point_line(b"", *p)?;
             }
             for f in soup.faces() {
                 out.u64(f.len() as u64);
-                for &i in f {
-                    out.byte(b' ');
-                    out.u64(u64::from(i));
-                }
-                out.byte(b'\n');
-                out.flush_if_full()?;
+                out.index_line(f, 0)?;
             }
         }
         PlyEncoding::BinaryLittleEndian => {
