@@ -18,7 +18,7 @@ use rand_chacha::ChaCha8Rng;
 use surftopo_mesh::{EdgeId, LinkScratch, SurfaceMesh};
 
 use crate::tally::TestTally;
-use crate::{Counters, IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction, check_simplicial};
 
 /// The randomised brute force of Section 5: passes over the shuffled edges, contracting every edge
 /// that passes the link condition, until a pass contracts nothing.
@@ -59,15 +59,5 @@ pub fn brute_force(mut mesh: SurfaceMesh, seed: u64) -> Result<Reduction, Irredu
             break;
         }
     }
-    let counters = Counters {
-        link_tests: tally.link_tests,
-        edges_tested_more_than_once: tally.repeated_edges,
-        contractions: history.len() as u64,
-        seconds: start.elapsed().as_secs_f64(),
-    };
-    Ok(Reduction {
-        mesh,
-        history,
-        counters,
-    })
+    Ok(Reduction::finish(mesh, history, &tally, start))
 }

@@ -101,6 +101,28 @@ pub struct Reduction {
     pub counters: Counters,
 }
 
+impl Reduction {
+    /// The result of a run: the reduced mesh, its history, and the counters taken from the tally.
+    pub(crate) fn finish(
+        mesh: SurfaceMesh,
+        history: Vec<Contraction>,
+        tally: &tally::TestTally,
+        start: std::time::Instant,
+    ) -> Self {
+        let counters = Counters {
+            link_tests: tally.link_tests,
+            edges_tested_more_than_once: tally.repeated_edges,
+            contractions: history.len() as u64,
+            seconds: start.elapsed().as_secs_f64(),
+        };
+        Self {
+            mesh,
+            history,
+            counters,
+        }
+    }
+}
+
 /// Computes an irreducible triangulation of `mesh` with the chosen algorithm.
 ///
 /// # Errors

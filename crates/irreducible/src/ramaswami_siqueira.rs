@@ -70,7 +70,7 @@ use surftopo_mesh::{Contraction, HalfedgeId, SurfaceMesh, VertexId};
 
 use crate::edge_lists::{EdgeLists, List};
 use crate::tally::TestTally;
-use crate::{Counters, IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction, check_simplicial};
 
 /// The paper's −1 (time attributes) and nil (n).
 const NONE: u32 = u32::MAX;
@@ -113,17 +113,7 @@ pub fn ramaswami_siqueira(mut mesh: SurfaceMesh) -> Result<Reduction, Irreducibl
     let mut rs = Rs::initialization(&mut mesh);
     rs.contractions();
     let Rs { stack, st, .. } = rs;
-    let counters = Counters {
-        link_tests: st.tally.link_tests,
-        edges_tested_more_than_once: st.tally.repeated_edges,
-        contractions: stack.len() as u64,
-        seconds: start.elapsed().as_secs_f64(),
-    };
-    Ok(Reduction {
-        mesh,
-        history: stack,
-        counters,
-    })
+    Ok(Reduction::finish(mesh, stack, &st.tally, start))
 }
 
 /// Everything but the mesh, so that the mesh can be read while the state changes.

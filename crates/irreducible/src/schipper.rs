@@ -23,7 +23,7 @@ use std::time::Instant;
 use surftopo_mesh::{HalfedgeId, SurfaceMesh, VertexId};
 
 use crate::tally::TestTally;
-use crate::{Counters, IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction, check_simplicial};
 
 /// Schipper's algorithm (Section 3 of the paper): contracts edges of `mesh`, always at a loose
 /// vertex of lowest degree, until it is an irreducible triangulation of the same surface.
@@ -91,17 +91,7 @@ pub fn schipper(mut mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
             }
         }
     }
-    let counters = Counters {
-        link_tests: tally.link_tests,
-        edges_tested_more_than_once: tally.repeated_edges,
-        contractions: history.len() as u64,
-        seconds: start.elapsed().as_secs_f64(),
-    };
-    Ok(Reduction {
-        mesh,
-        history,
-        counters,
-    })
+    Ok(Reduction::finish(mesh, history, &tally, start))
 }
 
 /// The link condition for `h = v → w` with the dictionaries: K is not T4 and no vertex of D_v but
