@@ -342,53 +342,45 @@ fn arr<const N: usize>(b: &[u8]) -> [u8; N] {
     a
 }
 
+/// Reads a `$ty` of `$n` bytes from the start of `$b`, big-endian when `$be`.
+macro_rules! decode {
+    ($b:expr, $be:expr, $ty:ty, $n:literal) => {{
+        let a = arr::<$n>($b);
+        if $be {
+            <$ty>::from_be_bytes(a)
+        } else {
+            <$ty>::from_le_bytes(a)
+        }
+    }};
+}
+
 /// Decodes a scalar at the start of `b` (which holds at least its size).
 #[inline(always)]
 fn load_f64<const BE: bool>(t: Scalar, b: &[u8]) -> f64 {
-    macro_rules! get {
-        ($ty:ty, $n:literal) => {{
-            let a = arr::<$n>(b);
-            if BE {
-                <$ty>::from_be_bytes(a)
-            } else {
-                <$ty>::from_le_bytes(a)
-            }
-        }};
-    }
     match t {
-        Scalar::I8 => f64::from(get!(i8, 1)),
-        Scalar::U8 => f64::from(get!(u8, 1)),
-        Scalar::I16 => f64::from(get!(i16, 2)),
-        Scalar::U16 => f64::from(get!(u16, 2)),
-        Scalar::I32 => f64::from(get!(i32, 4)),
-        Scalar::U32 => f64::from(get!(u32, 4)),
-        Scalar::F32 => f64::from(get!(f32, 4)),
-        Scalar::F64 => get!(f64, 8),
+        Scalar::I8 => f64::from(decode!(b, BE, i8, 1)),
+        Scalar::U8 => f64::from(decode!(b, BE, u8, 1)),
+        Scalar::I16 => f64::from(decode!(b, BE, i16, 2)),
+        Scalar::U16 => f64::from(decode!(b, BE, u16, 2)),
+        Scalar::I32 => f64::from(decode!(b, BE, i32, 4)),
+        Scalar::U32 => f64::from(decode!(b, BE, u32, 4)),
+        Scalar::F32 => f64::from(decode!(b, BE, f32, 4)),
+        Scalar::F64 => decode!(b, BE, f64, 8),
     }
 }
 
 /// Decodes an integer scalar at the start of `b`; floats are truncated.
 #[inline(always)]
 fn load_i64<const BE: bool>(t: Scalar, b: &[u8]) -> i64 {
-    macro_rules! get {
-        ($ty:ty, $n:literal) => {{
-            let a = arr::<$n>(b);
-            if BE {
-                <$ty>::from_be_bytes(a)
-            } else {
-                <$ty>::from_le_bytes(a)
-            }
-        }};
-    }
     match t {
-        Scalar::I8 => i64::from(get!(i8, 1)),
-        Scalar::U8 => i64::from(get!(u8, 1)),
-        Scalar::I16 => i64::from(get!(i16, 2)),
-        Scalar::U16 => i64::from(get!(u16, 2)),
-        Scalar::I32 => i64::from(get!(i32, 4)),
-        Scalar::U32 => i64::from(get!(u32, 4)),
-        Scalar::F32 => get!(f32, 4) as i64,
-        Scalar::F64 => get!(f64, 8) as i64,
+        Scalar::I8 => i64::from(decode!(b, BE, i8, 1)),
+        Scalar::U8 => i64::from(decode!(b, BE, u8, 1)),
+        Scalar::I16 => i64::from(decode!(b, BE, i16, 2)),
+        Scalar::U16 => i64::from(decode!(b, BE, u16, 2)),
+        Scalar::I32 => i64::from(decode!(b, BE, i32, 4)),
+        Scalar::U32 => i64::from(decode!(b, BE, u32, 4)),
+        Scalar::F32 => decode!(b, BE, f32, 4) as i64,
+        Scalar::F64 => decode!(b, BE, f64, 8) as i64,
     }
 }
 
