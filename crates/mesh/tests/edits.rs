@@ -23,6 +23,21 @@ fn link_condition_naive(mesh: &SurfaceMesh, h: HalfedgeId) -> bool {
     common.len() == 2 && mesh.vertex_count() > 4
 }
 
+/// Contracts edges that pass the link condition, first found first, until none is left; returns
+/// the records in contraction order.
+fn contract_until_irreducible(mesh: &mut SurfaceMesh) -> Vec<surftopo_mesh::Contraction> {
+    let mut scratch = LinkScratch::default();
+    let mut stack = Vec::new();
+    loop {
+        let next = mesh
+            .halfedges()
+            .find(|&h| mesh.satisfies_link_condition(h, &mut scratch));
+        let Some(h) = next else { break };
+        stack.push(mesh.contract(h, &mut scratch).unwrap());
+    }
+    stack
+}
+
 #[derive(Clone, Debug)]
 enum Op {
     Flip(usize),
@@ -115,15 +130,7 @@ proptest! {
 fn contracting_a_sphere_down_to_the_tetrahedron() {
     let mut mesh = icosphere(2).mesh;
     let original = mesh.clone();
-    let mut scratch = LinkScratch::default();
-    let mut stack = Vec::new();
-    loop {
-        let next = mesh
-            .halfedges()
-            .find(|&h| mesh.satisfies_link_condition(h, &mut scratch));
-        let Some(h) = next else { break };
-        stack.push(mesh.contract(h, &mut scratch).unwrap());
-    }
+    let mut stack = contract_until_irreducible(&mut mesh);
     assert_eq!(
         (mesh.vertex_count(), mesh.edge_count(), mesh.face_count()),
         (4, 6, 4)
@@ -195,15 +202,7 @@ fn splits_stay_valid_when_edges_are_flipped_in_between() {
     use surftopo_mesh::generators::{genus_surface, random_flips};
     for seed in 0..6 {
         let mut mesh = random_flips(&genus_surface(2, 2), 500, seed).mesh;
-        let mut scratch = LinkScratch::default();
-        let mut stack = Vec::new();
-        loop {
-            let next = mesh
-                .halfedges()
-                .find(|&h| mesh.satisfies_link_condition(h, &mut scratch));
-            let Some(h) = next else { break };
-            stack.push(mesh.contract(h, &mut scratch).unwrap());
-        }
+        let mut stack = contract_until_irreducible(&mut mesh);
         let mut k = seed as usize;
         while let Some(record) = stack.pop() {
             mesh.split_vertex(&record);
