@@ -591,7 +591,7 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
         [t[r], t[(r + 1) % 3], t[(r + 2) % 3]]
     };
     let triangles: HashSet<[u32; 3]> = soup.triangles().unwrap().into_iter().map(key).collect();
-    for algorithm in ["sg", "ps", "lrs", "ds"] {
+    for algorithm in ["sg", "ps", "lrs", "ds", "ks"] {
         let output = dir.path().join(format!("q-{algorithm}.obj"));
         json_of(
             surftopo()

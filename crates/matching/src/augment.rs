@@ -252,6 +252,19 @@ fn augment_on<G: DualGraph + ?Sized>(
     result.map(|()| stats)
 }
 
+/// Completes `mates` by the Forest strategy from the unmatched nodes `pending`, reusing `search`
+/// (for callers that already hold the mates and the search state, like [`crate::karp_sipser`]).
+pub(crate) fn complete<G: DualGraph + ?Sized>(
+    graph: &G,
+    mates: &mut [[u32; 2]],
+    search: &mut Search,
+    pending: Vec<u32>,
+    stats: &mut AugmentStats,
+) -> Result<(), AugmentError> {
+    stats.unmatched_before += pending.len();
+    forest(graph, mates, search, pending, true, stats)
+}
+
 /// Global (one augmentation per forest) or Forest (every meeting of two trees augmented).
 fn forest<G: DualGraph + ?Sized>(
     graph: &G,
@@ -336,7 +349,7 @@ fn no_path(node: u32, search: &Search, unmatched: usize, stats: &AugmentStats) -
 
 /// How a search ended.
 #[derive(Debug, PartialEq, Eq)]
-enum Outcome {
+pub(crate) enum Outcome {
     /// At least one augmenting path was applied.
     Augmented,
     /// The search ended without finding one (no augmenting path from its roots).
@@ -370,7 +383,7 @@ const BASE: usize = 6;
 const RETIRED: usize = 7;
 
 /// The state of Edmonds' search, generation-stamped so that a search costs only what it reaches.
-struct Search {
+pub(crate) struct Search {
     /// `generation << 2 | label` of the search that last reached each node.
     stamp: Vec<u32>,
     state: Vec<NodeState>,
@@ -384,11 +397,13 @@ struct Search {
     tasks: Vec<(u32, u32)>,
     path: Vec<[u32; 3]>,
     /// Nodes reached by the last search.
-    reached: usize,
+    pub(crate) reached: usize,
+    /// The end of the last augmenting path that was not a root of the search.
+    last_end: u32,
 }
 
 impl Search {
-    fn new(n: usize) -> Self {
+    pub(crate) fn new(n: usize) -> Self {
         Search {
             stamp: vec![0; n],
             state: vec![[0; 8]; n],
@@ -399,6 +414,7 @@ impl Search {
             tasks: Vec::new(),
             path: Vec::new(),
             reached: 0,
+            last_end: NONE,
         }
     }
 
@@ -480,7 +496,7 @@ impl Search {
     /// One search from `roots` (all unmatched), reaching at most `budget` nodes. It stops at the
     /// first augmenting path unless `keep_going`: then the two trees of each path found are
     /// retired (their nodes ignored) and the other trees keep growing until the queue is empty.
-    fn run<G: DualGraph + ?Sized>(
+    pub(crate) fn run<G: DualGraph + ?Sized>(
         &mut self,
         graph: &G,
         mates: &mut [[u32; 2]],
@@ -598,6 +614,12 @@ impl Search {
         }
     }
 
+    /// The end of the last augmenting path applied that was not `root(v)` of [`Search::augment`]:
+    /// the unreached free node, or the root of the other tree.
+    pub(crate) fn last_path_end(&self) -> u32 {
+        self.last_end
+    }
+
     /// Collects the non-matching edges of `path(v, target)` (with their ends) into `self.path`.
     fn collect<G: DualGraph + ?Sized>(
         &mut self,
@@ -649,7 +671,9 @@ impl Search {
             let root_w = self.state[w as usize][ROOT];
             self.collect(graph, mates, w, root_w);
             self.state[root_w as usize][RETIRED] = self.generation;
+            self.last_end = root_w;
         } else {
+            self.last_end = w;
             // w joins v's retired tree, so that no other tree grows through it.
             self.reach(w, EVEN, root_v, NONE, NONE);
         }

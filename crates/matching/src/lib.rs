@@ -6,6 +6,8 @@
 //! * [`diks_stanczyk`] — Frink's reductions with Diks and Stanczyk's dynamic connectivity,
 //!   O(n log² n) amortized, always perfect.
 //! * [`dynamic_connectivity`] — the fully dynamic connectivity / spanning-forest structure it uses.
+//! * [`karp_sipser`] — the Karp–Sipser greedy with immediate local repairs: a perfect pairing,
+//!   the fastest on most meshes (not from the paper; see its module doc).
 //! * [`generators`] — seeded random bridgeless cubic multigraphs and mesh duals, for tests and
 //!   benchmarks.
 
@@ -27,9 +29,11 @@ pub use verify::{
 pub mod augment;
 pub mod dual_graph;
 pub mod greedy;
+pub mod karp_sipser;
 pub mod pulli_segal;
 
 pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
 pub use dual_graph::{CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph};
 pub use greedy::simple_greedy;
+pub use karp_sipser::{KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with};
 pub use pulli_segal::pulli_segal;

@@ -6,8 +6,8 @@ use petgraph::graph::UnGraph;
 use surftopo_matching::generators::{random_bridgeless_cubic, random_cubic_pairing};
 use surftopo_matching::{
     AugmentError, AugmentStrategy, CubicGraph, DualGraph, Pairing, PairingError,
-    augment_to_perfect, pulli_segal, simple_greedy, verify_perfect_matching,
-    verify_perfect_matching_on,
+    augment_to_perfect, karp_sipser_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
+    verify_perfect_matching, verify_perfect_matching_on,
 };
 use surftopo_mesh::generators::{icosphere, torus};
 
@@ -299,4 +299,73 @@ fn bad_pairings_are_refused() {
         augment_to_perfect(&graph, &mut short, AugmentStrategy::Global),
         Err(AugmentError::BadPairing(_))
     ));
+}
+
+#[test]
+fn karp_sipser_gives_perfect_matchings() {
+    for graph in graphs() {
+        let n = graph.node_count() as usize;
+        // 0: every isolated node goes to the completion; 6: a few repairs fit; default.
+        for budget in [0, 6, surftopo_matching::karp_sipser::REPAIR_BUDGET] {
+            let (pairing, stats) = karp_sipser_perfect_with(&graph, budget).unwrap();
+            assert_eq!(check_matching(n, graph.edges(), pairing.mates()), 0);
+            verify_perfect_matching(&graph, &pairing.edge_flags(graph.edge_count() as usize))
+                .unwrap();
+            assert_eq!(stats.repaired + stats.deferred, stats.isolated);
+            assert!(stats.completed.is_multiple_of(2) && stats.completed <= stats.deferred);
+            assert_eq!(
+                stats.augment.augmentations,
+                stats.repaired + stats.completed / 2
+            );
+            if budget == 0 {
+                assert_eq!(stats.repaired, 0);
+            }
+            // Deterministic.
+            assert_eq!(karp_sipser_perfect_with(&graph, budget).unwrap().0, pairing);
+        }
+    }
+}
+
+#[test]
+fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
+    use rand::SeedableRng;
+    use rand::seq::SliceRandom;
+    use surftopo_mesh::generators::Surface;
+    let sphere = icosphere(5);
+    let (positions, mut triangles) = sphere.to_triangles();
+    triangles.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(3));
+    let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
+    let mut seen = [false; 2];
+    let mut deferred_and_repaired = false;
+    for mesh in [&sphere.mesh, &torus(90, 70).mesh, &shuffled.mesh] {
+        for budget in [0, 4, 64] {
+            let (pairing, stats) = karp_sipser_perfect_with(mesh, budget).unwrap();
+            let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
+                .map(|e| DualGraph::endpoints(mesh, e))
+                .collect();
+            assert_eq!(
+                check_matching(mesh.face_count(), &edges, pairing.mates()),
+                0
+            );
+            seen[usize::from(stats.id_order)] = true;
+            deferred_and_repaired |= stats.repaired > 0 && stats.deferred > 0;
+        }
+    }
+    assert_eq!(seen, [true, true], "both start orders were used");
+    assert!(deferred_and_repaired, "some run both repaired and deferred");
+    let (_, in_order) = karp_sipser_perfect(&sphere.mesh).unwrap();
+    let (_, out_of_order) = karp_sipser_perfect(&shuffled.mesh).unwrap();
+    assert!(in_order.id_order && !out_of_order.id_order);
+}
+
+#[test]
+fn karp_sipser_reports_a_missing_perfect_matching() {
+    let graph = no_perfect_matching();
+    for budget in [0, 1000] {
+        let err = karp_sipser_perfect_with(&graph, budget).unwrap_err();
+        assert!(
+            matches!(err, AugmentError::NoAugmentingPath { .. }),
+            "{err}"
+        );
+    }
 }

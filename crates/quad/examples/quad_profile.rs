@@ -12,7 +12,7 @@ use std::error::Error;
 use std::time::Instant;
 
 use surftopo_matching::{
-    AugmentStrategy, DualGraph, augment_to_perfect, pulli_segal, simple_greedy,
+    AugmentStrategy, DualGraph, augment_to_perfect, karp_sipser_perfect, pulli_segal, simple_greedy,
 };
 use surftopo_mesh::generators::Surface;
 
@@ -105,6 +105,19 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!(
         "ps augment global     {t:.5}  reached {} searches {}",
         stats.reached, stats.searches
+    );
+    let (t, (_, ks)) = time(repeat, || karp_sipser_perfect(mesh).unwrap());
+    println!(
+        "ks (perfect)          {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} \
+         repaired {} deferred {} completed {} reached {} id order {}",
+        ks.greedy_seconds,
+        ks.augmentation_seconds,
+        ks.isolated,
+        ks.repaired,
+        ks.deferred,
+        ks.completed,
+        ks.augment.reached,
+        ks.id_order
     );
     let (t, _) = time(repeat, || mesh.clone());
     println!("mesh clone            {t:.5}");

@@ -11,7 +11,7 @@
 //!
 //! ```text
 //! SURFTOPO_MESHES=/work/shared/meshes cargo run --release -p surftopo-quad --example quad_tables -- \
-//!     [--max-triangles N] [--runs R] [--no-shared] [--no-groups] [--ds-max-triangles N] \
+//!     [--max-triangles N] [--min-triangles N] [--runs R] [--no-shared] [--no-groups] [--ds-max-triangles N] \
 //!     [--global-max-work W] [--lemon crates/quad/peer/lemon_matching] [--out results/quad]
 //! ```
 //! Writes `<out>.jsonl` (one record per input and algorithm) and `<out>.md`.
@@ -45,6 +45,7 @@ const GROUP_B: [(&str, u64); 5] = [
 
 struct Args {
     max_triangles: u64,
+    min_triangles: u64,
     runs: u64,
     shared: bool,
     groups: bool,
@@ -57,6 +58,7 @@ struct Args {
 fn parse_args() -> Result<Args, Box<dyn Error>> {
     let mut args = Args {
         max_triangles: 5_000_000,
+        min_triangles: 0,
         runs: 3,
         shared: true,
         groups: true,
@@ -70,6 +72,7 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
         let mut value = || it.next().ok_or(format!("{flag} needs a value"));
         match flag.as_str() {
             "--max-triangles" => args.max_triangles = value()?.parse()?,
+            "--min-triangles" => args.min_triangles = value()?.parse()?,
             "--runs" => args.runs = value()?.parse::<u64>()?.max(1),
             "--no-shared" => args.shared = false,
             "--no-groups" => args.groups = false,
@@ -233,7 +236,7 @@ fn inputs(args: &Args) -> Vec<Input> {
     let mut out: Vec<Input> = Vec::new();
     if args.shared {
         for shared in surftopo_testkit::shared_meshes() {
-            if shared.faces as u64 <= args.max_triangles {
+            if (args.min_triangles..=args.max_triangles).contains(&(shared.faces as u64)) {
                 let name = shared.file.trim_end_matches(".gz").to_string();
                 out.push((
                     name,
@@ -247,7 +250,7 @@ fn inputs(args: &Args) -> Vec<Input> {
         for (group, table, cavities, holes) in [("A", GROUP_A, 3844, 0), ("B", GROUP_B, 344, 3500)]
         {
             for (name, target) in table {
-                if target <= args.max_triangles {
+                if (args.min_triangles..=args.max_triangles).contains(&target) {
                     out.push((
                         name.into(),
                         group.into(),
@@ -295,6 +298,13 @@ fn main() -> Result<(), Box<dyn Error>> {
                 args.runs,
             )?,
             measure(&surface, &base, |_| QuadAlgorithm::Lrs, forest, args.runs)?,
+            measure(
+                &surface,
+                &base,
+                |_| QuadAlgorithm::KarpSipser,
+                forest,
+                args.runs,
+            )?,
         ];
         if base.faces as u64 <= args.ds_max_triangles {
             mine.push(measure(

@@ -11,8 +11,8 @@
 use std::time::Instant;
 
 use surftopo_matching::{
-    AugmentError, AugmentStats, AugmentStrategy, Pairing, augment_to_perfect, pulli_segal,
-    simple_greedy,
+    AugmentError, AugmentStats, AugmentStrategy, KarpSipserStats, Pairing, augment_to_perfect,
+    karp_sipser_perfect, pulli_segal, simple_greedy,
 };
 use surftopo_mesh::{EdgeId, SurfaceMesh, VertexId};
 
@@ -38,10 +38,13 @@ pub enum QuadAlgorithm {
     /// DS: Diks and Stanczyk's perfect matching (Section 3.2, `surftopo-matching`), on the dual
     /// materialised as a [`surftopo_matching::CubicGraph`]. Deterministic, always perfect.
     DiksStanczyk,
+    /// KS: the Karp–Sipser greedy with immediate local repairs (not from the paper; see
+    /// `surftopo_matching::karp_sipser`). Deterministic. Its repairs count as augmentation.
+    KarpSipser,
 }
 
 impl QuadAlgorithm {
-    /// Short name: `sg`, `ps`, `lrs` or `ds` (the CLI's `--algorithm` values and the `algorithm`
+    /// Short name: `sg`, `ps`, `lrs`, `ds` or `ks` (the CLI's `--algorithm` values and the `algorithm`
     /// field of [`QuadStats`]).
     pub fn name(&self) -> &'static str {
         match self {
@@ -49,6 +52,7 @@ impl QuadAlgorithm {
             QuadAlgorithm::PulliSegal { .. } => "ps",
             QuadAlgorithm::Lrs => "lrs",
             QuadAlgorithm::DiksStanczyk => "ds",
+            QuadAlgorithm::KarpSipser => "ks",
         }
     }
 }
@@ -69,7 +73,7 @@ pub struct QuadOptions {
 /// The figures of one run: the columns of Table 4.3 (what `surftopo quad --json` prints).
 #[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
 pub struct QuadStats {
-    /// `sg`, `ps`, `lrs` or `ds`.
+    /// `sg`, `ps`, `lrs`, `ds` or `ks`.
     pub algorithm: String,
     /// Number of triangles of the input.
     pub faces: usize,
@@ -104,6 +108,8 @@ pub struct QuadResult {
     pub augmentation: AugmentStats,
     /// Branch counts of Algorithm 3.1 (LRS only).
     pub expansion: Option<ExpansionCases>,
+    /// Greedy, repair and completion figures (KS only).
+    pub karp_sipser: Option<KarpSipserStats>,
 }
 
 /// [`quadrangulate_with`] with default options.
@@ -127,7 +133,10 @@ pub fn quadrangulate(
 /// vertices (when the input is simplicial). For LRS, the number of triangles the expansion leaves
 /// unpaired is checked against the paper's bound `max(4, 56g − 12)`.
 ///
-/// Complexity: SG and PS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
+/// KS ignores `options` (its repairs and completion are its own, see
+/// `surftopo_matching::karp_sipser`).
+///
+/// Complexity: SG, PS and KS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
 /// O(g n + g²) (Theorem 3.2) plus the augmentation; DS O(n log² n) amortized.
 ///
 /// # Errors
@@ -167,6 +176,7 @@ pub fn quadrangulate_with(
             (Some(expansion.mesh), expansion.pairing)
         }
         QuadAlgorithm::DiksStanczyk => (None, diks_stanczyk_pairing(mesh)?),
+        QuadAlgorithm::KarpSipser => return karp_sipser_quads(mesh, start),
     };
     let initial_pairing_seconds = start.elapsed().as_secs_f64();
     let paired_mesh = triangulation.as_ref().unwrap_or(mesh);
@@ -193,6 +203,34 @@ pub fn quadrangulate_with(
         stats,
         augmentation,
         expansion: expansion_cases,
+        karp_sipser: None,
+    })
+}
+
+/// KS: the greedy, its repairs and the completion in one call; the Table 4.3 figures from its
+/// own clocks (greedy = initial pairing, repairs and completion = augmentation).
+fn karp_sipser_quads(mesh: &SurfaceMesh, start: Instant) -> Result<QuadResult, QuadError> {
+    let (pairing, ks) = karp_sipser_perfect(mesh).map_err(|err| augmentation_error(mesh, err))?;
+    let (quads, diagonals) = quads_of(mesh, &pairing)?;
+    let faces = mesh.face_count();
+    let stats = QuadStats {
+        algorithm: QuadAlgorithm::KarpSipser.name().to_string(),
+        faces,
+        initial_pairing_seconds: ks.greedy_seconds,
+        paired_percent: 100.0 * (faces - ks.isolated) as f64 / faces as f64,
+        unpaired: ks.isolated,
+        augmentation_seconds: ks.augmentation_seconds,
+        total_seconds: start.elapsed().as_secs_f64(),
+        flipped_edges: 0,
+    };
+    Ok(QuadResult {
+        quads,
+        diagonals,
+        triangulation: None,
+        stats,
+        augmentation: ks.augment,
+        expansion: None,
+        karp_sipser: Some(ks),
     })
 }
 

@@ -15,12 +15,13 @@ use surftopo_quad::{
     quadrangulate_with,
 };
 
-const ALGORITHMS: [QuadAlgorithm; 5] = [
+const ALGORITHMS: [QuadAlgorithm; 6] = [
     QuadAlgorithm::SimpleGreedy { seed: 1 },
     QuadAlgorithm::SimpleGreedy { seed: 2 },
     QuadAlgorithm::PulliSegal { seed: 1 },
     QuadAlgorithm::Lrs,
     QuadAlgorithm::DiksStanczyk,
+    QuadAlgorithm::KarpSipser,
 ];
 
 fn families() -> Vec<(String, Surface)> {
@@ -104,6 +105,7 @@ fn same_seed_same_quads() {
         QuadAlgorithm::PulliSegal { seed: 9 },
         QuadAlgorithm::Lrs,
         QuadAlgorithm::DiksStanczyk,
+        QuadAlgorithm::KarpSipser,
     ] {
         let a = quadrangulate(mesh, algorithm).unwrap();
         let b = quadrangulate(mesh, algorithm).unwrap();
@@ -233,7 +235,7 @@ fn tombstoned_input_is_paired_on_live_faces() {
     }
 }
 
-/// Every shared mesh with SG, PS and LRS; DS (slower, tested in its own crate) on the small ones.
+/// Every shared mesh with SG, PS, LRS and KS; DS (slower, tested in its own crate) on the small ones.
 fn shared_meshes(keep: impl Fn(usize) -> bool) {
     for shared in surftopo_testkit::shared_meshes() {
         if !keep(shared.faces) {
@@ -245,6 +247,7 @@ fn shared_meshes(keep: impl Fn(usize) -> bool) {
             QuadAlgorithm::SimpleGreedy { seed: 1 },
             QuadAlgorithm::PulliSegal { seed: 1 },
             QuadAlgorithm::Lrs,
+            QuadAlgorithm::KarpSipser,
         ];
         if shared.faces <= 20_000 {
             algorithms.push(QuadAlgorithm::DiksStanczyk);

@@ -17,6 +17,8 @@ pub enum AlgorithmName {
     Lrs,
     /// Diks–Stanczyk: a perfect matching directly, by Frink reductions.
     Ds,
+    /// Karp–Sipser greedy with immediate local repairs (not from the paper), then augmenting paths.
+    Ks,
 }
 
 /// Quadrangulates `surface`; quads use its vertex ids.
@@ -30,6 +32,7 @@ pub fn quadrangulate_surface(
         AlgorithmName::Ps => QuadAlgorithm::PulliSegal { seed },
         AlgorithmName::Lrs => QuadAlgorithm::Lrs,
         AlgorithmName::Ds => QuadAlgorithm::DiksStanczyk,
+        AlgorithmName::Ks => QuadAlgorithm::KarpSipser,
     };
     quadrangulate(&surface.mesh, algorithm).map_err(|e| match e {
         QuadError::Internal(_) => anyhow::Error::new(e),

@@ -1,0 +1,332 @@
+//! A perfect pairing by the Karp–Sipser greedy with immediate local repairs (KS): not one of the
+//! quadrangulation paper's algorithms, but the fastest way we found to a perfect pairing of a
+//! mesh dual, built from the paper's own pieces (a greedy pairing completed by Edmonds'
+//! augmenting paths, Section 3.1) and its closing suggestion (Section 5: search for augmenting
+//! paths locally, where the unpaired triangles are).
+//!
+//! # The greedy
+//! Karp and Sipser, "Maximum matchings in sparse random graphs" (FOCS 1981): while a free node
+//! has exactly one free neighbour, pair the two (such a pair is in some maximum matching, so the
+//! rule never loses); otherwise pair a free node with a free neighbour. The *free degree* of an
+//! unpaired triangle is its number of unpaired neighbours (a triangle's "free edges" in the
+//! paper's Section 3.1). Decisions:
+//! - the start order is deterministic (no seed): when neighbouring nodes have close ids (the
+//!   median id gap of a sample is at most [`LOCAL_ID_GAP`], as in most mesh files), increasing id
+//!   order; otherwise breadth-first order (the oldest free neighbour of a paired node first,
+//!   then the smallest free id). Either way the pairing advances along a front, where the free
+//!   nodes needed by the repairs are near. Measured (`ks` rows of `results/quad.md`): id order is
+//!   better on spatially ordered files and on the bricks, breadth-first order much better on files
+//!   whose faces are in no spatial order (koala, hand1, skull: median gap above 10,000);
+//! - a started node is paired with its neighbour of smallest free degree (ties: first in the
+//!   node's edge order), the "minimum degree" rule of Magun (1998) that keeps few nodes isolated;
+//! - degree-one nodes are paired as soon as they appear (a stack), before the next start.
+//!
+//! # The repairs
+//! A node whose free degree drops to 0 while it is unpaired is *isolated*: the greedy alone would
+//! leave it unpaired. It is repaired at once by an Edmonds search from it
+//! ([`crate::augment`], blossoms included) limited to [`REPAIR_BUDGET`] reached nodes: at that
+//! moment the part of the graph not yet reached by the greedy is near, so a short augmenting path
+//! to one of its free nodes usually exists. A repair that exceeds its budget is abandoned and the
+//! node deferred; after the greedy, the deferred nodes are completed by the Forest strategy of
+//! [`crate::augment`], as any greedy pairing is. So the result is always perfect (or an
+//! [`AugmentError`] proves that the graph has no perfect matching).
+//!
+//! Figures are those of the paper's Table 4.3: the greedy counts as the initial pairing; every
+//! repair and the final completion count as augmentation (timed separately); "unpaired" is the
+//! number of isolated nodes met.
+//!
+//! Complexity: O(n) for the greedy and the repairs (each bounded), plus the completion (see
+//! [`crate::augment`]); in practice, on the shared 100k–270k-face meshes, the repairs leave
+//! a few nodes and the completion reaches a small part of the graph.
+
+use std::time::Instant;
+
+use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
+use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
+
+/// Nodes a repair search may reach before it is abandoned and its node deferred to the final
+/// completion. Measured on the shared meshes of 100k–270k faces (`quad_profile`): with 1024, at
+/// most 32 of their 60–1,900 isolated nodes are deferred; with 64, up to half of them are, and the
+/// completion then costs more than the repairs saved.
+pub const REPAIR_BUDGET: usize = 1024;
+
+/// Node ids are *local* when the median id distance between neighbours (sampled) is at most this.
+pub const LOCAL_ID_GAP: u32 = 1024;
+
+/// Figures of one [`karp_sipser_perfect`] run.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct KarpSipserStats {
+    /// Seconds of the greedy itself (copying the adjacency included; repairs excluded).
+    pub greedy_seconds: f64,
+    /// Seconds of the repairs and of the final completion.
+    pub augmentation_seconds: f64,
+    /// Isolated nodes met by the greedy (what the greedy alone would leave unpaired).
+    pub isolated: usize,
+    /// Isolated nodes paired by a repair search within its budget.
+    pub repaired: usize,
+    /// Isolated nodes whose repair went over budget (deferred).
+    pub deferred: usize,
+    /// Deferred nodes still unpaired after the greedy, paired two by two by the completion (the
+    /// others were reached as the free end of a later repair).
+    pub completed: usize,
+    /// Whether the greedy started from the nodes in id order (true) or in breadth-first order
+    /// (false; see the module doc).
+    pub id_order: bool,
+    /// The searches of the repairs and of the completion (nodes reached, paths, ...).
+    pub augment: AugmentStats,
+}
+
+/// KS: a perfect pairing of `graph` by the Karp–Sipser greedy with local repairs, completed by
+/// augmenting paths (see the module doc). Deterministic.
+///
+/// Takes any [`DualGraph`] with an even number of nodes. Guarantees on success: a perfect
+/// matching. O(n) plus the completion.
+///
+/// # Errors
+/// [`AugmentError::NoAugmentingPath`] when the graph has no perfect matching;
+/// [`AugmentError::OddNodeCount`] for an odd number of nodes.
+pub fn karp_sipser_perfect<G: DualGraph + ?Sized>(
+    graph: &G,
+) -> Result<(Pairing, KarpSipserStats), AugmentError> {
+    karp_sipser_perfect_with(graph, REPAIR_BUDGET)
+}
+
+/// [`karp_sipser_perfect`] with another repair budget (nodes a repair may reach; 0 defers every
+/// isolated node to the completion).
+///
+/// # Errors
+/// See [`karp_sipser_perfect`].
+pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
+    graph: &G,
+    repair_budget: usize,
+) -> Result<(Pairing, KarpSipserStats), AugmentError> {
+    let start = Instant::now();
+    let nodes = graph.node_count();
+    if !nodes.is_multiple_of(2) {
+        return Err(AugmentError::OddNodeCount { nodes });
+    }
+    let compact = CompactDual::new(graph);
+    let mut ks = KarpSipser::new(&compact, repair_budget);
+    ks.greedy();
+    let mut stats = ks.stats;
+    stats.id_order = ks.id_order;
+    let deferred: Vec<u32> = ks
+        .deferred
+        .iter()
+        .copied()
+        .filter(|&v| ks.mates[v as usize][0] == NONE)
+        .collect();
+    stats.completed = deferred.len();
+    let complete_start = Instant::now();
+    complete(
+        &compact,
+        &mut ks.mates,
+        &mut ks.search,
+        deferred,
+        &mut stats.augment,
+    )?;
+    stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
+    stats.greedy_seconds = start.elapsed().as_secs_f64() - stats.augmentation_seconds;
+    let pairing = Pairing {
+        mate: ks.mates.iter().map(|&[e, _]| e).collect(),
+    };
+    Ok((pairing, stats))
+}
+
+/// Whether neighbouring nodes have close ids: the median `|v - w|` over the neighbours `w` of
+/// every 64th node `v` is at most [`LOCAL_ID_GAP`].
+fn ids_are_local<G: DualGraph + ?Sized>(graph: &G) -> bool {
+    let mut gaps: Vec<u32> = (0..graph.node_slots() as u32)
+        .step_by(64)
+        .filter(|&v| graph.is_node(v))
+        .flat_map(|v| graph.adjacent(v).map(|(_, w)| w.abs_diff(v)))
+        .collect();
+    if gaps.is_empty() {
+        return true;
+    }
+    let middle = gaps.len() / 2;
+    *gaps.select_nth_unstable(middle).1 <= LOCAL_ID_GAP
+}
+
+struct KarpSipser<'g, G: ?Sized> {
+    graph: &'g G,
+    /// `[mate edge, mate node]` per node slot (`NONE` when unpaired), as [`Search`] wants them.
+    mates: Vec<[u32; 2]>,
+    /// Free degree per node slot (valid while the node is unpaired).
+    free: Vec<u8>,
+    /// Unpaired nodes of free degree 1 (checked again when popped).
+    forced: Vec<u32>,
+    /// Unpaired nodes of free degree 0 not yet repaired.
+    isolated: Vec<u32>,
+    /// Isolated nodes whose repair went over budget.
+    deferred: Vec<u32>,
+    search: Search,
+    stats: KarpSipserStats,
+    /// Free neighbours of newly paired nodes, in order (the breadth-first start order).
+    frontier: Vec<u32>,
+    /// Start from the nodes in id order rather than from the frontier.
+    id_order: bool,
+    /// Nodes a repair search may reach.
+    repair_budget: usize,
+}
+
+impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
+    fn new(graph: &'g G, repair_budget: usize) -> Self {
+        let n = graph.node_slots();
+        let free = (0..n as u32)
+            .map(|v| {
+                if graph.is_node(v) {
+                    graph.adjacent(v).iter().filter(|&&(_, w)| w != v).count() as u8
+                } else {
+                    0
+                }
+            })
+            .collect();
+        KarpSipser {
+            graph,
+            mates: vec![[NONE, NONE]; n],
+            free,
+            forced: Vec::new(),
+            isolated: Vec::new(),
+            deferred: Vec::new(),
+            search: Search::new(n),
+            stats: KarpSipserStats::default(),
+            frontier: Vec::new(),
+            id_order: ids_are_local(graph),
+            repair_budget,
+        }
+    }
+
+    #[inline]
+    fn is_free(&self, v: u32) -> bool {
+        self.mates[v as usize][0] == NONE
+    }
+
+    fn greedy(&mut self) {
+        let mut head = 0;
+        let mut next_id = 0;
+        while let Some(s) = self.next_start(&mut head, &mut next_id) {
+            let mut best: Option<(u8, u32, u32)> = None;
+            for (e, w) in self.graph.adjacent(s) {
+                if w != s && self.is_free(w) {
+                    let d = self.free[w as usize];
+                    if best.is_none_or(|(b, _, _)| d < b) {
+                        best = Some((d, e, w));
+                    }
+                }
+            }
+            // A start node has a free neighbour (a node whose free degree drops to 0 is isolated,
+            // never started from).
+            debug_assert!(best.is_some(), "start node {s} has no free neighbour");
+            if let Some((_, e, w)) = best {
+                self.join(e, s, w);
+            }
+            self.drain();
+        }
+    }
+
+    /// The next node to start from, free and with a free neighbour: the oldest such frontier
+    /// node (breadth-first order; the frontier stays empty in id order), else the smallest such
+    /// id not considered yet.
+    fn next_start(&mut self, head: &mut usize, next_id: &mut u32) -> Option<u32> {
+        while let Some(&x) = self.frontier.get(*head) {
+            *head += 1;
+            if self.is_free(x) && self.free[x as usize] > 0 {
+                return Some(x);
+            }
+        }
+        let n = self.graph.node_slots() as u32;
+        while *next_id < n {
+            let v = *next_id;
+            *next_id += 1;
+            if self.graph.is_node(v) && self.is_free(v) && self.free[v as usize] > 0 {
+                return Some(v);
+            }
+        }
+        None
+    }
+
+    /// Pairs the forced nodes and repairs the isolated ones until neither is left.
+    fn drain(&mut self) {
+        loop {
+            if let Some(a) = self.forced.pop() {
+                if !self.is_free(a) || self.free[a as usize] != 1 {
+                    continue;
+                }
+                let (e, b) = self
+                    .graph
+                    .adjacent(a)
+                    .into_iter()
+                    .find(|&(_, b)| b != a && self.is_free(b))
+                    .expect("a node of free degree 1 has a free neighbour");
+                self.join(e, a, b);
+            } else if let Some(u) = self.isolated.pop() {
+                if self.is_free(u) {
+                    self.repair(u);
+                }
+            } else {
+                return;
+            }
+        }
+    }
+
+    /// Pairs free nodes `a` and `b` along edge `e`.
+    fn join(&mut self, e: u32, a: u32, b: u32) {
+        self.mates[a as usize] = [e, b];
+        self.mates[b as usize] = [e, a];
+        self.now_paired(a);
+        self.now_paired(b);
+    }
+
+    /// `x` was free and is now paired: its free neighbours lose a free edge.
+    fn now_paired(&mut self, x: u32) {
+        for (_, y) in self.graph.adjacent(x) {
+            if y != x && self.is_free(y) {
+                if !self.id_order {
+                    self.frontier.push(y);
+                }
+                let f = &mut self.free[y as usize];
+                *f -= 1;
+                match *f {
+                    1 => self.forced.push(y),
+                    0 => self.isolated.push(y),
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    /// A bounded Edmonds search from isolated node `u`; on success the free node at the other
+    /// end of the path is now paired too (the nodes inside the path stay paired).
+    fn repair(&mut self, u: u32) {
+        let clock = Instant::now();
+        self.stats.isolated += 1;
+        let stats = &mut self.stats.augment;
+        stats.unmatched_before += 1;
+        stats.searches += 1;
+        let outcome = self.search.run(
+            self.graph,
+            &mut self.mates,
+            &[u],
+            self.repair_budget,
+            false,
+            stats,
+        );
+        stats.reached += self.search.reached as u64;
+        match outcome {
+            Outcome::Augmented => {
+                self.stats.repaired += 1;
+                let other = self.search.last_path_end();
+                self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
+                self.now_paired(other);
+                return;
+            }
+            Outcome::OverBudget => stats.abandoned += 1,
+            // No augmenting path from u at all: the completion reports it.
+            Outcome::Exhausted => {}
+        }
+        self.deferred.push(u);
+        self.stats.deferred += 1;
+        self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
+    }
+}
