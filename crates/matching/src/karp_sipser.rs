@@ -11,25 +11,33 @@
 //! unpaired triangle is its number of unpaired neighbours (a triangle's "free edges" in the
 //! paper's Section 3.1). Decisions:
 //! - the start order is deterministic (no seed): when neighbouring nodes have close ids (the
-//!   median id gap of a sample is at most [`LOCAL_ID_GAP`], as in most mesh files), increasing id
-//!   order; otherwise breadth-first order (the oldest free neighbour of a paired node first,
-//!   then the smallest free id). Either way the pairing advances along a front, where the free
-//!   nodes needed by the repairs are near. Measured (`ks` rows of `results/quad.md`): id order is
-//!   better on spatially ordered files and on the bricks, breadth-first order much better on files
-//!   whose faces are in no spatial order (koala, hand1, skull: median gap above 10,000);
+//!   median id gap of a sample at most [`LOCAL_ID_GAP`], as in most mesh files and in the
+//!   generated bricks), increasing id order; otherwise breadth-first order (the oldest free
+//!   neighbour of a paired node first, then the smallest free id). Either way the pairing
+//!   advances along a front, where the free nodes needed by the repairs are near. Measured
+//!   (`quad_profile`; the nodes reached by the repairs dominate the time): on files in no spatial
+//!   order (koala, hand1, skull, rolling_stage: median gap above 10,000) breadth-first order
+//!   isolates 5–10x fewer triangles; on the bricks it reaches 3–6x more nodes. Files written in
+//!   long strips (igea, nefertiti: median gap 1–60, 90th percentile 2,600–5,000) are in between:
+//!   id order is chosen, though breadth-first order isolates 4–20x fewer there (a known weak
+//!   point; no rule we tried separated them from the bricks);
 //! - a started node is paired with its neighbour of smallest free degree (ties: first in the
 //!   node's edge order), the "minimum degree" rule of Magun (1998) that keeps few nodes isolated;
 //! - degree-one nodes are paired as soon as they appear (a stack), before the next start.
 //!
 //! # The repairs
 //! A node whose free degree drops to 0 while it is unpaired is *isolated*: the greedy alone would
-//! leave it unpaired. It is repaired at once by an Edmonds search from it
-//! ([`crate::augment`], blossoms included) limited to [`REPAIR_BUDGET`] reached nodes: at that
-//! moment the part of the graph not yet reached by the greedy is near, so a short augmenting path
-//! to one of its free nodes usually exists. A repair that exceeds its budget is abandoned and the
-//! node deferred; after the greedy, the deferred nodes are completed by the Forest strategy of
-//! [`crate::augment`], as any greedy pairing is. So the result is always perfect (or an
-//! [`AugmentError`] proves that the graph has no perfect matching).
+//! leave it unpaired. It is repaired at once, while the part of the graph not yet reached by the
+//! greedy is near, so that a short augmenting path to one of its free nodes usually exists:
+//! 1. a depth-first alternating search with lookahead (Pothen and Fan's heuristic), blossoms
+//!    ignored, at most [`DFS_BUDGET`] nodes: cheap, and enough for most repairs;
+//! 2. else an Edmonds search from the node ([`crate::augment`], blossoms included) limited to
+//!    the repair budget ([`REPAIR_BUDGET`] reached nodes by default).
+//!
+//! A repair that exceeds both budgets is abandoned and the node *deferred*; after the greedy,
+//! the deferred nodes still unpaired are completed by the Forest strategy of [`crate::augment`],
+//! as any greedy pairing is. So the result is always perfect (or an [`AugmentError`] proves
+//! that the graph has no perfect matching).
 //!
 //! Figures are those of the paper's Table 4.3: the greedy counts as the initial pairing; every
 //! repair and the final completion count as augmentation (timed separately); "unpaired" is the
@@ -50,7 +58,14 @@ use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 /// completion then costs more than the repairs saved.
 pub const REPAIR_BUDGET: usize = 1024;
 
-/// Node ids are *local* when the median id distance between neighbours (sampled) is at most this.
+/// Nodes the depth-first first try of a repair may visit before the Edmonds search takes over.
+/// Measured on the shared meshes of 100k+ faces and on the bricks A5 and B5 (`quad_profile`):
+/// with 64, the repairs reach 10% more nodes on the shared meshes but 4x fewer on B5 (5.2M to
+/// 1.35M), and a depth-first node costs less than an Edmonds one.
+pub const DFS_BUDGET: usize = 64;
+
+/// Node ids are *local* when the median id distance between neighbours (sampled) is at most
+/// this.
 pub const LOCAL_ID_GAP: u32 = 1024;
 
 /// Figures of one [`karp_sipser_perfect`] run.
@@ -91,8 +106,8 @@ pub fn karp_sipser_perfect<G: DualGraph + ?Sized>(
     karp_sipser_perfect_with(graph, REPAIR_BUDGET)
 }
 
-/// [`karp_sipser_perfect`] with another repair budget (nodes a repair may reach; 0 defers every
-/// isolated node to the completion).
+/// [`karp_sipser_perfect`] with another repair budget (nodes the Edmonds search of a repair may
+/// reach; 0 skips both searches and defers every isolated node to the completion).
 ///
 /// # Errors
 /// See [`karp_sipser_perfect`].
@@ -133,7 +148,7 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     Ok((pairing, stats))
 }
 
-/// Whether neighbouring nodes have close ids: the median `|v - w|` over the neighbours `w` of
+/// Whether neighbouring nodes have close ids: the median of `|v - w|` over the neighbours `w` of
 /// every 64th node `v` is at most [`LOCAL_ID_GAP`].
 fn ids_are_local<G: DualGraph + ?Sized>(graph: &G) -> bool {
     let mut gaps: Vec<u32> = (0..graph.node_slots() as u32)
@@ -168,6 +183,12 @@ struct KarpSipser<'g, G: ?Sized> {
     id_order: bool,
     /// Nodes a repair search may reach.
     repair_budget: usize,
+    /// Generation stamps of the depth-first repairs (nodes visited by the current one).
+    dfs_stamp: Vec<u32>,
+    dfs_generation: u32,
+    /// The current depth-first path: (even node, next neighbour slot, edge into the odd node
+    /// before it).
+    dfs_stack: Vec<(u32, u8, u32)>,
 }
 
 impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
@@ -193,6 +214,9 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             stats: KarpSipserStats::default(),
             frontier: Vec::new(),
             id_order: ids_are_local(graph),
+            dfs_stamp: vec![0; n],
+            dfs_generation: 0,
+            dfs_stack: Vec::new(),
             repair_budget,
         }
     }
@@ -296,11 +320,86 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         }
     }
 
-    /// A bounded Edmonds search from isolated node `u`; on success the free node at the other
-    /// end of the path is now paired too (the nodes inside the path stay paired).
+    /// Depth-first alternating search from isolated `u` with lookahead (Pothen and Fan's
+    /// heuristic for bipartite matching), without blossoms, visiting at most [`DFS_BUDGET`]
+    /// nodes; on success augments and returns the free end. Each node is visited at most once,
+    /// so the path found is simple and a valid augmenting path even though blossoms are ignored;
+    /// a path that only a blossom would reveal is left to the Edmonds search.
+    fn dfs_repair(&mut self, u: u32) -> Option<u32> {
+        self.dfs_generation += 1;
+        let generation = self.dfs_generation;
+        self.dfs_stamp[u as usize] = generation;
+        self.dfs_stack.clear();
+        // (even node, next neighbour slot, edge into the odd node before it)
+        self.dfs_stack.push((u, 0, NONE));
+        let mut visited = 1usize;
+        let found = 'search: loop {
+            let &(v, slot, _) = self.dfs_stack.last()?;
+            let adjacent = self.graph.adjacent(v);
+            if slot == 0 {
+                // Lookahead: a free neighbour ends the path at once.
+                for (e, w) in adjacent {
+                    if w != v && w != u && self.is_free(w) {
+                        break 'search (e, w);
+                    }
+                }
+            }
+            if slot == 3 {
+                self.dfs_stack.pop();
+                continue;
+            }
+            self.dfs_stack.last_mut().expect("not empty").1 += 1;
+            let (e, w) = adjacent[slot as usize];
+            if w == v || self.dfs_stamp[w as usize] == generation || self.is_free(w) {
+                continue;
+            }
+            let m = self.mates[w as usize][1];
+            if self.dfs_stamp[m as usize] == generation {
+                continue;
+            }
+            self.dfs_stamp[w as usize] = generation;
+            self.dfs_stamp[m as usize] = generation;
+            visited += 2;
+            self.stats.augment.reached += 2;
+            if visited > DFS_BUDGET {
+                return None;
+            }
+            self.dfs_stack.push((m, 0, e));
+        };
+        // Augment along the stack: v_k - found, then each v_{i-1} - w_i.
+        let (mut e, mut x) = found;
+        let end = x;
+        while let Some((v, _, e_in)) = self.dfs_stack.pop() {
+            let old_mate = self.mates[v as usize][1];
+            self.mates[v as usize] = [e, x];
+            self.mates[x as usize] = [e, v];
+            if v == u {
+                break;
+            }
+            // The odd node before v is its old mate; it pairs with the previous even node.
+            e = e_in;
+            x = old_mate;
+        }
+        Some(end)
+    }
+
+    /// Repairs isolated node `u`: the depth-first search, else a bounded Edmonds search, else
+    /// defers it. On success the free node at the other end of the path is now paired too (the
+    /// nodes inside the path stay paired).
     fn repair(&mut self, u: u32) {
         let clock = Instant::now();
         self.stats.isolated += 1;
+        if self.repair_budget > 0
+            && let Some(other) = self.dfs_repair(u)
+        {
+            self.stats.repaired += 1;
+            self.stats.augment.unmatched_before += 1;
+            self.stats.augment.searches += 1;
+            self.stats.augment.augmentations += 1;
+            self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
+            self.now_paired(other);
+            return;
+        }
         let stats = &mut self.stats.augment;
         stats.unmatched_before += 1;
         stats.searches += 1;
