@@ -10,19 +10,22 @@
 //! rule never loses); otherwise pair a free node with a free neighbour. The *free degree* of an
 //! unpaired triangle is its number of unpaired neighbours (a triangle's "free edges" in the
 //! paper's Section 3.1). Decisions:
-//! - the start order is deterministic (no seed): when neighbouring nodes have close ids (the
-//!   median id gap of a sample at most [`LOCAL_ID_GAP`], as in most mesh files and in the
-//!   generated bricks), increasing id order; otherwise breadth-first order (the oldest free
+//! - the start order is deterministic (no seed): when neighbouring nodes have close ids (90% of
+//!   the id gaps of a sample at most [`LOCAL_ID_GAP`]: files written along a sweep, like venus
+//!   and seahorse), increasing id order; otherwise breadth-first order (the oldest free
 //!   neighbour of a paired node first, then the smallest free id). Either way the pairing
 //!   advances along a front, where the free nodes needed by the repairs are near. Measured
-//!   (`quad_profile`; the nodes reached by the repairs dominate the time): on files in no spatial
-//!   order (koala, hand1, skull, rolling_stage: median gap above 10,000) breadth-first order
-//!   isolates 5–10x fewer triangles; on the bricks it reaches 3–6x more nodes. Files written in
-//!   long strips (igea, nefertiti: median gap 1–60, 90th percentile 2,600–5,000) are in between:
-//!   id order is chosen, though breadth-first order isolates 4–20x fewer there (a known weak
-//!   point; no rule we tried separated them from the bricks);
-//! - a started node is paired with its neighbour of smallest free degree (ties: first in the
-//!   node's edge order), the "minimum degree" rule of Magun (1998) that keeps few nodes isolated;
+//!   (`quad_profile`; the nodes reached by the repairs dominate the time): breadth-first order
+//!   isolates 5–20x fewer triangles on files in strips (igea, nefertiti: median gap 1–60, 90th
+//!   percentile 2,600–5,000) or in no spatial order (koala, hand1, skull, rolling_stage), and
+//!   reaches 5–13x more nodes on venus and seahorse; on the bricks both orders isolate (almost)
+//!   nothing;
+//! - a started node is paired with its neighbour of smallest free degree, the "minimum degree"
+//!   rule of Magun (1998) that keeps few nodes isolated; ties go to the neighbour of smallest
+//!   id (in id order: the one on the side already swept, so the front leaves no gaps behind).
+//!   Measured (nodes reached by the repairs, `quad_profile`): against the first neighbour in
+//!   edge order, the bricks of groups A and B go from 3,000–8,000 isolated triangles to none at
+//!   all, and the shared meshes of 100k+ faces reach 8% fewer nodes;
 //! - degree-one nodes are paired as soon as they appear (a stack), before the next start.
 //!
 //! # The repairs
@@ -64,7 +67,7 @@ pub const REPAIR_BUDGET: usize = 1024;
 /// 1.35M), and a depth-first node costs less than an Edmonds one.
 pub const DFS_BUDGET: usize = 64;
 
-/// Node ids are *local* when the median id distance between neighbours (sampled) is at most
+/// Node ids are *local* when 90% of the id distances between neighbours (sampled) are at most
 /// this.
 pub const LOCAL_ID_GAP: u32 = 1024;
 
@@ -132,15 +135,18 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
         .filter(|&v| ks.mates[v as usize][0] == NONE)
         .collect();
     stats.completed = deferred.len();
-    let complete_start = Instant::now();
-    complete(
-        &compact,
-        &mut ks.mates,
-        &mut ks.search,
-        deferred,
-        &mut stats.augment,
-    )?;
-    stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
+    if !deferred.is_empty() {
+        let complete_start = Instant::now();
+        complete(
+            &compact,
+            &mut ks.mates,
+            ks.search
+                .get_or_insert_with(|| Search::new(graph.node_slots())),
+            deferred,
+            &mut stats.augment,
+        )?;
+        stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
+    }
     stats.greedy_seconds = start.elapsed().as_secs_f64() - stats.augmentation_seconds;
     let pairing = Pairing {
         mate: ks.mates.iter().map(|&[e, _]| e).collect(),
@@ -148,8 +154,8 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     Ok((pairing, stats))
 }
 
-/// Whether neighbouring nodes have close ids: the median of `|v - w|` over the neighbours `w` of
-/// every 64th node `v` is at most [`LOCAL_ID_GAP`].
+/// Whether neighbouring nodes have close ids: the 90th percentile of `|v - w|` over the
+/// neighbours `w` of every 64th node `v` is at most [`LOCAL_ID_GAP`].
 fn ids_are_local<G: DualGraph + ?Sized>(graph: &G) -> bool {
     let mut gaps: Vec<u32> = (0..graph.node_slots() as u32)
         .step_by(64)
@@ -159,8 +165,8 @@ fn ids_are_local<G: DualGraph + ?Sized>(graph: &G) -> bool {
     if gaps.is_empty() {
         return true;
     }
-    let middle = gaps.len() / 2;
-    *gaps.select_nth_unstable(middle).1 <= LOCAL_ID_GAP
+    let p90 = gaps.len() * 9 / 10;
+    *gaps.select_nth_unstable(p90).1 <= LOCAL_ID_GAP
 }
 
 struct KarpSipser<'g, G: ?Sized> {
@@ -175,7 +181,9 @@ struct KarpSipser<'g, G: ?Sized> {
     isolated: Vec<u32>,
     /// Isolated nodes whose repair went over budget.
     deferred: Vec<u32>,
-    search: Search,
+    /// The Edmonds search state (O(n) memory), made at the first Edmonds repair: most runs
+    /// never need it.
+    search: Option<Search>,
     stats: KarpSipserStats,
     /// Free neighbours of newly paired nodes, in order (the breadth-first start order).
     frontier: Vec<u32>,
@@ -210,7 +218,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             forced: Vec::new(),
             isolated: Vec::new(),
             deferred: Vec::new(),
-            search: Search::new(n),
+            search: None,
             stats: KarpSipserStats::default(),
             frontier: Vec::new(),
             id_order: ids_are_local(graph),
@@ -234,7 +242,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             for (e, w) in self.graph.adjacent(s) {
                 if w != s && self.is_free(w) {
                     let d = self.free[w as usize];
-                    if best.is_none_or(|(b, _, _)| d < b) {
+                    if best.is_none_or(|(b, _, bw)| (d, w) < (b, bw)) {
                         best = Some((d, e, w));
                     }
                 }
@@ -403,7 +411,10 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         let stats = &mut self.stats.augment;
         stats.unmatched_before += 1;
         stats.searches += 1;
-        let outcome = self.search.run(
+        let search = self
+            .search
+            .get_or_insert_with(|| Search::new(self.graph.node_slots()));
+        let outcome = search.run(
             self.graph,
             &mut self.mates,
             &[u],
@@ -411,11 +422,11 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             false,
             stats,
         );
-        stats.reached += self.search.reached as u64;
+        stats.reached += search.reached as u64;
         match outcome {
             Outcome::Augmented => {
                 self.stats.repaired += 1;
-                let other = self.search.last_path_end();
+                let other = search.last_path_end();
                 self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
                 self.now_paired(other);
                 return;
