@@ -1,7 +1,8 @@
 //! Building a [`SurfaceMesh`] from a triangle soup, with validation.
 //!
-//! One pass pairs the directed corner edges by a counting sort on their smaller vertex (O(n), no
-//! global sort), then a breadth-first search over faces orients them and counts components.
+//! The directed corner edges are paired after two counting sorts (by larger, then by smaller
+//! vertex: O(n), no comparison sort); a walk around each vertex checks its fan, a union-find counts
+//! components, and a breadth-first search over faces orients them when needed.
 //! Every problem is collected ([`inspect`]); [`build`] fails on the first one.
 
 use crate::error::BuildError;
@@ -239,36 +240,52 @@ impl<'a> Pairing<'a> {
                 .collect()
         };
 
-        // 2. Counting sort of corners by their smaller endpoint.
+        // 2. Corners sorted by (smaller endpoint, larger endpoint, corner) without comparisons: a
+        //    counting sort by the larger endpoint, then a stable one by the smaller endpoint.
         let nf = triangles.len();
+        let live = || {
+            remapped
+                .iter()
+                .enumerate()
+                .filter(|(_, t)| t[0] != u32::MAX)
+        };
         let mut bucket_start = vec![0u32; nv + 1];
-        for t in remapped.iter().filter(|t| t[0] != u32::MAX) {
+        let mut by_hi_start = vec![0u32; nv + 1];
+        for (_, t) in live() {
             for i in 0..3 {
-                let lo = t[i].min(t[(i + 1) % 3]);
-                bucket_start[lo as usize + 1] += 1;
+                let (a, b) = (t[i], t[(i + 1) % 3]);
+                bucket_start[a.min(b) as usize + 1] += 1;
+                by_hi_start[a.max(b) as usize + 1] += 1;
             }
         }
         for v in 0..nv {
             bucket_start[v + 1] += bucket_start[v];
+            by_hi_start[v + 1] += by_hi_start[v];
         }
-        let mut fill = bucket_start.clone();
-        // (larger endpoint, corner << 1 | forward, opposite vertex), bucketed by the smaller endpoint:
-        // grouping then reads nothing at random.
-        let mut sorted = vec![(0u32, 0u32, 0u32); bucket_start[nv] as usize];
-        for (f, t) in remapped
-            .iter()
-            .enumerate()
-            .filter(|(_, t)| t[0] != u32::MAX)
-        {
+        // (smaller endpoint, corner << 1 | forward, opposite vertex), by larger endpoint.
+        let mut by_hi = vec![(0u32, 0u32, 0u32); by_hi_start[nv] as usize];
+        let mut fill = by_hi_start.clone();
+        for (f, t) in live() {
             for i in 0..3 {
                 let (a, b, opposite) = (t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
-                let lo = a.min(b);
+                let hi = a.max(b) as usize;
                 let corner = ((3 * f + i) as u32) << 1 | u32::from(a < b);
-                sorted[fill[lo as usize] as usize] = (a.max(b), corner, opposite);
+                by_hi[fill[hi] as usize] = (a.min(b), corner, opposite);
+                fill[hi] += 1;
+            }
+        }
+        // (larger endpoint, corner << 1 | forward, opposite vertex), bucketed by the smaller
+        // endpoint and sorted within buckets: grouping then reads nothing at random.
+        let mut sorted = vec![(0u32, 0u32, 0u32); bucket_start[nv] as usize];
+        fill.copy_from_slice(&bucket_start);
+        for hi in 0..nv {
+            let range = by_hi_start[hi] as usize..by_hi_start[hi + 1] as usize;
+            for &(lo, corner, opposite) in &by_hi[range] {
+                sorted[fill[lo as usize] as usize] = (hi as u32, corner, opposite);
                 fill[lo as usize] += 1;
             }
         }
-        drop(fill);
+        drop((fill, by_hi, by_hi_start));
         // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
         // the smallest edge of the face.
         let is_smallest_edge = |c: u32, lo: u32, hi: u32| {
@@ -279,15 +296,22 @@ impl<'a> Pairing<'a> {
             smallest == Some((lo, hi))
         };
 
-        // 3. Group corners by edge; assign half-edge pairs to edges in two faces.
+        // 3. Group corners by edge; assign half-edge pairs to edges in two faces. A bucket holds
+        //    a few corners (about twice the vertex degree): sorted by (larger endpoint, corner),
+        //    which numbers the edges in (smaller, larger) order.
         let mut corner_halfedge = vec![HalfedgeId::INVALID; 3 * nf];
         let mut halfedge_corner: Vec<u32> = Vec::with_capacity(3 * nf);
         let mut same_direction: Vec<bool> = Vec::with_capacity(3 * nf / 2);
-        let mut uf = UnionFind::new(nf);
-        let mut group: Vec<(u32, bool, u32)> = Vec::new();
+        // around[c]: the corner after c around its vertex when the orientation is consistent (the
+        // next corner, in its face, after the twin of corner c's half-edge).
+        let mut around = vec![u32::MAX; 3 * nf];
+        // Vertices joined along the edges, and the faces joined by the edges in more than two
+        // faces (those in two are the half-edge pairs), for the components (step 5).
+        let mut vertex_uf = UnionFind::new(nv);
+        let mut other_joins: Vec<(u32, u32)> = Vec::new();
         for v in 0..nv {
-            let bucket = &mut sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
-            bucket.sort_unstable();
+            let bucket = &sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
+            let mut v_root = vertex_uf.find(v as u32);
             let mut i = 0;
             while i < bucket.len() {
                 let hi = bucket[i].0;
@@ -295,47 +319,48 @@ impl<'a> Pairing<'a> {
                 while j < bucket.len() && bucket[j].0 == hi {
                     j += 1;
                 }
-                // (corner, forward, opposite vertex) of each face on this edge.
-                group.clear();
-                group.extend(
-                    bucket[i..j]
-                        .iter()
-                        .map(|&(_, c, opposite)| (c >> 1, c & 1 == 1, opposite)),
-                );
+                // (larger endpoint, corner << 1 | forward, opposite vertex) of each face on this edge.
+                let group = &bucket[i..j];
+                let corner = |k: usize| group[k].1 >> 1;
                 ins.edges += 1;
-                let edge = [new_to_old[v], new_to_old[hi as usize]];
-                for w in group.windows(2) {
-                    uf.union(w[0].0 / 3, w[1].0 / 3);
+                v_root = vertex_uf.join(v_root, hi);
+                if group.len() > 2 {
+                    other_joins.extend((1..group.len()).map(|k| (corner(k - 1), corner(k))));
                 }
                 // A repeated face shares this edge and its opposite vertex with an earlier one.
-                for (k, &(c2, _, opposite)) in group.iter().enumerate().skip(1) {
-                    let first = group[..k].iter().find(|g| g.2 == opposite);
-                    if let Some(&(c1, _, _)) = first.filter(|_| is_smallest_edge(c2, v as u32, hi))
+                for k in 1..group.len() {
+                    let first = group[..k].iter().find(|g| g.2 == group[k].2);
+                    if let Some(&(_, c1, _)) =
+                        first.filter(|_| is_smallest_edge(corner(k), v as u32, hi))
                     {
                         ins.push(BuildError::DuplicateFace {
-                            face: (c2 / 3) as usize,
-                            duplicate_of: (c1 / 3) as usize,
+                            face: (corner(k) / 3) as usize,
+                            duplicate_of: (c1 >> 1) as usize / 3,
                         });
                     }
                 }
-                let face = (group[0].0 / 3) as usize;
-                match group[..] {
-                    [_] => {
+                let edge = || [new_to_old[v], new_to_old[hi as usize]];
+                let face = (corner(0) / 3) as usize;
+                match group.len() {
+                    1 => {
                         ins.boundary_edges += 1;
-                        ins.push(BuildError::BoundaryEdge { edge, face });
+                        ins.push(BuildError::BoundaryEdge { edge: edge(), face });
                     }
-                    [(c1, forward1, _), (c2, forward2, _)] => {
+                    2 => {
+                        let (c1, c2) = (corner(0), corner(1));
                         let h = halfedge_corner.len();
                         corner_halfedge[c1 as usize] = HalfedgeId::new(h);
                         corner_halfedge[c2 as usize] = HalfedgeId::new(h + 1);
+                        around[c1 as usize] = next_corner(c2);
+                        around[c2 as usize] = next_corner(c1);
                         halfedge_corner.push(c1);
                         halfedge_corner.push(c2);
-                        same_direction.push(forward1 == forward2);
+                        same_direction.push(group[0].1 & 1 == group[1].1 & 1);
                     }
                     _ => {
                         ins.non_manifold_edges += 1;
                         ins.push(BuildError::NonManifoldEdge {
-                            edge,
+                            edge: edge(),
                             face_count: group.len(),
                             face,
                         });
@@ -353,36 +378,36 @@ impl<'a> Pairing<'a> {
             valid.iter().all(|&ok| ok) && ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
         let consistent = !same_direction.iter().any(|&same| same);
         if all_paired {
+            // Corner count and one corner of each vertex.
             let mut corners = vec![0u32; nv];
-            for t in remapped.iter() {
-                for &v in t {
-                    corners[v as usize] += 1;
-                }
-            }
             let mut start_corner = vec![u32::MAX; nv];
             for (c, &v) in remapped.iter().flatten().enumerate() {
+                corners[v as usize] += 1;
                 start_corner[v as usize] = c as u32;
             }
-            // The two corners of a face that touch the vertex at corner c: c itself (leaving it)
-            // and the previous corner (entering it). The walk enters a face through one and
-            // leaves through the other, whatever the faces' orientations.
-            let prev_corner = |c: u32| c - c % 3 + (c % 3 + 2) % 3;
+            // The corner after `leave` around vertex v. In general the two corners of a face that
+            // touch v are `leave` itself (leaving v) and the previous corner (entering v): the walk
+            // enters a face through one and leaves through the other, whatever the faces'
+            // orientations; with a consistent orientation that is `around`.
+            let step = |leave: u32, v: u32| {
+                if consistent {
+                    return around[leave as usize];
+                }
+                let h = corner_halfedge[leave as usize];
+                let entered = halfedge_corner[h.twin().idx()];
+                // `entered` is one of the two corners at v in the next face; leave by the other.
+                if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
+                    entered - entered % 3 + (entered % 3 + 2) % 3
+                } else {
+                    next_corner(entered)
+                }
+            };
             for v in 0..nv {
                 let start = start_corner[v];
                 let (mut leave, mut steps) = (start, 0u32);
                 loop {
                     steps += 1;
-                    let h = corner_halfedge[leave as usize];
-                    let entered = halfedge_corner[h.twin().idx()];
-                    // `entered` is one of the two corners at v in the next face; leave by the other.
-                    // (With a consistent orientation, `entered` always ends at v.)
-                    let starts_at_v = !consistent
-                        && remapped[(entered / 3) as usize][(entered % 3) as usize] == v as u32;
-                    leave = if starts_at_v {
-                        prev_corner(entered)
-                    } else {
-                        entered - entered % 3 + (entered % 3 + 1) % 3
-                    };
+                    leave = step(leave, v as u32);
                     if leave / 3 == start / 3 || steps > corners[v] {
                         break;
                     }
@@ -398,21 +423,30 @@ impl<'a> Pairing<'a> {
             }
         }
 
-        // 5. Components (over all shared edges).
+        // 5. Components: faces joined through shared edges. On a clean surface (every edge in two
+        //    faces, every vertex one fan) two faces are joined iff their vertices are joined along
+        //    edges, so the (smaller) vertex union-find answers; otherwise one over the faces.
         let first_valid = valid.iter().position(|&ok| ok);
         if let Some(f0) = first_valid {
-            let root0 = uf.find(f0 as u32);
-            let mut roots = 0usize;
-            let mut outside = None;
-            for f in (0..nf).filter(|&f| valid[f]) {
-                let r = uf.find(f as u32);
-                if r == f as u32 {
-                    roots += 1;
+            let by_vertex = all_paired && ins.non_manifold_vertices == 0;
+            let mut uf = if by_vertex {
+                vertex_uf
+            } else {
+                let mut face_uf = UnionFind::new(nf);
+                let pairs = halfedge_corner.chunks_exact(2).map(|p| (p[0], p[1]));
+                for (c1, c2) in pairs.chain(other_joins.iter().copied()) {
+                    face_uf.union(c1 / 3, c2 / 3);
                 }
-                if outside.is_none() && r != root0 {
-                    outside = Some(f);
-                }
-            }
+                face_uf
+            };
+            // The union-find node of a face, and the nodes.
+            let node = |f: usize| if by_vertex { remapped[f][0] } else { f as u32 };
+            let nodes = if by_vertex { nv } else { nf };
+            let roots = (0..nodes as u32)
+                .filter(|&x| (by_vertex || valid[x as usize]) && uf.find(x) == x)
+                .count();
+            let root0 = uf.find(node(f0));
+            let outside = (f0..nf).find(|&f| valid[f] && uf.find(node(f)) != root0);
             ins.components = roots;
             if let Some(face) = outside {
                 ins.push(BuildError::Disconnected {
@@ -520,6 +554,12 @@ impl<'a> Pairing<'a> {
     }
 }
 
+/// The next corner in the same face (corner `3f + i` is at vertex `t[i]`).
+#[inline]
+fn next_corner(c: u32) -> u32 {
+    c - c % 3 + (c % 3 + 1) % 3
+}
+
 /// Union-find with path halving.
 struct UnionFind {
     parent: Vec<u32>,
@@ -538,6 +578,14 @@ impl UnionFind {
             x = gp;
         }
         x
+    }
+    /// Joins the set of `x` to the set whose root is `root`; returns the root of the union (the
+    /// smaller of the two roots, as [`Self::union`]).
+    fn join(&mut self, root: u32, x: u32) -> u32 {
+        let rx = self.find(x);
+        let (lo, hi) = (root.min(rx), root.max(rx));
+        self.parent[hi as usize] = lo;
+        lo
     }
     fn union(&mut self, a: u32, b: u32) {
         let (ra, rb) = (self.find(a), self.find(b));
