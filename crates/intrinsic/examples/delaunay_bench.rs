@@ -17,7 +17,8 @@
 //!
 //! Times are best of `--repeat` (default 10) runs, in this process, excluding file reading:
 //! `flip` is [`flip_to_delaunay`] alone; `pipeline` is what libigl's `intrinsic_delaunay_cotmatrix`
-//! does from (V, F): building the mesh, the edge lengths, the flips and the cotan Laplacian.
+//! does from (V, F): building the mesh, the edge lengths, the flips and the cotan Laplacian
+//! ([`IntrinsicTriangulation::from_soup`] then [`intrinsic_delaunay_laplacian`]).
 //! Every result is checked Delaunay by the crate's own counter; the tests check it independently.
 
 use std::fmt::Write as _;
@@ -28,8 +29,8 @@ use std::time::Instant;
 use serde_json::{Value, json};
 use surftopo_intrinsic::generators::{flat_torus, random_flips, sheared_torus};
 use surftopo_intrinsic::{
-    DelaunayOptions, IntrinsicTriangulation, IsometryOptions, SparseMatrix, cotan_laplacian,
-    flip_to_delaunay, isometric, read_matrix_market,
+    DelaunayOptions, IntrinsicTriangulation, IsometryOptions, SparseMatrix, flip_to_delaunay,
+    intrinsic_delaunay_laplacian, isometric, read_matrix_market,
 };
 use surftopo_testkit::load;
 
@@ -136,8 +137,15 @@ fn compare(ours: &SparseMatrix, igl: &SparseMatrix) -> f64 {
     worst / scale
 }
 
+/// The 1-minute load average (Linux `/proc/loadavg`), if available.
+fn load_average() -> Option<String> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    text.split_whitespace().next().map(str::to_string)
+}
+
 fn main() {
     let args = parse_args();
+    let load_at_start = load_average();
     let mut rows: Vec<Value> = Vec::new();
     let mut md = String::new();
     let _ = writeln!(
@@ -147,11 +155,12 @@ fn main() {
          best of {} runs unless said otherwise, file reading excluded. `flip` = \
          `flip_to_delaunay` alone; `pipeline` = build the mesh from (V, F) + edge lengths + flips \
          + cotan Laplacian (what libigl's `intrinsic_delaunay_cotmatrix` does). Machine: 2 cores \
-         shared with other jobs (load 5 to 9 during the runs).\n",
-        if args.peer.is_some() {
-            " -- --peer DIR"
-        } else {
-            ""
+         shared with other jobs (load averages at the end).\n",
+        match (args.peer.is_some(), args.repeat) {
+            (true, 10) => " -- --peer DIR".to_string(),
+            (true, n) => format!(" -- --repeat {n} --peer DIR"),
+            (false, 10) => String::new(),
+            (false, n) => format!(" -- --repeat {n}"),
         },
         args.repeat
     );
@@ -191,15 +200,17 @@ fn main() {
             let (flipped, flips, flip_s) = time_flips(&tri, args.repeat);
             let (lap, pipeline) = best_of(args.repeat, || {
                 let (mut t, _) = IntrinsicTriangulation::from_soup(&positions, &triangles).unwrap();
-                flip_to_delaunay(&mut t, &delaunay_options()).unwrap();
-                cotan_laplacian(&t)
+                intrinsic_delaunay_laplacian(&mut t, &delaunay_options())
+                    .unwrap()
+                    .1
             });
             let mesh = tri.mesh().clone();
             let (_, no_build) = best_of(args.repeat, || {
                 let mut t =
                     IntrinsicTriangulation::from_positions(mesh.clone(), &s.positions).unwrap();
-                flip_to_delaunay(&mut t, &delaunay_options()).unwrap();
-                cotan_laplacian(&t)
+                intrinsic_delaunay_laplacian(&mut t, &delaunay_options())
+                    .unwrap()
+                    .1
             });
             let (loops, multi) = loops_and_multi_edges(&flipped);
             let edges = flipped.mesh().edge_count();
@@ -388,6 +399,14 @@ fn main() {
             md,
             "\nDouble precision breaks down at x = {x:e}: the first x of the list whose result is \
              not exact (flip count and final lengths)."
+        );
+    }
+
+    if let (Some(a), Some(b)) = (load_at_start, load_average()) {
+        let _ = writeln!(
+            md,
+            "\nMachine load (1-minute load average, 2 cores): {a} at the start of this run, {b} \
+             at the end."
         );
     }
 

@@ -21,7 +21,7 @@
 
 use crate::error::DelaunayError;
 use crate::mollify::mollify;
-use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::{IntrinsicTriangulation, store_tan_half_sq};
 use surftopo_mesh::EdgeId;
 
 /// Default [`DelaunayOptions::tolerance`]: an edge is flipped when `tan(γ/2) tan(δ/2)` exceeds
@@ -92,6 +92,16 @@ pub fn flip_to_delaunay(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
 ) -> Result<FlipReport, DelaunayError> {
+    flip_keeping_tan_half_sq(tri, options).map(|(report, _)| report)
+}
+
+/// [`flip_to_delaunay`], also returning the half-angle cache it keeps up to date: `tan²(θ/2)` of
+/// the angle θ opposite every half-edge of the final triangulation (by half-edge id), equal bit for
+/// bit to [`IntrinsicTriangulation::halfedge_tan_half_sq`] of the result.
+pub(crate) fn flip_keeping_tan_half_sq(
+    tri: &mut IntrinsicTriangulation,
+    options: &DelaunayOptions,
+) -> Result<(FlipReport, Vec<f64>), DelaunayError> {
     let tol = options.tolerance;
     if !(tol.is_finite() && tol >= 0.0) {
         return Err(DelaunayError::InvalidTolerance(tol));
@@ -142,14 +152,13 @@ pub fn flip_to_delaunay(
                         pending: stack.len() + 1,
                     });
                 }
-                // Quad a -> b with c on the left, d on the right; the angles at a are opposite
-                // next(h) (in the left triangle) and prev(t) (in the right one).
-                let (ca, ad) = (
-                    tri.halfedge_length(mesh.prev(h)),
-                    tri.halfedge_length(mesh.next(t)),
-                );
-                let length =
-                    crate::trig::chord(t2[mesh.next(h).idx()], t2[mesh.prev(t).idx()], ca, ad);
+                // Quad a -> b with c on the left, d on the right: h1 = b -> c, h2 = c -> a,
+                // t1 = a -> d, t2 = d -> b. The angles at a are opposite h1 (in the left triangle)
+                // and t2 (in the right one).
+                let (h1, h2) = (mesh.next(h), mesh.prev(h));
+                let (t1, t2h) = (mesh.next(t), mesh.prev(t));
+                let [bc, ca, ad, db] = [h1, h2, t1, t2h].map(|g| tri.halfedge_length(g));
+                let length = crate::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
                 if !(length.is_finite() && length > 0.0) {
                     return Err(DelaunayError::NumericalBreakdown {
                         edge: e.0,
@@ -158,9 +167,9 @@ pub fn flip_to_delaunay(
                     });
                 }
                 tri.apply_flip(e, length);
-                let (f0, f1) = (tri.mesh().face(h), tri.mesh().face(t));
-                let s0 = tri.store_face_tan_half_sq(f0, &mut t2);
-                let s1 = tri.store_face_tan_half_sq(f1, &mut t2);
+                // The new triangles are (h: d -> c, h2, t1) and (t: c -> d, t2, h1).
+                let s0 = store_tan_half_sq([h, h2, t1], [length, ca, ad], &mut t2);
+                let s1 = store_tan_half_sq([t, t2h, h1], [length, db, bc], &mut t2);
                 if s0.is_nan() || s0 <= 0.0 || s1.is_nan() || s1 <= 0.0 {
                     // The new triangles fail the triangle inequality: rounding has taken over.
                     return Err(DelaunayError::NumericalBreakdown {
@@ -170,8 +179,7 @@ pub fn flip_to_delaunay(
                     });
                 }
                 report.flips += 1;
-                let mesh = tri.mesh();
-                for g in [mesh.next(h), mesh.prev(h), mesh.next(t), mesh.prev(t)] {
+                for g in [h2, t1, t2h, h1] {
                     let ge = g.edge();
                     if !queued[ge.idx()] {
                         queued[ge.idx()] = true;
@@ -192,8 +200,8 @@ pub fn flip_to_delaunay(
         .filter(|&e| {
             let h = e.halfedge();
             let p = t2[h.idx()] * t2[h.twin().idx()];
-            mesh.face(h) != mesh.face(h.twin()) && (p.is_nan() || p > bound)
+            (p.is_nan() || p > bound) && mesh.face(h) != mesh.face(h.twin())
         })
         .count();
-    Ok(report)
+    Ok((report, t2))
 }

@@ -20,6 +20,8 @@
 //! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation.
 //! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
 //!   ([`write_matrix_market`]). Convention: the Laplacian is positive semidefinite.
+//!   [`intrinsic_delaunay_laplacian`] flips and assembles in one call (libigl's
+//!   `intrinsic_delaunay_cotmatrix`), reusing the flips' half-angle tangents.
 //! - [`quality()`]: aspect ratio, local aspect ratio, singular vertices (Section 2.2).
 //! - [`isometric`]: Corollary 2's test on canonical tessellations ([`remove_flat_vertices`] first).
 //! - [`generators`]: T_x ([`generators::flat_torus`]), sheared tori, random isometric flips.
@@ -73,7 +75,8 @@ pub use isometry::{
     compare_tessellations, isometric,
 };
 pub use laplacian::{
-    SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, lumped_mass,
+    SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, intrinsic_delaunay_laplacian,
+    lumped_mass,
 };
 pub use matrix_market::{read_matrix_market, write_matrix_market};
 pub use mollify::mollify;

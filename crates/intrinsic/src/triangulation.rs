@@ -167,11 +167,7 @@ impl IntrinsicTriangulation {
     #[inline]
     pub(crate) fn store_face_tan_half_sq(&self, f: FaceId, t2: &mut [f64]) -> f64 {
         let hs = self.mesh.face_halfedges(f);
-        let (values, smallest) = trig::tan_half_sq_all(hs.map(|h| self.halfedge_length(h)));
-        for (h, v) in hs.into_iter().zip(values) {
-            t2[h.idx()] = v;
-        }
-        smallest
+        store_tan_half_sq(hs, hs.map(|h| self.halfedge_length(h)), t2)
     }
 
     /// Area of a face (Kahan's formula).
@@ -285,6 +281,23 @@ impl IntrinsicTriangulation {
             .expect("caller checked that the edge is flippable");
         self.lengths[e.idx()] = length;
     }
+}
+
+/// Stores the half-angle tangents squared of the triangle with sides `lengths` into `t2`, entry
+/// `i` at `halfedges[i]` (the angle opposite side `i`); returns the smallest Kahan factor
+/// (positive iff the triangle inequality holds strictly). The values do not depend on the order
+/// of the sides (see [`trig::excesses`]).
+#[inline]
+pub(crate) fn store_tan_half_sq(
+    halfedges: [HalfedgeId; 3],
+    lengths: [f64; 3],
+    t2: &mut [f64],
+) -> f64 {
+    let (values, smallest) = trig::tan_half_sq_all(lengths);
+    for (h, v) in halfedges.into_iter().zip(values) {
+        t2[h.idx()] = v;
+    }
+    smallest
 }
 
 /// Checks the strict triangle inequality of one face.
