@@ -54,6 +54,20 @@ pub trait DualGraph {
         let [a, b] = self.endpoints(e);
         if a == v { b } else { a }
     }
+    /// The three `(edge, neighbour)` pairs of every node slot (`NONE` pairs for removed nodes), in
+    /// some fixed order per node: what [`CompactDual`] stores. By default
+    /// [`DualGraph::adjacent`] node by node.
+    fn adjacency_table(&self) -> Vec<[(u32, u32); 3]> {
+        (0..self.node_slots() as u32)
+            .map(|v| {
+                if self.is_node(v) {
+                    self.adjacent(v)
+                } else {
+                    [(NONE, NONE); 3]
+                }
+            })
+            .collect()
+    }
 }
 
 impl DualGraph for SurfaceMesh {
@@ -86,6 +100,24 @@ impl DualGraph for SurfaceMesh {
     fn endpoints(&self, e: u32) -> [u32; 2] {
         let h = EdgeId(e).halfedge();
         [self.face(h).0, self.face(h.twin()).0]
+    }
+    /// Edge by edge: the two faces of an edge are two sequential reads (a face's own half-edge
+    /// cycle is a chain of dependent random reads when half-edges are not in face order), and
+    /// each face gets the edge in its next free slot, so a node's pairs are in increasing edge id
+    /// order rather than in [`DualGraph::adjacent`]'s. Measured: venus_50k 3.5x faster to copy.
+    fn adjacency_table(&self) -> Vec<[(u32, u32); 3]> {
+        let mut table = vec![[(NONE, NONE); 3]; self.face_slots()];
+        let mut filled = vec![0u8; self.face_slots()];
+        for e in self.edges() {
+            let h = e.halfedge();
+            let (a, b) = (self.face(h).0, self.face(h.twin()).0);
+            for (v, w) in [(a, b), (b, a)] {
+                let slot = &mut filled[v as usize];
+                table[v as usize][usize::from(*slot)] = (e.0, w);
+                *slot += 1;
+            }
+        }
+        table
     }
 }
 
@@ -125,7 +157,7 @@ impl DualGraph for CubicGraph {
 /// `(edge, neighbour)` pairs in one 24-byte record. Reading a node's neighbours is then one memory
 /// access instead of the half-edge chain `face_halfedge → next → next → face(twin)` (up to six
 /// dependent cache misses when a search jumps around a large mesh). Building it is one sequential
-/// pass over the nodes; everything else (liveness, edge endpoints) is read from the wrapped graph.
+/// pass (over the edges, for a mesh); everything else (liveness, edge endpoints) is read from the wrapped graph.
 /// The searches of [`crate::augment`] use it when they expect to reach many nodes.
 #[derive(Clone, Debug)]
 pub struct CompactDual<'g, G: ?Sized> {
@@ -134,18 +166,13 @@ pub struct CompactDual<'g, G: ?Sized> {
 }
 
 impl<'g, G: DualGraph + ?Sized> CompactDual<'g, G> {
-    /// Copies the adjacency of `graph` (removed nodes get `NONE` entries). O(n).
+    /// Copies the adjacency of `graph` ([`DualGraph::adjacency_table`]; removed nodes get `NONE`
+    /// entries). O(n).
     pub fn new(graph: &'g G) -> Self {
-        let adjacency = (0..graph.node_slots() as u32)
-            .map(|v| {
-                if graph.is_node(v) {
-                    graph.adjacent(v)
-                } else {
-                    [(NONE, NONE); 3]
-                }
-            })
-            .collect();
-        CompactDual { graph, adjacency }
+        CompactDual {
+            graph,
+            adjacency: graph.adjacency_table(),
+        }
     }
 }
 
