@@ -55,10 +55,13 @@ use std::time::Instant;
 use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 
-/// Nodes a repair search may reach before it is abandoned and its node deferred to the final
-/// completion. Measured on the shared meshes of 100k–270k faces (`quad_profile`): with 1024, at
-/// most 32 of their 60–1,900 isolated nodes are deferred; with 64, up to half of them are, and the
-/// completion then costs more than the repairs saved.
+/// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
+/// final completion. Measured (`quad_profile`, nodes reached on seahorse, koala, feline,
+/// rolling_stage, sketched_brunnen): 1024 reaches 395k in all, 8192 380k, no limit 423k. The
+/// deferred nodes are few (0–16) but usually far apart, so the completion that pairs them reaches
+/// most of the graph (45k–65k of the 73k–92k nodes of a 100k-face run); without a limit there is
+/// nothing to complete, and seahorse, koala and rolling_stage reach 2–7x fewer nodes, but feline
+/// and sketched_brunnen 2x more (some repairs must cross most of the graph).
 pub const REPAIR_BUDGET: usize = 1024;
 
 /// Nodes the depth-first first try of a repair may visit before the Edmonds search takes over.
@@ -87,6 +90,8 @@ pub struct KarpSipserStats {
     /// Deferred nodes still unpaired after the greedy, paired two by two by the completion (the
     /// others were reached as the free end of a later repair).
     pub completed: usize,
+    /// Nodes reached by the completion (included in `augment.reached`).
+    pub completion_reached: u64,
     /// Whether the greedy started from the nodes in id order (true) or in breadth-first order
     /// (false; see the module doc).
     pub id_order: bool,
@@ -137,6 +142,7 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     stats.completed = deferred.len();
     if !deferred.is_empty() {
         let complete_start = Instant::now();
+        let before = stats.augment.reached;
         complete(
             &compact,
             &mut ks.mates,
@@ -146,6 +152,7 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
             &mut stats.augment,
         )?;
         stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
+        stats.completion_reached = stats.augment.reached - before;
     }
     stats.greedy_seconds = start.elapsed().as_secs_f64() - stats.augmentation_seconds;
     let pairing = Pairing {

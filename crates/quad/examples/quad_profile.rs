@@ -109,7 +109,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (t, (_, ks)) = time(repeat, || karp_sipser_perfect(mesh).unwrap());
     println!(
         "ks (perfect)          {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} \
-         repaired {} deferred {} completed {} reached {} id order {}",
+         repaired {} deferred {} completed {} reached {} (completion {}) id order {}",
         ks.greedy_seconds,
         ks.augmentation_seconds,
         ks.isolated,
@@ -117,6 +117,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         ks.deferred,
         ks.completed,
         ks.augment.reached,
+        ks.completion_reached,
         ks.id_order
     );
     let (t, _) = time(repeat, || mesh.clone());
