@@ -257,7 +257,7 @@ fn demo_writes_its_results() {
         "isometric"
     );
     assert!(out.join("laplacian.mtx").is_file());
-    for quads in ["quads-ps.obj", "quads-lrs.obj"] {
+    for quads in ["quads-ks.obj", "quads-lrs.obj"] {
         let v = info_json(&out.join(quads), &["--strict"]);
         assert_eq!(v["genus"], 2, "{quads}");
         assert_eq!(v["simplicial"], false, "{quads}: not quads");

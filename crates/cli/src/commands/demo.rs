@@ -57,7 +57,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         report.seconds
     )?;
 
-    for name in [QuadName::Ps, QuadName::Lrs] {
+    for name in [QuadName::Ks, QuadName::Lrs] {
         let result = quadrangulate_surface(&surface, name, 7)?;
         let label = result.stats.algorithm.clone();
         let path = out_dir.join(format!("quads-{label}.obj"));
