@@ -203,6 +203,7 @@ fn non_simplicial_input() {
     for algorithm in [
         QuadAlgorithm::SimpleGreedy { seed: 0 },
         QuadAlgorithm::PulliSegal { seed: 0 },
+        QuadAlgorithm::KarpSipser,
     ] {
         let result = quadrangulate(&mesh, algorithm).unwrap();
         assert_eq!(result.quads.len(), 2);
