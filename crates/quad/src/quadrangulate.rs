@@ -44,8 +44,8 @@ pub enum QuadAlgorithm {
 }
 
 impl QuadAlgorithm {
-    /// Short name: `sg`, `ps`, `lrs`, `ds` or `ks` (the CLI's `--algorithm` values and the `algorithm`
-    /// field of [`QuadStats`]).
+    /// Short name: `sg`, `ps`, `lrs`, `ds` or `ks` (the CLI's `--algorithm` values and the
+    /// `algorithm` field of [`QuadStats`]).
     pub fn name(&self) -> &'static str {
         match self {
             QuadAlgorithm::SimpleGreedy { .. } => "sg",
@@ -154,16 +154,63 @@ pub fn quadrangulate_with(
     if faces == 0 {
         return Err(QuadError::Empty);
     }
+    let paired = pair(mesh, algorithm, options, start)?;
+    let (quads, diagonals) = quads_of(
+        paired.triangulation.as_ref().unwrap_or(mesh),
+        &paired.pairing,
+    )?;
+    let stats = QuadStats {
+        algorithm: algorithm.name().to_string(),
+        faces,
+        initial_pairing_seconds: paired.initial_pairing_seconds,
+        paired_percent: 100.0 * (faces - paired.unpaired) as f64 / faces as f64,
+        unpaired: paired.unpaired,
+        augmentation_seconds: paired.augmentation_seconds,
+        total_seconds: start.elapsed().as_secs_f64(),
+        flipped_edges: paired.flipped_edges,
+    };
+    Ok(QuadResult {
+        quads,
+        diagonals,
+        triangulation: paired.triangulation,
+        stats,
+        augmentation: paired.augmentation,
+        expansion: paired.expansion,
+        karp_sipser: paired.karp_sipser,
+    })
+}
+
+/// A perfect pairing of the paired triangulation (the input, or K) and how it was reached.
+struct Paired {
+    triangulation: Option<SurfaceMesh>,
+    pairing: Pairing,
+    unpaired: usize,
+    initial_pairing_seconds: f64,
+    augmentation_seconds: f64,
+    augmentation: AugmentStats,
+    flipped_edges: usize,
+    expansion: Option<ExpansionCases>,
+    karp_sipser: Option<KarpSipserStats>,
+}
+
+/// The initial pairing by `algorithm`, then augmenting paths (KS: its own repairs and completion,
+/// timed by its own clocks: greedy = initial pairing, repairs and completion = augmentation).
+fn pair(
+    mesh: &SurfaceMesh,
+    algorithm: QuadAlgorithm,
+    options: &QuadOptions,
+    start: Instant,
+) -> Result<Paired, QuadError> {
     let mut flipped_edges = 0;
-    let mut expansion_cases = None;
+    let mut expansion = None;
     let (triangulation, mut pairing) = match algorithm {
         QuadAlgorithm::SimpleGreedy { seed } => (None, simple_greedy(mesh, seed)),
         QuadAlgorithm::PulliSegal { seed } => (None, pulli_segal(mesh, seed)),
         QuadAlgorithm::Lrs => {
             let genus = mesh.genus();
             let reduction = surftopo_irreducible::ramaswami_siqueira(mesh.clone())?;
-            let expansion = expand(reduction.mesh, &reduction.history)?;
-            let unpaired = expansion.pairing.unmatched_count(&expansion.mesh);
+            let expanded = expand(reduction.mesh, &reduction.history)?;
+            let unpaired = expanded.pairing.unmatched_count(&expanded.mesh);
             let bound = (56 * genus - 12).max(4);
             if unpaired as i64 > bound {
                 return Err(QuadError::Internal(format!(
@@ -171,12 +218,26 @@ pub fn quadrangulate_with(
                      {bound} for genus {genus}"
                 )));
             }
-            flipped_edges = expansion.flipped_edges;
-            expansion_cases = Some(expansion.cases);
-            (Some(expansion.mesh), expansion.pairing)
+            flipped_edges = expanded.flipped_edges;
+            expansion = Some(expanded.cases);
+            (Some(expanded.mesh), expanded.pairing)
         }
         QuadAlgorithm::DiksStanczyk => (None, diks_stanczyk_pairing(mesh)?),
-        QuadAlgorithm::KarpSipser => return karp_sipser_quads(mesh, start),
+        QuadAlgorithm::KarpSipser => {
+            let (pairing, ks) =
+                karp_sipser_perfect(mesh).map_err(|err| augmentation_error(mesh, err))?;
+            return Ok(Paired {
+                triangulation: None,
+                pairing,
+                unpaired: ks.isolated,
+                initial_pairing_seconds: ks.greedy_seconds,
+                augmentation_seconds: ks.augmentation_seconds,
+                augmentation: ks.augment,
+                flipped_edges: 0,
+                expansion: None,
+                karp_sipser: Some(ks),
+            });
+        }
     };
     let initial_pairing_seconds = start.elapsed().as_secs_f64();
     let paired_mesh = triangulation.as_ref().unwrap_or(mesh);
@@ -184,53 +245,16 @@ pub fn quadrangulate_with(
     let augment_start = Instant::now();
     let augmentation = augment_to_perfect(paired_mesh, &mut pairing, options.augment)
         .map_err(|err| augmentation_error(paired_mesh, err))?;
-    let augmentation_seconds = augment_start.elapsed().as_secs_f64();
-    let (quads, diagonals) = quads_of(paired_mesh, &pairing)?;
-    let stats = QuadStats {
-        algorithm: algorithm.name().to_string(),
-        faces,
-        initial_pairing_seconds,
-        paired_percent: 100.0 * (faces - unpaired) as f64 / faces as f64,
-        unpaired,
-        augmentation_seconds,
-        total_seconds: start.elapsed().as_secs_f64(),
-        flipped_edges,
-    };
-    Ok(QuadResult {
-        quads,
-        diagonals,
+    Ok(Paired {
         triangulation,
-        stats,
+        pairing,
+        unpaired,
+        initial_pairing_seconds,
+        augmentation_seconds: augment_start.elapsed().as_secs_f64(),
         augmentation,
-        expansion: expansion_cases,
+        flipped_edges,
+        expansion,
         karp_sipser: None,
-    })
-}
-
-/// KS: the greedy, its repairs and the completion in one call; the Table 4.3 figures from its
-/// own clocks (greedy = initial pairing, repairs and completion = augmentation).
-fn karp_sipser_quads(mesh: &SurfaceMesh, start: Instant) -> Result<QuadResult, QuadError> {
-    let (pairing, ks) = karp_sipser_perfect(mesh).map_err(|err| augmentation_error(mesh, err))?;
-    let (quads, diagonals) = quads_of(mesh, &pairing)?;
-    let faces = mesh.face_count();
-    let stats = QuadStats {
-        algorithm: QuadAlgorithm::KarpSipser.name().to_string(),
-        faces,
-        initial_pairing_seconds: ks.greedy_seconds,
-        paired_percent: 100.0 * (faces - ks.isolated) as f64 / faces as f64,
-        unpaired: ks.isolated,
-        augmentation_seconds: ks.augmentation_seconds,
-        total_seconds: start.elapsed().as_secs_f64(),
-        flipped_edges: 0,
-    };
-    Ok(QuadResult {
-        quads,
-        diagonals,
-        triangulation: None,
-        stats,
-        augmentation: ks.augment,
-        expansion: None,
-        karp_sipser: Some(ks),
     })
 }
 
