@@ -398,8 +398,9 @@ pub(crate) struct Search {
     path: Vec<[u32; 3]>,
     /// Nodes reached by the last search.
     pub(crate) reached: usize,
-    /// The end of the last augmenting path that was not a root of the search.
-    last_end: u32,
+    /// The end of the last augmenting path applied that was not `root(v)` of [`Search::augment`]:
+    /// the unreached free node, or the root of the other tree.
+    pub(crate) last_end: u32,
 }
 
 impl Search {
@@ -612,12 +613,6 @@ impl Search {
             self.absorb(root, m);
             x = self.base_of(p);
         }
-    }
-
-    /// The end of the last augmenting path applied that was not `root(v)` of [`Search::augment`]:
-    /// the unreached free node, or the root of the other tree.
-    pub(crate) fn last_path_end(&self) -> u32 {
-        self.last_end
     }
 
     /// Collects the non-matching edges of `path(v, target)` (with their ends) into `self.path`.

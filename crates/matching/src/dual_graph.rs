@@ -153,6 +153,20 @@ impl DualGraph for CubicGraph {
     }
 }
 
+/// The number of non-loop edge slots of every node slot (0 for removed nodes): each node's free
+/// degree while nothing is paired (the greedy pairings' starting counts).
+pub(crate) fn non_loop_degrees<G: DualGraph + ?Sized>(graph: &G) -> Vec<u8> {
+    (0..graph.node_slots() as u32)
+        .map(|v| {
+            if graph.is_node(v) {
+                graph.adjacent(v).iter().filter(|&&(_, w)| w != v).count() as u8
+            } else {
+                0
+            }
+        })
+        .collect()
+}
+
 /// A [`DualGraph`] whose adjacency is copied into one flat array: per node its three
 /// `(edge, neighbour)` pairs in one 24-byte record. Reading a node's neighbours is then one memory
 /// access instead of the half-edge chain `face_halfedge → next → next → face(twin)` (up to six

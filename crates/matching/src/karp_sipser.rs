@@ -56,7 +56,7 @@
 use std::time::Instant;
 
 use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
-use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
+use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing, non_loop_degrees};
 
 /// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
 /// final completion. Measured (`quad_profile`, nodes reached on seahorse, koala, feline,
@@ -213,19 +213,10 @@ struct KarpSipser<'g, G: ?Sized> {
 impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     fn new(graph: &'g G, repair_budget: usize) -> Self {
         let n = graph.node_slots();
-        let free = (0..n as u32)
-            .map(|v| {
-                if graph.is_node(v) {
-                    graph.adjacent(v).iter().filter(|&&(_, w)| w != v).count() as u8
-                } else {
-                    0
-                }
-            })
-            .collect();
         KarpSipser {
             graph,
             mates: vec![[NONE, NONE]; n],
-            free,
+            free: non_loop_degrees(graph),
             forced: Vec::new(),
             isolated: Vec::new(),
             deferred: Vec::new(),
@@ -437,7 +428,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         match outcome {
             Outcome::Augmented => {
                 self.stats.repaired += 1;
-                let other = search.last_path_end();
+                let other = search.last_end;
                 self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
                 self.now_paired(other);
                 return;

@@ -35,7 +35,7 @@ use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
 
-use crate::dual_graph::{DualGraph, NONE, Pairing};
+use crate::dual_graph::{DualGraph, NONE, Pairing, non_loop_degrees};
 
 /// Priority of a triangle that is in no set (paired, removed, or not a live node).
 const OUT: u8 = 4;
@@ -70,12 +70,7 @@ impl<'g, G: DualGraph + ?Sized> PulliSegal<'g, G> {
         let mut order: Vec<u32> = (0..n as u32).filter(|&v| graph.is_node(v)).collect();
         order.shuffle(&mut ChaCha8Rng::seed_from_u64(seed));
         // In id order (sequential reads of the mesh), not in the shuffled order.
-        let mut free = vec![0u8; n];
-        for v in 0..n as u32 {
-            if graph.is_node(v) {
-                free[v as usize] = graph.adjacent(v).iter().filter(|&&(_, w)| w != v).count() as u8;
-            }
-        }
+        let free = non_loop_degrees(graph);
         let mut this = PulliSegal {
             graph,
             pairing: Pairing::empty(n),
