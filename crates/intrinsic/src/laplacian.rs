@@ -149,9 +149,10 @@ pub fn cotan_laplacian(tri: &IntrinsicTriangulation) -> SparseMatrix {
     laplacian_from_tan_half_sq(tri, &tri.halfedge_tan_half_sq())
 }
 
-/// Flips `tri` to an intrinsic Delaunay triangulation ([`flip_to_delaunay`](crate::flip_to_delaunay)) and returns its cotan
-/// Laplacian ([`cotan_laplacian`]): what libigl's `intrinsic_delaunay_cotmatrix` computes (with
-/// the opposite sign), in one call that reuses the half-angle tangents the flips kept up to date
+/// Flips `tri` to an intrinsic Delaunay triangulation
+/// ([`flip_to_delaunay`](crate::flip_to_delaunay)) and returns its cotan Laplacian
+/// ([`cotan_laplacian`]): what libigl's `intrinsic_delaunay_cotmatrix` computes (with the
+/// opposite sign), in one call that reuses the half-angle tangents the flips kept up to date
 /// instead of computing them again. The result equals `cotan_laplacian` after `flip_to_delaunay`
 /// bit for bit.
 ///

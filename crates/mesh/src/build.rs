@@ -397,7 +397,7 @@ impl<'a> Pairing<'a> {
                 let entered = halfedge_corner[h.twin().idx()];
                 // `entered` is one of the two corners at v in the next face; leave by the other.
                 if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
-                    entered - entered % 3 + (entered % 3 + 2) % 3
+                    prev_corner(entered)
                 } else {
                     next_corner(entered)
                 }
@@ -558,6 +558,12 @@ impl<'a> Pairing<'a> {
 #[inline]
 fn next_corner(c: u32) -> u32 {
     c - c % 3 + (c % 3 + 1) % 3
+}
+
+/// The previous corner in the same face.
+#[inline]
+fn prev_corner(c: u32) -> u32 {
+    c - c % 3 + (c % 3 + 2) % 3
 }
 
 /// Union-find with path halving.
