@@ -277,7 +277,15 @@ fn forest<G: DualGraph + ?Sized>(
     while !pending.is_empty() {
         stats.searches += 1;
         let before = stats.augmentations;
-        search.run(graph, mates, &pending, usize::MAX, keep_going, stats);
+        search.run(
+            graph,
+            mates,
+            &pending,
+            usize::MAX,
+            keep_going,
+            stats,
+            |_| true,
+        );
         stats.reached += search.reached as u64;
         if stats.augmentations == before {
             return Err(no_path(pending[0], search, pending.len(), stats));
@@ -312,7 +320,7 @@ fn local<G: DualGraph + ?Sized>(
                 continue;
             }
             stats.searches += 1;
-            let outcome = search.run(graph, mates, &[r], limit, false, stats);
+            let outcome = search.run(graph, mates, &[r], limit, false, stats, |_| true);
             stats.reached += search.reached as u64;
             match outcome {
                 Outcome::Augmented => {}
@@ -497,6 +505,9 @@ impl Search {
     /// One search from `roots` (all unmatched), reaching at most `budget` nodes. It stops at the
     /// first augmenting path unless `keep_going`: then the two trees of each path found are
     /// retired (their nodes ignored) and the other trees keep growing until the queue is empty.
+    /// Confined to the nodes for which `allowed` holds (and the roots, and the mates of allowed
+    /// nodes): a node outside is never reached through a non-matching edge.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn run<G: DualGraph + ?Sized>(
         &mut self,
         graph: &G,
@@ -505,6 +516,7 @@ impl Search {
         budget: usize,
         keep_going: bool,
         stats: &mut AugmentStats,
+        allowed: impl Fn(u32) -> bool,
     ) -> Outcome {
         self.generation += 1;
         if self.generation >= 1 << (32 - LABEL_BITS) {
@@ -533,6 +545,9 @@ impl Search {
                 }
                 let label = self.label(w);
                 if label == 0 {
+                    if !allowed(w) {
+                        continue;
+                    }
                     let [_, m] = mates[w as usize];
                     if m == NONE {
                         self.augment(graph, mates, v, e, w, false, stats);

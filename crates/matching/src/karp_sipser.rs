@@ -38,20 +38,33 @@
 //! 2. else an Edmonds search from the node ([`crate::augment`], blossoms included) limited to
 //!    the repair budget ([`REPAIR_BUDGET`] reached nodes by default).
 //!
-//! A repair that exceeds both budgets is abandoned and the node *deferred*; after the greedy,
-//! the deferred nodes still unpaired are completed by the Forest strategy of [`crate::augment`],
-//! as any greedy pairing is. So the result is always perfect (or an [`AugmentError`] proves
-//! that the graph has no perfect matching).
+//! A repair that exceeds both budgets is abandoned and the node *deferred*.
+//!
+//! # The completion
+//! The deferred nodes still unpaired after the greedy are few (0–16 on the shared meshes of
+//! 100k+ faces) but usually far apart (they are left where the greedy's front closed up), so a
+//! breadth-first Edmonds search between them reaches much of the graph (45k–65k of the 73k–92k
+//! nodes of a 100k-face run). They are paired two by two by *guided* searches instead, nearest
+//! first (at most [`GUIDED_MAX_HOLES`] left):
+//! 1. plain breadth-first waves from all of them, until two waves meet by a path of odd length:
+//!    a shortest candidate path between two of them (a plain node costs a fraction of an
+//!    Edmonds one: no blossoms, three small arrays);
+//! 2. an augmenting path near that path: a depth-first search steered along it, then an
+//!    Edmonds search confined to the nodes within [`BAND_WIDTH`] of it, then once more with
+//!    twice the width.
+//!
+//! When a guided search fails, the Forest strategy of [`crate::augment`] completes the rest, as
+//! for any greedy pairing. So the result is always perfect (or an [`AugmentError`] proves that
+//! the graph has no perfect matching).
 //!
 //! Figures are those of the paper's Table 4.3: the greedy counts as the initial pairing; every
-//! repair and the final completion count as augmentation (timed separately); "unpaired" is the
-//! number of isolated nodes met.
+//! repair and the completion count as augmentation (timed separately); "unpaired" is the number
+//! of isolated nodes met.
 //!
-//! Complexity: O(n) for the greedy and the repairs (each bounded), plus the completion (see
-//! [`crate::augment`]). On the shared 100k–270k-face meshes the repairs leave 0–16 nodes, but
-//! those are usually far apart, and their completion can reach two thirds of the graph (see
-//! [`REPAIR_BUDGET`]): it is most of the time of KS on seahorse2_100K and koala. On the bricks
-//! of groups A and B the greedy isolates at most one triangle.
+//! Complexity: O(n) for the greedy and the repairs (each bounded); O(n) per guided search
+//! (at most one per pair of deferred nodes); plus the Forest completion when a guided search
+//! fails (see [`crate::augment`]). On the bricks of groups A and B the greedy isolates at most
+//! one triangle.
 
 use std::time::Instant;
 
@@ -59,12 +72,11 @@ use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing, non_loop_degrees};
 
 /// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
-/// final completion. Measured (`quad_profile`, nodes reached on seahorse, koala, feline,
-/// rolling_stage, sketched_brunnen): 1024 reaches 395k in all, 8192 380k, no limit 423k. The
-/// deferred nodes are few (0–16) but usually far apart, so the completion that pairs them reaches
-/// most of the graph (45k–65k of the 73k–92k nodes of a 100k-face run); with no limit there is
-/// nothing to complete, and seahorse, koala and rolling_stage reach 2–7x fewer nodes, but feline
-/// and sketched_brunnen 2x more (some repairs must cross most of the graph).
+/// completion. Measured before the guided completion existed (`quad_profile`, nodes reached on
+/// seahorse, koala, feline, rolling_stage, sketched_brunnen): 1024 reaches 395k in all, 8192
+/// 380k, no limit 423k; with no limit there is nothing to complete, and seahorse, koala and
+/// rolling_stage reach 2–7x fewer nodes, but feline and sketched_brunnen 2x more (some repairs
+/// must cross most of the graph).
 pub const REPAIR_BUDGET: usize = 1024;
 
 /// Nodes the depth-first first try of a repair may visit before the Edmonds search takes over.
@@ -76,6 +88,21 @@ pub const DFS_BUDGET: usize = 64;
 /// Node ids are *local* when 90% of the id distances between neighbours (sampled) are at most
 /// this.
 pub const LOCAL_ID_GAP: u32 = 2048;
+
+/// Width of the band around a shortest path between two deferred nodes in which the guided
+/// completion searches for an augmenting path (then, once, twice as wide). Measured
+/// (`quad_profile`): with 4, the Edmonds search in the band finds the path on seahorse,
+/// koala and rolling_stage the first time, in 1,200–1,900 nodes where the Forest completion
+/// reached 45,000–65,000.
+pub const BAND_WIDTH: u32 = 4;
+
+/// The guided completion runs only while at most this many deferred nodes are left (each
+/// guided search starts waves from all of them; many holes are close together, and the Forest
+/// completion pairs them in one pass).
+pub const GUIDED_MAX_HOLES: usize = 64;
+
+/// The guided depth-first search may visit this many times the nodes of its band.
+pub const GUIDED_DFS_FACTOR: usize = 4;
 
 /// Figures of one [`karp_sipser_perfect`] run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -93,6 +120,11 @@ pub struct KarpSipserStats {
     /// Deferred nodes still unpaired after the greedy, paired two by two by the completion (the
     /// others were reached as the free end of a later repair).
     pub completed: usize,
+    /// Augmenting paths found by the guided completion (each pairs two deferred nodes).
+    pub guided: usize,
+    /// Of these, the paths found by the Edmonds search in the band (the depth-first search
+    /// failed).
+    pub guided_by_edmonds: usize,
     /// Nodes reached by the completion (included in `augment.reached`).
     pub completion_reached: u64,
     /// Whether the greedy started from the nodes in id order (true) or in breadth-first order
@@ -100,6 +132,26 @@ pub struct KarpSipserStats {
     pub id_order: bool,
     /// The searches of the repairs and of the completion (nodes reached, paths, ...).
     pub augment: AugmentStats,
+}
+
+/// Settings of [`karp_sipser_perfect_with`]; the defaults are [`karp_sipser_perfect`]'s.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct KarpSipserOptions {
+    /// Nodes the Edmonds search of a repair may reach (0 skips both repair searches and defers
+    /// every isolated node to the completion).
+    pub repair_budget: usize,
+    /// Whether the deferred nodes are first paired by guided searches (else by the Forest
+    /// strategy alone).
+    pub guided_completion: bool,
+}
+
+impl Default for KarpSipserOptions {
+    fn default() -> Self {
+        KarpSipserOptions {
+            repair_budget: REPAIR_BUDGET,
+            guided_completion: true,
+        }
+    }
 }
 
 /// KS: a perfect pairing of `graph` by the Karp–Sipser greedy with local repairs, completed by
@@ -114,17 +166,16 @@ pub struct KarpSipserStats {
 pub fn karp_sipser_perfect<G: DualGraph + ?Sized>(
     graph: &G,
 ) -> Result<(Pairing, KarpSipserStats), AugmentError> {
-    karp_sipser_perfect_with(graph, REPAIR_BUDGET)
+    karp_sipser_perfect_with(graph, &KarpSipserOptions::default())
 }
 
-/// [`karp_sipser_perfect`] with another repair budget (nodes the Edmonds search of a repair may
-/// reach; 0 skips both searches and defers every isolated node to the completion).
+/// [`karp_sipser_perfect`] with other settings.
 ///
 /// # Errors
 /// See [`karp_sipser_perfect`].
 pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     graph: &G,
-    repair_budget: usize,
+    options: &KarpSipserOptions,
 ) -> Result<(Pairing, KarpSipserStats), AugmentError> {
     let start = Instant::now();
     let nodes = graph.node_count();
@@ -132,8 +183,11 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
         return Err(AugmentError::OddNodeCount { nodes });
     }
     let compact = CompactDual::new(graph);
-    let mut ks = KarpSipser::new(&compact, repair_budget);
+    let mut ks = KarpSipser::new(&compact, options.repair_budget);
     ks.greedy();
+    if options.guided_completion {
+        ks.complete_guided();
+    }
     let mut stats = ks.stats;
     stats.id_order = ks.id_order;
     let deferred: Vec<u32> = ks
@@ -155,7 +209,7 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
             &mut stats.augment,
         )?;
         stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
-        stats.completion_reached = stats.augment.reached - before;
+        stats.completion_reached += stats.augment.reached - before;
     }
     stats.greedy_seconds = start.elapsed().as_secs_f64() - stats.augmentation_seconds;
     let pairing = Pairing {
@@ -163,6 +217,9 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     };
     Ok((pairing, stats))
 }
+
+/// [`KarpSipser::free`] of a paired node.
+const PAIRED: u8 = u8::MAX;
 
 /// Whether neighbouring nodes have close ids: the 90th percentile of `|v - w|` over the
 /// neighbours `w` of every 31st node `v` is at most [`LOCAL_ID_GAP`] (a prime stride: with 64,
@@ -184,7 +241,8 @@ struct KarpSipser<'g, G: ?Sized> {
     graph: &'g G,
     /// `[mate edge, mate node]` per node slot (`NONE` when unpaired), as [`Search`] wants them.
     mates: Vec<[u32; 2]>,
-    /// Free degree per node slot (valid while the node is unpaired).
+    /// Free degree per node slot while the node is unpaired, [`PAIRED`] once it is paired (a
+    /// byte per node: the greedy's "is it free" tests stay in cache).
     free: Vec<u8>,
     /// Unpaired nodes of free degree 1 (checked again when popped).
     forced: Vec<u32>,
@@ -205,9 +263,32 @@ struct KarpSipser<'g, G: ?Sized> {
     /// Generation stamps of the depth-first repairs (nodes visited by the current one).
     dfs_stamp: Vec<u32>,
     dfs_generation: u32,
-    /// The current depth-first path: (even node, next neighbour slot, edge into the odd node
-    /// before it).
-    dfs_stack: Vec<(u32, u8, u32)>,
+    /// The current depth-first path.
+    dfs_stack: Vec<DfsFrame>,
+    /// The nodes labelled by the last [`KarpSipser::meet`] or [`KarpSipser::band`].
+    bfs_queue: Vec<u32>,
+    /// Per node slot, made at the first guided search: in [`KarpSipser::meet`], 1 + the index
+    /// of the source whose wave reached the node, shifted left by one, plus the parity of its
+    /// distance to the source; in [`KarpSipser::band`], 1 inside the band; 0 otherwise (reset
+    /// after each).
+    owner: Vec<u16>,
+    /// Per node slot: the node its wave came from ([`KarpSipser::meet`]; `NONE` at a source),
+    /// or its key inside the band ([`KarpSipser::band`]).
+    parent: Vec<u32>,
+}
+
+/// One even node of the depth-first path of [`KarpSipser::dfs_repair`].
+#[derive(Clone, Copy)]
+struct DfsFrame {
+    node: u32,
+    /// Its neighbour slots in the order to try them.
+    order: [u8; 3],
+    /// How many of `order` to try (guided: those whose mate has a label).
+    len: u8,
+    /// How many of `order` were tried.
+    tried: u8,
+    /// The edge into the odd node before it (`NONE` at the root).
+    edge_in: u32,
 }
 
 impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
@@ -227,13 +308,35 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             dfs_stamp: vec![0; n],
             dfs_generation: 0,
             dfs_stack: Vec::new(),
+            bfs_queue: Vec::new(),
+            owner: Vec::new(),
+            parent: Vec::new(),
             repair_budget,
         }
     }
 
+    /// A copy of the pairing state (for tests comparing two searches from the same state).
+    #[cfg(test)]
+    fn clone_state(&self) -> Self {
+        let mut copy = KarpSipser::new(self.graph, self.repair_budget);
+        copy.mates.clone_from(&self.mates);
+        copy.free.clone_from(&self.free);
+        copy.owner.clone_from(&self.owner);
+        copy.parent.clone_from(&self.parent);
+        copy.bfs_queue.clone_from(&self.bfs_queue);
+        copy
+    }
+
     #[inline]
     fn is_free(&self, v: u32) -> bool {
-        self.mates[v as usize][0] == NONE
+        self.free[v as usize] != PAIRED
+    }
+
+    /// An augmenting path from isolated `u` to free `other` was applied: both are paired now.
+    fn path_applied(&mut self, u: u32, other: u32) {
+        self.free[u as usize] = PAIRED;
+        self.free[other as usize] = PAIRED;
+        self.now_paired(other);
     }
 
     fn greedy(&mut self) {
@@ -284,7 +387,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     fn drain(&mut self) {
         loop {
             if let Some(a) = self.forced.pop() {
-                if !self.is_free(a) || self.free[a as usize] != 1 {
+                if self.free[a as usize] != 1 {
                     continue;
                 }
                 let (e, b) = self
@@ -308,6 +411,8 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     fn join(&mut self, e: u32, a: u32, b: u32) {
         self.mates[a as usize] = [e, b];
         self.mates[b as usize] = [e, a];
+        self.free[a as usize] = PAIRED;
+        self.free[b as usize] = PAIRED;
         self.now_paired(a);
         self.now_paired(b);
     }
@@ -331,22 +436,30 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     }
 
     /// Depth-first alternating search from isolated `u` with lookahead (Pothen and Fan's
-    /// heuristic for bipartite matching), without blossoms, visiting at most [`DFS_BUDGET`]
-    /// nodes; on success augments and returns the free end. Each node is visited at most once,
-    /// so the path found is simple and a valid augmenting path even though blossoms are ignored;
-    /// a path that only a blossom would reveal is left to the Edmonds search.
-    fn dfs_repair(&mut self, u: u32) -> Option<u32> {
+    /// heuristic for bipartite matching), without blossoms, visiting at most `budget` nodes; on
+    /// success augments and returns the free end. Each node is visited at most once, so the path
+    /// found is simple and a valid augmenting path even though blossoms are ignored; a path that
+    /// only a blossom would reveal is left to the Edmonds search. With `guided`, only mates
+    /// inside the band of [`KarpSipser::band`] are entered, in increasing key order (towards
+    /// the far end of the band's path); otherwise every neighbour slot, in slot order.
+    fn dfs_repair(&mut self, u: u32, budget: usize, guided: bool) -> Option<u32> {
         self.dfs_generation += 1;
         let generation = self.dfs_generation;
         self.dfs_stamp[u as usize] = generation;
         self.dfs_stack.clear();
-        // (even node, next neighbour slot, edge into the odd node before it)
-        self.dfs_stack.push((u, 0, NONE));
+        let root = self.frame(u, NONE, guided);
+        self.dfs_stack.push(root);
         let mut visited = 1usize;
         let found = 'search: loop {
-            let &(v, slot, _) = self.dfs_stack.last()?;
+            let &DfsFrame {
+                node: v,
+                order,
+                len,
+                tried,
+                ..
+            } = self.dfs_stack.last()?;
             let adjacent = self.graph.adjacent(v);
-            if slot == 0 {
+            if tried == 0 {
                 // Lookahead: a free neighbour ends the path at once.
                 for (e, w) in adjacent {
                     if w != v && w != u && self.is_free(w) {
@@ -354,12 +467,12 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                     }
                 }
             }
-            if slot == 3 {
+            if tried == len {
                 self.dfs_stack.pop();
                 continue;
             }
-            self.dfs_stack.last_mut().expect("not empty").1 += 1;
-            let (e, w) = adjacent[slot as usize];
+            self.dfs_stack.last_mut().expect("not empty").tried += 1;
+            let (e, w) = adjacent[usize::from(order[usize::from(tried)])];
             if w == v || self.dfs_stamp[w as usize] == generation || self.is_free(w) {
                 continue;
             }
@@ -371,15 +484,17 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             self.dfs_stamp[m as usize] = generation;
             visited += 2;
             self.stats.augment.reached += 2;
-            if visited > DFS_BUDGET {
+            if visited > budget {
                 return None;
             }
-            self.dfs_stack.push((m, 0, e));
+            let frame = self.frame(m, e, guided);
+            self.dfs_stack.push(frame);
         };
         // Augment along the stack: v_k - found, then each v_{i-1} - w_i.
         let (mut e, mut x) = found;
         let end = x;
-        while let Some((v, _, e_in)) = self.dfs_stack.pop() {
+        while let Some(frame) = self.dfs_stack.pop() {
+            let v = frame.node;
             let old_mate = self.mates[v as usize][1];
             self.mates[v as usize] = [e, x];
             self.mates[x as usize] = [e, v];
@@ -387,10 +502,224 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                 break;
             }
             // The odd node before v is its old mate; it pairs with the previous even node.
-            e = e_in;
+            e = frame.edge_in;
             x = old_mate;
         }
         Some(end)
+    }
+
+    /// The depth-first frame of even node `v` entered through `edge_in`.
+    fn frame(&self, v: u32, edge_in: u32, guided: bool) -> DfsFrame {
+        let mut order = [0, 1, 2];
+        let mut len = 3;
+        if guided {
+            let adjacent = self.graph.adjacent(v);
+            let key = |slot: u8| {
+                let w = adjacent[usize::from(slot)].1;
+                if w == v || self.is_free(w) {
+                    return u32::MAX;
+                }
+                let m = self.mates[w as usize][1] as usize;
+                if self.owner[m] == 0 {
+                    u32::MAX
+                } else {
+                    self.parent[m]
+                }
+            };
+            let keys = order.map(key);
+            order.sort_unstable_by_key(|&slot| keys[usize::from(slot)]);
+            len = keys.iter().filter(|&&k| k != u32::MAX).count() as u8;
+        }
+        DfsFrame {
+            node: v,
+            order,
+            len,
+            tried: 0,
+            edge_in,
+        }
+    }
+
+    /// Pairs the deferred nodes still free two by two by guided searches, nearest first: a
+    /// shortest odd path between two of them ([`KarpSipser::meet`]), then an augmenting path
+    /// in a band around it ([`KarpSipser::search_band`]). Stops at the first failure: the
+    /// Forest completion takes the rest.
+    fn complete_guided(&mut self) {
+        let clock = Instant::now();
+        let before = self.stats.augment.reached;
+        let mut holes = std::mem::take(&mut self.deferred);
+        loop {
+            holes.retain(|&v| self.is_free(v));
+            if holes.len() < 2 || holes.len() > GUIDED_MAX_HOLES {
+                break;
+            }
+            if self.owner.is_empty() {
+                self.owner = vec![0; self.graph.node_slots()];
+                self.parent = vec![NONE; self.graph.node_slots()];
+            }
+            let Some(path) = self.meet(&holes) else {
+                break;
+            };
+            let Some(other) = self.search_band(&path) else {
+                break;
+            };
+            self.free[path[0] as usize] = PAIRED;
+            self.free[other as usize] = PAIRED;
+            self.stats.guided += 1;
+        }
+        self.deferred = holes;
+        self.stats.completion_reached = self.stats.augment.reached - before;
+        self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
+    }
+
+    /// An augmenting path from `path[0]` near `path`, a path between two free nodes:
+    /// 1. the band of the nodes within [`BAND_WIDTH`] of the path, each keyed by its distance
+    ///    to the far end ([`KarpSipser::band`]);
+    /// 2. the depth-first search from `path[0]`, trying mates in increasing key order and
+    ///    never leaving the band, at most [`GUIDED_DFS_FACTOR`] times the band's nodes; if it
+    ///    fails (the depth-first search is incomplete where blossoms matter), an Edmonds search
+    ///    confined to the band;
+    /// 3. if both fail, once more in a band twice as wide.
+    ///
+    /// On success augments and returns the other end (any free node, not only the far end of
+    /// `path`).
+    fn search_band(&mut self, path: &[u32]) -> Option<u32> {
+        let root = path[0];
+        let mut found = None;
+        for width in [BAND_WIDTH, 2 * BAND_WIDTH] {
+            let band = self.band(path, width);
+            self.stats.augment.searches += 1;
+            found = self.dfs_repair(root, GUIDED_DFS_FACTOR * band + DFS_BUDGET, true);
+            if found.is_some() {
+                self.stats.augment.augmentations += 1;
+            } else {
+                found = self.edmonds_in_band(root);
+                self.stats.guided_by_edmonds += usize::from(found.is_some());
+            }
+            for &x in &self.bfs_queue {
+                self.owner[x as usize] = 0;
+            }
+            if found.is_some() {
+                break;
+            }
+        }
+        found
+    }
+
+    /// An Edmonds search from free `root` confined to the band of [`KarpSipser::band`]; on
+    /// success augments and returns the free end.
+    fn edmonds_in_band(&mut self, root: u32) -> Option<u32> {
+        let search = self
+            .search
+            .get_or_insert_with(|| Search::new(self.graph.node_slots()));
+        let owner = &self.owner;
+        let outcome = search.run(
+            self.graph,
+            &mut self.mates,
+            &[root],
+            usize::MAX,
+            false,
+            &mut self.stats.augment,
+            |w| owner[w as usize] != 0,
+        );
+        self.stats.augment.reached += search.reached as u64;
+        (outcome == Outcome::Augmented).then_some(search.last_end)
+    }
+
+    /// A shortest odd path between two of the free nodes `sources` (fewer than
+    /// `u16::MAX / 2`): breadth-first waves (plain, not alternating) grow from all of them until
+    /// an edge joins two waves by a path of odd length (an augmenting path has odd length; in a
+    /// bipartite region, two free nodes at even distance cannot be paired with each other), or
+    /// a wave reaches a free node that is not a source at odd distance. The path goes from a
+    /// source to the other end; `None` when the waves fill the graph first. Leaves
+    /// [`KarpSipser::owner`] all 0.
+    fn meet(&mut self, sources: &[u32]) -> Option<Vec<u32>> {
+        let mut queue = std::mem::take(&mut self.bfs_queue);
+        queue.clear();
+        for (i, &s) in sources.iter().enumerate() {
+            self.owner[s as usize] = (i as u16 + 1) << 1;
+            self.parent[s as usize] = NONE;
+            queue.push(s);
+        }
+        let mut meeting = None;
+        let mut head = 0;
+        'search: while let Some(&x) = queue.get(head) {
+            head += 1;
+            let label = self.owner[x as usize];
+            for (_, y) in self.graph.adjacent(x) {
+                let other = self.owner[y as usize];
+                if other == 0 {
+                    if self.is_free(y) {
+                        // A free node that is not a source, at distance d(x) + 1.
+                        if label & 1 == 0 {
+                            self.parent[y as usize] = NONE;
+                            meeting = Some((x, y));
+                            break 'search;
+                        }
+                        continue;
+                    }
+                    self.owner[y as usize] = label ^ 1;
+                    self.parent[y as usize] = x;
+                    queue.push(y);
+                } else if other >> 1 != label >> 1 && other & 1 == label & 1 {
+                    // Two waves, and a path of odd length d(x) + 1 + d(y).
+                    meeting = Some((x, y));
+                    break 'search;
+                }
+            }
+        }
+        self.stats.augment.reached += queue.len() as u64;
+        for &x in &queue {
+            self.owner[x as usize] = 0;
+        }
+        self.bfs_queue = queue;
+        let (x, y) = meeting?;
+        let mut path = Vec::new();
+        for end in [x, y] {
+            let mut z = end;
+            while z != NONE {
+                path.push(z);
+                z = self.parent[z as usize];
+            }
+            if end == x {
+                path.reverse();
+            }
+        }
+        Some(path)
+    }
+
+    /// Marks the nodes within `width` of `path` as the band (`owner` 1; they are the nodes of
+    /// `bfs_queue` afterwards) and keys each (in `parent`) by its distance to the path's far
+    /// end: along the path from the path node it was reached from, plus its depth. Returns the
+    /// number of nodes in the band.
+    fn band(&mut self, path: &[u32], width: u32) -> usize {
+        let mut queue = std::mem::take(&mut self.bfs_queue);
+        queue.clear();
+        let last = path.len() - 1;
+        for (i, &p) in path.iter().enumerate() {
+            self.owner[p as usize] = 1;
+            self.parent[p as usize] = (last - i) as u32;
+            queue.push(p);
+        }
+        let mut head = 0;
+        for _ in 0..width {
+            let layer_end = queue.len();
+            while head < layer_end {
+                let x = queue[head];
+                head += 1;
+                let key = self.parent[x as usize] + 1;
+                for (_, y) in self.graph.adjacent(x) {
+                    if self.owner[y as usize] == 0 {
+                        self.owner[y as usize] = 1;
+                        self.parent[y as usize] = key;
+                        queue.push(y);
+                    }
+                }
+            }
+        }
+        self.stats.augment.reached += queue.len() as u64;
+        let labelled = queue.len();
+        self.bfs_queue = queue;
+        labelled
     }
 
     /// Repairs isolated node `u`: the depth-first search, else a bounded Edmonds search, else
@@ -400,14 +729,14 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         let clock = Instant::now();
         self.stats.isolated += 1;
         if self.repair_budget > 0
-            && let Some(other) = self.dfs_repair(u)
+            && let Some(other) = self.dfs_repair(u, DFS_BUDGET, false)
         {
             self.stats.repaired += 1;
             self.stats.augment.unmatched_before += 1;
             self.stats.augment.searches += 1;
             self.stats.augment.augmentations += 1;
             self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
-            self.now_paired(other);
+            self.path_applied(u, other);
             return;
         }
         let stats = &mut self.stats.augment;
@@ -423,6 +752,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             self.repair_budget,
             false,
             stats,
+            |_| true,
         );
         stats.reached += search.reached as u64;
         match outcome {
@@ -430,7 +760,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                 self.stats.repaired += 1;
                 let other = search.last_end;
                 self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
-                self.now_paired(other);
+                self.path_applied(u, other);
                 return;
             }
             Outcome::OverBudget => stats.abandoned += 1,
@@ -440,5 +770,124 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         self.deferred.push(u);
         self.stats.deferred += 1;
         self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::verify::verify_perfect_matching_on;
+    use surftopo_mesh::generators::icosphere;
+
+    /// A KS state on the dual of `mesh` whose matching is perfect except for two free nodes at
+    /// the ends of an alternating path of `2 * steps + 1` edges (a perfect matching with the
+    /// path's edges switched), with the free degrees kept as after the greedy.
+    fn two_holes<'g, G: DualGraph + ?Sized>(
+        graph: &'g CompactDual<'g, G>,
+        steps: usize,
+    ) -> (KarpSipser<'g, CompactDual<'g, G>>, [u32; 2]) {
+        let (perfect, _) = karp_sipser_perfect(graph).unwrap();
+        let mut ks = KarpSipser::new(graph, 0);
+        for v in 0..graph.node_slots() as u32 {
+            let e = perfect.mate[v as usize];
+            ks.mates[v as usize] = [e, graph.opposite(e, v)];
+            ks.free[v as usize] = PAIRED;
+        }
+        // Hop distances from node 0, so that the walk can head away from it.
+        let mut distance = vec![u32::MAX; graph.node_slots()];
+        let mut queue = std::collections::VecDeque::from([0u32]);
+        distance[0] = 0;
+        while let Some(x) = queue.pop_front() {
+            for (_, y) in graph.adjacent(x) {
+                if distance[y as usize] == u32::MAX {
+                    distance[y as usize] = distance[x as usize] + 1;
+                    queue.push_back(y);
+                }
+            }
+        }
+        // Walk p0 -M- p1 - p2 -M- p3 ... outwards on unvisited nodes, switching the edges.
+        let mut path = vec![0u32, ks.mates[0][1]];
+        while path.len() < 2 * steps + 2 {
+            let last = *path.last().unwrap();
+            let Some((e, w)) = graph
+                .adjacent(last)
+                .into_iter()
+                .filter(|&(_, w)| !path.contains(&w) && !path.contains(&ks.mates[w as usize][1]))
+                .max_by_key(|&(_, w)| distance[ks.mates[w as usize][1] as usize])
+            else {
+                break;
+            };
+            let m = ks.mates[w as usize][1];
+            path.extend([w, m]);
+            ks.mates[last as usize] = [e, w];
+            ks.mates[w as usize] = [e, last];
+        }
+        let ends = [path[0], *path.last().unwrap()];
+        for end in ends {
+            ks.mates[end as usize] = [NONE, NONE];
+            ks.free[end as usize] = 0;
+        }
+        assert_eq!(path.len(), 2 * steps + 2, "the walk was not stuck");
+        (ks, ends)
+    }
+
+    fn assert_perfect<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) {
+        let edges: Vec<[u32; 2]> = (0..graph.edge_slots() as u32)
+            .map(|e| graph.endpoints(e))
+            .collect();
+        let mut matched = vec![false; edges.len()];
+        for &[e, _] in mates {
+            matched[e as usize] = true;
+        }
+        verify_perfect_matching_on(graph.node_count() as u32, &edges, &matched).unwrap();
+    }
+
+    #[test]
+    fn band_searches_pair_two_distant_holes() {
+        let mesh = icosphere(4).mesh;
+        let graph = CompactDual::new(&mesh);
+        for steps in [3, 12, 30] {
+            // Waves meet along an odd path between the two holes; its band contains it.
+            let (mut ks, ends) = two_holes(&graph, steps);
+            ks.owner = vec![0; graph.node_slots()];
+            ks.parent = vec![NONE; graph.node_slots()];
+            let path = ks.meet(&ends).expect("a path");
+            assert!(ks.owner.iter().all(|&o| o == 0), "meet resets its labels");
+            assert!(path.len().is_multiple_of(2), "odd length");
+            assert_eq!(
+                [path[0], path[path.len() - 1]].map(|v| ends.contains(&v)),
+                [true, true]
+            );
+            assert!(
+                path.windows(2)
+                    .all(|p| { graph.adjacent(p[0]).iter().any(|&(_, w)| w == p[1]) })
+            );
+            let band = ks.band(&path, BAND_WIDTH);
+            assert!(band >= path.len());
+            // Confined to a band without the root's neighbours, Edmonds finds nothing.
+            let mut confined = ks.clone_state();
+            confined.owner.fill(0);
+            assert_eq!(confined.edmonds_in_band(path[0]), None);
+            assert_eq!(confined.mates, ks.mates);
+            // Each band search alone pairs the holes.
+            let mut by_edmonds = ks.clone_state();
+            let other = by_edmonds
+                .edmonds_in_band(path[0])
+                .expect("Edmonds in the band");
+            assert!(ends.contains(&other));
+            assert_perfect(&graph, &by_edmonds.mates);
+            let other = ks
+                .dfs_repair(path[0], usize::MAX, true)
+                .expect("depth-first in the band");
+            assert!(ends.contains(&other));
+            assert_perfect(&graph, &ks.mates);
+            // And the whole guided completion.
+            let (mut ks, ends) = two_holes(&graph, steps);
+            ks.deferred = ends.to_vec();
+            ks.complete_guided();
+            assert_eq!(ks.stats.guided, 1);
+            assert!(ks.deferred.is_empty());
+            assert_perfect(&graph, &ks.mates);
+        }
     }
 }

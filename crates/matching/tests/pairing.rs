@@ -5,9 +5,9 @@ use petgraph::algo::maximum_matching;
 use petgraph::graph::UnGraph;
 use surftopo_matching::generators::{random_bridgeless_cubic, random_cubic_pairing};
 use surftopo_matching::{
-    AugmentError, AugmentStrategy, CubicGraph, DualGraph, Pairing, PairingError,
-    augment_to_perfect, karp_sipser_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
-    verify_perfect_matching, verify_perfect_matching_on,
+    AugmentError, AugmentStrategy, CubicGraph, DualGraph, KarpSipserOptions, KarpSipserStats,
+    Pairing, PairingError, augment_to_perfect, karp_sipser_perfect, karp_sipser_perfect_with,
+    pulli_segal, simple_greedy, verify_perfect_matching, verify_perfect_matching_on,
 };
 use surftopo_mesh::generators::{icosphere, torus};
 
@@ -342,23 +342,51 @@ fn karp_sipser_gives_perfect_matchings() {
     for graph in graphs() {
         let n = graph.node_count() as usize;
         // 0: every isolated node goes to the completion; 6: a few repairs fit; default.
-        for budget in [0, 6, surftopo_matching::karp_sipser::REPAIR_BUDGET] {
-            let (pairing, stats) = karp_sipser_perfect_with(&graph, budget).unwrap();
+        for options in ks_options([0, 6, surftopo_matching::karp_sipser::REPAIR_BUDGET]) {
+            let (pairing, stats) = karp_sipser_perfect_with(&graph, &options).unwrap();
             assert_eq!(check_matching(n, graph.edges(), pairing.mates()), 0);
             verify_perfect_matching(&graph, &pairing.edge_flags(graph.edge_count() as usize))
                 .unwrap();
-            assert_eq!(stats.repaired + stats.deferred, stats.isolated);
-            assert!(stats.completed.is_multiple_of(2) && stats.completed <= stats.deferred);
-            assert_eq!(
-                stats.augment.augmentations,
-                stats.repaired + stats.completed / 2
-            );
-            if budget == 0 {
-                assert_eq!(stats.repaired, 0);
-            }
+            check_ks_stats(&stats, &options);
             // Deterministic.
-            assert_eq!(karp_sipser_perfect_with(&graph, budget).unwrap().0, pairing);
+            assert_eq!(
+                karp_sipser_perfect_with(&graph, &options).unwrap().0,
+                pairing
+            );
         }
+    }
+}
+
+/// Every repair budget, with and without the guided completion.
+fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
+    budgets
+        .into_iter()
+        .flat_map(|repair_budget| {
+            [true, false].map(|guided_completion| KarpSipserOptions {
+                repair_budget,
+                guided_completion,
+            })
+        })
+        .collect()
+}
+
+/// The identities between the KS counts: every isolated node is repaired or deferred; every
+/// deferred one is paired by a later repair, a guided path (two per path) or the Forest
+/// completion (two per path); one augmentation per repair and per path.
+fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
+    assert_eq!(stats.repaired + stats.deferred, stats.isolated);
+    assert!(stats.completed.is_multiple_of(2));
+    assert!(2 * stats.guided + stats.completed <= stats.deferred);
+    assert!(stats.guided_by_edmonds <= stats.guided);
+    assert_eq!(
+        stats.augment.augmentations,
+        stats.repaired + stats.guided + stats.completed / 2
+    );
+    if options.repair_budget == 0 {
+        assert_eq!(stats.repaired, 0);
+    }
+    if !options.guided_completion {
+        assert_eq!(stats.guided, 0);
     }
 }
 
@@ -373,9 +401,14 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
     let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
     let mut seen = [false; 2];
     let mut deferred_and_repaired = false;
+    let (mut guided, mut by_edmonds, mut completed) = (0, 0, 0);
     for mesh in [&grid.mesh, &icosphere(5).mesh, &shuffled.mesh] {
-        for budget in [0, 4, 64] {
-            let (pairing, stats) = karp_sipser_perfect_with(mesh, budget).unwrap();
+        for options in ks_options([0, 4, 64]) {
+            let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
+            check_ks_stats(&stats, &options);
+            guided += stats.guided;
+            by_edmonds += stats.guided_by_edmonds;
+            completed += stats.completed;
             let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
                 .map(|e| DualGraph::endpoints(mesh, e))
                 .collect();
@@ -389,6 +422,11 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
     }
     assert_eq!(seen, [true, true], "both start orders were used");
     assert!(deferred_and_repaired, "some run both repaired and deferred");
+    assert!(
+        guided > 0 && completed > 0,
+        "guided paths ({guided}, {by_edmonds} of them by Edmonds searches) and Forest \
+         completions ({completed}) both occur"
+    );
     // A grid written row by row has local ids; shuffled, it has not.
     let (_, in_order) = karp_sipser_perfect(&grid.mesh).unwrap();
     let (_, out_of_order) = karp_sipser_perfect(&shuffled.mesh).unwrap();
@@ -398,8 +436,8 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
 #[test]
 fn karp_sipser_reports_a_missing_perfect_matching() {
     let graph = no_perfect_matching();
-    for budget in [0, 1000] {
-        let err = karp_sipser_perfect_with(&graph, budget).unwrap_err();
+    for options in ks_options([0, 6, 1000]) {
+        let err = karp_sipser_perfect_with(&graph, &options).unwrap_err();
         assert!(
             matches!(err, AugmentError::NoAugmentingPath { .. }),
             "{err}"

@@ -109,12 +109,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (t, (_, ks)) = time(repeat, || karp_sipser_perfect(mesh).unwrap());
     println!(
         "ks (perfect)          {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} \
-         repaired {} deferred {} completed {} reached {} (completion {}) id order {}",
+         repaired {} deferred {} guided {} (by Edmonds {}) completed {} reached {} (completion {}) id order {}",
         ks.greedy_seconds,
         ks.augmentation_seconds,
         ks.isolated,
         ks.repaired,
         ks.deferred,
+        ks.guided,
+        ks.guided_by_edmonds,
         ks.completed,
         ks.augment.reached,
         ks.completion_reached,

@@ -136,17 +136,17 @@ pub fn check_result(
     assert!(s.total_seconds >= s.initial_pairing_seconds + s.augmentation_seconds - 1e-9);
     if let Some(ks) = &result.karp_sipser {
         // KS: every isolated triangle is repaired (one augmenting path to a free triangle each)
-        // or deferred; the completion pairs the deferred ones still unpaired two by two.
+        // or deferred; the guided completion and then the Forest completion pair the deferred
+        // ones still unpaired two by two.
         assert!(matches!(algorithm, QuadAlgorithm::KarpSipser), "{name}");
         assert_eq!(ks.isolated, s.unpaired, "{name}");
         assert_eq!(ks.repaired + ks.deferred, ks.isolated, "{name}");
-        assert!(
-            ks.completed.is_multiple_of(2) && ks.completed <= ks.deferred,
-            "{name}"
-        );
+        assert!(ks.completed.is_multiple_of(2), "{name}");
+        assert!(2 * ks.guided + ks.completed <= ks.deferred, "{name}");
+        assert!(ks.guided_by_edmonds <= ks.guided, "{name}");
         assert_eq!(
             result.augmentation.augmentations,
-            ks.repaired + ks.completed / 2,
+            ks.repaired + ks.guided + ks.completed / 2,
             "{name}"
         );
     } else {
