@@ -265,15 +265,19 @@ struct KarpSipser<'g, G: ?Sized> {
     dfs_generation: u32,
     /// The current depth-first path.
     dfs_stack: Vec<DfsFrame>,
-    /// The nodes labelled by the last [`KarpSipser::meet`] or [`KarpSipser::band`].
+    /// The nodes labelled by [`KarpSipser::guided_waves`].
     bfs_queue: Vec<u32>,
-    /// Per node slot, made at the first guided search: in [`KarpSipser::meet`], 1 + the index
-    /// of the source whose wave reached the node, shifted left by one, plus the parity of its
-    /// distance to the source; in [`KarpSipser::band`], 1 inside the band; 0 otherwise (reset
-    /// after each).
+    /// Per node slot, made at the first guided search: `[generation, key]`, in the band of
+    /// [`KarpSipser::band`] when the generation is `band_generation`.
+    band: Vec<[u32; 2]>,
+    band_generation: u32,
+    /// The nodes of the current band.
+    band_queue: Vec<u32>,
+    /// Per node slot, made at the first guided search: 1 + the index of the source whose wave
+    /// reached the node ([`KarpSipser::guided_waves`]), shifted left by one, plus the parity of
+    /// its distance to the source; 0 when none.
     owner: Vec<u16>,
-    /// Per node slot: the node its wave came from ([`KarpSipser::meet`]; `NONE` at a source),
-    /// or its key inside the band ([`KarpSipser::band`]).
+    /// Per node slot: the node its wave came from (`NONE` at a source).
     parent: Vec<u32>,
 }
 
@@ -311,6 +315,9 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             bfs_queue: Vec::new(),
             owner: Vec::new(),
             parent: Vec::new(),
+            band: Vec::new(),
+            band_generation: 0,
+            band_queue: Vec::new(),
             repair_budget,
         }
     }
@@ -324,6 +331,8 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         copy.owner.clone_from(&self.owner);
         copy.parent.clone_from(&self.parent);
         copy.bfs_queue.clone_from(&self.bfs_queue);
+        copy.band.clone_from(&self.band);
+        copy.band_generation = self.band_generation;
         copy
     }
 
@@ -519,11 +528,9 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                 if w == v || self.is_free(w) {
                     return u32::MAX;
                 }
-                let m = self.mates[w as usize][1] as usize;
-                if self.owner[m] == 0 {
-                    u32::MAX
-                } else {
-                    self.parent[m]
+                match self.band[self.mates[w as usize][1] as usize] {
+                    [g, key] if g == self.band_generation => key,
+                    _ => u32::MAX,
                 }
             };
             let keys = order.map(key);
@@ -539,32 +546,22 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         }
     }
 
-    /// Pairs the deferred nodes still free two by two by guided searches, nearest first: a
-    /// shortest odd path between two of them ([`KarpSipser::meet`]), then an augmenting path
-    /// in a band around it ([`KarpSipser::search_band`]). Stops at the first failure: the
+    /// Pairs the deferred nodes still free two by two by guided searches
+    /// ([`KarpSipser::guided_waves`]), when there are at most [`GUIDED_MAX_HOLES`] of them. The
     /// Forest completion takes the rest.
     fn complete_guided(&mut self) {
         let clock = Instant::now();
         let before = self.stats.augment.reached;
         let mut holes = std::mem::take(&mut self.deferred);
-        loop {
-            holes.retain(|&v| self.is_free(v));
-            if holes.len() < 2 || holes.len() > GUIDED_MAX_HOLES {
-                break;
-            }
+        holes.retain(|&v| self.is_free(v));
+        if (2..=GUIDED_MAX_HOLES).contains(&holes.len()) {
             if self.owner.is_empty() {
                 self.owner = vec![0; self.graph.node_slots()];
                 self.parent = vec![NONE; self.graph.node_slots()];
+                self.band = vec![[0, 0]; self.graph.node_slots()];
             }
-            let Some(path) = self.meet(&holes) else {
-                break;
-            };
-            let Some(other) = self.search_band(&path) else {
-                break;
-            };
-            self.free[path[0] as usize] = PAIRED;
-            self.free[other as usize] = PAIRED;
-            self.stats.guided += 1;
+            self.guided_waves(&holes);
+            holes.retain(|&v| self.is_free(v));
         }
         self.deferred = holes;
         self.stats.completion_reached = self.stats.augment.reached - before;
@@ -595,9 +592,6 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                 found = self.edmonds_in_band(root);
                 self.stats.guided_by_edmonds += usize::from(found.is_some());
             }
-            for &x in &self.bfs_queue {
-                self.owner[x as usize] = 0;
-            }
             if found.is_some() {
                 break;
             }
@@ -611,7 +605,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         let search = self
             .search
             .get_or_insert_with(|| Search::new(self.graph.node_slots()));
-        let owner = &self.owner;
+        let (band, generation) = (&self.band, self.band_generation);
         let outcome = search.run(
             self.graph,
             &mut self.mates,
@@ -619,20 +613,22 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             usize::MAX,
             false,
             &mut self.stats.augment,
-            |w| owner[w as usize] != 0,
+            |w| band[w as usize][0] == generation,
         );
         self.stats.augment.reached += search.reached as u64;
         (outcome == Outcome::Augmented).then_some(search.last_end)
     }
 
-    /// A shortest odd path between two of the free nodes `sources` (fewer than
-    /// `u16::MAX / 2`): breadth-first waves (plain, not alternating) grow from all of them until
-    /// an edge joins two waves by a path of odd length (an augmenting path has odd length; in a
-    /// bipartite region, two free nodes at even distance cannot be paired with each other), or
-    /// a wave reaches a free node that is not a source at odd distance. The path goes from a
-    /// source to the other end; `None` when the waves fill the graph first. Leaves
+    /// Pairs up the free nodes `sources` (fewer than `u16::MAX / 2`), nearest pairs first:
+    /// breadth-first waves (plain, not alternating) grow from all of them; when an edge joins
+    /// the waves of two sources by a path of odd length (an augmenting path has odd length; in
+    /// a bipartite region, two free nodes at even distance cannot be paired with each other),
+    /// or a wave reaches a free node that is not a source at odd distance, an augmenting path
+    /// is searched near the path through it ([`KarpSipser::search_band`]). The waves of paired
+    /// sources stop, and the others may cross the nodes they labelled. Ends at the first failed
+    /// search, when fewer than two sources are left, or when the waves fill the graph. Leaves
     /// [`KarpSipser::owner`] all 0.
-    fn meet(&mut self, sources: &[u32]) -> Option<Vec<u32>> {
+    fn guided_waves(&mut self, sources: &[u32]) {
         let mut queue = std::mem::take(&mut self.bfs_queue);
         queue.clear();
         for (i, &s) in sources.iter().enumerate() {
@@ -640,31 +636,50 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             self.parent[s as usize] = NONE;
             queue.push(s);
         }
-        let mut meeting = None;
+        // Per source (`owner >> 1`): still free.
+        let mut waiting = vec![true; sources.len() + 1];
+        let mut left = sources.len();
         let mut head = 0;
-        'search: while let Some(&x) = queue.get(head) {
+        'search: while left >= 2
+            && let Some(&x) = queue.get(head)
+        {
             head += 1;
             let label = self.owner[x as usize];
+            if !waiting[usize::from(label >> 1)] {
+                continue;
+            }
             for (_, y) in self.graph.adjacent(x) {
                 let other = self.owner[y as usize];
-                if other == 0 {
-                    if self.is_free(y) {
-                        // A free node that is not a source, at distance d(x) + 1.
-                        if label & 1 == 0 {
-                            self.parent[y as usize] = NONE;
-                            meeting = Some((x, y));
-                            break 'search;
-                        }
-                        continue;
-                    }
+                let meeting = if other == 0 && self.is_free(y) {
+                    // A free node that is not a source, at distance d(x) + 1.
+                    self.parent[y as usize] = NONE;
+                    label & 1 == 0
+                } else if other == 0 || !waiting[usize::from(other >> 1)] {
                     self.owner[y as usize] = label ^ 1;
                     self.parent[y as usize] = x;
                     queue.push(y);
-                } else if other >> 1 != label >> 1 && other & 1 == label & 1 {
+                    false
+                } else {
                     // Two waves, and a path of odd length d(x) + 1 + d(y).
-                    meeting = Some((x, y));
-                    break 'search;
+                    other >> 1 != label >> 1 && other & 1 == label & 1
+                };
+                if !meeting {
+                    continue;
                 }
+                let path = self.path_between(x, y);
+                let Some(end) = self.search_band(&path) else {
+                    break 'search;
+                };
+                self.stats.guided += 1;
+                for v in [path[0], end] {
+                    self.free[v as usize] = PAIRED;
+                    let source = usize::from(self.owner[v as usize] >> 1);
+                    if source > 0 && waiting[source] {
+                        waiting[source] = false;
+                        left -= 1;
+                    }
+                }
+                break;
             }
         }
         self.stats.augment.reached += queue.len() as u64;
@@ -672,7 +687,11 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             self.owner[x as usize] = 0;
         }
         self.bfs_queue = queue;
-        let (x, y) = meeting?;
+    }
+
+    /// The path from the source of `x`'s wave to `x`, then from `y` to the source of its wave
+    /// (or to `y` itself when its parent is `NONE`), by [`KarpSipser::parent`].
+    fn path_between(&self, x: u32, y: u32) -> Vec<u32> {
         let mut path = Vec::new();
         for end in [x, y] {
             let mut z = end;
@@ -684,20 +703,20 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
                 path.reverse();
             }
         }
-        Some(path)
+        path
     }
 
-    /// Marks the nodes within `width` of `path` as the band (`owner` 1; they are the nodes of
-    /// `bfs_queue` afterwards) and keys each (in `parent`) by its distance to the path's far
-    /// end: along the path from the path node it was reached from, plus its depth. Returns the
-    /// number of nodes in the band.
+    /// Marks the nodes within `width` of `path` as the band (a new [`KarpSipser::band`]
+    /// generation) and keys each by its distance to the path's far end: along the path from the
+    /// path node it was reached from, plus its depth. Returns the number of nodes in the band.
     fn band(&mut self, path: &[u32], width: u32) -> usize {
-        let mut queue = std::mem::take(&mut self.bfs_queue);
+        self.band_generation += 1;
+        let generation = self.band_generation;
+        let mut queue = std::mem::take(&mut self.band_queue);
         queue.clear();
         let last = path.len() - 1;
         for (i, &p) in path.iter().enumerate() {
-            self.owner[p as usize] = 1;
-            self.parent[p as usize] = (last - i) as u32;
+            self.band[p as usize] = [generation, (last - i) as u32];
             queue.push(p);
         }
         let mut head = 0;
@@ -706,19 +725,18 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             while head < layer_end {
                 let x = queue[head];
                 head += 1;
-                let key = self.parent[x as usize] + 1;
+                let key = self.band[x as usize][1] + 1;
                 for (_, y) in self.graph.adjacent(x) {
-                    if self.owner[y as usize] == 0 {
-                        self.owner[y as usize] = 1;
-                        self.parent[y as usize] = key;
+                    if self.band[y as usize][0] != generation {
+                        self.band[y as usize] = [generation, key];
                         queue.push(y);
                     }
                 }
             }
         }
-        self.stats.augment.reached += queue.len() as u64;
         let labelled = queue.len();
-        self.bfs_queue = queue;
+        self.stats.augment.reached += labelled as u64;
+        self.band_queue = queue;
         labelled
     }
 
@@ -779,13 +797,13 @@ mod tests {
     use crate::verify::verify_perfect_matching_on;
     use surftopo_mesh::generators::icosphere;
 
-    /// A KS state on the dual of `mesh` whose matching is perfect except for two free nodes at
-    /// the ends of an alternating path of `2 * steps + 1` edges (a perfect matching with the
-    /// path's edges switched), with the free degrees kept as after the greedy.
+    /// A KS state on `graph` whose matching is perfect except for two free nodes at the ends of
+    /// an alternating path of `2 * steps + 1` edges (a perfect matching with the path's edges
+    /// switched), with the free degrees as after the greedy; and that path.
     fn two_holes<'g, G: DualGraph + ?Sized>(
         graph: &'g CompactDual<'g, G>,
         steps: usize,
-    ) -> (KarpSipser<'g, CompactDual<'g, G>>, [u32; 2]) {
+    ) -> (KarpSipser<'g, CompactDual<'g, G>>, Vec<u32>) {
         let (perfect, _) = karp_sipser_perfect(graph).unwrap();
         let mut ks = KarpSipser::new(graph, 0);
         for v in 0..graph.node_slots() as u32 {
@@ -828,7 +846,7 @@ mod tests {
             ks.free[end as usize] = 0;
         }
         assert_eq!(path.len(), 2 * steps + 2, "the walk was not stuck");
-        (ks, ends)
+        (ks, path)
     }
 
     fn assert_perfect<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) {
@@ -847,46 +865,36 @@ mod tests {
         let mesh = icosphere(4).mesh;
         let graph = CompactDual::new(&mesh);
         for steps in [3, 12, 30] {
-            // Waves meet along an odd path between the two holes; its band contains it.
-            let (mut ks, ends) = two_holes(&graph, steps);
-            ks.owner = vec![0; graph.node_slots()];
-            ks.parent = vec![NONE; graph.node_slots()];
-            let path = ks.meet(&ends).expect("a path");
-            assert!(ks.owner.iter().all(|&o| o == 0), "meet resets its labels");
-            assert!(path.len().is_multiple_of(2), "odd length");
-            assert_eq!(
-                [path[0], path[path.len() - 1]].map(|v| ends.contains(&v)),
-                [true, true]
-            );
-            assert!(
-                path.windows(2)
-                    .all(|p| { graph.adjacent(p[0]).iter().any(|&(_, w)| w == p[1]) })
-            );
+            let (mut ks, path) = two_holes(&graph, steps);
+            let root = path[0];
+            let ends = [root, path[path.len() - 1]];
+            ks.band = vec![[0, 0]; graph.node_slots()];
             let band = ks.band(&path, BAND_WIDTH);
             assert!(band >= path.len());
-            // Confined to a band without the root's neighbours, Edmonds finds nothing.
+            // Confined to an empty band, Edmonds finds nothing.
             let mut confined = ks.clone_state();
-            confined.owner.fill(0);
-            assert_eq!(confined.edmonds_in_band(path[0]), None);
+            confined.band_generation += 1;
+            assert_eq!(confined.edmonds_in_band(root), None);
             assert_eq!(confined.mates, ks.mates);
             // Each band search alone pairs the holes.
             let mut by_edmonds = ks.clone_state();
             let other = by_edmonds
-                .edmonds_in_band(path[0])
+                .edmonds_in_band(root)
                 .expect("Edmonds in the band");
-            assert!(ends.contains(&other));
+            assert_eq!(other, ends[1]);
             assert_perfect(&graph, &by_edmonds.mates);
             let other = ks
-                .dfs_repair(path[0], usize::MAX, true)
+                .dfs_repair(root, usize::MAX, true)
                 .expect("depth-first in the band");
-            assert!(ends.contains(&other));
+            assert_eq!(other, ends[1]);
             assert_perfect(&graph, &ks.mates);
-            // And the whole guided completion.
-            let (mut ks, ends) = two_holes(&graph, steps);
+            // And the whole guided completion, which leaves its wave labels cleared.
+            let (mut ks, _) = two_holes(&graph, steps);
             ks.deferred = ends.to_vec();
             ks.complete_guided();
             assert_eq!(ks.stats.guided, 1);
             assert!(ks.deferred.is_empty());
+            assert!(ks.owner.iter().all(|&o| o == 0));
             assert_perfect(&graph, &ks.mates);
         }
     }
