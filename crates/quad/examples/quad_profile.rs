@@ -7,12 +7,14 @@
 //! cargo run --release -p surftopo-quad --example quad_profile -- MESH_FILE|box:C:H:T [REPEAT]
 //! ```
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
+//! KS runs with its guided completion and with the Forest completion alone, alternately.
 
 use std::error::Error;
 use std::time::Instant;
 
 use surftopo_matching::{
-    AugmentStrategy, DualGraph, augment_to_perfect, karp_sipser_perfect, pulli_segal, simple_greedy,
+    AugmentStrategy, DualGraph, KarpSipserOptions, augment_to_perfect, karp_sipser_perfect_with,
+    pulli_segal, simple_greedy,
 };
 use surftopo_mesh::generators::Surface;
 
@@ -106,22 +108,41 @@ fn main() -> Result<(), Box<dyn Error>> {
         "ps augment global     {t:.5}  reached {} searches {}",
         stats.reached, stats.searches
     );
-    let (t, (_, ks)) = time(repeat, || karp_sipser_perfect(mesh).unwrap());
-    println!(
-        "ks (perfect)          {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} \
-         repaired {} deferred {} guided {} (by Edmonds {}) completed {} reached {} (completion {}) id order {}",
-        ks.greedy_seconds,
-        ks.augmentation_seconds,
-        ks.isolated,
-        ks.repaired,
-        ks.deferred,
-        ks.guided,
-        ks.guided_by_edmonds,
-        ks.completed,
-        ks.augment.reached,
-        ks.completion_reached,
-        ks.id_order
-    );
+    // KS with its guided completion and with the Forest completion alone, alternately.
+    let mut ks_runs = [(0.0, None), (0.0, None)];
+    for _ in 0..repeat {
+        for (guided, (total, last)) in [true, false].into_iter().zip(&mut ks_runs) {
+            let options = KarpSipserOptions {
+                guided_completion: guided,
+                ..KarpSipserOptions::default()
+            };
+            let (t, (_, ks)) = time(1, || karp_sipser_perfect_with(mesh, &options).unwrap());
+            *total += t / repeat as f64;
+            *last = Some(ks);
+        }
+    }
+    for ((t, ks), name) in ks_runs
+        .into_iter()
+        .zip(["ks (perfect)", "ks (Forest only)"])
+    {
+        let ks = ks.expect("repeat >= 1");
+        println!(
+            "{name:21} {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} repaired {} \
+             deferred {} guided {} (by Edmonds {}) completed {} reached {} (completion {}) id \
+             order {}",
+            ks.greedy_seconds,
+            ks.augmentation_seconds,
+            ks.isolated,
+            ks.repaired,
+            ks.deferred,
+            ks.guided,
+            ks.guided_by_edmonds,
+            ks.completed,
+            ks.augment.reached,
+            ks.completion_reached,
+            ks.id_order
+        );
+    }
     let (t, _) = time(repeat, || mesh.clone());
     println!("mesh clone            {t:.5}");
     let (t, reduction) = time(repeat, || {
