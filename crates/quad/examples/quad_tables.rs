@@ -7,12 +7,15 @@
 //! Each algorithm runs with the default augmenting search (`forest`), with the budgeted
 //! single-root one (`local`) and, where affordable, with the paper's global one. With `--lemon BIN` (build it with `make -C crates/quad/peer`), every dual
 //! graph is also exported and matched by LEMON's `MaxMatching`, and the ratio of the fastest
-//! surftopo total to LEMON's `run()` time is recorded.
+//! surftopo pairing (and total) to LEMON's `run()` time is recorded. With `--side-by-side` (and
+//! `--lemon`), only KS and LEMON run, in alternate rounds (`--runs` of them), with the ratio of
+//! each round.
 //!
 //! ```text
 //! SURFTOPO_MESHES=/work/shared/meshes cargo run --release -p surftopo-quad --example quad_tables -- \
 //!     [--max-triangles N] [--min-triangles N] [--runs R] [--no-shared] [--no-groups] [--ds-max-triangles N] \
-//!     [--global-max-work W] [--lemon crates/quad/peer/lemon_matching] [--out results/quad]
+//!     [--global-max-work W] [--lemon crates/quad/peer/lemon_matching] [--side-by-side] \
+//!     [--out results/quad]
 //! ```
 //! Writes `<out>.jsonl` (one record per input and algorithm) and `<out>.md`.
 
@@ -52,6 +55,7 @@ struct Args {
     ds_max_triangles: u64,
     global_max_work: f64,
     lemon: Option<PathBuf>,
+    side_by_side: bool,
     out: PathBuf,
 }
 
@@ -65,6 +69,7 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
         ds_max_triangles: 300_000,
         global_max_work: 3e9,
         lemon: None,
+        side_by_side: false,
         out: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../results/quad")),
     };
     let mut it = std::env::args().skip(1);
@@ -79,6 +84,7 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             "--ds-max-triangles" => args.ds_max_triangles = value()?.parse()?,
             "--global-max-work" => args.global_max_work = value()?.parse()?,
             "--lemon" => args.lemon = Some(PathBuf::from(value()?)),
+            "--side-by-side" => args.side_by_side = true,
             "--out" => args.out = PathBuf::from(value()?),
             other => return Err(format!("unknown argument {other}").into()),
         }
@@ -119,6 +125,10 @@ struct Record {
     /// LEMON only: seconds to build its graph (not in `total_seconds`).
     #[serde(skip_serializing_if = "Option::is_none")]
     lemon_build_seconds: Option<f64>,
+    /// `--side-by-side`, KS only: per round, KS's pairing seconds over LEMON's `run()` seconds
+    /// measured right after it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    round_ratios: Option<Vec<f64>>,
 }
 
 /// Runs `algorithm` (`runs` seeds for SG and PS): counts are averaged over the runs, times are the
@@ -189,31 +199,49 @@ fn cpu_ns() -> u64 {
         .unwrap_or(0)
 }
 
-/// Exports the dual graph and times LEMON's MaxMatching on it.
+/// Exports the dual graph and times LEMON's MaxMatching on it (`runs` times in one process).
 fn lemon(
     binary: &PathBuf,
     surface: &Surface,
     base: &Record,
     runs: u64,
 ) -> Result<Record, Box<dyn Error>> {
+    let path = export_dual(surface)?;
+    let record = lemon_on(binary, &path, surface, base, runs);
+    std::fs::remove_file(&path)?;
+    record
+}
+
+/// Writes the dual graph of `surface` in the LEMON harness's binary format to a temporary file.
+fn export_dual(surface: &Surface) -> Result<PathBuf, Box<dyn Error>> {
     let mesh = &surface.mesh;
     assert_eq!(mesh.face_slots(), mesh.face_count(), "dense ids expected");
     let path = std::env::temp_dir().join(format!("surftopo-dual-{}.bin", std::process::id()));
-    {
-        let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
-        out.write_all(&(mesh.face_count() as u32).to_le_bytes())?;
-        out.write_all(&(mesh.edge_count() as u32).to_le_bytes())?;
-        for e in mesh.edges() {
-            let h = e.halfedge();
-            out.write_all(&mesh.face(h).0.to_le_bytes())?;
-            out.write_all(&mesh.face(h.twin()).0.to_le_bytes())?;
-        }
+    let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
+    out.write_all(&(mesh.face_count() as u32).to_le_bytes())?;
+    out.write_all(&(mesh.edge_count() as u32).to_le_bytes())?;
+    for e in mesh.edges() {
+        let h = e.halfedge();
+        out.write_all(&mesh.face(h).0.to_le_bytes())?;
+        out.write_all(&mesh.face(h.twin()).0.to_le_bytes())?;
     }
+    out.flush()?;
+    Ok(path)
+}
+
+/// Runs the LEMON harness on an exported dual graph and checks that its matching is perfect.
+fn lemon_on(
+    binary: &PathBuf,
+    path: &PathBuf,
+    surface: &Surface,
+    base: &Record,
+    runs: u64,
+) -> Result<Record, Box<dyn Error>> {
+    let mesh = &surface.mesh;
     let output = Command::new(binary)
-        .arg(&path)
+        .arg(path)
         .arg(runs.to_string())
         .output()?;
-    std::fs::remove_file(&path)?;
     if !output.status.success() {
         return Err(format!("LEMON harness: {}", String::from_utf8_lossy(&output.stderr)).into());
     }
@@ -235,6 +263,71 @@ fn lemon(
         lemon_build_seconds: v["build_seconds"].as_f64(),
         ..base.clone()
     })
+}
+
+/// `--side-by-side`: KS and LEMON in alternate rounds (one KS run, then the fastest of three
+/// LEMON `run()`s in its harness), so that a slow spell of the shared machine hits both; per round the ratio of
+/// KS's pairing time to LEMON's. Returns the KS record (minima over the rounds, and the per-round
+/// ratios) and the LEMON one (minima).
+fn side_by_side(
+    binary: &PathBuf,
+    surface: &Surface,
+    base: &Record,
+    rounds: u64,
+) -> Result<[Record; 2], Box<dyn Error>> {
+    let path = export_dual(surface)?;
+    // A first KS run, not timed, gives the record its counts.
+    let mut ks = Record {
+        round_ratios: Some(Vec::new()),
+        initial_pairing_seconds: f64::INFINITY,
+        augmentation_seconds: f64::INFINITY,
+        total_seconds: f64::INFINITY,
+        pairing_seconds: f64::INFINITY,
+        ..measure(
+            surface,
+            base,
+            |_| QuadAlgorithm::KarpSipser,
+            AugmentStrategy::default(),
+            1,
+        )?
+    };
+    let mut lemon: Option<Record> = None;
+    let mut cpu = [0.0; 2];
+    for _ in 0..rounds {
+        let k = measure(
+            surface,
+            base,
+            |_| QuadAlgorithm::KarpSipser,
+            AugmentStrategy::default(),
+            1,
+        )?;
+        // Three runs in the harness, the fastest kept: its first run is a cold process's.
+        let l = lemon_on(binary, &path, surface, base, 3)?;
+        cpu[0] += k.cpu_seconds / rounds as f64;
+        cpu[1] += l.cpu_seconds / rounds as f64;
+        if let Some(ratios) = &mut ks.round_ratios {
+            ratios.push(k.pairing_seconds / l.pairing_seconds.max(1e-12));
+        }
+        for (x, y) in [
+            (&mut ks.initial_pairing_seconds, k.initial_pairing_seconds),
+            (&mut ks.augmentation_seconds, k.augmentation_seconds),
+            (&mut ks.total_seconds, k.total_seconds),
+            (&mut ks.pairing_seconds, k.pairing_seconds),
+        ] {
+            *x = x.min(y);
+        }
+        lemon = Some(match lemon {
+            Some(m) if m.total_seconds <= l.total_seconds => m,
+            _ => l,
+        });
+    }
+    std::fs::remove_file(&path)?;
+    let mut lemon = lemon.ok_or("no rounds")?;
+    ks.runs = rounds;
+    lemon.runs = rounds;
+    ks.cpu_seconds = cpu[0];
+    lemon.cpu_seconds = cpu[1];
+    Ok([ks, lemon])
 }
 
 /// An input: its name, its group and how to make it (lazily, one at a time in memory).
@@ -290,6 +383,17 @@ fn main() -> Result<(), Box<dyn Error>> {
             ..Record::default()
         };
         eprintln!("{name}: {} triangles, genus {}", base.faces, base.genus);
+        if args.side_by_side {
+            let binary = args.lemon.as_ref().ok_or("--side-by-side needs --lemon")?;
+            let pair = side_by_side(binary, &surface, &base, args.runs)?;
+            eprintln!(
+                "  ks pairing {:.4} s, LEMON run() {:.4} s",
+                pair[0].pairing_seconds, pair[1].pairing_seconds
+            );
+            records.extend(pair);
+            write_results(&records, &args)?;
+            continue;
+        }
         let mut mine = vec![
             measure(
                 &surface,
@@ -488,6 +592,35 @@ fn markdown(records: &[Record], args: &Args) -> String {
             seconds(lemon, |l| l.cpu_seconds),
             ratio(best.cpu_seconds, |l| l.cpu_seconds),
         );
+    }
+    let side_by_side: Vec<&Record> = records
+        .iter()
+        .filter(|r| r.round_ratios.is_some())
+        .collect();
+    if !side_by_side.is_empty() {
+        let _ = writeln!(
+            md,
+            "\n## KS and LEMON side by side, round by round\n\n\
+             Each round: one KS `quadrangulate` call, then three LEMON `run()`s in its harness \
+             (the fastest kept; the first is a cold process's); the ratio is KS's pairing time \
+             over LEMON's in the same round.\n\n\
+             | input | faces | rounds | lowest ratio | median ratio | highest ratio |\n\
+             |---|---:|---:|---:|---:|---:|"
+        );
+        for r in side_by_side {
+            let mut ratios = r.round_ratios.clone().unwrap_or_default();
+            ratios.sort_by(f64::total_cmp);
+            if let (Some(low), Some(high)) = (ratios.first(), ratios.last()) {
+                let _ = writeln!(
+                    md,
+                    "| {} | {} | {} | {low:.3} | {:.3} | {high:.3} |",
+                    r.input,
+                    r.faces,
+                    ratios.len(),
+                    ratios[ratios.len() / 2],
+                );
+            }
+        }
     }
     md
 }
