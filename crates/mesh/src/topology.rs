@@ -137,10 +137,11 @@ impl SurfaceMesh {
     pub fn face_vertices(&self, f: FaceId) -> [VertexId; 3] {
         self.face_halfedges(f).map(|h| self.origin(h))
     }
-    /// The vertex opposite a half-edge in its face.
+    /// The vertex opposite a half-edge in its face: `dest(next(h))`, one read into a random place
+    /// of the mesh where `origin(prev(h))` takes two dependent ones.
     #[inline]
     pub fn opposite_vertex(&self, h: HalfedgeId) -> VertexId {
-        self.origin(self.prev(h))
+        self.dest(self.next(h))
     }
 
     /// The next outgoing half-edge around `origin(h)` (clockwise rotation: `twin(prev(h))`).

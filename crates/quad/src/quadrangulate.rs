@@ -321,9 +321,7 @@ fn quads_of(
         let e = EdgeId::new(e);
         let h = e.halfedge();
         let (a, b) = (mesh.origin(h), mesh.dest(h));
-        // The opposite corners as `dest(next(h))`: one read into a random place of the mesh per
-        // triangle, where `opposite_vertex` (`origin(prev(h))`) takes two dependent ones.
-        let (c, d) = (mesh.dest(mesh.next(h)), mesh.dest(mesh.next(h.twin())));
+        let (c, d) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
         quads.push([a, d, b, c]);
         diagonals.push(e);
     }
