@@ -27,7 +27,10 @@
 //!   Measured (nodes reached by the repairs, `quad_profile`): against the first neighbour in
 //!   edge order, the bricks of groups A and B go from 3,000–8,000 isolated triangles to none at
 //!   all, and the shared meshes of 100k+ faces reach 8% fewer nodes;
-//! - degree-one nodes are paired as soon as they appear (a stack), before the next start.
+//! - degree-one nodes are paired as soon as they appear (a stack), before the next start;
+//! - in id order, a deferred node (see below) that is the only unpaired one behind the sweep,
+//!   met in the last [`REVERSE_TAIL`]th of the ids, reverses the sweep, so that the sweep ends
+//!   next to it, where its partner will be isolated ([`IdSweep`] says why and what was measured).
 //!
 //! # The repairs
 //! A node whose free degree drops to 0 while it is unpaired is *isolated*: the greedy alone would
@@ -69,7 +72,7 @@
 use std::time::Instant;
 
 use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
-use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing, non_loop_degrees};
+use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 
 /// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
 /// completion. Measured before the guided completion existed (`quad_profile`, nodes reached on
@@ -101,6 +104,10 @@ pub const BAND_WIDTH: u32 = 4;
 /// completion pairs them in one pass).
 pub const GUIDED_MAX_HOLES: usize = 64;
 
+/// A lone deferred node reverses the id sweep (see [`IdSweep`]) only when less than
+/// `1 / REVERSE_TAIL` of the ids are left to sweep.
+pub const REVERSE_TAIL: usize = 4;
+
 /// The guided depth-first search may visit this many times the nodes of its band.
 pub const GUIDED_DFS_FACTOR: usize = 4;
 
@@ -130,6 +137,8 @@ pub struct KarpSipserStats {
     /// Whether the greedy started from the nodes in id order (true) or in breadth-first order
     /// (false; see the module doc).
     pub id_order: bool,
+    /// Times the id sweep was reversed for a lone deferred node (see the module doc).
+    pub reversals: usize,
     /// The searches of the repairs and of the completion (nodes reached, paths, ...).
     pub augment: AugmentStats,
 }
@@ -182,8 +191,8 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     if !nodes.is_multiple_of(2) {
         return Err(AugmentError::OddNodeCount { nodes });
     }
-    let compact = CompactDual::new(graph);
-    let mut ks = KarpSipser::new(&compact, options.repair_budget);
+    let (compact, degrees) = CompactDual::with_degrees(graph);
+    let mut ks = KarpSipser::new(&compact, degrees, options.repair_budget);
     ks.greedy();
     if options.guided_completion {
         ks.complete_guided();
@@ -258,6 +267,8 @@ struct KarpSipser<'g, G: ?Sized> {
     frontier: Vec<u32>,
     /// Start from the nodes in id order rather than from the frontier.
     id_order: bool,
+    /// The ids not considered yet as start nodes.
+    sweep: IdSweep,
     /// Nodes a repair search may reach.
     repair_budget: usize,
     /// Generation stamps of the depth-first repairs (nodes visited by the current one).
@@ -281,6 +292,43 @@ struct KarpSipser<'g, G: ?Sized> {
     parent: Vec<u32>,
 }
 
+/// The ids not considered yet as start nodes, `low..high`, taken from the low end, or from the
+/// high end once `descending`.
+///
+/// Why reverse: in id order, a node deferred near the end of the sweep while no other deferred
+/// node is unpaired needs a partner, and by parity the last node isolated by the greedy is one;
+/// it appears where the sweep ends. Swept upwards, the rest ends at the top ids, far from the
+/// deferred node; swept downwards, it ends next to it, where the sweep is now. Measured
+/// (`quad_profile MESH 5 ks`, nodes reached): seahorse2_100K 78,763 to 35,737 (completion 51,319
+/// to 9,843); feline, sketched_brunnen and venus unchanged (no lone hole in the tail). Reversing
+/// at every deferral, or at any point of the sweep, made feline (6 to 14–20 deferrals) and
+/// sketched_brunnen (100k to 124k–138k nodes) worse.
+#[derive(Clone, Copy, Debug)]
+struct IdSweep {
+    low: u32,
+    high: u32,
+    descending: bool,
+}
+
+impl IdSweep {
+    fn next(&mut self) -> Option<u32> {
+        if self.low == self.high {
+            None
+        } else if self.descending {
+            self.high -= 1;
+            Some(self.high)
+        } else {
+            self.low += 1;
+            Some(self.low - 1)
+        }
+    }
+
+    /// How many ids are left.
+    fn left(&self) -> u32 {
+        self.high - self.low
+    }
+}
+
 /// One even node of the depth-first path of [`KarpSipser::dfs_repair`].
 #[derive(Clone, Copy)]
 struct DfsFrame {
@@ -296,12 +344,14 @@ struct DfsFrame {
 }
 
 impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
-    fn new(graph: &'g G, repair_budget: usize) -> Self {
+    /// The state before the greedy: `free_degrees` are the non-loop degrees of `graph`'s node
+    /// slots.
+    fn new(graph: &'g G, free_degrees: Vec<u8>, repair_budget: usize) -> Self {
         let n = graph.node_slots();
         KarpSipser {
             graph,
             mates: vec![[NONE, NONE]; n],
-            free: non_loop_degrees(graph),
+            free: free_degrees,
             forced: Vec::new(),
             isolated: Vec::new(),
             deferred: Vec::new(),
@@ -309,6 +359,11 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             stats: KarpSipserStats::default(),
             frontier: Vec::new(),
             id_order: ids_are_local(graph),
+            sweep: IdSweep {
+                low: 0,
+                high: n as u32,
+                descending: false,
+            },
             dfs_stamp: vec![0; n],
             dfs_generation: 0,
             dfs_stack: Vec::new(),
@@ -325,7 +380,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     /// A copy of the pairing state (for tests comparing two searches from the same state).
     #[cfg(test)]
     fn clone_state(&self) -> Self {
-        let mut copy = KarpSipser::new(self.graph, self.repair_budget);
+        let mut copy = KarpSipser::new(self.graph, self.free.clone(), self.repair_budget);
         copy.mates.clone_from(&self.mates);
         copy.free.clone_from(&self.free);
         copy.owner.clone_from(&self.owner);
@@ -350,13 +405,14 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
 
     fn greedy(&mut self) {
         let mut head = 0;
-        let mut next_id = 0;
-        while let Some(s) = self.next_start(&mut head, &mut next_id) {
+        while let Some(s) = self.next_start(&mut head) {
             let mut best: Option<(u8, u32, u32)> = None;
+            // Ties: the smallest id, or the largest once the sweep runs down (the side swept).
+            let flip = if self.sweep.descending { u32::MAX } else { 0 };
             for (e, w) in self.graph.adjacent(s) {
                 if w != s && self.is_free(w) {
                     let d = self.free[w as usize];
-                    if best.is_none_or(|(b, _, bw)| (d, w) < (b, bw)) {
+                    if best.is_none_or(|(b, _, bw)| (d, w ^ flip) < (b, bw ^ flip)) {
                         best = Some((d, e, w));
                     }
                 }
@@ -372,24 +428,42 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     }
 
     /// The next node to start from, free and with a free neighbour: the oldest such frontier
-    /// node (breadth-first order; the frontier stays empty in id order), else the smallest such
-    /// id not considered yet.
-    fn next_start(&mut self, head: &mut usize, next_id: &mut u32) -> Option<u32> {
+    /// node (breadth-first order; the frontier stays empty in id order), else the next such id
+    /// of the [`IdSweep`].
+    fn next_start(&mut self, head: &mut usize) -> Option<u32> {
         while let Some(&x) = self.frontier.get(*head) {
             *head += 1;
             if self.is_free(x) && self.free[x as usize] > 0 {
                 return Some(x);
             }
         }
-        let n = self.graph.node_slots() as u32;
-        while *next_id < n {
-            let v = *next_id;
-            *next_id += 1;
-            if self.graph.is_node(v) && self.is_free(v) && self.free[v as usize] > 0 {
+        // A removed node slot has free degree 0.
+        while let Some(v) = self.sweep.next() {
+            if self.is_free(v) && self.free[v as usize] > 0 {
                 return Some(v);
             }
         }
         None
+    }
+
+    /// After a deferral in id order: when the deferred node is the only unpaired one behind
+    /// the sweep and less than [`REVERSE_TAIL`] of the ids are left, the rest is swept in the
+    /// other direction (see [`IdSweep`]).
+    fn reverse_for_lone_hole(&mut self) {
+        let left = self.sweep.left() as usize;
+        if self.id_order
+            && left * REVERSE_TAIL < self.graph.node_slots()
+            && self
+                .deferred
+                .iter()
+                .filter(|&&v| self.is_free(v))
+                .take(2)
+                .count()
+                == 1
+        {
+            self.sweep.descending = !self.sweep.descending;
+            self.stats.reversals += 1;
+        }
     }
 
     /// Pairs the forced nodes and repairs the isolated ones until neither is left.
@@ -787,6 +861,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         }
         self.deferred.push(u);
         self.stats.deferred += 1;
+        self.reverse_for_lone_hole();
         self.stats.augmentation_seconds += clock.elapsed().as_secs_f64();
     }
 }
@@ -805,7 +880,7 @@ mod tests {
         steps: usize,
     ) -> (KarpSipser<'g, CompactDual<'g, G>>, Vec<u32>) {
         let (perfect, _) = karp_sipser_perfect(graph).unwrap();
-        let mut ks = KarpSipser::new(graph, 0);
+        let mut ks = KarpSipser::new(graph, vec![0; graph.node_slots()], 0);
         for v in 0..graph.node_slots() as u32 {
             let e = perfect.mate[v as usize];
             ks.mates[v as usize] = [e, graph.opposite(e, v)];
@@ -897,5 +972,58 @@ mod tests {
             assert!(ks.owner.iter().all(|&o| o == 0));
             assert_perfect(&graph, &ks.mates);
         }
+    }
+
+    #[test]
+    fn id_sweep_takes_ids_from_either_end() {
+        let mut sweep = IdSweep {
+            low: 0,
+            high: 6,
+            descending: false,
+        };
+        let mut taken = vec![sweep.next(), sweep.next()];
+        sweep.descending = true;
+        taken.extend([sweep.next(), sweep.next()]);
+        assert_eq!(sweep.left(), 2);
+        sweep.descending = false;
+        taken.extend([sweep.next(), sweep.next(), sweep.next()]);
+        let expected = [0, 1, 5, 4, 2, 3].map(Some).to_vec();
+        assert_eq!(taken, [expected, vec![None]].concat());
+    }
+
+    /// The sweep reverses for a deferred node only in id order, in the tail of the sweep, and
+    /// when no other deferred node is unpaired.
+    #[test]
+    fn a_lone_hole_in_the_tail_reverses_the_sweep() {
+        let mesh = icosphere(3).mesh;
+        let graph = CompactDual::new(&mesh);
+        let n = graph.node_slots() as u32;
+        let state = |id_order: bool, left: u32, holes: &[u32]| {
+            let mut ks = KarpSipser::new(&graph, vec![3; n as usize], REPAIR_BUDGET);
+            ks.id_order = id_order;
+            ks.sweep.low = n - left;
+            for v in 0..n {
+                if !holes.contains(&v) {
+                    ks.free[v as usize] = PAIRED;
+                }
+            }
+            ks.deferred = holes.to_vec();
+            ks.reverse_for_lone_hole();
+            (ks.sweep.descending, ks.stats.reversals)
+        };
+        let tail = n / (2 * REVERSE_TAIL as u32);
+        assert_eq!(state(true, tail, &[7]), (true, 1));
+        assert_eq!(state(true, tail, &[7, 9]), (false, 0));
+        assert_eq!(state(true, n / 2, &[7]), (false, 0));
+        assert_eq!(state(false, tail, &[7]), (false, 0));
+        // A deferred node paired since does not count.
+        let mut ks = KarpSipser::new(&graph, vec![3; n as usize], REPAIR_BUDGET);
+        ks.id_order = true;
+        ks.sweep.low = n - tail;
+        ks.deferred = vec![7, 9];
+        ks.free.fill(PAIRED);
+        ks.free[9] = 0;
+        ks.reverse_for_lone_hole();
+        assert!(ks.sweep.descending);
     }
 }

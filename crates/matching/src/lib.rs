@@ -33,7 +33,9 @@ pub mod karp_sipser;
 pub mod pulli_segal;
 
 pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
-pub use dual_graph::{CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph};
+pub use dual_graph::{
+    AdjacencyTable, CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph,
+};
 pub use greedy::simple_greedy;
 pub use karp_sipser::{
     KarpSipserOptions, KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with,

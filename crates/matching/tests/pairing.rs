@@ -5,9 +5,10 @@ use petgraph::algo::maximum_matching;
 use petgraph::graph::UnGraph;
 use surftopo_matching::generators::{random_bridgeless_cubic, random_cubic_pairing};
 use surftopo_matching::{
-    AugmentError, AugmentStrategy, CubicGraph, DualGraph, KarpSipserOptions, KarpSipserStats,
-    Pairing, PairingError, augment_to_perfect, karp_sipser_perfect, karp_sipser_perfect_with,
-    pulli_segal, simple_greedy, verify_perfect_matching, verify_perfect_matching_on,
+    AdjacencyTable, AugmentError, AugmentStrategy, CubicGraph, DualGraph, KarpSipserOptions,
+    KarpSipserStats, Pairing, PairingError, augment_to_perfect, karp_sipser_perfect,
+    karp_sipser_perfect_with, pulli_segal, simple_greedy, verify_perfect_matching,
+    verify_perfect_matching_on,
 };
 use surftopo_mesh::generators::{icosphere, torus};
 
@@ -209,20 +210,34 @@ fn compact_mesh_adjacency_matches_the_half_edge_cycles() {
         "has tombstones"
     );
     for mesh in [&icosphere(3).mesh, &contracted] {
-        let table = mesh.adjacency_table();
+        let AdjacencyTable {
+            adjacent: table,
+            non_loop_degrees,
+        } = mesh.adjacency_table();
         assert_eq!(table.len(), mesh.face_slots());
+        assert_eq!(non_loop_degrees.len(), mesh.face_slots());
         for f in 0..mesh.face_slots() as u32 {
             let mut copied = table[f as usize];
             if !DualGraph::is_node(mesh, f) {
                 assert_eq!(copied, [(u32::MAX, u32::MAX); 3]);
+                assert_eq!(non_loop_degrees[f as usize], 0);
                 continue;
             }
             let mut own = DualGraph::adjacent(mesh, f);
+            let degree = own.iter().filter(|&&(_, g)| g != f).count();
+            assert_eq!(
+                usize::from(non_loop_degrees[f as usize]),
+                degree,
+                "face {f}"
+            );
             copied.sort_unstable();
             own.sort_unstable();
             assert_eq!(copied, own, "face {f}");
         }
     }
+    // The default copy (node by node) counts loops out: a cubic graph with a loop.
+    let looped = RawCubic::new(2, vec![[0, 0], [0, 1], [1, 1]]);
+    assert_eq!(looped.adjacency_table().non_loop_degrees, [1, 1]);
 }
 
 /// A cubic graph given by an edge list without validation (bridges allowed), for failure tests.
@@ -378,6 +393,10 @@ fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
     assert!(stats.completed.is_multiple_of(2));
     assert!(2 * stats.guided + stats.completed <= stats.deferred);
     assert!(stats.guided_by_edmonds <= stats.guided);
+    assert!(stats.reversals <= stats.deferred);
+    if !stats.id_order {
+        assert_eq!(stats.reversals, 0);
+    }
     assert_eq!(
         stats.augment.augmentations,
         stats.repaired + stats.guided + stats.completed / 2
@@ -401,14 +420,20 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
     let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
     let mut seen = [false; 2];
     let mut deferred_and_repaired = false;
-    let (mut guided, mut by_edmonds, mut completed) = (0, 0, 0);
-    for mesh in [&grid.mesh, &icosphere(5).mesh, &shuffled.mesh] {
+    let (mut guided, mut by_edmonds, mut completed, mut reversals) = (0, 0, 0, 0);
+    for mesh in [
+        &grid.mesh,
+        &icosphere(3).mesh,
+        &icosphere(5).mesh,
+        &shuffled.mesh,
+    ] {
         for options in ks_options([0, 4, 64]) {
             let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
             check_ks_stats(&stats, &options);
             guided += stats.guided;
             by_edmonds += stats.guided_by_edmonds;
             completed += stats.completed;
+            reversals += stats.reversals;
             let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
                 .map(|e| DualGraph::endpoints(mesh, e))
                 .collect();
@@ -421,6 +446,7 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
         }
     }
     assert_eq!(seen, [true, true], "both start orders were used");
+    assert!(reversals > 0, "a lone deferred node reversed the id sweep");
     assert!(deferred_and_repaired, "some run both repaired and deferred");
     assert!(
         guided > 0 && completed > 0,

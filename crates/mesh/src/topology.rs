@@ -109,6 +109,12 @@ impl SurfaceMesh {
     pub fn face(&self, h: HalfedgeId) -> FaceId {
         self.face[h.idx()]
     }
+    /// The face of every half-edge slot, by half-edge id (a half-edge and its twin are
+    /// `2e` and `2e + 1`, edge `e`'s); removed half-edges hold an invalid id.
+    #[inline]
+    pub fn halfedge_faces(&self) -> &[FaceId] {
+        &self.face
+    }
     /// One outgoing half-edge of a vertex.
     #[inline(always)]
     pub fn vertex_halfedge(&self, v: VertexId) -> HalfedgeId {
