@@ -4,10 +4,13 @@
 //! far apart adjacent faces are in id order (locality of the input).
 //!
 //! ```text
-//! cargo run --release -p surftopo-quad --example quad_profile -- MESH_FILE|box:C:H:T [REPEAT]
+//! cargo run --release -p surftopo-quad --example quad_profile -- MESH_FILE|box:C:H:T [REPEAT] [ks]
 //! ```
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
-//! KS runs with its guided completion and with the Forest completion alone, alternately.
+//! KS runs with its guided completion and with the Forest completion alone, alternately (with
+//! `ks` as the third argument: KS alone, guided, for a profiler); `KS_BUDGET=<n>` sets its repair
+//! budget, `COLD=1` flushes the caches before each of its runs. Its line gives the mean CPU
+//! seconds per call, then the medians of the wall-clock stage times.
 
 use std::error::Error;
 use std::time::Instant;
@@ -74,6 +77,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         },
         Err(_) => AugmentStrategy::Forest,
     };
+    // `ks` as a third argument: KS alone, with its guided completion (for a profiler).
+    if args.get(3).is_some_and(|a| a == "ks") {
+        return profile_ks(mesh, repeat, &[true]);
+    }
     let (t, sg) = time(repeat, || simple_greedy(mesh, 1));
     println!(
         "sg pairing            {t:.5}  unpaired {}",
@@ -108,41 +115,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         "ps augment global     {t:.5}  reached {} searches {}",
         stats.reached, stats.searches
     );
-    // KS with its guided completion and with the Forest completion alone, alternately.
-    let mut ks_runs = [(0.0, None), (0.0, None)];
-    for _ in 0..repeat {
-        for (guided, (total, last)) in [true, false].into_iter().zip(&mut ks_runs) {
-            let options = KarpSipserOptions {
-                guided_completion: guided,
-                ..KarpSipserOptions::default()
-            };
-            let (t, (_, ks)) = time(1, || karp_sipser_perfect_with(mesh, &options).unwrap());
-            *total += t / repeat as f64;
-            *last = Some(ks);
-        }
-    }
-    for ((t, ks), name) in ks_runs
-        .into_iter()
-        .zip(["ks (perfect)", "ks (Forest only)"])
-    {
-        let ks = ks.expect("repeat >= 1");
-        println!(
-            "{name:21} {t:.5}  greedy {:.5} repairs+completion {:.5} isolated {} repaired {} \
-             deferred {} guided {} (by Edmonds {}) completed {} reached {} (completion {}) id \
-             order {}",
-            ks.greedy_seconds,
-            ks.augmentation_seconds,
-            ks.isolated,
-            ks.repaired,
-            ks.deferred,
-            ks.guided,
-            ks.guided_by_edmonds,
-            ks.completed,
-            ks.augment.reached,
-            ks.completion_reached,
-            ks.id_order
-        );
-    }
+    profile_ks(mesh, repeat, &[true, false])?;
     let (t, _) = time(repeat, || mesh.clone());
     println!("mesh clone            {t:.5}");
     let (t, reduction) = time(repeat, || {
@@ -185,5 +158,83 @@ fn main() -> Result<(), Box<dyn Error>> {
         gaps[gaps.len() * 9 / 10],
         gaps[gaps.len() * 99 / 100]
     );
+    Ok(())
+}
+
+/// Writes `buffer` (larger than the last-level cache) and sums it, so that the next run starts
+/// with cold caches.
+fn evict_caches(buffer: &mut [u8]) {
+    for (i, b) in buffer.iter_mut().enumerate().step_by(64) {
+        *b = b.wrapping_add(i as u8);
+    }
+    std::hint::black_box(
+        buffer
+            .iter()
+            .step_by(64)
+            .map(|&b| u64::from(b))
+            .sum::<u64>(),
+    );
+}
+
+/// KS with its guided completion (`true`) and with the Forest completion alone (`false`), as
+/// `guided` says, alternately. `KS_BUDGET` sets the repair budget.
+fn profile_ks(
+    mesh: &surftopo_mesh::SurfaceMesh,
+    repeat: usize,
+    guided: &[bool],
+) -> Result<(), Box<dyn Error>> {
+    let repair_budget = match std::env::var("KS_BUDGET") {
+        Ok(b) => b.parse()?,
+        Err(_) => KarpSipserOptions::default().repair_budget,
+    };
+    // `COLD=1`: the caches are flushed before each run (as a single call after other work).
+    let mut evict = std::env::var_os("COLD").map(|_| vec![0u8; 64 << 20]);
+    // Per variant: the CPU seconds of each run, its stats, and the last stats.
+    let mut ks_runs: [(Vec<f64>, Vec<_>); 2] = Default::default();
+    for _ in 0..repeat {
+        for (&guided, (times, stats)) in guided.iter().zip(&mut ks_runs) {
+            let options = KarpSipserOptions {
+                guided_completion: guided,
+                repair_budget,
+            };
+            if let Some(buffer) = &mut evict {
+                evict_caches(buffer);
+            }
+            let (t, (_, ks)) = time(1, || karp_sipser_perfect_with(mesh, &options).unwrap());
+            times.push(t);
+            stats.push(ks);
+        }
+    }
+    for ((times, stats), name) in ks_runs
+        .into_iter()
+        .zip(["ks (perfect)", "ks (Forest only)"])
+    {
+        let Some(&ks) = stats.last() else { continue };
+        // Medians of the wall-clock stage times, which do not have the CPU clock's ticks.
+        let median = |f: &dyn Fn(&surftopo_matching::KarpSipserStats) -> f64| {
+            let mut v: Vec<f64> = stats.iter().map(f).collect();
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        };
+        let cpu = times.iter().sum::<f64>() / times.len() as f64;
+        println!(
+            "{name:21} {cpu:.5}  median wall {:.5} greedy {:.5} repairs+completion {:.5} \
+             isolated {} repaired {} deferred {} guided {} (by Edmonds {}) completed {} reached \
+             {} (completion {}) id order {} reversals {}",
+            median(&|k| k.greedy_seconds + k.augmentation_seconds),
+            median(&|k| k.greedy_seconds),
+            median(&|k| k.augmentation_seconds),
+            ks.isolated,
+            ks.repaired,
+            ks.deferred,
+            ks.guided,
+            ks.guided_by_edmonds,
+            ks.completed,
+            ks.augment.reached,
+            ks.completion_reached,
+            ks.id_order,
+            ks.reversals
+        );
+    }
     Ok(())
 }

@@ -15,8 +15,9 @@
 //! SURFTOPO_MESHES=/work/shared/meshes cargo run --release -p surftopo-quad --example quad_tables -- \
 //!     [--max-triangles N] [--min-triangles N] [--runs R] [--no-shared] [--no-groups] [--ds-max-triangles N] \
 //!     [--global-max-work W] [--lemon crates/quad/peer/lemon_matching] [--side-by-side] \
-//!     [--out results/quad]
+//!     [--only NAME]... [--out results/quad]
 //! ```
+//! `--only NAME` (repeatable) keeps the inputs whose name contains NAME.
 //! Writes `<out>.jsonl` (one record per input and algorithm) and `<out>.md`.
 
 use std::collections::BTreeMap;
@@ -56,6 +57,8 @@ struct Args {
     global_max_work: f64,
     lemon: Option<PathBuf>,
     side_by_side: bool,
+    /// Only the inputs whose name contains one of these.
+    only: Vec<String>,
     out: PathBuf,
 }
 
@@ -70,6 +73,7 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
         global_max_work: 3e9,
         lemon: None,
         side_by_side: false,
+        only: Vec::new(),
         out: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../results/quad")),
     };
     let mut it = std::env::args().skip(1);
@@ -85,6 +89,7 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             "--global-max-work" => args.global_max_work = value()?.parse()?,
             "--lemon" => args.lemon = Some(PathBuf::from(value()?)),
             "--side-by-side" => args.side_by_side = true,
+            "--only" => args.only.push(value()?),
             "--out" => args.out = PathBuf::from(value()?),
             other => return Err(format!("unknown argument {other}").into()),
         }
@@ -360,6 +365,9 @@ fn inputs(args: &Args) -> Vec<Input> {
                 }
             }
         }
+    }
+    if !args.only.is_empty() {
+        out.retain(|(name, _, _)| args.only.iter().any(|only| name.contains(only.as_str())));
     }
     out
 }
