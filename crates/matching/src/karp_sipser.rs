@@ -382,7 +382,6 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     fn clone_state(&self) -> Self {
         let mut copy = KarpSipser::new(self.graph, self.free.clone(), self.repair_budget);
         copy.mates.clone_from(&self.mates);
-        copy.free.clone_from(&self.free);
         copy.owner.clone_from(&self.owner);
         copy.parent.clone_from(&self.parent);
         copy.bfs_queue.clone_from(&self.bfs_queue);
@@ -447,7 +446,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     }
 
     /// After a deferral in id order: when the deferred node is the only unpaired one behind
-    /// the sweep and less than [`REVERSE_TAIL`] of the ids are left, the rest is swept in the
+    /// the sweep and less than `1 / REVERSE_TAIL` of the ids are left, the rest is swept in the
     /// other direction (see [`IdSweep`]).
     fn reverse_for_lone_hole(&mut self) {
         let left = self.sweep.left() as usize;

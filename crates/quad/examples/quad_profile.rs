@@ -189,7 +189,7 @@ fn profile_ks(
     };
     // `COLD=1`: the caches are flushed before each run (as a single call after other work).
     let mut evict = std::env::var_os("COLD").map(|_| vec![0u8; 64 << 20]);
-    // Per variant: the CPU seconds of each run, its stats, and the last stats.
+    // Per variant: the CPU seconds and the stats of each run.
     let mut ks_runs: [(Vec<f64>, Vec<_>); 2] = Default::default();
     for _ in 0..repeat {
         for (&guided, (times, stats)) in guided.iter().zip(&mut ks_runs) {
