@@ -4,6 +4,11 @@
 //! augmenting paths, Section 3.1) and its closing suggestion (Section 5: search for augmenting
 //! paths locally, where the unpaired triangles are).
 //!
+//! # Step 0: the file's quads
+//! When the triangles are written two by two as the quads of a quad mesh (every node `2k`
+//! adjacent to `2k + 1`), that pairing is perfect and is returned as it is, in O(n), with no
+//! greedy ([`crate::file_order`] says why; [`KarpSipserOptions::file_order`] turns it off).
+//!
 //! # The greedy
 //! Karp and Sipser, "Maximum matchings in sparse random graphs" (FOCS 1981): while a free node
 //! has exactly one free neighbour, pair the two (such a pair is in some maximum matching, so the
@@ -73,6 +78,7 @@ use std::time::Instant;
 
 use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
+use crate::file_order::file_order_pairing;
 
 /// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
 /// completion. Measured before the guided completion existed (`quad_profile`, nodes reached on
@@ -114,7 +120,9 @@ pub const GUIDED_DFS_FACTOR: usize = 4;
 /// Figures of one [`karp_sipser_perfect`] run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct KarpSipserStats {
-    /// Seconds of the greedy itself (copying the adjacency included; repairs excluded).
+    /// Whether the pairing is the file's quads ([`crate::file_order`]): no greedy, no search.
+    pub file_order: bool,
+    /// Seconds of the greedy itself (or of the file-order check) (copying the adjacency included; repairs excluded).
     pub greedy_seconds: f64,
     /// Seconds of the repairs and of the final completion.
     pub augmentation_seconds: f64,
@@ -152,6 +160,8 @@ pub struct KarpSipserOptions {
     /// Whether the deferred nodes are first paired by guided searches (else by the Forest
     /// strategy alone).
     pub guided_completion: bool,
+    /// Whether a file written quad by quad is paired as written (step 0 of the module doc).
+    pub file_order: bool,
 }
 
 impl Default for KarpSipserOptions {
@@ -159,6 +169,7 @@ impl Default for KarpSipserOptions {
         KarpSipserOptions {
             repair_budget: REPAIR_BUDGET,
             guided_completion: true,
+            file_order: true,
         }
     }
 }
@@ -190,6 +201,16 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     let nodes = graph.node_count();
     if !nodes.is_multiple_of(2) {
         return Err(AugmentError::OddNodeCount { nodes });
+    }
+    if options.file_order
+        && let Some(pairing) = file_order_pairing(graph)
+    {
+        let stats = KarpSipserStats {
+            file_order: true,
+            greedy_seconds: start.elapsed().as_secs_f64(),
+            ..KarpSipserStats::default()
+        };
+        return Ok((pairing, stats));
     }
     let (compact, degrees) = CompactDual::with_degrees(graph);
     let mut ks = KarpSipser::new(&compact, degrees, options.repair_budget);

@@ -8,6 +8,8 @@
 //! * [`dynamic_connectivity`] — the fully dynamic connectivity / spanning-forest structure it uses.
 //! * [`karp_sipser`] — the Karp–Sipser greedy with immediate local repairs: a perfect pairing,
 //!   the fastest on most meshes (not from the paper; see its module doc).
+//! * [`file_order`] — the pairing a triangulated quad mesh is written in (its quads), when the
+//!   file lists them two triangles at a time; KS's first step.
 //! * [`generators`] — seeded random bridgeless cubic multigraphs and mesh duals, for tests and
 //!   benchmarks.
 
@@ -28,6 +30,7 @@ pub use verify::{
 // Pairing on the (implicit) dual graph: greedy, Pulli–Segal, augmenting paths.
 pub mod augment;
 pub mod dual_graph;
+pub mod file_order;
 pub mod greedy;
 pub mod karp_sipser;
 pub mod pulli_segal;
@@ -36,6 +39,7 @@ pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfec
 pub use dual_graph::{
     AdjacencyTable, CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph,
 };
+pub use file_order::file_order_pairing;
 pub use greedy::simple_greedy;
 pub use karp_sipser::{
     KarpSipserOptions, KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with,

@@ -372,7 +372,8 @@ fn karp_sipser_gives_perfect_matchings() {
     }
 }
 
-/// Every repair budget, with and without the guided completion.
+/// Every repair budget, with and without the guided completion (the file-order step off, so that
+/// the greedy runs on grids written quad by quad too).
 fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
     budgets
         .into_iter()
@@ -380,6 +381,7 @@ fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
             [true, false].map(|guided_completion| KarpSipserOptions {
                 repair_budget,
                 guided_completion,
+                file_order: false,
             })
         })
         .collect()
@@ -389,6 +391,11 @@ fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
 /// deferred one is paired by a later repair, a guided path (two per path) or the Forest
 /// completion (two per path); one augmentation per repair and per path.
 fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
+    if stats.file_order {
+        assert!(options.file_order);
+        assert_eq!(stats.isolated + stats.augment.reached as usize, 0);
+        assert_eq!(stats.augmentation_seconds, 0.0);
+    }
     assert_eq!(stats.repaired + stats.deferred, stats.isolated);
     assert!(stats.completed.is_multiple_of(2));
     assert!(2 * stats.guided + stats.completed <= stats.deferred);
@@ -454,9 +461,45 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
          completions ({completed}) both occur"
     );
     // A grid written row by row has local ids; shuffled, it has not.
-    let (_, in_order) = karp_sipser_perfect(&grid.mesh).unwrap();
+    let greedy_only = KarpSipserOptions {
+        file_order: false,
+        ..KarpSipserOptions::default()
+    };
+    let (_, in_order) = karp_sipser_perfect_with(&grid.mesh, &greedy_only).unwrap();
     let (_, out_of_order) = karp_sipser_perfect(&shuffled.mesh).unwrap();
     assert!(in_order.id_order && !out_of_order.id_order);
+    assert!(!out_of_order.file_order);
+}
+
+/// A grid written quad by quad is paired as written by default: no greedy, no search; the
+/// pairing is perfect and pairs triangles `2k` and `2k + 1`, checked independently.
+#[test]
+fn karp_sipser_pairs_a_file_written_quad_by_quad_as_written() {
+    let grid = torus(90, 70);
+    let mesh = &grid.mesh;
+    let options = KarpSipserOptions::default();
+    let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
+    assert!(stats.file_order);
+    check_ks_stats(&stats, &options);
+    let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
+        .map(|e| DualGraph::endpoints(mesh, e))
+        .collect();
+    assert_eq!(
+        check_matching(mesh.face_count(), &edges, pairing.mates()),
+        0
+    );
+    for (v, &e) in pairing.mates().iter().enumerate() {
+        let mut ends = edges[e as usize];
+        ends.sort_unstable();
+        assert_eq!(ends, [v as u32 & !1, v as u32 | 1], "triangle {v}");
+    }
+    // Without the step, the greedy runs.
+    let greedy_only = KarpSipserOptions {
+        file_order: false,
+        ..options
+    };
+    let (_, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
+    assert!(!stats.file_order);
 }
 
 #[test]

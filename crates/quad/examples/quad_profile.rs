@@ -9,7 +9,8 @@
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
 //! KS runs with its guided completion and with the Forest completion alone, alternately (with
 //! `ks` as the third argument: KS alone, guided, for a profiler); `KS_BUDGET=<n>` sets its repair
-//! budget, `COLD=1` flushes the caches before each of its runs. Its line gives the mean CPU
+//! budget, `KS_FILE_ORDER=0` turns off its file-order step, `COLD=1` flushes the caches before
+//! each of its runs. Its line gives the mean CPU
 //! seconds per call, then the medians of the wall-clock stage times.
 
 use std::error::Error;
@@ -177,7 +178,8 @@ fn evict_caches(buffer: &mut [u8]) {
 }
 
 /// KS with its guided completion (`true`) and with the Forest completion alone (`false`), as
-/// `guided` says, alternately. `KS_BUDGET` sets the repair budget.
+/// `guided` says, alternately. `KS_BUDGET` sets the repair budget; `KS_FILE_ORDER=0` turns off
+/// the file-order step.
 fn profile_ks(
     mesh: &surftopo_mesh::SurfaceMesh,
     repeat: usize,
@@ -187,6 +189,7 @@ fn profile_ks(
         Ok(b) => b.parse()?,
         Err(_) => KarpSipserOptions::default().repair_budget,
     };
+    let file_order = std::env::var("KS_FILE_ORDER").map_or(true, |v| v != "0");
     // `COLD=1`: the caches are flushed before each run (as a single call after other work).
     let mut evict = std::env::var_os("COLD").map(|_| vec![0u8; 64 << 20]);
     // Per variant: the CPU seconds and the stats of each run.
@@ -196,6 +199,7 @@ fn profile_ks(
             let options = KarpSipserOptions {
                 guided_completion: guided,
                 repair_budget,
+                file_order,
             };
             if let Some(buffer) = &mut evict {
                 evict_caches(buffer);
@@ -219,11 +223,12 @@ fn profile_ks(
         let cpu = times.iter().sum::<f64>() / times.len() as f64;
         println!(
             "{name:21} {cpu:.5}  median wall {:.5} greedy {:.5} repairs+completion {:.5} \
-             isolated {} repaired {} deferred {} guided {} (by Edmonds {}) completed {} reached \
-             {} (completion {}) id order {} reversals {}",
+             file order {} isolated {} repaired {} deferred {} guided {} (by Edmonds {}) completed \
+             {} reached {} (completion {}) id order {} reversals {}",
             median(&|k| k.greedy_seconds + k.augmentation_seconds),
             median(&|k| k.greedy_seconds),
             median(&|k| k.augmentation_seconds),
+            ks.file_order,
             ks.isolated,
             ks.repaired,
             ks.deferred,

@@ -22,4 +22,4 @@ pub use lrs::{Expansion, ExpansionCases, expand};
 pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
 };
-pub use surftopo_matching::{AugmentStats, AugmentStrategy};
+pub use surftopo_matching::{AugmentStats, AugmentStrategy, KarpSipserOptions};

@@ -11,8 +11,8 @@
 use std::time::Instant;
 
 use surftopo_matching::{
-    AugmentError, AugmentStats, AugmentStrategy, KarpSipserStats, Pairing, augment_to_perfect,
-    karp_sipser_perfect, pulli_segal, simple_greedy,
+    AugmentError, AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, Pairing,
+    augment_to_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
 };
 use surftopo_mesh::{EdgeId, SurfaceMesh, VertexId};
 
@@ -66,8 +66,11 @@ impl std::fmt::Display for QuadAlgorithm {
 /// Options of [`quadrangulate_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct QuadOptions {
-    /// How augmenting paths are searched for (default: [`AugmentStrategy::Forest`]).
+    /// How augmenting paths are searched for (default: [`AugmentStrategy::Forest`]; KS has its
+    /// own searches).
     pub augment: AugmentStrategy,
+    /// KS's settings (default: [`KarpSipserOptions::default`]).
+    pub karp_sipser: KarpSipserOptions,
 }
 
 /// The figures of one run: the columns of Table 4.3 (what `surftopo quad --json` prints).
@@ -224,8 +227,8 @@ fn pair(
         }
         QuadAlgorithm::DiksStanczyk => (None, diks_stanczyk_pairing(mesh)?),
         QuadAlgorithm::KarpSipser => {
-            let (pairing, ks) =
-                karp_sipser_perfect(mesh).map_err(|err| augmentation_error(mesh, err))?;
+            let (pairing, ks) = karp_sipser_perfect_with(mesh, &options.karp_sipser)
+                .map_err(|err| augmentation_error(mesh, err))?;
             return Ok(Paired {
                 triangulation: None,
                 pairing,

@@ -11,8 +11,8 @@ use surftopo_mesh::generators::{
     torus,
 };
 use surftopo_quad::{
-    AugmentStrategy, QuadAlgorithm, QuadError, QuadOptions, expand, quadrangulate,
-    quadrangulate_with,
+    AugmentStrategy, KarpSipserOptions, QuadAlgorithm, QuadError, QuadOptions, expand,
+    quadrangulate, quadrangulate_with,
 };
 
 const ALGORITHMS: [QuadAlgorithm; 6] = [
@@ -65,7 +65,65 @@ fn every_algorithm_on_generated_families() {
                 .unwrap_or_else(|e| panic!("{name} {algorithm}: {e}"));
             check_result(&format!("{name} {algorithm}"), mesh, algorithm, &result);
         }
+        // KS's greedy too on the families written quad by quad (tori, genus surfaces, bricks).
+        let greedy_only = QuadOptions {
+            karp_sipser: KarpSipserOptions {
+                file_order: false,
+                ..KarpSipserOptions::default()
+            },
+            ..QuadOptions::default()
+        };
+        let ks = QuadAlgorithm::KarpSipser;
+        let result = quadrangulate_with(mesh, ks, &greedy_only)
+            .unwrap_or_else(|e| panic!("{name} ks without file order: {e}"));
+        check_result(&format!("{name} ks without file order"), mesh, ks, &result);
+        assert!(!result.karp_sipser.unwrap().file_order, "{name}");
     }
+}
+
+/// A torus written quad by quad (triangles 2k and 2k + 1 share the quad's diagonal) comes back as
+/// its own quads from KS, with no greedy; without the file-order step the greedy runs.
+#[test]
+fn ks_gives_back_the_quads_a_file_was_written_in() {
+    let surface = torus(20, 7);
+    let mesh = &surface.mesh;
+    let (_, triangles) = surface.to_triangles();
+    let written: std::collections::HashSet<Vec<u32>> = triangles
+        .chunks(2)
+        .map(|pair| {
+            let mut quad: Vec<u32> = pair.concat();
+            quad.sort_unstable();
+            quad.dedup();
+            quad
+        })
+        .collect();
+    let quads_of = |result: &surftopo_quad::QuadResult| -> std::collections::HashSet<Vec<u32>> {
+        result
+            .quads
+            .iter()
+            .map(|q| {
+                let mut quad: Vec<u32> = q.iter().map(|v| v.0).collect();
+                quad.sort_unstable();
+                quad
+            })
+            .collect()
+    };
+    let ks = QuadAlgorithm::KarpSipser;
+    let result = quadrangulate(mesh, ks).unwrap();
+    check_result("torus20x7 ks", mesh, ks, &result);
+    assert!(result.karp_sipser.unwrap().file_order);
+    assert_eq!(result.stats.unpaired, 0);
+    assert_eq!(quads_of(&result), written);
+    let greedy_only = QuadOptions {
+        karp_sipser: KarpSipserOptions {
+            file_order: false,
+            ..KarpSipserOptions::default()
+        },
+        ..QuadOptions::default()
+    };
+    let result = quadrangulate_with(mesh, ks, &greedy_only).unwrap();
+    check_result("torus20x7 ks without file order", mesh, ks, &result);
+    assert!(!result.karp_sipser.unwrap().file_order);
 }
 
 #[test]
@@ -85,8 +143,15 @@ fn both_augmenting_strategies_give_perfect_pairings() {
             QuadAlgorithm::PulliSegal { seed: 3 },
             QuadAlgorithm::Lrs,
         ] {
-            let result =
-                quadrangulate_with(&surface.mesh, algorithm, &QuadOptions { augment }).unwrap();
+            let result = quadrangulate_with(
+                &surface.mesh,
+                algorithm,
+                &QuadOptions {
+                    augment,
+                    ..QuadOptions::default()
+                },
+            )
+            .unwrap();
             check_result(
                 &format!("{algorithm} {augment:?}"),
                 &surface.mesh,
