@@ -4,10 +4,11 @@
 //! other). KS ([`crate::karp_sipser`]) takes it before any greedy when it exists.
 //!
 //! Why: such files are common, their quads are the pairing a user expects back, and a greedy can
-//! do badly on them. Measured (`quad_tables --side-by-side`, results/quad.md, session 6): on
-//! sketched_brunnen with its faces in reverse order (still quad by quad), KS took 5.9 ms, 71% of it
-//! in augmenting paths, where LEMON's `MaxMatching::run()` took 0.5 ms: its greedy
-//! initialisation, in node order, happens to follow the quads.
+//! do badly on them. Measured (`quad_tables --side-by-side --no-file-order`, results/quad.md,
+//! session 6, run B): on sketched_brunnen with its faces in reverse order (still quad by quad),
+//! KS's greedy took 10.4 ms, 77% of it in augmenting paths, where LEMON's `MaxMatching::run()`
+//! took 0.8 ms (its greedy initialisation, in node order, happens to follow the quads); with this
+//! step KS takes 0.3 ms (run A).
 //!
 //! The check stops at the first pair that is not adjacent, so other files pay for a few
 //! adjacency reads only (on the shared meshes that are not quad by quad, the first failure is
@@ -45,9 +46,7 @@ mod tests {
         let edges: Vec<[u32; 2]> = (0..graph.edge_slots() as u32)
             .map(|e| graph.endpoints(e))
             .collect();
-        let matched: Vec<bool> = (0..graph.edge_slots())
-            .map(|e| pairing.mate.contains(&(e as u32)))
-            .collect();
+        let matched = pairing.edge_flags(graph.edge_slots());
         verify_perfect_matching_on(graph.node_slots() as u32, &edges, &matched).unwrap();
         for (v, &e) in pairing.mate.iter().enumerate() {
             let mut ends = graph.endpoints(e);

@@ -122,7 +122,8 @@ pub const GUIDED_DFS_FACTOR: usize = 4;
 pub struct KarpSipserStats {
     /// Whether the pairing is the file's quads ([`crate::file_order`]): no greedy, no search.
     pub file_order: bool,
-    /// Seconds of the greedy itself (or of the file-order check) (copying the adjacency included; repairs excluded).
+    /// Seconds of the greedy itself, copying the adjacency included, repairs excluded (with
+    /// `file_order`: of the file-order check).
     pub greedy_seconds: f64,
     /// Seconds of the repairs and of the final completion.
     pub augmentation_seconds: f64,
