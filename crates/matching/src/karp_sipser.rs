@@ -27,11 +27,20 @@
 //!   reaches 5–13x more nodes on venus and seahorse; on the bricks both orders isolate (almost)
 //!   nothing;
 //! - a started node is paired with its neighbour of smallest free degree, the "minimum degree"
-//!   rule of Magun (1998) that keeps few nodes isolated; ties go to the neighbour of smallest
-//!   id (in id order: the one on the side already swept, so the front leaves no gaps behind).
-//!   Measured (nodes reached by the repairs, `quad_profile`): against the first neighbour in
-//!   edge order, the bricks of groups A and B go from 3,000–8,000 isolated triangles to none at
-//!   all, and the shared meshes of 100k+ faces reach 8% fewer nodes;
+//!   rule of Magun (1998) that keeps few nodes isolated. Measured (nodes reached by the repairs,
+//!   `quad_profile`): against the first neighbour in edge order, the bricks of groups A and B go
+//!   from 3,000–8,000 isolated triangles to none at all, and the shared meshes of 100k+ faces
+//!   reach 8% fewer nodes;
+//! - ties go to the side already swept, so the front leaves no gaps behind and, on the
+//!   (near-)bipartite duals of regular meshes, pairs coherently, without seams of same-coloured
+//!   triangles that only long paths can pair: in id order the neighbour of smallest id (or
+//!   largest, once the sweep runs down); in breadth-first order the neighbour the front met
+//!   first. Measured (`quad_profile`, nodes reached), breadth-first ties by front against by
+//!   smallest id (a random choice when ids are not local): nefertiti 50k to 17k, skull 36k to
+//!   24k, gargoyle 57k to 41k, rolling_stage 75k to 66k, koala and igea unchanged, hand1 37k to
+//!   41k, brick B5 56 to 2.8k; with the faces shuffled, sketched_brunnen 219k to 74k,
+//!   seahorse2_100K 96k to 52k, venus_50k 34k to 4k, icosphere(7) 1.09M to 0.66M, feline 48k
+//!   to 60k;
 //! - degree-one nodes are paired as soon as they appear (a stack), before the next start;
 //! - in id order, a deferred node (see below) that is the only unpaired one behind the sweep,
 //!   met in the last [`REVERSE_TAIL`]th of the ids, reverses the sweep, so that the sweep ends
@@ -252,6 +261,9 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
 /// [`KarpSipser::free`] of a paired node.
 const PAIRED: u8 = u8::MAX;
 
+/// [`KarpSipser::seen`] of a node the front has not met.
+const UNSEEN: u32 = u32::MAX;
+
 /// Whether neighbouring nodes have close ids: the 90th percentile of `|v - w|` over the
 /// neighbours `w` of every 31st node `v` is at most [`LOCAL_ID_GAP`] (a prime stride: with 64,
 /// the periodic face order of sketched_brunnen gave a 90th percentile of 6,272 instead of 15).
@@ -289,6 +301,11 @@ struct KarpSipser<'g, G: ?Sized> {
     frontier: Vec<u32>,
     /// Start from the nodes in id order rather than from the frontier.
     id_order: bool,
+    /// In breadth-first order: per node slot, when the front first met it (its first push on
+    /// the frontier, or its start), `UNSEEN` before; the greedy's tie key. Empty in id order.
+    seen: Vec<u32>,
+    /// The next `seen` stamp.
+    seen_next: u32,
     /// The ids not considered yet as start nodes.
     sweep: IdSweep,
     /// Nodes a repair search may reach.
@@ -370,6 +387,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     /// slots.
     fn new(graph: &'g G, free_degrees: Vec<u8>, repair_budget: usize) -> Self {
         let n = graph.node_slots();
+        let id_order = ids_are_local(graph);
         KarpSipser {
             graph,
             mates: vec![[NONE, NONE]; n],
@@ -380,7 +398,13 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             search: None,
             stats: KarpSipserStats::default(),
             frontier: Vec::new(),
-            id_order: ids_are_local(graph),
+            id_order,
+            seen: if id_order {
+                Vec::new()
+            } else {
+                vec![UNSEEN; n]
+            },
+            seen_next: 0,
             sweep: IdSweep {
                 low: 0,
                 high: n as u32,
@@ -427,21 +451,27 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     fn greedy(&mut self) {
         let mut head = 0;
         while let Some(s) = self.next_start(&mut head) {
-            let mut best: Option<(u8, u32, u32)> = None;
-            // Ties: the smallest id, or the largest once the sweep runs down (the side swept).
+            let mut best: Option<(u8, u32, u32, u32)> = None;
+            // Ties: the side already swept. In id order the smallest id, or the largest once
+            // the sweep runs down; in breadth-first order the node the front met first.
             let flip = if self.sweep.descending { u32::MAX } else { 0 };
             for (e, w) in self.graph.adjacent(s) {
                 if w != s && self.is_free(w) {
                     let d = self.free[w as usize];
-                    if best.is_none_or(|(b, _, bw)| (d, w ^ flip) < (b, bw ^ flip)) {
-                        best = Some((d, e, w));
+                    let tie = if self.id_order {
+                        w ^ flip
+                    } else {
+                        self.seen[w as usize]
+                    };
+                    if best.is_none_or(|(b, bt, _, _)| (d, tie) < (b, bt)) {
+                        best = Some((d, tie, e, w));
                     }
                 }
             }
             // A start node has a free neighbour (a node whose free degree drops to 0 is isolated,
             // never started from).
             debug_assert!(best.is_some(), "start node {s} has no free neighbour");
-            if let Some((_, e, w)) = best {
+            if let Some((_, _, e, w)) = best {
                 self.join(e, s, w);
             }
             self.drain();
@@ -461,10 +491,22 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
         // A removed node slot has free degree 0.
         while let Some(v) = self.sweep.next() {
             if self.is_free(v) && self.free[v as usize] > 0 {
+                self.mark_seen(v);
                 return Some(v);
             }
         }
         None
+    }
+
+    /// Stamps `v` as met by the front now, unless it was met before (breadth-first order only).
+    #[inline]
+    fn mark_seen(&mut self, v: u32) {
+        if let Some(stamp) = self.seen.get_mut(v as usize)
+            && *stamp == UNSEEN
+        {
+            *stamp = self.seen_next;
+            self.seen_next += 1;
+        }
     }
 
     /// After a deferral in id order: when the deferred node is the only unpaired one behind
@@ -527,6 +569,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             if y != x && self.is_free(y) {
                 if !self.id_order {
                     self.frontier.push(y);
+                    self.mark_seen(y);
                 }
                 let f = &mut self.free[y as usize];
                 *f -= 1;

@@ -513,3 +513,37 @@ fn karp_sipser_reports_a_missing_perfect_matching() {
         );
     }
 }
+
+/// In breadth-first order (ids not local), ties of the minimum-degree rule go to the node the
+/// front met first, so the greedy follows its front coherently: on face-shuffled grids (duals
+/// bipartite and regular, where the smallest id is a random choice) it isolates few triangles:
+/// 11 on these four grids, against 88 (1–38 per grid) with ties to the smallest id.
+#[test]
+fn karp_sipser_breadth_first_ties_follow_the_front() {
+    use rand::SeedableRng;
+    use rand::seq::SliceRandom;
+    use surftopo_mesh::generators::Surface;
+    let greedy_only = KarpSipserOptions {
+        file_order: false,
+        ..KarpSipserOptions::default()
+    };
+    let mut isolated = 0;
+    for (m, n) in [(64, 64), (90, 70), (128, 96), (200, 100)] {
+        let (positions, mut triangles) = torus(m, n).to_triangles();
+        triangles.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(3));
+        let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
+        let mesh = &shuffled.mesh;
+        let (pairing, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
+        check_ks_stats(&stats, &greedy_only);
+        let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
+            .map(|e| DualGraph::endpoints(mesh, e))
+            .collect();
+        assert_eq!(
+            check_matching(mesh.face_count(), &edges, pairing.mates()),
+            0
+        );
+        assert!(!stats.id_order, "{m}x{n}: shuffled ids are not local");
+        isolated += stats.isolated;
+    }
+    assert!(isolated <= 16, "{isolated} isolated on the four grids");
+}
