@@ -43,6 +43,13 @@ fn check_matching(node_count: usize, edges: &[[u32; 2]], mates: &[u32]) -> usize
     unmatched
 }
 
+/// The dual edges of `mesh` as node pairs, by edge id.
+fn dual_edges(mesh: &surftopo_mesh::SurfaceMesh) -> Vec<[u32; 2]> {
+    (0..DualGraph::edge_slots(mesh) as u32)
+        .map(|e| DualGraph::endpoints(mesh, e))
+        .collect()
+}
+
 /// No edge joins two unmatched nodes.
 fn check_maximal(edges: &[[u32; 2]], mates: &[u32]) {
     for (e, &[a, b]) in edges.iter().enumerate() {
@@ -441,9 +448,7 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
             by_edmonds += stats.guided_by_edmonds;
             completed += stats.completed;
             reversals += stats.reversals;
-            let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
-                .map(|e| DualGraph::endpoints(mesh, e))
-                .collect();
+            let edges = dual_edges(mesh);
             assert_eq!(
                 check_matching(mesh.face_count(), &edges, pairing.mates()),
                 0
@@ -481,9 +486,7 @@ fn karp_sipser_pairs_a_file_written_quad_by_quad_as_written() {
     let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
     assert!(stats.file_order);
     check_ks_stats(&stats, &options);
-    let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
-        .map(|e| DualGraph::endpoints(mesh, e))
-        .collect();
+    let edges = dual_edges(mesh);
     assert_eq!(
         check_matching(mesh.face_count(), &edges, pairing.mates()),
         0
@@ -535,9 +538,7 @@ fn karp_sipser_breadth_first_ties_follow_the_front() {
         let mesh = &shuffled.mesh;
         let (pairing, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
         check_ks_stats(&stats, &greedy_only);
-        let edges: Vec<[u32; 2]> = (0..DualGraph::edge_slots(mesh) as u32)
-            .map(|e| DualGraph::endpoints(mesh, e))
-            .collect();
+        let edges = dual_edges(mesh);
         assert_eq!(
             check_matching(mesh.face_count(), &edges, pairing.mates()),
             0
