@@ -297,6 +297,7 @@ fn every_generator_gives_a_valid_surface_of_its_genus() {
     let cases: &[(&[&str], i64)] = &[
         (&["tetrahedron"], 0),
         (&["icosphere", "--subdivisions", "2"], 0),
+        (&["icosphere", "--subdivisions", "2", "--shuffle-faces"], 0),
         (
             &[
                 "torus", "--m", "8", "--n", "6", "--flips", "40", "--seed", "3",

@@ -4,7 +4,7 @@
 use std::collections::{HashMap, HashSet};
 use surftopo_mesh::generators::{
     CavityBox, Surface, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
-    subdivide_midpoint, tetrahedron, torus,
+    shuffle_faces, subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_mesh::{LinkScratch, Point3};
 
@@ -589,4 +589,35 @@ fn simplify_is_deterministic_per_seed() {
     assert_ne!(a.mesh, simplify(&input, 150, 10).mesh);
     // torus(16, 12): V 192, E 576, F 384; 117 contractions down to 150 faces.
     check_surface(&a, 192 - 117, 576 - 3 * 117, 150, 1);
+}
+
+/// Shuffling keeps the triangles (as oriented vertex triples, up to rotation), the positions and
+/// the genus; it changes their order, the same way for the same seed.
+#[test]
+fn shuffled_faces_are_the_same_surface_in_another_order() {
+    let rotated = |t: [u32; 3]| {
+        let k = (0..3).min_by_key(|&k| t[k]).expect("three corners");
+        [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+    };
+    let surface = torus(12, 9);
+    let (positions, triangles) = surface.to_triangles();
+    let shuffled = shuffle_faces(&surface, 5);
+    let (shuffled_positions, shuffled_triangles) = shuffled.to_triangles();
+    assert_eq!(shuffled_positions, positions);
+    assert_eq!(shuffled.mesh.genus(), 1);
+    assert_ne!(shuffled_triangles, triangles, "the order changed");
+    let set = |ts: &[[u32; 3]]| {
+        let mut v: Vec<[u32; 3]> = ts.iter().map(|&t| rotated(t)).collect();
+        v.sort_unstable();
+        v
+    };
+    assert_eq!(set(&shuffled_triangles), set(&triangles));
+    assert_eq!(
+        shuffle_faces(&surface, 5).to_triangles().1,
+        shuffled_triangles
+    );
+    assert_ne!(
+        shuffle_faces(&surface, 6).to_triangles().1,
+        shuffled_triangles
+    );
 }

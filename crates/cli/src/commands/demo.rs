@@ -23,6 +23,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         simplify: None,
         flips: 2000,
         splits: 0,
+        shuffle_faces: false,
         seed: 7,
     };
     let surface = generate::modify(generate::generate(&kind)?, &modifiers)?;

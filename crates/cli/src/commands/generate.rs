@@ -1,5 +1,5 @@
-//! `surftopo generate`: every surface generator, with optional subdivision, random flips and
-//! random vertex splits applied in that order.
+//! `surftopo generate`: every surface generator, with optional subdivision, simplification,
+//! random flips, random vertex splits and a random face order, applied in that order.
 
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
@@ -106,10 +106,14 @@ pub struct Modifiers {
     /// Random simplicial edge flips applied after simplification (irregular connectivity).
     #[arg(long, default_value_t = 0, global = true)]
     pub flips: usize,
-    /// Random vertex splits applied last.
+    /// Random vertex splits applied after the flips.
     #[arg(long, default_value_t = 0, global = true)]
     pub splits: usize,
-    /// Seed of the random flips and splits.
+    /// List the triangles in a random order, last (the same surface; measures how algorithms
+    /// depend on the face order of a file).
+    #[arg(long, global = true)]
+    pub shuffle_faces: bool,
+    /// Seed of the random simplification, flips, splits and face order.
     #[arg(long, default_value_t = 1, global = true)]
     pub seed: u64,
 }
@@ -200,7 +204,8 @@ fn check_size(triangles: u64) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Applies the modifiers to a generated surface: subdivision, simplification, flips, splits.
+/// Applies the modifiers to a generated surface: subdivision, simplification, flips, splits, face
+/// order.
 pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Surface> {
     if modifiers.subdivide > 0 {
         let grown = (surface.mesh.face_count() as u64)
@@ -217,6 +222,9 @@ pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Sur
     if modifiers.splits > 0 {
         check_size(surface.mesh.face_count() as u64 + 2 * modifiers.splits as u64)?;
         surface = generators::random_vertex_splits(&surface, modifiers.splits, modifiers.seed);
+    }
+    if modifiers.shuffle_faces {
+        surface = generators::shuffle_faces(&surface, modifiers.seed);
     }
     Ok(surface)
 }
@@ -235,9 +243,13 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
-            if modifiers.subdivide > 0 || modifiers.splits > 0 || modifiers.simplify.is_some() {
+            if modifiers.subdivide > 0
+                || modifiers.splits > 0
+                || modifiers.simplify.is_some()
+                || modifiers.shuffle_faces
+            {
                 return Err(crate::failure::invalid(
-                    "--subdivide, --simplify and --splits need positions; this generator makes an intrinsic triangulation",
+                    "--subdivide, --simplify, --splits and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
                 ));
             }
             if modifiers.flips > 0 {

@@ -15,6 +15,7 @@
 //! | [`subdivide_midpoint`]`(surface, levels)` | 1-to-4 midpoint subdivision, `levels` times |
 //! | [`random_vertex_splits`]`(surface, k, seed)` | `k` random vertex splits (the inverse of contractions) |
 //! | [`simplify`]`(surface, faces, seed)` | random link-condition edge contractions down to `faces` faces (same genus) |
+//! | [`shuffle_faces`]`(surface, seed)` | the same triangles listed in a seeded random order |
 
 mod basic;
 mod cavity_box;
@@ -22,6 +23,7 @@ mod dense;
 mod flips;
 mod genus;
 mod polycube;
+mod shuffle;
 mod simplify;
 mod subdivide;
 mod vertex_splits;
@@ -30,6 +32,7 @@ pub use basic::{icosphere, sheared_torus, tetrahedron, torus};
 pub use cavity_box::{CavityBox, cavity_box};
 pub use flips::random_flips;
 pub use genus::genus_surface;
+pub use shuffle::shuffle_faces;
 pub use simplify::simplify;
 pub use subdivide::subdivide_midpoint;
 pub use vertex_splits::random_vertex_splits;
