@@ -10,7 +10,7 @@ use surftopo_matching::{
     karp_sipser_perfect_with, pulli_segal, simple_greedy, verify_perfect_matching,
     verify_perfect_matching_on,
 };
-use surftopo_mesh::generators::{icosphere, torus};
+use surftopo_mesh::generators::{icosphere, shuffle_faces, torus};
 
 const STRATEGIES: [AugmentStrategy; 4] = [
     AugmentStrategy::Forest,
@@ -425,13 +425,8 @@ fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
 
 #[test]
 fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
-    use rand::SeedableRng;
-    use rand::seq::SliceRandom;
-    use surftopo_mesh::generators::Surface;
     let grid = torus(90, 70);
-    let (positions, mut triangles) = grid.to_triangles();
-    triangles.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(3));
-    let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
+    let shuffled = shuffle_faces(&grid, 3);
     let mut seen = [false; 2];
     let mut deferred_and_repaired = false;
     let (mut guided, mut by_edmonds, mut completed, mut reversals) = (0, 0, 0, 0);
@@ -523,18 +518,13 @@ fn karp_sipser_reports_a_missing_perfect_matching() {
 /// 11 on these four grids, against 88 (1–38 per grid) with ties to the smallest id.
 #[test]
 fn karp_sipser_breadth_first_ties_follow_the_front() {
-    use rand::SeedableRng;
-    use rand::seq::SliceRandom;
-    use surftopo_mesh::generators::Surface;
     let greedy_only = KarpSipserOptions {
         file_order: false,
         ..KarpSipserOptions::default()
     };
     let mut isolated = 0;
     for (m, n) in [(64, 64), (90, 70), (128, 96), (200, 100)] {
-        let (positions, mut triangles) = torus(m, n).to_triangles();
-        triangles.shuffle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(3));
-        let shuffled = Surface::from_triangles(positions, &triangles).unwrap();
+        let shuffled = shuffle_faces(&torus(m, n), 3);
         let mesh = &shuffled.mesh;
         let (pairing, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
         check_ks_stats(&stats, &greedy_only);
