@@ -7,8 +7,8 @@ mod support;
 use support::{check_result, check_same_surface, naive_contractions};
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::{
-    CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits, tetrahedron,
-    torus,
+    CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits,
+    shuffle_faces, tetrahedron, torus,
 };
 use surftopo_quad::{
     AugmentStrategy, KarpSipserOptions, QuadAlgorithm, QuadError, QuadOptions, expand,
@@ -48,6 +48,15 @@ fn families() -> Vec<(String, Surface)> {
             random_vertex_splits(s, s.mesh.vertex_count(), 9),
         ));
     }
+    // Face order shuffled: ids not local, so KS starts in breadth-first order.
+    out.push((
+        "icosphere5+shuffled".into(),
+        shuffle_faces(&icosphere(5), 4),
+    ));
+    out.push((
+        "genus200+shuffled".into(),
+        shuffle_faces(&genus_surface(200, 1), 4),
+    ));
     // High genus relative to size, very irregular.
     out.push((
         "genus45+flips+flips".into(),
