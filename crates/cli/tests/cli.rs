@@ -610,6 +610,7 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
                 "augmentation_seconds",
                 "total_seconds",
                 "flipped_edges",
+                "file_order",
             ],
         );
         let quads = surftopo_io::read_path(&output).unwrap();
@@ -655,5 +656,37 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
                 }
             }
         }
+    }
+}
+
+/// `file_order` in `quad --json`: true when KS takes a file written quad by quad as it is (a
+/// generated torus), false once its faces are shuffled and for the other algorithms.
+#[test]
+fn quad_json_says_whether_the_file_order_was_taken() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (&[][..], "ks", true),
+        (&["--shuffle-faces"][..], "ks", false),
+        (&[][..], "sg", false),
+    ];
+    for (k, (extra, algorithm, expected)) in cases.into_iter().enumerate() {
+        let input = dir.path().join(format!("t{k}.obj"));
+        surftopo()
+            .args(["generate", "torus", "--m", "12", "--n", "8", "-o"])
+            .arg(&input)
+            .args(extra)
+            .assert()
+            .success();
+        let output = dir.path().join(format!("q{k}.obj"));
+        let v = json_of(
+            surftopo()
+                .arg("quad")
+                .arg(&input)
+                .arg("-o")
+                .arg(&output)
+                .args(["--algorithm", algorithm, "--json"]),
+            &["file_order"],
+        );
+        assert_eq!(v["file_order"], expected, "{algorithm} {extra:?}: {v}");
     }
 }

@@ -92,6 +92,9 @@ pub struct QuadStats {
     pub total_seconds: f64,
     /// Edges of the input whose flip is in K (LRS; 0 for the other algorithms).
     pub flipped_edges: usize,
+    /// KS: whether the file listed its triangles two by two as quads (triangle `2k` adjacent to
+    /// `2k + 1`) and those were taken as they are (no greedy, no search). False otherwise.
+    pub file_order: bool,
 }
 
 /// A quadrangulation and how it was obtained.
@@ -171,6 +174,7 @@ pub fn quadrangulate_with(
         augmentation_seconds: paired.augmentation_seconds,
         total_seconds: start.elapsed().as_secs_f64(),
         flipped_edges: paired.flipped_edges,
+        file_order: paired.karp_sipser.is_some_and(|ks| ks.file_order),
     };
     Ok(QuadResult {
         quads,
