@@ -22,6 +22,25 @@ fn json_of(cmd: &mut assert_cmd::Command, keys: &[&str]) -> Value {
     v
 }
 
+/// `surftopo COMMAND INPUT -o OUTPUT ARGS...`'s JSON, which must succeed and have `keys`.
+fn command_json(
+    command: &str,
+    input: &std::path::Path,
+    output: &std::path::Path,
+    args: &[&str],
+    keys: &[&str],
+) -> Value {
+    json_of(
+        surftopo()
+            .arg(command)
+            .arg(input)
+            .arg("-o")
+            .arg(output)
+            .args(args),
+        keys,
+    )
+}
+
 fn info_json(path: &std::path::Path, extra: &[&str]) -> Value {
     json_of(
         surftopo().arg("info").arg(path).arg("--json").args(extra),
@@ -499,13 +518,11 @@ fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
         .success();
     for algorithm in ["rs", "schipper", "brute-force"] {
         let output = dir.path().join(format!("irr-{algorithm}.obj"));
-        let v = json_of(
-            surftopo()
-                .arg("irreducible")
-                .arg(&input)
-                .arg("-o")
-                .arg(&output)
-                .args(["--algorithm", algorithm, "--seed", "9", "--json"]),
+        let v = command_json(
+            "irreducible",
+            &input,
+            &output,
+            &["--algorithm", algorithm, "--seed", "9", "--json"],
             &[
                 "algorithm",
                 "input",
@@ -594,13 +611,11 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
     let triangles: HashSet<[u32; 3]> = soup.triangles().unwrap().into_iter().map(key).collect();
     for algorithm in ["sg", "ps", "lrs", "ds", "ks"] {
         let output = dir.path().join(format!("q-{algorithm}.obj"));
-        json_of(
-            surftopo()
-                .arg("quad")
-                .arg(&input)
-                .arg("-o")
-                .arg(&output)
-                .args(["--algorithm", algorithm, "--json"]),
+        command_json(
+            "quad",
+            &input,
+            &output,
+            &["--algorithm", algorithm, "--json"],
             &[
                 "algorithm",
                 "faces",
@@ -678,13 +693,11 @@ fn quad_json_says_whether_the_file_order_was_taken() {
             .assert()
             .success();
         let output = dir.path().join(format!("q{k}.obj"));
-        let v = json_of(
-            surftopo()
-                .arg("quad")
-                .arg(&input)
-                .arg("-o")
-                .arg(&output)
-                .args(["--algorithm", algorithm, "--json"]),
+        let v = command_json(
+            "quad",
+            &input,
+            &output,
+            &["--algorithm", algorithm, "--json"],
             &["file_order"],
         );
         assert_eq!(v["file_order"], expected, "{algorithm} {extra:?}: {v}");

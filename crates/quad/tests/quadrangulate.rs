@@ -369,6 +369,7 @@ fn stats_serialise_with_the_table_columns() {
         "augmentation_seconds",
         "total_seconds",
         "flipped_edges",
+        "file_order",
     ];
     let mut got = keys.clone();
     got.sort_unstable();
@@ -376,4 +377,5 @@ fn stats_serialise_with_the_table_columns() {
     assert_eq!(got, expected);
     assert_eq!(json["algorithm"], "lrs");
     assert_eq!(json["faces"], 60);
+    assert_eq!(json["file_order"], false);
 }
