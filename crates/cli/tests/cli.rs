@@ -206,6 +206,28 @@ fn usage_errors_exit_with_code_2() {
         .code(2);
 }
 
+/// The modifiers that need a surface mesh are refused, with exit code 2 and no file written, for
+/// a generator that makes an intrinsic triangulation.
+#[test]
+fn surface_modifiers_are_refused_for_intrinsic_generators() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("t.json");
+    for modifier in [&["--shuffle-faces"][..], &["--subdivide", "1"]] {
+        let assert = surftopo()
+            .args(["generate", "flat-torus", "--x", "3", "-o"])
+            .arg(&out)
+            .args(modifier)
+            .assert()
+            .code(2);
+        let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+        assert!(
+            stderr.contains("need a surface mesh"),
+            "{modifier:?}: {stderr}"
+        );
+        assert!(!out.exists(), "{modifier:?}");
+    }
+}
+
 #[test]
 fn generate_convert_and_read_back() {
     let dir = tempfile::tempdir().unwrap();
