@@ -648,6 +648,7 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
                 "total_seconds",
                 "flipped_edges",
                 "file_order",
+                "subdivision_levels",
             ],
         );
         let quads = surftopo_io::read_path(&output).unwrap();
@@ -696,17 +697,19 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
     }
 }
 
-/// `file_order` in `quad --json`: true when KS takes a file written quad by quad as it is (a
-/// generated torus), false once its faces are shuffled and for the other algorithms.
+/// `file_order` and `subdivision_levels` in `quad --json`: a generated torus is written quad by
+/// quad, so KS takes it as it is; subdivided twice, KS lifts the torus's pairing through two
+/// levels; shuffled, neither; the other algorithms report neither.
 #[test]
-fn quad_json_says_whether_the_file_order_was_taken() {
+fn quad_json_says_whether_the_file_order_or_a_subdivision_was_taken() {
     let dir = tempfile::tempdir().unwrap();
     let cases = [
-        (&[][..], "ks", true),
-        (&["--shuffle-faces"][..], "ks", false),
-        (&[][..], "sg", false),
+        (&[][..], "ks", true, 0),
+        (&["--subdivide", "2"][..], "ks", false, 2),
+        (&["--shuffle-faces"][..], "ks", false, 0),
+        (&["--subdivide", "2"][..], "sg", false, 0),
     ];
-    for (k, (extra, algorithm, expected)) in cases.into_iter().enumerate() {
+    for (k, (extra, algorithm, file_order, levels)) in cases.into_iter().enumerate() {
         let input = dir.path().join(format!("t{k}.obj"));
         surftopo()
             .args(["generate", "torus", "--m", "12", "--n", "8", "-o"])
@@ -720,8 +723,12 @@ fn quad_json_says_whether_the_file_order_was_taken() {
             &input,
             &output,
             &["--algorithm", algorithm, "--json"],
-            &["file_order"],
+            &["file_order", "subdivision_levels"],
         );
-        assert_eq!(v["file_order"], expected, "{algorithm} {extra:?}: {v}");
+        assert_eq!(
+            v["subdivision_levels"], levels,
+            "{algorithm} {extra:?}: {v}"
+        );
+        assert_eq!(v["file_order"], file_order, "{algorithm} {extra:?}: {v}");
     }
 }

@@ -38,16 +38,12 @@ pub fn file_order_pairing<G: DualGraph + ?Sized>(graph: &G) -> Option<Pairing> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verify::verify_perfect_matching_on;
+    use crate::verify::assert_perfect_pairing;
     use surftopo_mesh::generators::{Surface, icosphere, torus};
 
     /// Checks `pairing` independently: perfect on `graph`, and each pair is `{2k, 2k + 1}`.
     fn check_file_order<G: DualGraph + ?Sized>(graph: &G, pairing: &Pairing) {
-        let edges: Vec<[u32; 2]> = (0..graph.edge_slots() as u32)
-            .map(|e| graph.endpoints(e))
-            .collect();
-        let matched = pairing.edge_flags(graph.edge_slots());
-        verify_perfect_matching_on(graph.node_slots() as u32, &edges, &matched).unwrap();
+        assert_perfect_pairing(graph, pairing);
         for (v, &e) in pairing.mate.iter().enumerate() {
             let mut ends = graph.endpoints(e);
             ends.sort_unstable();

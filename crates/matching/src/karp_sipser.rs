@@ -9,6 +9,13 @@
 //! adjacent to `2k + 1`), that pairing is perfect and is returned as it is, in O(n), with no
 //! greedy ([`crate::file_order`] says why; [`KarpSipserOptions::file_order`] turns it off).
 //!
+//! # Step 1: the coarser mesh's pairing
+//! When the triangles are written four by four as the children of a 1-to-4 subdivision, KS
+//! pairs the coarser mesh (recursively, so every level of subdivision is peeled off) and lifts
+//! that pairing in O(n), with no greedy ([`crate::subdivision_order`] says how and why;
+//! [`KarpSipserOptions::subdivision`] turns it off). A coarse graph with no perfect pairing
+//! (possible when the blocks only look like a subdivision) falls back to the greedy.
+//!
 //! # The greedy
 //! Karp and Sipser, "Maximum matchings in sparse random graphs" (FOCS 1981): while a free node
 //! has exactly one free neighbour, pair the two (such a pair is in some maximum matching, so the
@@ -88,6 +95,7 @@ use std::time::Instant;
 use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 use crate::file_order::file_order_pairing;
+use crate::subdivision_order::coarsen;
 
 /// Nodes a repair's Edmonds search may reach before it is abandoned and its node deferred to the
 /// completion. Measured before the guided completion existed (`quad_profile`, nodes reached on
@@ -131,6 +139,9 @@ pub const GUIDED_DFS_FACTOR: usize = 4;
 pub struct KarpSipserStats {
     /// Whether the pairing is the file's quads ([`crate::file_order`]): no greedy, no search.
     pub file_order: bool,
+    /// Levels of 1-to-4 subdivision the pairing was lifted through ([`crate::subdivision_order`]);
+    /// the other figures are then those of the coarsest level's run.
+    pub subdivision_levels: u32,
     /// Seconds of the greedy itself, copying the adjacency included, repairs excluded (with
     /// `file_order`: of the file-order check).
     pub greedy_seconds: f64,
@@ -172,6 +183,9 @@ pub struct KarpSipserOptions {
     pub guided_completion: bool,
     /// Whether a file written quad by quad is paired as written (step 0 of the module doc).
     pub file_order: bool,
+    /// Whether a file written as a 1-to-4 subdivision is paired by lifting the coarser mesh's
+    /// pairing (step 1 of the module doc).
+    pub subdivision: bool,
 }
 
 impl Default for KarpSipserOptions {
@@ -180,6 +194,7 @@ impl Default for KarpSipserOptions {
             repair_budget: REPAIR_BUDGET,
             guided_completion: true,
             file_order: true,
+            subdivision: true,
         }
     }
 }
@@ -222,7 +237,22 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
         };
         return Ok((pairing, stats));
     }
+    // The copy serves the greedy too; the lift reads it rather than the mesh, whose half-edges
+    // need not be in face order.
     let (compact, degrees) = CompactDual::with_degrees(graph);
+    if options.subdivision
+        && let Some(level) = coarsen(&compact)
+        && let Ok((coarse, coarse_stats)) = karp_sipser_perfect_with(level.coarse(), options)
+    {
+        let pairing = level.lift(&compact, &coarse);
+        let stats = KarpSipserStats {
+            file_order: false,
+            subdivision_levels: coarse_stats.subdivision_levels + 1,
+            greedy_seconds: start.elapsed().as_secs_f64() - coarse_stats.augmentation_seconds,
+            ..coarse_stats
+        };
+        return Ok((pairing, stats));
+    }
     let mut ks = KarpSipser::new(&compact, degrees, options.repair_budget);
     ks.greedy();
     if options.guided_completion {
@@ -943,7 +973,12 @@ mod tests {
         graph: &'g CompactDual<'g, G>,
         steps: usize,
     ) -> (KarpSipser<'g, CompactDual<'g, G>>, Vec<u32>) {
-        let (perfect, _) = karp_sipser_perfect(graph).unwrap();
+        // The greedy's pairing (the tests' paths were chosen on it), not the lifted one.
+        let greedy = KarpSipserOptions {
+            subdivision: false,
+            ..KarpSipserOptions::default()
+        };
+        let (perfect, _) = karp_sipser_perfect_with(graph, &greedy).unwrap();
         let mut ks = KarpSipser::new(graph, vec![0; graph.node_slots()], 0);
         for v in 0..graph.node_slots() as u32 {
             let e = perfect.mate[v as usize];

@@ -10,6 +10,8 @@
 //!   the fastest on most meshes (not from the paper; see its module doc).
 //! * [`file_order`] — the pairing a triangulated quad mesh is written in (its quads), when the
 //!   file lists them two triangles at a time; KS's first step.
+//! * [`subdivision_order`] — the pairing of a mesh written as a 1-to-4 subdivision, lifted from
+//!   the coarser mesh's; KS's second step.
 //! * [`generators`] — seeded random bridgeless cubic multigraphs and mesh duals, for tests and
 //!   benchmarks.
 
@@ -34,6 +36,7 @@ pub mod file_order;
 pub mod greedy;
 pub mod karp_sipser;
 pub mod pulli_segal;
+pub mod subdivision_order;
 
 pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
 pub use dual_graph::{

@@ -200,6 +200,20 @@ impl PerfectMatching {
     }
 }
 
+/// Panics unless `pairing` is a perfect matching of `graph`, checked by
+/// [`verify_perfect_matching_on`] on the graph's edge list (for the crate's unit tests).
+#[cfg(test)]
+pub(crate) fn assert_perfect_pairing<G: crate::DualGraph + ?Sized>(
+    graph: &G,
+    pairing: &crate::Pairing,
+) {
+    let edges: Vec<[u32; 2]> = (0..graph.edge_slots() as u32)
+        .map(|e| graph.endpoints(e))
+        .collect();
+    let matched = pairing.edge_flags(graph.edge_slots());
+    verify_perfect_matching_on(graph.node_slots() as u32, &edges, &matched).unwrap();
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

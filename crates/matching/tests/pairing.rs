@@ -10,7 +10,9 @@ use surftopo_matching::{
     karp_sipser_perfect_with, pulli_segal, simple_greedy, verify_perfect_matching,
     verify_perfect_matching_on,
 };
-use surftopo_mesh::generators::{icosphere, shuffle_faces, torus};
+use surftopo_mesh::generators::{
+    genus_surface, icosphere, shuffle_faces, subdivide_midpoint, torus,
+};
 
 const STRATEGIES: [AugmentStrategy; 4] = [
     AugmentStrategy::Forest,
@@ -379,8 +381,8 @@ fn karp_sipser_gives_perfect_matchings() {
     }
 }
 
-/// Every repair budget, with and without the guided completion (the file-order step off, so that
-/// the greedy runs on grids written quad by quad too).
+/// Every repair budget, with and without the guided completion (the file-order and subdivision
+/// steps off, so that the greedy runs on grids written quad by quad and on icospheres too).
 fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
     budgets
         .into_iter()
@@ -389,6 +391,7 @@ fn ks_options(budgets: [usize; 3]) -> Vec<KarpSipserOptions> {
                 repair_budget,
                 guided_completion,
                 file_order: false,
+                subdivision: false,
             })
         })
         .collect()
@@ -402,6 +405,9 @@ fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
         assert!(options.file_order);
         assert_eq!(stats.isolated + stats.augment.reached as usize, 0);
         assert_eq!(stats.augmentation_seconds, 0.0);
+    }
+    if stats.subdivision_levels > 0 {
+        assert!(options.subdivision && !stats.file_order);
     }
     assert_eq!(stats.repaired + stats.deferred, stats.isolated);
     assert!(stats.completed.is_multiple_of(2));
@@ -498,6 +504,77 @@ fn karp_sipser_pairs_a_file_written_quad_by_quad_as_written() {
     };
     let (_, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
     assert!(!stats.file_order);
+}
+
+/// A mesh written as a 1-to-4 subdivision (children of face `f` at `4f..4f + 4`) is paired by
+/// lifting the coarser mesh's pairing, level by level; the result is checked independently.
+#[test]
+fn karp_sipser_lifts_the_pairing_of_a_mesh_written_as_a_subdivision() {
+    let options = KarpSipserOptions::default();
+    let genus3 = subdivide_midpoint(&genus_surface(3, 3), 2);
+    let shuffled = shuffle_faces(&icosphere(4), 5);
+    for (mesh, levels) in [
+        (&icosphere(5).mesh, 5),
+        (&genus3.mesh, 2),
+        (&shuffled.mesh, 0),
+    ] {
+        let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
+        check_ks_stats(&stats, &options);
+        assert_eq!(stats.subdivision_levels, levels);
+        let edges = dual_edges(mesh);
+        assert_eq!(
+            check_matching(mesh.face_count(), &edges, pairing.mates()),
+            0
+        );
+        let off = KarpSipserOptions {
+            subdivision: false,
+            ..options
+        };
+        let (_, stats) = karp_sipser_perfect_with(mesh, &off).unwrap();
+        assert_eq!(stats.subdivision_levels, 0);
+    }
+}
+
+/// The 1-to-4 expansion of `coarse`: node `k` becomes the centre `4k + 3` and the corners
+/// `4k..4k + 3`; the `s`-th edge at a node is touched by its corners `s` and `s + 1` (mod 3),
+/// which are joined to the two corners of the other end that touch it.
+fn expanded(coarse: &RawCubic) -> RawCubic {
+    let n = coarse.incidence.len();
+    let mut edges: Vec<[u32; 2]> = (0..n as u32)
+        .flat_map(|k| (0..3).map(move |c| [4 * k + c, 4 * k + 3]))
+        .collect();
+    let slot = |e: u32, v: u32| {
+        let at = &coarse.incidence[v as usize];
+        // A loop is refused: each edge occurs once at each of its ends.
+        at.iter().position(|&f| f == e).unwrap() as u32
+    };
+    for (e, &[a, b]) in coarse.edges.iter().enumerate() {
+        let (s, t) = (slot(e as u32, a), slot(e as u32, b));
+        edges.push([4 * a + s, 4 * b + (t + 1) % 3]);
+        edges.push([4 * a + (s + 1) % 3, 4 * b + t]);
+    }
+    RawCubic::new(4 * n, edges)
+}
+
+/// When the blocks of four look like a subdivision but the coarse graph has no perfect pairing,
+/// KS falls back to its greedy on the graph itself (which has one: it is bridgeless).
+#[test]
+fn karp_sipser_falls_back_to_the_greedy_when_the_coarse_graph_has_no_perfect_pairing() {
+    let graph = expanded(&no_perfect_matching());
+    assert_eq!(petgraph_matching_size(64, &graph.edges), 32);
+    let options = KarpSipserOptions::default();
+    let (pairing, stats) = karp_sipser_perfect_with(&graph, &options).unwrap();
+    check_ks_stats(&stats, &options);
+    assert_eq!(stats.subdivision_levels, 0);
+    assert_eq!(check_matching(64, &graph.edges, pairing.mates()), 0);
+    // A graph expanded from one with a perfect pairing is lifted.
+    let lifted = expanded(&expanded(&RawCubic::new(
+        4,
+        vec![[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]],
+    )));
+    let (pairing, stats) = karp_sipser_perfect_with(&lifted, &options).unwrap();
+    assert_eq!(stats.subdivision_levels, 2);
+    assert_eq!(check_matching(64, &lifted.edges, pairing.mates()), 0);
 }
 
 #[test]

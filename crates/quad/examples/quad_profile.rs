@@ -9,7 +9,7 @@
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
 //! KS runs with its guided completion and with the Forest completion alone, alternately (with
 //! `ks` as the third argument: KS alone, guided, for a profiler); `KS_BUDGET=<n>` sets its repair
-//! budget, `KS_FILE_ORDER=0` turns off its file-order step, `COLD=1` flushes the caches before
+//! budget, `KS_FILE_ORDER=0` turns off its file-order step, `KS_SUBDIVISION=0` its subdivision step, `COLD=1` flushes the caches before
 //! each of its runs. Its line gives the mean CPU
 //! seconds per call, then the medians of the wall-clock stage times.
 
@@ -179,7 +179,7 @@ fn evict_caches(buffer: &mut [u8]) {
 
 /// KS with its guided completion (`true`) and with the Forest completion alone (`false`), as
 /// `guided` says, alternately. `KS_BUDGET` sets the repair budget; `KS_FILE_ORDER=0` turns off
-/// the file-order step.
+/// the file-order step, `KS_SUBDIVISION=0` the subdivision step.
 fn profile_ks(
     mesh: &surftopo_mesh::SurfaceMesh,
     repeat: usize,
@@ -190,6 +190,7 @@ fn profile_ks(
         Err(_) => KarpSipserOptions::default().repair_budget,
     };
     let file_order = std::env::var("KS_FILE_ORDER").map_or(true, |v| v != "0");
+    let subdivision = std::env::var("KS_SUBDIVISION").map_or(true, |v| v != "0");
     // `COLD=1`: the caches are flushed before each run (as a single call after other work).
     let mut evict = std::env::var_os("COLD").map(|_| vec![0u8; 64 << 20]);
     // Per variant: the CPU seconds and the stats of each run.
@@ -200,6 +201,7 @@ fn profile_ks(
                 guided_completion: guided,
                 repair_budget,
                 file_order,
+                subdivision,
             };
             if let Some(buffer) = &mut evict {
                 evict_caches(buffer);
@@ -224,7 +226,7 @@ fn profile_ks(
         println!(
             "{name:21} {cpu:.5}  median wall {:.5} greedy {:.5} repairs+completion {:.5} \
              file order {} isolated {} repaired {} deferred {} guided {} (by Edmonds {}) completed \
-             {} reached {} (completion {}) id order {} reversals {}",
+             {} reached {} (completion {}) id order {} reversals {} subdivision levels {}",
             median(&|k| k.greedy_seconds + k.augmentation_seconds),
             median(&|k| k.greedy_seconds),
             median(&|k| k.augmentation_seconds),
@@ -238,7 +240,8 @@ fn profile_ks(
             ks.augment.reached,
             ks.completion_reached,
             ks.id_order,
-            ks.reversals
+            ks.reversals,
+            ks.subdivision_levels,
         );
     }
     Ok(())

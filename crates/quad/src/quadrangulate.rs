@@ -95,6 +95,10 @@ pub struct QuadStats {
     /// KS: whether the file listed its triangles two by two as quads (triangle `2k` adjacent to
     /// `2k + 1`) and those were taken as they are (no greedy, no search). False otherwise.
     pub file_order: bool,
+    /// KS: levels of 1-to-4 subdivision its pairing was lifted through (the file lists its
+    /// triangles four by four as the children of coarser triangles, level after level); 0
+    /// otherwise.
+    pub subdivision_levels: u32,
 }
 
 /// A quadrangulation and how it was obtained.
@@ -175,6 +179,7 @@ pub fn quadrangulate_with(
         total_seconds: start.elapsed().as_secs_f64(),
         flipped_edges: paired.flipped_edges,
         file_order: paired.karp_sipser.is_some_and(|ks| ks.file_order),
+        subdivision_levels: paired.karp_sipser.map_or(0, |ks| ks.subdivision_levels),
     };
     Ok(QuadResult {
         quads,

@@ -8,7 +8,7 @@ use support::{check_result, check_same_surface, naive_contractions};
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::{
     CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits,
-    shuffle_faces, tetrahedron, torus,
+    shuffle_faces, subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_quad::{
     AugmentStrategy, KarpSipserOptions, QuadAlgorithm, QuadError, QuadOptions, expand,
@@ -57,6 +57,11 @@ fn families() -> Vec<(String, Surface)> {
         "genus200+shuffled".into(),
         shuffle_faces(&genus_surface(200, 1), 4),
     ));
+    // Written as a subdivision (children of face f at 4f..4f + 4): KS lifts the coarse pairing.
+    out.push((
+        "genus7+subdivided2".into(),
+        subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2),
+    ));
     // High genus relative to size, very irregular.
     out.push((
         "genus45+flips+flips".into(),
@@ -74,19 +79,22 @@ fn every_algorithm_on_generated_families() {
                 .unwrap_or_else(|e| panic!("{name} {algorithm}: {e}"));
             check_result(&format!("{name} {algorithm}"), mesh, algorithm, &result);
         }
-        // KS's greedy too on the families written quad by quad (tori, genus surfaces, bricks).
+        // KS's greedy too on the families written quad by quad (tori, genus surfaces, bricks)
+        // or as subdivisions (icospheres).
         let greedy_only = QuadOptions {
             karp_sipser: KarpSipserOptions {
                 file_order: false,
+                subdivision: false,
                 ..KarpSipserOptions::default()
             },
             ..QuadOptions::default()
         };
         let ks = QuadAlgorithm::KarpSipser;
         let result = quadrangulate_with(mesh, ks, &greedy_only)
-            .unwrap_or_else(|e| panic!("{name} ks without file order: {e}"));
-        check_result(&format!("{name} ks without file order"), mesh, ks, &result);
-        assert!(!result.karp_sipser.unwrap().file_order, "{name}");
+            .unwrap_or_else(|e| panic!("{name} ks, greedy only: {e}"));
+        check_result(&format!("{name} ks, greedy only"), mesh, ks, &result);
+        let stats = result.karp_sipser.unwrap();
+        assert!(!stats.file_order && stats.subdivision_levels == 0, "{name}");
     }
 }
 
@@ -133,6 +141,43 @@ fn ks_gives_back_the_quads_a_file_was_written_in() {
     let result = quadrangulate_with(mesh, ks, &greedy_only).unwrap();
     check_result("torus20x7 ks without file order", mesh, ks, &result);
     assert!(!result.karp_sipser.unwrap().file_order);
+}
+
+/// A mesh written as a 1-to-4 subdivision is paired by lifting the coarser mesh's pairing, level
+/// after level; each quad is then two triangles of the same coarse quad (children of two paired
+/// coarse triangles, or of one).
+#[test]
+fn ks_lifts_the_pairing_of_a_mesh_written_as_a_subdivision() {
+    let ks = QuadAlgorithm::KarpSipser;
+    for (name, surface, levels) in [
+        ("icosphere4", icosphere(4), 4),
+        (
+            "genus7+flips+subdivided2",
+            subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2),
+            2,
+        ),
+    ] {
+        let mesh = &surface.mesh;
+        let result = quadrangulate(mesh, ks).unwrap();
+        check_result(name, mesh, ks, &result);
+        assert_eq!(result.stats.subdivision_levels, levels, "{name}");
+        // Each block of four children is joined by quads to exactly one other block, and
+        // that relation pairs the blocks: the quads lie inside the coarse quads.
+        let mut partner = vec![u32::MAX; mesh.face_count() / 4];
+        for &e in &result.diagonals {
+            let h = e.halfedge();
+            let [b, c] = [mesh.face(h).0 / 4, mesh.face(h.twin()).0 / 4];
+            for (x, y) in [(b, c), (c, b)] {
+                if x != y {
+                    assert!(partner[x as usize] == u32::MAX || partner[x as usize] == y);
+                    partner[x as usize] = y;
+                }
+            }
+        }
+        for (b, &c) in partner.iter().enumerate() {
+            assert_eq!(partner[c as usize], b as u32, "{name}: block {b}");
+        }
+    }
 }
 
 #[test]
@@ -370,6 +415,7 @@ fn stats_serialise_with_the_table_columns() {
         "total_seconds",
         "flipped_edges",
         "file_order",
+        "subdivision_levels",
     ];
     let mut got = keys.clone();
     got.sort_unstable();
@@ -378,4 +424,5 @@ fn stats_serialise_with_the_table_columns() {
     assert_eq!(json["algorithm"], "lrs");
     assert_eq!(json["faces"], 60);
     assert_eq!(json["file_order"], false);
+    assert_eq!(json["subdivision_levels"], 0);
 }
