@@ -21,8 +21,10 @@
 //! node exactly once, whatever perfect pairing of the coarse graph it starts from. The first
 //! block that fails stops the check (on files in any other order, within the first blocks).
 //!
-//! Why: subdivided meshes are a common input (icospheres, refined meshes), and KS's greedy does
-//! badly on their id order. Measured (`quad_profile MESH 5 ks`, results/quad.md, session 8):
+//! Why: subdivided meshes are a common input (icospheres, refined meshes; our
+//! `subdivide_midpoint` and `icosphere`, and trimesh's `remesh.subdivide`, which its `icosphere`
+//! uses, write the four children of each face consecutively), and KS's greedy does badly on
+//! their id order. Measured (`quad_profile MESH 5 ks`, results/quad.md, session 8):
 //! icosphere(7) (327,680 faces): the greedy in id order isolates 4,042 triangles, defers 256,
 //! and its repairs and completion reach 1.37M nodes, 1.3x LEMON's time; with the lift, no
 //! search at all.
