@@ -59,7 +59,7 @@ fn families() -> Vec<(String, Surface)> {
     ));
     // Written as a subdivision (children of face f at 4f..4f + 4): KS lifts the coarse pairing.
     out.push((
-        "genus7+subdivided2".into(),
+        "genus7+flips+subdivided2".into(),
         subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2),
     ));
     // High genus relative to size, very irregular.
