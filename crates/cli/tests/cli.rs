@@ -699,7 +699,8 @@ fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
 
 /// `file_order` and `subdivision_levels` in `quad --json`: a generated torus is written quad by
 /// quad, so KS takes it as it is; subdivided twice, KS lifts the torus's pairing through two
-/// levels; shuffled, neither; the other algorithms report neither.
+/// levels; shuffled, neither; the other algorithms report neither. The summary line without
+/// `--json` says the same in words.
 #[test]
 fn quad_json_says_whether_the_file_order_or_a_subdivision_was_taken() {
     let dir = tempfile::tempdir().unwrap();
@@ -730,5 +731,23 @@ fn quad_json_says_whether_the_file_order_or_a_subdivision_was_taken() {
             "{algorithm} {extra:?}: {v}"
         );
         assert_eq!(v["file_order"], file_order, "{algorithm} {extra:?}: {v}");
+        // Without --json, the summary line says it in words.
+        let out = surftopo()
+            .args(["quad", "--algorithm", algorithm, "-o"])
+            .arg(&output)
+            .arg(&input)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let line = String::from_utf8(out.stdout).unwrap();
+        let said = [
+            line.contains("the file's own quads"),
+            line.contains(&format!("lifted through {levels} levels")),
+        ];
+        assert_eq!(
+            said,
+            [file_order, levels > 0],
+            "{algorithm} {extra:?}: {line}"
+        );
     }
 }

@@ -69,8 +69,19 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
     if job.json {
         crate::output::print_json(stats)?;
     } else {
+        // KS's shortcuts, said in words (the JSON has them as keys).
+        let how = if stats.file_order {
+            ", the file's own quads".to_string()
+        } else if stats.subdivision_levels > 0 {
+            format!(
+                ", lifted through {} levels of 1-to-4 subdivision",
+                stats.subdivision_levels
+            )
+        } else {
+            String::new()
+        };
         crate::output::emit(&format!(
-            "{}: {} quads from {} triangles ({}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges\n",
+            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges\n",
             output.display(),
             result.quads.len(),
             stats.faces,
