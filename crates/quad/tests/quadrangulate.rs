@@ -24,6 +24,12 @@ const ALGORITHMS: [QuadAlgorithm; 6] = [
     QuadAlgorithm::KarpSipser,
 ];
 
+/// A genus-7 surface with irregular connectivity, subdivided twice: a mesh written as a 1-to-4
+/// subdivision whose coarsest level is not regular.
+fn subdivided_genus7() -> Surface {
+    subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2)
+}
+
 fn families() -> Vec<(String, Surface)> {
     let mut out: Vec<(String, Surface)> = vec![
         ("tetrahedron".into(), tetrahedron()),
@@ -58,10 +64,7 @@ fn families() -> Vec<(String, Surface)> {
         shuffle_faces(&genus_surface(200, 1), 4),
     ));
     // Written as a subdivision (children of face f at 4f..4f + 4): KS lifts the coarse pairing.
-    out.push((
-        "genus7+flips+subdivided2".into(),
-        subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2),
-    ));
+    out.push(("genus7+flips+subdivided2".into(), subdivided_genus7()));
     // High genus relative to size, very irregular.
     out.push((
         "genus45+flips+flips".into(),
@@ -151,11 +154,7 @@ fn ks_lifts_the_pairing_of_a_mesh_written_as_a_subdivision() {
     let ks = QuadAlgorithm::KarpSipser;
     for (name, surface, levels) in [
         ("icosphere4", icosphere(4), 4),
-        (
-            "genus7+flips+subdivided2",
-            subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 2),
-            2,
-        ),
+        ("genus7+flips+subdivided2", subdivided_genus7(), 2),
     ] {
         let mesh = &surface.mesh;
         let result = quadrangulate(mesh, ks).unwrap();
