@@ -1,7 +1,8 @@
 //! The pairing a triangulated quad mesh is written in: when every triangle `2k` is adjacent to
 //! triangle `2k + 1`, the pairs `{2k, 2k + 1}` are a perfect pairing, and they are the quads the
 //! file came from (quad-to-triangle converters write the two triangles of each quad one after the
-//! other). KS ([`crate::karp_sipser`]) takes it before any greedy when it exists.
+//! other). Not from the quadrangulation paper: a shortcut for such files. KS
+//! ([`crate::karp_sipser`]) takes it before any greedy when it exists.
 //!
 //! Why: such files are common, their quads are the pairing a user expects back, and a greedy can
 //! do badly on them. Measured (`quad_tables --side-by-side --no-file-order`, results/quad.md,

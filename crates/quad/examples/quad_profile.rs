@@ -9,9 +9,9 @@
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
 //! KS runs with its guided completion and with the Forest completion alone, alternately (with
 //! `ks` as the third argument: KS alone, guided, for a profiler); `KS_BUDGET=<n>` sets its repair
-//! budget, `KS_FILE_ORDER=0` turns off its file-order step, `KS_SUBDIVISION=0` its subdivision step, `COLD=1` flushes the caches before
-//! each of its runs. Its line gives the mean CPU
-//! seconds per call, then the medians of the wall-clock stage times.
+//! budget, `KS_FILE_ORDER=0` turns off its file-order step, `KS_SUBDIVISION=0` its subdivision
+//! step, `COLD=1` flushes the caches before each of its runs. Its line gives the mean CPU seconds
+//! per call, then the medians of the wall-clock stage times.
 
 use std::error::Error;
 use std::time::Instant;
