@@ -60,6 +60,7 @@
 //!
 //! Complexity of one search: O(r α(r)) for the r nodes it reaches (r ≤ n).
 
+use prefetch_index::prefetch_index;
 use thiserror::Error;
 
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
@@ -593,27 +594,27 @@ impl Search {
     }
 
     /// Starts loading what the scans of the queued nodes ahead of `head` will read: the
-    /// adjacency of the node [`PREFETCH_AHEAD`] places ahead, and the labels and mates of the
-    /// neighbours of the node half as far ahead (whose adjacency was asked for then); only on a
-    /// flat graph ([`DualGraph::is_flat`]), where reading an adjacency early costs one load. The
-    /// queue is known in advance, so the random reads of a large graph overlap instead of
-    /// stalling one after the other. Measured (`quad_profile MESH 11 ks`, repairs and
+    /// adjacency of the node [`PREFETCH_AHEAD`] places ahead, and the labels, mates and states
+    /// of the neighbours of the node half as far ahead (whose adjacency was asked for then);
+    /// only on a flat graph ([`DualGraph::flat_adjacency`]), where reading an adjacency early
+    /// costs one load. The queue is known in advance, so the random reads of a large graph
+    /// overlap instead of stalling one after the other. Measured (`quad_profile MESH 11 ks`, repairs and
     /// completion, minimum of the medians of 8 alternating runs): sketched_brunnen shuffled
     /// 3.18 to 2.75 ms (cold caches, `COLD=1`: 4.24 to 3.64 ms), icosphere(7) shuffled 49 to
     /// 31 ms; with 4, 16 or 32 places ahead instead of 8, 3–7% slower on brunnen.
     #[inline]
     fn prefetch_ahead<G: DualGraph + ?Sized>(&self, graph: &G, mates: &[[u32; 2]], head: usize) {
-        if !graph.is_flat() {
+        let Some(adjacency) = graph.flat_adjacency() else {
             return;
-        }
+        };
         if let Some(&far) = self.queue.get(head + PREFETCH_AHEAD) {
-            graph.prefetch(far);
+            prefetch_index(adjacency, far as usize);
         }
         if let Some(&near) = self.queue.get(head + PREFETCH_AHEAD / 2) {
-            for (_, w) in graph.adjacent(near) {
-                prefetch_index::prefetch_index(&self.stamp, w as usize);
-                prefetch_index::prefetch_index(mates, w as usize);
-                prefetch_index::prefetch_index(&self.state, w as usize);
+            for (_, w) in adjacency[near as usize] {
+                prefetch_index(&self.stamp, w as usize);
+                prefetch_index(mates, w as usize);
+                prefetch_index(&self.state, w as usize);
             }
         }
     }

@@ -54,18 +54,12 @@ pub trait DualGraph {
         let [a, b] = self.endpoints(e);
         if a == v { b } else { a }
     }
-    /// Whether [`DualGraph::adjacent`] is one read of an array ([`CompactDual`]), so that the
-    /// searches may read it ahead of need ([`DualGraph::prefetch`]); false by default (a mesh
-    /// computes it from its half-edges).
+    /// The array [`DualGraph::adjacent`] reads, when it is one ([`CompactDual`]), so that the
+    /// searches may load it ahead of need; `None` by default (a mesh computes adjacency from
+    /// its half-edges).
     #[inline]
-    fn is_flat(&self) -> bool {
-        false
-    }
-    /// A hint that [`DualGraph::adjacent`] of node slot `v` will be read soon: flat graphs start
-    /// loading it into the cache; by default nothing.
-    #[inline]
-    fn prefetch(&self, v: u32) {
-        let _ = v;
+    fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
+        None
     }
     /// The three `(edge, neighbour)` pairs of every node slot (`NONE` pairs for removed nodes), in
     /// some fixed order per node, with the non-loop degrees: what [`CompactDual`] stores. By
@@ -282,12 +276,8 @@ impl<G: DualGraph + ?Sized> DualGraph for CompactDual<'_, G> {
         self.adjacency[v as usize]
     }
     #[inline]
-    fn is_flat(&self) -> bool {
-        true
-    }
-    #[inline]
-    fn prefetch(&self, v: u32) {
-        prefetch_index::prefetch_index(&self.adjacency, v as usize);
+    fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
+        Some(&self.adjacency)
     }
     #[inline]
     fn endpoints(&self, e: u32) -> [u32; 2] {
