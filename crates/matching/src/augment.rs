@@ -368,7 +368,7 @@ pub(crate) enum Outcome {
 }
 
 /// How far ahead in the queue [`Search::prefetch_ahead`] asks for a node's adjacency.
-const PREFETCH_AHEAD: usize = 8;
+pub(crate) const PREFETCH_AHEAD: usize = 8;
 
 const EVEN: u32 = 1;
 const ODD: u32 = 2;

@@ -49,6 +49,8 @@
 //!   seahorse2_100K 96k to 52k, venus_50k 34k to 4k, icosphere(7) 1.09M to 0.66M, feline 48k
 //!   to 60k;
 //! - degree-one nodes are paired as soon as they appear (a stack), before the next start;
+//! - in breadth-first order the starts ahead on the frontier are loaded into cache early
+//!   (`KarpSipser::prefetch_ahead`), since the frontier is known in advance;
 //! - in id order, a deferred node (see below) that is the only unpaired one behind the sweep,
 //!   met in the last [`REVERSE_TAIL`]th of the ids, reverses the sweep, so that the sweep ends
 //!   next to it, where its partner will be isolated ([`IdSweep`] says why and what was measured).
@@ -92,7 +94,9 @@
 
 use std::time::Instant;
 
-use crate::augment::{AugmentError, AugmentStats, Outcome, Search, complete};
+use prefetch_index::prefetch_index;
+
+use crate::augment::{AugmentError, AugmentStats, Outcome, PREFETCH_AHEAD, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 use crate::file_order::file_order_pairing;
 use crate::subdivision_order::coarsen;
@@ -513,6 +517,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
     /// of the [`IdSweep`].
     fn next_start(&mut self, head: &mut usize) -> Option<u32> {
         while let Some(&x) = self.frontier.get(*head) {
+            self.prefetch_ahead(*head);
             *head += 1;
             if self.is_free(x) && self.free[x as usize] > 0 {
                 return Some(x);
@@ -526,6 +531,31 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             }
         }
         None
+    }
+
+    /// Starts loading what the starts ahead of frontier position `head` will read (breadth-first
+    /// order, on a flat graph), as the augmenting searches do with their queue
+    /// ([`PREFETCH_AHEAD`]): the adjacency and free degree of the node that many places ahead,
+    /// the free degrees and front stamps of the neighbours of the node half as far. Measured
+    /// (`quad_profile MESH 11 ks`, the greedy's time, minimum of the medians of alternating
+    /// runs): sketched_brunnen shuffled 3.44 to 3.06 ms, icosphere(7) shuffled 29.4 to 20.3
+    /// ms, feline shuffled 3.25 to 2.89 ms, koala 3.19 to 2.87 ms, skull 2.96 to 2.71 ms; 16
+    /// and 8 places ahead instead of 8 and 4: no difference.
+    #[inline]
+    fn prefetch_ahead(&self, head: usize) {
+        let Some(adjacency) = self.graph.flat_adjacency() else {
+            return;
+        };
+        if let Some(&far) = self.frontier.get(head + PREFETCH_AHEAD) {
+            prefetch_index(adjacency, far as usize);
+            prefetch_index(&self.free, far as usize);
+        }
+        if let Some(&near) = self.frontier.get(head + PREFETCH_AHEAD / 2) {
+            for (_, w) in adjacency[near as usize] {
+                prefetch_index(&self.free, w as usize);
+                prefetch_index(&self.seen, w as usize);
+            }
+        }
     }
 
     /// Stamps `v` as met by the front now, unless it was met before (breadth-first order only).
