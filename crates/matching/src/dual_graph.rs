@@ -22,6 +22,8 @@
 //! to the per-edge flags of [`crate::verify`] and of Diks–Stanczyk, [`Pairing::from_edges`]
 //! converts back (checked), which is how a Diks–Stanczyk result plugs into the quad pipeline.
 
+use std::borrow::Cow;
+
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, SurfaceMesh};
 use thiserror::Error;
 
@@ -74,11 +76,7 @@ pub trait DualGraph {
                 }
             })
             .collect();
-        let non_loop_degrees = adjacent
-            .iter()
-            .enumerate()
-            .map(|(v, pairs)| non_loop_degree(v as u32, pairs))
-            .collect();
+        let non_loop_degrees = non_loop_degrees_of(&adjacent);
         AdjacencyTable {
             adjacent,
             non_loop_degrees,
@@ -206,6 +204,15 @@ fn non_loop_degree(v: u32, pairs: &[(u32, u32); 3]) -> u8 {
     pairs.iter().filter(|&&(_, w)| w != NONE && w != v).count() as u8
 }
 
+/// The non-loop degree of every node slot of a flat adjacency array.
+fn non_loop_degrees_of(adjacent: &[[(u32, u32); 3]]) -> Vec<u8> {
+    adjacent
+        .iter()
+        .enumerate()
+        .map(|(v, pairs)| non_loop_degree(v as u32, pairs))
+        .collect()
+}
+
 /// The non-loop degree of every node slot ([`AdjacencyTable::non_loop_degrees`]), node by node.
 pub(crate) fn non_loop_degrees<G: DualGraph + ?Sized>(graph: &G) -> Vec<u8> {
     (0..graph.node_slots() as u32)
@@ -223,17 +230,19 @@ pub(crate) fn non_loop_degrees<G: DualGraph + ?Sized>(graph: &G) -> Vec<u8> {
 /// `(edge, neighbour)` pairs in one 24-byte record. Reading a node's neighbours is then one memory
 /// access instead of the half-edge chain `face_halfedge → next → next → face(twin)` (up to six
 /// dependent cache misses when a search jumps around a large mesh). Building it is one sequential
-/// pass (over the edges, for a mesh); everything else (liveness, edge endpoints) is read from the wrapped graph.
-/// The searches of [`crate::augment`] use it when they expect to reach many nodes.
+/// pass (over the edges, for a mesh); a graph that already is such an array
+/// ([`DualGraph::flat_adjacency`]) is borrowed, not copied. Everything else (liveness, edge
+/// endpoints) is read from the wrapped graph. The searches of [`crate::augment`] use it when
+/// they expect to reach many nodes.
 #[derive(Clone, Debug)]
 pub struct CompactDual<'g, G: ?Sized> {
     graph: &'g G,
-    adjacency: Vec<[(u32, u32); 3]>,
+    adjacency: Cow<'g, [[(u32, u32); 3]]>,
 }
 
 impl<'g, G: DualGraph + ?Sized> CompactDual<'g, G> {
     /// Copies the adjacency of `graph` ([`DualGraph::adjacency_table`]; removed nodes get `NONE`
-    /// entries). O(n).
+    /// entries), or borrows its flat array. O(n).
     pub fn new(graph: &'g G) -> Self {
         Self::with_degrees(graph).0
     }
@@ -241,10 +250,18 @@ impl<'g, G: DualGraph + ?Sized> CompactDual<'g, G> {
     /// [`CompactDual::new`], and the non-loop degrees of the node slots
     /// ([`AdjacencyTable::non_loop_degrees`]) counted on the way.
     pub fn with_degrees(graph: &'g G) -> (Self, Vec<u8>) {
+        if let Some(adjacent) = graph.flat_adjacency() {
+            let degrees = non_loop_degrees_of(adjacent);
+            let compact = CompactDual {
+                graph,
+                adjacency: Cow::Borrowed(adjacent),
+            };
+            return (compact, degrees);
+        }
         let table = graph.adjacency_table();
         let compact = CompactDual {
             graph,
-            adjacency: table.adjacent,
+            adjacency: Cow::Owned(table.adjacent),
         };
         (compact, table.non_loop_degrees)
     }

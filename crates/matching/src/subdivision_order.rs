@@ -68,6 +68,10 @@ impl DualGraph for CoarseDual {
         self.adjacency[v as usize]
     }
     #[inline]
+    fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
+        Some(&self.adjacency)
+    }
+    #[inline]
     fn endpoints(&self, e: u32) -> [u32; 2] {
         self.ends[e as usize]
     }

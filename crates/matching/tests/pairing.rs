@@ -5,10 +5,10 @@ use petgraph::algo::maximum_matching;
 use petgraph::graph::UnGraph;
 use surftopo_matching::generators::{random_bridgeless_cubic, random_cubic_pairing};
 use surftopo_matching::{
-    AdjacencyTable, AugmentError, AugmentStrategy, CubicGraph, DualGraph, KarpSipserOptions,
-    KarpSipserStats, Pairing, PairingError, augment_to_perfect, karp_sipser_perfect,
-    karp_sipser_perfect_with, pulli_segal, simple_greedy, verify_perfect_matching,
-    verify_perfect_matching_on,
+    AdjacencyTable, AugmentError, AugmentStrategy, CompactDual, CubicGraph, DualGraph,
+    KarpSipserOptions, KarpSipserStats, Pairing, PairingError, augment_to_perfect,
+    karp_sipser_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
+    verify_perfect_matching, verify_perfect_matching_on,
 };
 use surftopo_mesh::generators::{
     genus_surface, icosphere, shuffle_faces, subdivide_midpoint, torus,
@@ -244,6 +244,18 @@ fn compact_mesh_adjacency_matches_the_half_edge_cycles() {
             assert_eq!(copied, own, "face {f}");
         }
     }
+    // A graph that already is a flat array is borrowed, with the same degrees.
+    let (compact, degrees) = CompactDual::with_degrees(&contracted);
+    let (again, degrees_again) = CompactDual::with_degrees(&compact);
+    assert!(
+        std::ptr::eq(
+            compact.flat_adjacency().unwrap(),
+            again.flat_adjacency().unwrap()
+        ),
+        "borrowed, not copied"
+    );
+    assert_eq!(degrees_again, degrees);
+    assert_eq!(degrees, contracted.adjacency_table().non_loop_degrees);
     // The default copy (node by node) counts loops out: a cubic graph with a loop.
     let looped = RawCubic::new(2, vec![[0, 0], [0, 1], [1, 1]]);
     assert_eq!(looped.adjacency_table().non_loop_degrees, [1, 1]);
