@@ -143,8 +143,8 @@ pub fn quadrangulate(
 /// vertices (when the input is simplicial). For LRS, the number of triangles the expansion leaves
 /// unpaired is checked against the paper's bound `max(4, 56g − 12)`.
 ///
-/// KS ignores `options` (its repairs and completion are its own, see
-/// `surftopo_matching::karp_sipser`).
+/// KS reads only `options.karp_sipser` (its repairs and completion are its own, see
+/// `surftopo_matching::karp_sipser`); the other algorithms only `options.augment`.
 ///
 /// Complexity: SG, PS and KS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
 /// O(g n + g²) (Theorem 3.2) plus the augmentation; DS O(n log² n) amortized.
