@@ -53,7 +53,7 @@
 //!   (`KarpSipser::prefetch_ahead`), since the frontier is known in advance;
 //! - in id order, a deferred node (see below) that is the only unpaired one behind the sweep,
 //!   met in the last [`REVERSE_TAIL`]th of the ids, reverses the sweep, so that the sweep ends
-//!   next to it, where its partner will be isolated ([`IdSweep`] says why and what was measured).
+//!   next to it, where its partner will be isolated (`IdSweep` says why and what was measured).
 //!
 //! # The repairs
 //! A node whose free degree drops to 0 while it is unpaired is *isolated*: the greedy alone would
@@ -80,8 +80,9 @@
 //!    twice the width.
 //!
 //! When a guided search fails, the Forest strategy of [`crate::augment`] completes the rest, as
-//! for any greedy pairing. So the result is always perfect (or an [`AugmentError`] proves that
-//! the graph has no perfect matching).
+//! for any greedy pairing, except that the trees retired by a path do not wall the others in:
+//! they are reopened ([`crate::augment`] says why and what was measured). So the result is
+//! always perfect (or an [`AugmentError`] proves that the graph has no perfect matching).
 //!
 //! Figures are those of the paper's Table 4.3: the greedy counts as the initial pairing; every
 //! repair and the completion count as augmentation (timed separately); "unpaired" is the number
@@ -96,7 +97,9 @@ use std::time::Instant;
 
 use prefetch_index::prefetch_index;
 
-use crate::augment::{AugmentError, AugmentStats, Outcome, PREFETCH_AHEAD, Search, complete};
+use crate::augment::{
+    AugmentError, AugmentStats, OnPath, Outcome, PREFETCH_AHEAD, Search, complete,
+};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 use crate::file_order::file_order_pairing;
 use crate::subdivision_order::coarsen;
@@ -131,7 +134,7 @@ pub const BAND_WIDTH: u32 = 4;
 /// completion pairs them in one pass).
 pub const GUIDED_MAX_HOLES: usize = 64;
 
-/// A lone deferred node reverses the id sweep (see [`IdSweep`]) only when less than
+/// A lone deferred node reverses the id sweep (see `IdSweep`) only when less than
 /// `1 / REVERSE_TAIL` of the ids are left to sweep.
 pub const REVERSE_TAIL: usize = 4;
 
@@ -571,7 +574,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
 
     /// After a deferral in id order: when the deferred node is the only unpaired one behind
     /// the sweep and less than `1 / REVERSE_TAIL` of the ids are left, the rest is swept in the
-    /// other direction (see [`IdSweep`]).
+    /// other direction (see `IdSweep`).
     fn reverse_for_lone_hole(&mut self) {
         let left = self.sweep.left() as usize;
         if self.id_order
@@ -809,7 +812,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             &mut self.mates,
             &[root],
             usize::MAX,
-            false,
+            OnPath::Stop,
             &mut self.stats.augment,
             |w| band[w as usize][0] == generation,
         );
@@ -966,7 +969,7 @@ impl<'g, G: DualGraph + ?Sized> KarpSipser<'g, G> {
             &mut self.mates,
             &[u],
             self.repair_budget,
-            false,
+            OnPath::Stop,
             stats,
             |_| true,
         );

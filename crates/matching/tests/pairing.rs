@@ -601,6 +601,94 @@ fn karp_sipser_reports_a_missing_perfect_matching() {
     }
 }
 
+/// A cubic graph with no perfect matching, of `3 (gadget + 1) + 1` nodes: a centre joined to three
+/// random bridgeless cubic graphs of `gadget` nodes (even), each with one edge subdivided by the
+/// node the centre reaches. Removing the centre leaves three odd components (Tutte), so at least
+/// two nodes stay unmatched; petgraph gives the exact maximum.
+fn three_odd_gadgets(gadget: u32, seed: u64) -> RawCubic {
+    let mut edges = Vec::new();
+    let mut next = 1u32;
+    for k in 0..3 {
+        let g = random_bridgeless_cubic(gadget, seed * 3 + k);
+        let base = next;
+        let subdivider = base + gadget;
+        let split = (seed as usize + k as usize) % g.edges().len();
+        for (i, &[a, b]) in g.edges().iter().enumerate() {
+            if i == split {
+                edges.extend([[base + a, subdivider], [subdivider, base + b]]);
+            } else {
+                edges.push([base + a, base + b]);
+            }
+        }
+        edges.push([0, subdivider]);
+        next = subdivider + 1;
+    }
+    RawCubic::new(next as usize, edges)
+}
+
+/// The completions from many unmatched nodes (KS with every isolated node deferred, whose Forest
+/// completion lets trees re-reach the nodes of retired ones; the Forest and Global strategies
+/// from an empty pairing) on graphs of thousands of nodes: perfect when a perfect matching
+/// exists; otherwise an error, with a matching left as large as petgraph's maximum (a forest pass
+/// that finds no path searched from every unmatched node at once, which proves it maximum).
+#[test]
+fn completions_from_many_roots_end_perfect_or_maximum() {
+    let deferring = KarpSipserOptions {
+        repair_budget: 0,
+        guided_completion: false,
+        file_order: false,
+        subdivision: false,
+    };
+    for seed in 0..6u64 {
+        // Face-shuffled icospheres: the greedy's front closes up around the 12 odd-degree
+        // vertices, leaving dozens of isolated triangles, paired only through blossoms.
+        let sphere = shuffle_faces(&icosphere(4 + (seed % 2) as u32), seed);
+        let mesh = &sphere.mesh;
+        let (pairing, stats) = karp_sipser_perfect_with(mesh, &deferring).unwrap();
+        assert!(stats.completed >= 2, "seed {seed}: nothing to complete");
+        let edges = dual_edges(mesh);
+        assert_eq!(
+            check_matching(mesh.face_count(), &edges, pairing.mates()),
+            0
+        );
+
+        let graph = random_cubic_pairing(3000 + 200 * seed as u32, seed);
+        for strategy in [AugmentStrategy::Forest, AugmentStrategy::Global] {
+            let mut pairing = Pairing::empty(graph.node_count() as usize);
+            augment_to_perfect(&graph, &mut pairing, strategy).unwrap();
+            verify_perfect_matching(&graph, &pairing.edge_flags(graph.edge_count() as usize))
+                .unwrap();
+        }
+
+        let graph = three_odd_gadgets(40 + 20 * seed as u32, seed);
+        let n = graph.node_slots() as u32;
+        let unmatched_at_best = n as usize - 2 * petgraph_matching_size(n, &graph.edges);
+        assert!(unmatched_at_best >= 2);
+        for options in [deferring, KarpSipserOptions::default()] {
+            let err = karp_sipser_perfect_with(&graph, &options).unwrap_err();
+            assert!(
+                matches!(err, AugmentError::NoAugmentingPath { unmatched, .. } if unmatched == unmatched_at_best),
+                "seed {seed}: {err}"
+            );
+        }
+        for strategy in STRATEGIES {
+            let mut pairing = Pairing::empty(n as usize);
+            let err = augment_to_perfect(&graph, &mut pairing, strategy).unwrap_err();
+            assert!(
+                matches!(err, AugmentError::NoAugmentingPath { .. }),
+                "{err}"
+            );
+            let unmatched = check_matching(n as usize, &graph.edges, pairing.mates());
+            // Local stops at the first root a complete search fails from.
+            if matches!(strategy, AugmentStrategy::Local { .. }) {
+                assert!(unmatched >= unmatched_at_best, "seed {seed}, {strategy:?}");
+            } else {
+                assert_eq!(unmatched, unmatched_at_best, "seed {seed}, {strategy:?}");
+            }
+        }
+    }
+}
+
 /// In breadth-first order (ids not local), ties of the minimum-degree rule go to the node the
 /// front met first, so the greedy follows its front coherently: on face-shuffled grids (duals
 /// bipartite and regular, where the smallest id is a random choice) it isolates few triangles:
