@@ -422,6 +422,7 @@ fn check_ks_stats(stats: &KarpSipserStats, options: &KarpSipserOptions) {
         assert!(options.subdivision && !stats.file_order);
     }
     assert_eq!(stats.repaired + stats.deferred, stats.isolated);
+    assert!(stats.skipped <= stats.deferred);
     assert!(stats.completed.is_multiple_of(2));
     assert!(2 * stats.guided + stats.completed <= stats.deferred);
     assert!(stats.guided_by_edmonds <= stats.guided);
@@ -448,6 +449,7 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
     let mut seen = [false; 2];
     let mut deferred_and_repaired = false;
     let (mut guided, mut by_edmonds, mut completed, mut reversals) = (0, 0, 0, 0);
+    let mut skipped = 0;
     for mesh in [
         &grid.mesh,
         &icosphere(3).mesh,
@@ -461,6 +463,7 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
             by_edmonds += stats.guided_by_edmonds;
             completed += stats.completed;
             reversals += stats.reversals;
+            skipped += stats.skipped;
             let edges = dual_edges(mesh);
             assert_eq!(
                 check_matching(mesh.face_count(), &edges, pairing.mates()),
@@ -472,6 +475,10 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
     }
     assert_eq!(seen, [true, true], "both start orders were used");
     assert!(reversals > 0, "a lone deferred node reversed the id sweep");
+    assert!(
+        skipped > 0,
+        "a repair was skipped once every unpaired node was isolated"
+    );
     assert!(deferred_and_repaired, "some run both repaired and deferred");
     assert!(
         guided > 0 && completed > 0,
