@@ -4,8 +4,11 @@
 //! far apart adjacent faces are in id order (locality of the input).
 //!
 //! ```text
-//! cargo run --release -p surftopo-quad --example quad_profile -- MESH_FILE|box:C:H:T [REPEAT] [ks]
+//! cargo run --release -p surftopo-quad --example quad_profile -- MESH [REPEAT] [ks]
 //! ```
+//! MESH: a mesh file, `box:C:H:T` (a brick of groups A and B), `icosphere:N`, or `shuffled:MESH`
+//! (its faces shuffled as by `quad_tables --derived`).
+//!
 //! The augmentation uses the Forest strategy, or the Local one with `BUDGET=<initial budget>`.
 //! KS runs with its guided completion and with the Forest completion alone, alternately (with
 //! `ks` as the third argument: KS alone, guided, for a profiler); `KS_BUDGET=<n>` sets its repair
@@ -47,8 +50,16 @@ fn time<T>(repeat: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     )
 }
 
-/// A mesh file, or `box:CAVITIES:HOLES:TRIANGLES` for the generated brick of groups A and B.
+/// A mesh file, `box:CAVITIES:HOLES:TRIANGLES` for the generated brick of groups A and B,
+/// `icosphere:N`, or `shuffled:SPEC` for SPEC with its faces shuffled as `quad_tables
+/// --derived` does (seed 1), so that its derived inputs can be profiled as benchmarked.
 fn load(path: &str) -> Result<Surface, Box<dyn Error>> {
+    if let Some(spec) = path.strip_prefix("shuffled:") {
+        return Ok(surftopo_mesh::generators::shuffle_faces(&load(spec)?, 1));
+    }
+    if let Some(level) = path.strip_prefix("icosphere:") {
+        return Ok(surftopo_mesh::generators::icosphere(level.parse()?));
+    }
     if let Some(spec) = path.strip_prefix("box:") {
         let v: Vec<u64> = spec.split(':').map(str::parse).collect::<Result<_, _>>()?;
         let [c, h, t] = v[..] else {
