@@ -289,7 +289,8 @@ pub(crate) fn complete<G: DualGraph + ?Sized>(
     forest(graph, mates, search, pending, OnPath::Reopen, stats)
 }
 
-/// Global (one augmentation per forest) or Forest (every meeting of two trees augmented).
+/// Passes of forest searches from the unmatched nodes until none is left: Global (`OnPath::Stop`,
+/// one augmentation per forest), Forest (`OnPath::Wall`) or the KS completion (`OnPath::Reopen`).
 fn forest<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
@@ -637,14 +638,15 @@ impl Search {
     }
 
     /// Starts loading what the scans of the queued nodes ahead of `head` will read: the
-    /// adjacency, mate and state of the node [`PREFETCH_AHEAD`] places ahead, and the labels, mates and states
-    /// of the neighbours of the node half as far ahead (whose adjacency was asked for then);
-    /// only on a flat graph ([`DualGraph::flat_adjacency`]), where reading an adjacency early
-    /// costs one load. The queue is known in advance, so the random reads of a large graph
-    /// overlap instead of stalling one after the other. Measured (`quad_profile MESH 11 ks`, repairs and
-    /// completion, minimum of the medians of 8 alternating runs): sketched_brunnen shuffled
-    /// 3.18 to 2.75 ms (cold caches, `COLD=1`: 4.24 to 3.64 ms), icosphere(7) shuffled 49 to
-    /// 31 ms; with 4, 16 or 32 places ahead instead of 8, 3–7% slower on brunnen.
+    /// adjacency, mate and state of the node [`PREFETCH_AHEAD`] places ahead, and the labels,
+    /// mates and states of the neighbours of the node half as far ahead (whose adjacency was
+    /// asked for then); only on a flat graph ([`DualGraph::flat_adjacency`]), where reading an
+    /// adjacency early costs one load. The queue is known in advance, so the random reads of a
+    /// large graph overlap instead of stalling one after the other. Measured (`quad_profile MESH
+    /// 11 ks`, repairs and completion, minimum of the medians of 8 alternating runs):
+    /// sketched_brunnen shuffled 3.18 to 2.75 ms (cold caches, `COLD=1`: 4.24 to 3.64 ms),
+    /// icosphere(7) shuffled 49 to 31 ms; with 4, 16 or 32 places ahead instead of 8, 3–7% slower
+    /// on brunnen.
     #[inline]
     fn prefetch_ahead<G: DualGraph + ?Sized>(&self, graph: &G, mates: &[[u32; 2]], head: usize) {
         let Some(adjacency) = graph.flat_adjacency() else {

@@ -85,8 +85,8 @@
 //!    Edmonds search confined to the nodes within [`BAND_WIDTH`] of it, then once more with
 //!    twice the width.
 //!
-//! The waves give up once they have met [`GUIDED_EVEN_CONTACTS`] times by even paths only (the
-//! holes are of one colour in a bipartite region, where only a blossom joins them). The waves'
+//! The waves give up once they have met more than [`GUIDED_EVEN_CONTACTS`] times by even paths
+//! (holes of one colour in a bipartite region, where only a blossom joins them). The waves'
 //! queue is read ahead like the searches' (`KarpSipser::prefetch_wave_ahead`): icosphere(7)
 //! shuffled, whose waves swept the whole graph, 17.8 to 11.8 ms before the give-up rule; koala
 //! 1.87 to 1.60 ms.
@@ -151,7 +151,7 @@ pub const GUIDED_MAX_HOLES: usize = 64;
 pub const REVERSE_TAIL: usize = 4;
 
 /// The guided completion gives up (the Forest completion takes the rest) once its waves have met
-/// this many times by paths of even length. Where two waves touch only at even parity, the
+/// more than this many times by paths of even length (counted over the whole completion). Where two waves touch only at even parity, the
 /// region between their holes is bipartite: no path without a blossom joins them there, and the
 /// waves (which have no blossoms) would sweep the graph in vain. Measured (`quad_profile MESH 1
 /// ks`): 0–14 even meetings in all on the shared meshes of 100k+ faces and their shuffled

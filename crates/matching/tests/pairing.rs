@@ -674,7 +674,8 @@ fn completions_from_many_roots_end_perfect_or_maximum() {
         for options in [deferring, KarpSipserOptions::default()] {
             let err = karp_sipser_perfect_with(&graph, &options).unwrap_err();
             assert!(
-                matches!(err, AugmentError::NoAugmentingPath { unmatched, .. } if unmatched == unmatched_at_best),
+                matches!(err, AugmentError::NoAugmentingPath { unmatched, .. }
+                    if unmatched == unmatched_at_best),
                 "seed {seed}: {err}"
             );
         }

@@ -236,8 +236,9 @@ fn profile_ks(
         let cpu = times.iter().sum::<f64>() / times.len() as f64;
         println!(
             "{name:21} {cpu:.5}  median wall {:.5} greedy {:.5} repairs+completion {:.5} \
-             file order {} isolated {} repaired {} deferred {} (skipped {}) guided {} (by Edmonds {}) completed \
-             {} reached {} (completion {}) id order {} reversals {} subdivision levels {}",
+             file order {} isolated {} repaired {} deferred {} (skipped {}) guided {} (by Edmonds \
+             {}) completed {} reached {} (completion {}) id order {} reversals {} subdivision \
+             levels {}",
             median(&|k| k.greedy_seconds + k.augmentation_seconds),
             median(&|k| k.greedy_seconds),
             median(&|k| k.augmentation_seconds),
