@@ -45,6 +45,7 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
+mod biface;
 mod convert;
 mod delaunay;
 mod error;
@@ -63,6 +64,7 @@ mod tessellation;
 mod triangulation;
 pub mod trig;
 
+pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface};
 pub use delaunay::{
     DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
 };

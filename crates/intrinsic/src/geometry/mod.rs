@@ -240,6 +240,25 @@ impl<S: Scalar> Motion<S> {
         }
     }
 
+    /// The `k`-th power `self^k` (`k < 0`: of the inverse), by binary powering: O(log |k|)
+    /// compositions. In exact mode the sizes of `ω^k`'s numerator and denominator grow linearly
+    /// in `|k|`; in f64 the rounding error grows like `log |k|` relative to `|b|·|k|`.
+    pub fn power(&self, k: i64) -> Motion<S> {
+        let mut base = if k < 0 { self.inverse() } else { self.clone() };
+        let mut e = k.unsigned_abs();
+        let mut result = Motion::identity();
+        while e > 0 {
+            if e & 1 == 1 {
+                result = result.compose(&base);
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.compose(&base);
+            }
+        }
+        result
+    }
+
     /// Whether this is a translation (`ω = 1` exactly).
     pub fn is_translation(&self) -> bool {
         self.rotation[0] == S::one() && self.rotation[1].is_zero()
