@@ -270,6 +270,28 @@ impl<S: Scalar> Motion<S> {
     }
 }
 
+impl Motion<f64> {
+    /// The rigid motion taking `s0` to `t0` and the direction of `s1 − s0` to that of `t1 − t0`:
+    /// [`Motion::taking`] with `ω` normalised to modulus 1 (a square root, so `f64` only). For sides
+    /// whose lengths agree only up to a tolerance, this keeps the motion rigid (footnote 2's
+    /// quotient would scale by the ratio of the lengths).
+    pub fn rigid_taking(
+        s0: &Point<f64>,
+        s1: &Point<f64>,
+        t0: &Point<f64>,
+        t1: &Point<f64>,
+    ) -> Self {
+        let w = Motion::taking(s0, s1, t0, t1).rotation;
+        let modulus = w[0].hypot(w[1]);
+        let rotation = [w[0] / modulus, w[1] / modulus];
+        let translation = sub(t0, &complex_mul(&rotation, s0));
+        Motion {
+            rotation,
+            translation,
+        }
+    }
+}
+
 /// Converts a point to another scalar type through `f64` (exact from f64 to [`Rational`] for
 /// finite coordinates; rounding the other way). `None` when a coordinate is not finite.
 pub fn convert_point<S: Scalar, T: Scalar>(p: &Point<S>) -> Option<Point<T>> {

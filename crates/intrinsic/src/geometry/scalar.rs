@@ -38,6 +38,10 @@ pub trait Scalar:
     fn from_f64(v: f64) -> Option<Self>;
     /// The nearest double.
     fn to_f64(&self) -> f64;
+    /// Whether the value is finite (always for exact types; not NaN or infinite for `f64`).
+    fn is_finite(&self) -> bool {
+        true
+    }
     /// Whether the value is exactly zero.
     fn is_zero(&self) -> bool;
     /// The value halved (exact in both modes, barring `f64` underflow).
@@ -100,6 +104,9 @@ impl Scalar for f64 {
     }
     fn to_f64(&self) -> f64 {
         *self
+    }
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
     }
     fn is_zero(&self) -> bool {
         *self == 0.0
