@@ -290,6 +290,12 @@ impl<S: Scalar> Biface<S> {
     }
 
     fn ladder(&self) -> Ladder<S> {
+        self.ladder_with_winding(None)
+    }
+
+    /// The ladder, with `ψ₀` given (a tube's chart, [`good_biface_of_ladder`]) or the principal
+    /// argument (a biface: `AD` is a segment of the strip, so its angle seen from `c` is below π).
+    fn ladder_with_winding(&self, psi0: Option<f64>) -> Ladder<S> {
         let g = self.gluing();
         if g.is_translation() {
             return Ladder::Translation {
@@ -304,7 +310,7 @@ impl<S: Scalar> Biface<S> {
             p_prev: g_inv.apply(&self.a),
             q_prev: g_inv.apply(&self.d),
             theta: g.rotation[1].to_f64().atan2(g.rotation[0].to_f64()),
-            psi0: ratio[1].to_f64().atan2(ratio[0].to_f64()),
+            psi0: psi0.unwrap_or_else(|| ratio[1].to_f64().atan2(ratio[0].to_f64())),
             centre,
             g,
         }))
@@ -369,7 +375,11 @@ impl<S: Scalar> Biface<S> {
     /// good biface of the same surface, with the same gluing, the same boundary side `CA` and
     /// `DB` replaced by its image `gʲ(DB)`. A good input is returned unchanged.
     pub fn make_good(&self) -> Result<GoodBiface<S>, BifaceError> {
-        let ladder = self.ladder();
+        self.make_good_with_winding(None)
+    }
+
+    fn make_good_with_winding(&self, psi0: Option<f64>) -> Result<GoodBiface<S>, BifaceError> {
+        let ladder = self.ladder_with_winding(psi0);
         match &ladder {
             Ladder::Translation { t } => {
                 let a_minus_d = sub(&self.a, &self.d);
@@ -527,6 +537,31 @@ impl<S: Scalar> Biface<S> {
         }
         Ok(m)
     }
+}
+
+/// The kernel on the ladder of any tube (DUBOIS.md §2.1(c), a *reconstruction* checked by
+/// `tests/bifaces.rs`' random tubes): `a = p₀` and `c = p₁ = g(p₀)` are the ends of the `b₀`
+/// boundary side (it runs `p₁ → p₀`), `d = q₀` a lift of `b₁` with `g(q₀)` the end of the `b₁`
+/// side, all in one chart of the tube's universal cover, and `psi0` the angle `ψ₀` swept around
+/// `g`'s centre from `p₀` to `q₀` along a path in that chart (ignored for translations). The
+/// segment `p₀q₀` need not lie in the strip; the result, the chart `p₀, q_j, q_{j+1}, p₁`, is a
+/// good biface of the tube's surface, with the same boundary sides.
+pub fn good_biface_of_ladder<S: Scalar>(
+    a: Point<S>,
+    d: Point<S>,
+    c: Point<S>,
+    g: &Motion<S>,
+    psi0: f64,
+) -> Result<GoodBiface<S>, BifaceError> {
+    let b = g.apply(&d);
+    let ladder = Biface { a, d, b, c };
+    let mut good = ladder.make_good_with_winding(Some(psi0))?;
+    if good.unchanged {
+        // Rung offset 0 is good here, but the chart was not checked to be a biface: rebuild it
+        // as the kernel's output (the same corners).
+        good.biface = ladder.with_rung_offset(&S::zero())?;
+    }
+    Ok(good)
 }
 
 /// Whether the direction `v − o` is strictly inside the angle swept counter-clockwise at `o`

@@ -58,13 +58,15 @@ mod laplacian;
 mod matrix_market;
 mod mollify;
 mod portalgon;
+mod portalgon_edits;
 mod quality;
 mod stats;
 mod tessellation;
 mod triangulation;
 pub mod trig;
+mod tube;
 
-pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface};
+pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
 pub use delaunay::{
     DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
 };
@@ -87,9 +89,11 @@ pub use portalgon::{
     DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
     signed_area,
 };
+pub use portalgon_edits::{Component, EditError, VertexInfo};
 pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
 pub use stats::{DelaunayStats, delaunay_with_stats};
 pub use tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };
 pub use triangulation::IntrinsicTriangulation;
+pub use tube::{LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon};

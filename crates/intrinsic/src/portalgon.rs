@@ -686,7 +686,7 @@ impl<S: Scalar> Portalgon<S> {
         Ok((in_p, in_q))
     }
 
-    fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
+    pub(crate) fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
         let k = sides.len();
         for (n, &s) in sides.iter().enumerate() {
             self.owner[s.idx()] = p;

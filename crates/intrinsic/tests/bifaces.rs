@@ -242,12 +242,13 @@ fn random_point(rng: &mut ChaCha8Rng, span: i64, den: i64) -> Point<Rational> {
     ]
 }
 
-/// A random translation biface with its shortest offset within about ±10.
+/// A random translation biface with its shortest offset within ±13.
 fn random_translation(rng: &mut ChaCha8Rng) -> Biface<Rational> {
     loop {
         let a = random_point(rng, 4, 4);
         let t = random_point(rng, 3, 2);
-        if t[0].is_zero() && t[1].is_zero() {
+        // |t| ≥ 1 keeps the shortest offset within ±13 (|k| ≤ 8, |⟨w, t⟩|/|t|² ≤ 3√2).
+        if dot(&t, &t) < ri(1) {
             continue;
         }
         let k = random_rational(rng, 8, 3);
@@ -608,5 +609,216 @@ fn t_x_cut_along_its_unit_loop_gives_d_x() {
     for x in [2.0, 3.5, 1e6 + 0.25, 12345.75] {
         let good = t_x_cut(x).make_good().unwrap();
         assert_eq!(good.biface.b(), &[x - x.floor(), 2.0], "x = {x}");
+    }
+}
+
+mod common_tubes;
+
+use common_tubes::{RandomTube, random_tube};
+use surftopo_intrinsic::geometry::twice_signed_area;
+use surftopo_intrinsic::{GoodBiface, Portalgon, TubeRoute};
+
+/// Maps `x`'s chart onto `y`'s by their `b₀` sides (`C → A`) and compares the other corners.
+fn same_biface(x: &Biface<Rational>, y: &Biface<Rational>) -> bool {
+    let m = Motion::taking(x.c(), x.a(), y.c(), y.a());
+    m.apply(x.d()) == *y.d() && m.apply(x.b()) == *y.b()
+}
+
+/// Proposition 4 by both routes on a random exact tube, checked against the data it was built
+/// from and the oracle.
+fn check_random_tube(
+    seed: u64,
+    rotation: bool,
+    rung: usize,
+    inner: usize,
+) -> [GoodBiface<Rational>; 2] {
+    let tube: RandomTube<Rational> = random_tube(seed, rotation, rung, inner);
+    let p = &tube.portalgon;
+    p.check_invariants().unwrap();
+    let polygons: Vec<_> = p.polygons().collect();
+    let recognised = p.tube(&polygons, 0.0).unwrap();
+    let mut boundary = tube.boundary;
+    boundary.sort();
+    assert_eq!(recognised.boundary, boundary);
+    let [qa, qd, qb, qc] = tube.quad.map(|v| point(ri(v[0]), ri(v[1])));
+    let (a, b, c) = tube.omega;
+    let omega = [ri(a) / ri(c), ri(b) / ri(c)];
+    let mut angle = AngleSum::zero();
+    angle.add_corner(&qa, &qd, &qc);
+    angle.add_corner(&qc, &qa, &qb);
+    // The first boundary side in id order is CA or DB of the quad.
+    let ca_first = tube.boundary[0] < tube.boundary[1];
+    let mut results = Vec::new();
+    for route in [TubeRoute::Direct, TubeRoute::Paper] {
+        let (good, report) = p.good_biface_of_tube(&polygons, route, 0.0).unwrap();
+        let out = &good.biface;
+        let corners = corners_of(out);
+        assert_eq!(
+            out.twice_area(),
+            twice_signed_area(&[qa.clone(), qd.clone(), qb.clone(), qc.clone()])
+        );
+        // Charted from DB, the deck transformation taking p₀ to p₁ is g⁻¹.
+        let want = if ca_first {
+            omega.clone()
+        } else {
+            [omega[0].clone(), -omega[1].clone()]
+        };
+        assert_eq!(out.gluing().rotation, want, "seed {seed} {route:?}");
+        let [l0, l1] = out.boundary_lengths2();
+        let (ca, db) = (dist2(&qc, &qa), dist2(&qd, &qb));
+        if ca_first {
+            assert_eq!((l0, l1), (ca, db));
+            assert!(angle_at_b0(&corners).same(&angle), "seed {seed} {route:?}");
+        } else {
+            assert_eq!((l0, l1), (db, ca));
+        }
+        let w = if rotation { 26 } else { 14 };
+        let oracle = Oracle::new(&corners, w);
+        assert!(oracle.window_is_conclusive(!rotation));
+        assert!(oracle.good(0), "seed {seed} {route:?}: not good");
+        assert!(out.is_good().unwrap());
+        if route == TubeRoute::Paper {
+            assert_eq!(report.merges + 1, report.bifaces);
+            assert!(report.deleted_vertices <= tube.interior_vertices);
+        }
+        results.push(good);
+    }
+    assert!(
+        same_biface(&results[0].biface, &results[1].biface),
+        "seed {seed}: the routes differ"
+    );
+    // In place: the tube becomes the two triangles, boundary ids kept.
+    let mut q = p.clone();
+    let (created, good, _) = q
+        .replace_tube_by_good_biface(&polygons, TubeRoute::Direct, 0.0)
+        .unwrap();
+    q.check_invariants().unwrap();
+    assert_eq!(q.polygon_count(), 2);
+    assert_eq!(q.area(), p.area());
+    assert!(
+        tube.boundary
+            .iter()
+            .all(|&s| q.is_side_live(s) && q.mate(s).is_none())
+    );
+    assert!(same_biface(&good.biface, &results[0].biface));
+    assert!(q.tube(&created, 0.0).is_ok());
+    let [x, y] = results.try_into().unwrap_or_else(|_| unreachable!());
+    [x, y]
+}
+
+#[test]
+fn random_tubes_give_one_good_biface_by_both_routes() {
+    let mut changed = 0;
+    for seed in 0..24 {
+        let rotation = seed % 2 == 1;
+        let [direct, _] = check_random_tube(
+            seed,
+            rotation,
+            1 + (seed % 4) as usize,
+            (seed % 7) as usize * 3,
+        );
+        changed += usize::from(direct.rung_offset != ri(0));
+    }
+    assert!(changed >= 6, "only {changed} tubes needed a new rung");
+}
+
+#[test]
+#[ignore = "large sweep: cargo test --release -p surftopo-intrinsic --test bifaces -- --ignored"]
+fn random_tubes_give_one_good_biface_by_both_routes_large() {
+    for seed in 0..300 {
+        check_random_tube(
+            seed,
+            seed % 2 == 1,
+            1 + (seed % 6) as usize,
+            (seed % 13) as usize * 5,
+        );
+    }
+}
+
+#[test]
+fn f64_tubes_agree_with_exact_ones() {
+    for seed in 0..12u64 {
+        let rotation = seed % 2 == 0;
+        let exact: RandomTube<Rational> = random_tube(seed + 100, rotation, 2, 6);
+        let rounded: RandomTube<f64> = random_tube(seed + 100, rotation, 2, 6);
+        let polygons: Vec<_> = exact.portalgon.polygons().collect();
+        let (good, _) = exact
+            .portalgon
+            .good_biface_of_tube(&polygons, TubeRoute::Direct, 0.0)
+            .unwrap();
+        let want = good.biface.interior_lengths2().map(|x| x.to_f64());
+        for route in [TubeRoute::Direct, TubeRoute::Paper] {
+            let (g, _) = rounded
+                .portalgon
+                .good_biface_of_tube(&polygons, route, 1e-9)
+                .unwrap();
+            let got = g.biface.interior_lengths2();
+            for i in 0..2 {
+                assert!(
+                    (got[i] - want[i]).abs() <= 1e-9 * want[i],
+                    "seed {seed} {route:?}: {got:?} {want:?}"
+                );
+            }
+            assert!(
+                (g.biface.twice_area() - good.biface.twice_area().to_f64()).abs()
+                    <= 1e-9 * g.biface.twice_area()
+            );
+        }
+    }
+}
+
+/// `T_x` as a portalgon cut along its unit loop: Δ₁ = (0,0),(1,0),(x,2), Δ₂ = (1+x,2),(x,2),(1,0),
+/// sides 1 and 2 matched, sides 0 the two boundary loops.
+fn t_x_tube(x: &str) -> Portalgon<Rational> {
+    let x = r(x);
+    let mut p = Portalgon::<Rational>::empty();
+    let d1 = p
+        .add_polygon(&[
+            point(ri(0), ri(0)),
+            point(ri(1), ri(0)),
+            point(x.clone(), ri(2)),
+        ])
+        .unwrap();
+    let d2 = p
+        .add_polygon(&[
+            point(ri(1) + x.clone(), ri(2)),
+            point(x, ri(2)),
+            point(ri(1), ri(0)),
+        ])
+        .unwrap();
+    for i in [1, 2] {
+        p.glue(p.side(d1, i), p.side(d2, i), 0.0).unwrap();
+    }
+    p
+}
+
+#[test]
+fn t_x_tube_gives_d_x_by_both_routes() {
+    for x in [
+        "7/2",
+        "10/3",
+        "1000000000.333",
+        "1000000000000000000",
+        "3000000000000000001/3",
+    ] {
+        let p = t_x_tube(x);
+        let polygons: Vec<_> = p.polygons().collect();
+        let frac = r(x) - r(x).floor();
+        for route in [TubeRoute::Direct, TubeRoute::Paper] {
+            let (good, _) = p.good_biface_of_tube(&polygons, route, 0.0).unwrap();
+            let b = &good.biface;
+            // Chart it so that the b₀ side runs (0,0) → (1,0): B lands on (x − ⌊x⌋, 2).
+            let m = Motion::taking(b.c(), b.a(), &point(ri(0), ri(0)), &point(ri(1), ri(0)));
+            assert_eq!(
+                m.apply(b.b()),
+                point(frac.clone(), ri(2)),
+                "x = {x} {route:?}"
+            );
+            assert_eq!(
+                m.apply(b.d()),
+                point(frac.clone() + ri(1), ri(2)),
+                "x = {x} {route:?}"
+            );
+        }
     }
 }
