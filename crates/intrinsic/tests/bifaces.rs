@@ -616,7 +616,7 @@ mod common_tubes;
 
 use common_tubes::{RandomTube, random_tube};
 use surftopo_intrinsic::geometry::twice_signed_area;
-use surftopo_intrinsic::{GoodBiface, Portalgon, TubeRoute};
+use surftopo_intrinsic::{GoodBiface, Portalgon, TubeReport, TubeRoute};
 
 /// Maps `x`'s chart onto `y`'s by their `b₀` sides (`C → A`) and compares the other corners.
 fn same_biface(x: &Biface<Rational>, y: &Biface<Rational>) -> bool {
@@ -631,7 +631,7 @@ fn check_random_tube(
     rotation: bool,
     rung: usize,
     inner: usize,
-) -> [GoodBiface<Rational>; 2] {
+) -> ([GoodBiface<Rational>; 2], TubeReport) {
     let tube: RandomTube<Rational> = random_tube(seed, rotation, rung, inner);
     let p = &tube.portalgon;
     p.check_invariants().unwrap();
@@ -649,6 +649,7 @@ fn check_random_tube(
     // The first boundary side in id order is CA or DB of the quad.
     let ca_first = tube.boundary[0] < tube.boundary[1];
     let mut results = Vec::new();
+    let mut paper = TubeReport::default();
     for route in [TubeRoute::Direct, TubeRoute::Paper] {
         let (good, report) = p.good_biface_of_tube(&polygons, route, 0.0).unwrap();
         let out = &good.biface;
@@ -680,6 +681,9 @@ fn check_random_tube(
         if route == TubeRoute::Paper {
             assert_eq!(report.merges + 1, report.bifaces);
             assert!(report.deleted_vertices <= tube.interior_vertices);
+            // Lemma 28: fewer than 3n bifaces.
+            assert!(report.bifaces < 3 * report.triangles);
+            paper = report;
         }
         results.push(good);
     }
@@ -703,23 +707,30 @@ fn check_random_tube(
     assert!(same_biface(&good.biface, &results[0].biface));
     assert!(q.tube(&created, 0.0).is_ok());
     let [x, y] = results.try_into().unwrap_or_else(|_| unreachable!());
-    [x, y]
+    ([x, y], paper)
 }
 
 #[test]
 fn random_tubes_give_one_good_biface_by_both_routes() {
-    let mut changed = 0;
+    let (mut changed, mut deleted, mut extra) = (0, 0, 0);
     for seed in 0..24 {
         let rotation = seed % 2 == 1;
-        let [direct, _] = check_random_tube(
+        let ([direct, _], paper) = check_random_tube(
             seed,
             rotation,
             1 + (seed % 4) as usize,
             (seed % 7) as usize * 3,
         );
         changed += usize::from(direct.rung_offset != ri(0));
+        deleted += paper.deleted_vertices;
+        extra += paper.bifaces - 1;
     }
     assert!(changed >= 6, "only {changed} tubes needed a new rung");
+    // Lemma 28 deleted vertices, and left concatenations of several bifaces to merge.
+    assert!(
+        deleted > 24 && extra > 6,
+        "{deleted} deleted, {extra} extra bifaces"
+    );
 }
 
 #[test]
