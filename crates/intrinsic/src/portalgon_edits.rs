@@ -14,6 +14,7 @@
 //! surface is unchanged (area, cone angles, boundary) after each one (`tests/portalgon_edits.rs`).
 
 use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
 
 use crate::geometry::{Point, Scalar, add, midpoint, scale, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
@@ -269,25 +270,21 @@ impl<S: Scalar> Portalgon<S> {
         let (class, _) = self.classes_within(&in_set);
         let mut sorted = polygons.to_vec();
         sorted.sort();
-        let mut roots: Vec<u32> = Vec::new();
+        let mut component_of_root: HashMap<u32, usize> = HashMap::new();
         let mut out: Vec<Component> = Vec::new();
         for &p in &sorted {
             let r = uf.find(p.0);
-            let k = match roots.iter().position(|&x| x == r) {
-                Some(k) => k,
-                None => {
-                    roots.push(r);
-                    out.push(Component {
-                        polygons: Vec::new(),
-                        vertices: 0,
-                        edges: 0,
-                        euler_characteristic: 0,
-                        boundary_cycles: Vec::new(),
-                        interior_vertices: Vec::new(),
-                    });
-                    roots.len() - 1
-                }
-            };
+            let k = *component_of_root.entry(r).or_insert_with(|| {
+                out.push(Component {
+                    polygons: Vec::new(),
+                    vertices: 0,
+                    edges: 0,
+                    euler_characteristic: 0,
+                    boundary_cycles: Vec::new(),
+                    interior_vertices: Vec::new(),
+                });
+                out.len() - 1
+            });
             out[k].polygons.push(p);
         }
         for c in &mut out {
@@ -301,26 +298,21 @@ impl<S: Scalar> Portalgon<S> {
             vertex_side.sort();
             vertex_side.dedup_by_key(|x| x.0);
             let boundary: Vec<SideId> = sides.iter().copied().filter(|&s| !internal(s)).collect();
-            let on_boundary: Vec<u32> = boundary.iter().map(|&s| class[s.idx()]).collect();
+            let on_boundary: HashSet<u32> = boundary.iter().map(|&s| class[s.idx()]).collect();
             c.vertices = vertex_side.len();
             c.edges = (sides.len() - boundary.len()) / 2 + boundary.len();
             c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.polygons.len() as i64;
+            // Sorted by (vertex, side): each vertex's first entry is its lowest side.
             let mut interior: Vec<SideId> = vertex_side
                 .iter()
                 .filter(|(v, _)| !on_boundary.contains(v))
-                .map(|&(v, _)| {
-                    *sides
-                        .iter()
-                        .filter(|&&s| class[s.idx()] == v)
-                        .min()
-                        .expect("a side at the vertex")
-                })
+                .map(|&(_, s)| s)
                 .collect();
             interior.sort();
             c.interior_vertices = interior;
             let mut sorted_boundary = boundary.clone();
             sorted_boundary.sort();
-            let mut seen: Vec<SideId> = Vec::new();
+            let mut seen: HashSet<SideId> = HashSet::new();
             for &b in &sorted_boundary {
                 if seen.contains(&b) {
                     continue;
@@ -368,7 +360,7 @@ impl<S: Scalar> Portalgon<S> {
     /// label; the other sides of `old` and the polygons of `old` are removed (tombstones), the
     /// polygons of `new` get fresh ids (returned, in `new`'s order) and its internal sides fresh
     /// ids. The caller vouches for the geometry (the same surface); the combinatorics are checked.
-    /// O(size of old + new + boundary²).
+    /// O(size of old + new).
     ///
     /// # Errors
     /// [`EditError::NoSuchPolygon`], [`EditError::NoSuchSide`] (a side of `new` out of range),
@@ -380,8 +372,14 @@ impl<S: Scalar> Portalgon<S> {
         boundary: &[(SideId, SideId)],
         tolerance: f64,
     ) -> Result<Vec<PolygonId>, EditError> {
-        let in_set = self.polygon_set(old)?;
-        let inside = |me: &Self, s: SideId| me.is_side_live(s) && in_set[me.owner(s).idx()];
+        // Hash sets, not per-id arrays: a splice costs the size of `old` and `new`, not of `self`.
+        let mut in_set: HashSet<PolygonId> = HashSet::with_capacity(old.len());
+        for &p in old {
+            if !self.is_polygon_live(p) || !in_set.insert(p) {
+                return Err(EditError::NoSuchPolygon(p.idx()));
+            }
+        }
+        let inside = |me: &Self, s: SideId| me.is_side_live(s) && in_set.contains(&me.owner(s));
         let internal_old = |s: SideId| self.mate(s).is_some_and(|t| inside(self, t));
         let old_boundary: Vec<SideId> = old
             .iter()
@@ -398,7 +396,7 @@ impl<S: Scalar> Portalgon<S> {
             )));
         }
         let mut to_old = vec![SideId::INVALID; new.side_slots()];
-        let mut used = vec![false; self.side_slots()];
+        let mut used: HashSet<SideId> = HashSet::with_capacity(boundary.len());
         for &(n, o) in boundary {
             if !new.is_side_live(n) {
                 return Err(EditError::NoSuchSide(n.idx()));
@@ -409,7 +407,7 @@ impl<S: Scalar> Portalgon<S> {
                     n.0
                 )));
             }
-            if !inside(self, o) || internal_old(o) || std::mem::replace(&mut used[o.idx()], true) {
+            if !inside(self, o) || internal_old(o) || !used.insert(o) {
                 return Err(EditError::Boundary(format!(
                     "side {} is not a boundary side of the replaced polygons, or paired twice",
                     o.0
@@ -448,7 +446,7 @@ impl<S: Scalar> Portalgon<S> {
             for s in sides {
                 self.owner[s.idx()] = PolygonId::INVALID;
                 self.next[s.idx()] = SideId::INVALID;
-                if !used[s.idx()] {
+                if !used.contains(&s) {
                     self.mate[s.idx()] = SideId::INVALID;
                 }
             }

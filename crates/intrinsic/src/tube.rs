@@ -24,6 +24,7 @@
 //! `(3n)^15·L`. The paper's route is kept as the faithful variant and as a cross-check.
 
 use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
 
 use crate::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
 use crate::error::PortalgonError;
@@ -99,7 +100,8 @@ pub enum TubeError {
 pub struct Tube {
     /// Its triangles.
     pub polygons: Vec<PolygonId>,
-    /// The boundary sides `[β₀, β₁]` (single-side loops at `b₀` and `b₁`; `β₀` has the lower id).
+    /// The boundary sides `[β₀, β₁]` (single-side loops at `b₀` and `b₁`; [`Portalgon::tube`]
+    /// puts the lower id first).
     pub boundary: [SideId; 2],
 }
 
@@ -172,9 +174,10 @@ impl<S: Scalar> Portalgon<S> {
         }
         let (sub_portalgon, map) = self.sub_portalgon(polygons);
         let info = sub_portalgon.vertex_info();
+        let sides_at = sides_by_vertex(&sub_portalgon, &info);
         for &s in &c.interior_vertices {
             let v = info.class[map[s.idx()].idx()] as usize;
-            let (full_turn, angle) = sub_portalgon.is_full_turn(&info, v, tolerance);
+            let (full_turn, angle) = sub_portalgon.is_full_turn(&sides_at[v], tolerance);
             if !full_turn {
                 return Err(TubeError::NotFlat {
                     side: s.idx(),
@@ -188,10 +191,11 @@ impl<S: Scalar> Portalgon<S> {
         })
     }
 
-    /// Whether the corner angles at vertex `v` add up to 2π, and their sum as a double. Exact
+    /// Whether the corner angles at the start corners of `sides` (one vertex) add up to 2π, and
+    /// their sum as a double. Exact
     /// mode: the product of the corners' complex ratios is a positive real after exactly one turn
     /// (DUBOIS.md §2.5); f64: the `atan2` sum within `tolerance · 2π`.
-    fn is_full_turn(&self, info: &VertexInfo, v: usize, tolerance: f64) -> (bool, f64) {
+    fn is_full_turn(&self, sides: &[SideId], tolerance: f64) -> (bool, f64) {
         let mut z: Point<S> = [S::one(), S::zero()];
         let (mut turns, mut angle) = (0u32, 0.0);
         // Arguments in [0, 2π): class 0 = 0, 1 = (0, π), 2 = π, 3 = (π, 2π).
@@ -205,7 +209,7 @@ impl<S: Scalar> Portalgon<S> {
             let (ca, cb) = (class(a), class(b));
             ca < cb || (ca == cb && (ca == 1 || ca == 3) && cross(a, b).sign() == Ordering::Greater)
         };
-        for s in self.sides().filter(|&s| info.class[s.idx()] as usize == v) {
+        for &s in sides {
             let o = self.start_ref(s);
             let (u, w) = (self.end_ref(s), self.start_ref(self.prev_side(s)));
             let (du, dw) = (sub(u, o), sub(w, o));
@@ -308,41 +312,39 @@ impl<S: Scalar> Portalgon<S> {
     /// `β₀`) closest to `p₁` (its start), and sums `ψ₀` along the corners shared by the tree path
     /// from `β₀`'s triangle to `β₁`'s.
     fn unfold(&self, tube: &Tube, tolerance: f64) -> Result<Chart<S>, TubeError> {
-        let n = self.polygon_slots();
-        let mut placed: Vec<Option<Motion<S>>> = vec![None; n];
-        let mut parent: Vec<(PolygonId, SideId)> = vec![(PolygonId::INVALID, SideId::INVALID); n];
-        let mut in_tube = vec![false; n];
-        for &p in &tube.polygons {
-            in_tube[p.idx()] = true;
-        }
+        // Hash maps, not per-id arrays: unfolding costs the size of the tube, not of `self`.
+        let in_tube: HashSet<PolygonId> = tube.polygons.iter().copied().collect();
+        let mut placed: HashMap<PolygonId, Motion<S>> = HashMap::with_capacity(in_tube.len());
+        let mut parent: HashMap<PolygonId, (PolygonId, SideId)> = HashMap::new();
         let [beta0, beta1] = tube.boundary;
         let root = self.owner(beta0);
-        placed[root.idx()] = Some(Motion::identity());
+        placed.insert(root, Motion::identity());
         let mut queue = std::collections::VecDeque::from([root]);
         let mut non_tree: Vec<(SideId, SideId)> = Vec::new();
         while let Some(p) = queue.pop_front() {
-            let mp = placed[p.idx()].clone().expect("placed");
+            let mp = placed[&p].clone();
             for &s in self.polygon_sides(p) {
-                let Some(t) = self.mate(s).filter(|&t| in_tube[self.owner(t).idx()]) else {
+                let Some(t) = self.mate(s).filter(|&t| in_tube.contains(&self.owner(t))) else {
                     continue;
                 };
                 let q = self.owner(t);
-                if placed[q.idx()].is_none() {
+                let tree_side = |x: PolygonId| parent.get(&x).map(|e| e.1);
+                if !placed.contains_key(&q) {
                     let across = Motion::taking(
                         self.start_ref(t),
                         self.end_ref(t),
                         self.end_ref(s),
                         self.start_ref(s),
                     );
-                    placed[q.idx()] = Some(mp.compose(&across));
-                    parent[q.idx()] = (p, s);
+                    placed.insert(q, mp.compose(&across));
+                    parent.insert(q, (p, s));
                     queue.push_back(q);
-                } else if s < t && parent[q.idx()].1 != s && parent[p.idx()].1 != t {
+                } else if s < t && tree_side(q) != Some(s) && tree_side(p) != Some(t) {
                     non_tree.push((s, t));
                 }
             }
         }
-        let chart_of = |s: SideId| placed[self.owner(s).idx()].clone().expect("placed");
+        let chart_of = |s: SideId| placed[&self.owner(s)].clone();
         let m0 = chart_of(beta0);
         let (p1, p0) = (
             m0.apply(self.start_ref(beta0)),
@@ -388,13 +390,8 @@ impl<S: Scalar> Portalgon<S> {
             let mut points = vec![q0.clone()];
             let mut p = self.owner(beta1);
             while p != root {
-                let (up, s) = parent[p.idx()];
-                points.push(
-                    placed[up.idx()]
-                        .clone()
-                        .expect("placed")
-                        .apply(self.start_ref(s)),
-                );
+                let (up, s) = parent[&p];
+                points.push(placed[&up].apply(self.start_ref(s)));
                 p = up;
             }
             points.push(p0.clone());
@@ -427,11 +424,11 @@ impl<S: Scalar> Portalgon<S> {
         let is_loop = |s: SideId| {
             x.mate(s).is_some() && info.class[s.idx()] == info.class[x.next_side(s).idx()]
         };
-        let mut chain: Vec<Vec<PolygonId>> = Vec::new();
+        // Each biface with its boundary sides toward b₀ and toward b₁ (ids that every splice
+        // keeps), so the steps below need no tube recognition and cost O(1) each.
+        let mut chain: Vec<Tube> = Vec::new();
         let mut entry = beta[0];
         loop {
-            // The biface entered through `entry`: its polygon and the one across its non-loop
-            // sides.
             let p = x.owner(entry);
             let other = x
                 .polygon_sides(p)
@@ -439,13 +436,16 @@ impl<S: Scalar> Portalgon<S> {
                 .filter(|&&s| !is_loop(s) && s != entry)
                 .find_map(|&s| x.mate(s).map(|t| x.owner(t)))
                 .expect("a biface has two triangles");
-            let pair = vec![p.min(other), p.max(other)];
-            let exit = pair
+            let polygons = vec![p.min(other), p.max(other)];
+            let exit = polygons
                 .iter()
                 .flat_map(|&q| x.polygon_sides(q).iter().copied())
-                .find(|&s| s != entry && (is_loop(s) || s == beta[1]) && x.mate(s) != Some(entry))
+                .find(|&s| s != entry && (is_loop(s) || s == beta[1]))
                 .expect("a biface has two boundary sides");
-            chain.push(pair);
+            chain.push(Tube {
+                polygons,
+                boundary: [entry, exit],
+            });
             if exit == beta[1] {
                 break;
             }
@@ -453,28 +453,38 @@ impl<S: Scalar> Portalgon<S> {
         }
         report.bifaces = chain.len();
         // Lemma 25 on each biface, spliced in so that the loops keep their ids.
-        let mut bifaces: Vec<[PolygonId; 2]> = Vec::new();
-        for pair in &chain {
-            let t = x.tube(pair, tolerance)?;
-            let good = x.ladder_kernel(&t, tolerance)?;
+        let mut bifaces: Vec<Tube> = Vec::new();
+        for t in &chain {
+            let good = x.ladder_kernel(t, tolerance)?;
             let labels = t.boundary.map(|s| x.label[s.idx()]);
-            bifaces.push(x.splice_biface(&t, &good.biface, labels, tolerance)?);
+            let polygons = x
+                .splice_biface(t, &good.biface, labels, tolerance)?
+                .to_vec();
+            bifaces.push(Tube {
+                polygons,
+                boundary: t.boundary,
+            });
         }
         // Lemma 26: merge the first good biface with the next, until one is left.
-        let mut current = bifaces[0];
+        let mut current = bifaces[0].clone();
         for next in &bifaces[1..] {
-            let four = [current[0], current[1], next[0], next[1]];
-            let t = x.tube(&four, tolerance)?;
+            let mut polygons = current.polygons.clone();
+            polygons.extend(&next.polygons);
+            let t = Tube {
+                polygons,
+                boundary: [current.boundary[0], next.boundary[1]],
+            };
             let good = x.ladder_kernel(&t, tolerance)?;
             let labels = t.boundary.map(|s| x.label[s.idx()]);
-            current = x.splice_biface(&t, &good.biface, labels, tolerance)?;
+            current = Tube {
+                polygons: x
+                    .splice_biface(&t, &good.biface, labels, tolerance)?
+                    .to_vec(),
+                boundary: t.boundary,
+            };
             report.merges += 1;
         }
-        let mut t = x.tube(&current, tolerance)?;
-        if t.boundary[0] != beta[0] {
-            t.boundary.swap(0, 1);
-        }
-        x.ladder_kernel(&t, tolerance)
+        x.ladder_kernel(&current, tolerance)
     }
 }
 
@@ -488,6 +498,7 @@ fn lemma_28<S: Scalar>(
 ) -> Result<(), TubeError> {
     loop {
         let info = x.vertex_info();
+        let sides_at = sides_by_vertex(x, &info);
         let mut blocked = vec![false; info.count()];
         let mut chosen = Vec::new();
         for v in 0..info.count() {
@@ -496,7 +507,7 @@ fn lemma_28<S: Scalar>(
             }
             chosen.push(info.side[v]);
             blocked[v] = true;
-            for s in x.sides().filter(|&s| info.class[s.idx()] as usize == v) {
+            for &s in &sides_at[v] {
                 blocked[info.class[x.next_side(s).idx()] as usize] = true;
             }
         }
@@ -510,6 +521,15 @@ fn lemma_28<S: Scalar>(
             x.triangulate_by_shortcuts(hole)?;
         }
     }
+}
+
+/// The sides starting at each vertex.
+fn sides_by_vertex<S: Scalar>(p: &Portalgon<S>, info: &VertexInfo) -> Vec<Vec<SideId>> {
+    let mut at = vec![Vec::new(); info.count()];
+    for s in p.sides() {
+        at[info.class[s.idx()] as usize].push(s);
+    }
+    at
 }
 
 /// The two triangles of a biface as a portalgon (`(A, B, C)` then `(A, D, B)`, matched as in

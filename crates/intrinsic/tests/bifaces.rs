@@ -631,7 +631,7 @@ fn check_random_tube(
     rotation: bool,
     rung: usize,
     inner: usize,
-) -> ([GoodBiface<Rational>; 2], TubeReport) {
+) -> ([GoodBiface<Rational>; 2], TubeReport, bool) {
     let tube: RandomTube<Rational> = random_tube(seed, rotation, rung, inner);
     let p = &tube.portalgon;
     p.check_invariants().unwrap();
@@ -687,8 +687,17 @@ fn check_random_tube(
         }
         results.push(good);
     }
+    // The routes agree unless the good biface is not unique (a tie of lengths: then the tie
+    // rules, which keep the current edges, depend on the intermediate bifaces).
+    let tie = {
+        let oracle = Oracle::new(
+            &corners_of(&results[0].biface),
+            if rotation { 26 } else { 14 },
+        );
+        oracle.good(-1) || oracle.good(1)
+    };
     assert!(
-        same_biface(&results[0].biface, &results[1].biface),
+        tie || same_biface(&results[0].biface, &results[1].biface),
         "seed {seed}: the routes differ"
     );
     // In place: the tube becomes the two triangles, boundary ids kept.
@@ -707,15 +716,15 @@ fn check_random_tube(
     assert!(same_biface(&good.biface, &results[0].biface));
     assert!(q.tube(&created, 0.0).is_ok());
     let [x, y] = results.try_into().unwrap_or_else(|_| unreachable!());
-    ([x, y], paper)
+    ([x, y], paper, tie)
 }
 
 #[test]
 fn random_tubes_give_one_good_biface_by_both_routes() {
-    let (mut changed, mut deleted, mut extra) = (0, 0, 0);
+    let (mut changed, mut deleted, mut extra, mut ties) = (0, 0, 0, 0);
     for seed in 0..24 {
         let rotation = seed % 2 == 1;
-        let ([direct, _], paper) = check_random_tube(
+        let ([direct, _], paper, tie) = check_random_tube(
             seed,
             rotation,
             1 + (seed % 4) as usize,
@@ -724,7 +733,9 @@ fn random_tubes_give_one_good_biface_by_both_routes() {
         changed += usize::from(direct.rung_offset != ri(0));
         deleted += paper.deleted_vertices;
         extra += paper.bifaces - 1;
+        ties += usize::from(tie);
     }
+    assert!(ties <= 3, "{ties} tubes of 24 have several good bifaces");
     assert!(changed >= 6, "only {changed} tubes needed a new rung");
     // Lemma 28 deleted vertices, and left concatenations of several bifaces to merge.
     assert!(

@@ -62,17 +62,17 @@ pub fn random_tube<S: Scalar>(
     inner: usize,
 ) -> RandomTube<S> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    // Coordinates are multiples of f, so the rung divides into k equal integer steps.
+    // The rung's vector is a multiple of k, so it divides into k equal integer steps; the other
+    // coordinates are free integers, so that ties between lengths are rare.
     let k = rung_points as i64 + 1;
-    let f = 4 * k;
     loop {
         let (quad, omega, g): ([[i64; 2]; 4], (i64, i64, i64), Gluing) = if rotation {
             let (a, b, c) = TRIPLES[rng.random_range(0..TRIPLES.len())];
             let b = if rng.random_range(0..2) == 0 { b } else { -b };
             // g(z) = ωz around the origin; A, D multiples of c (so ω·A, ω·D are integers).
-            let r1 = rng.random_range(2..6) * c * f;
-            let r2 = r1 + rng.random_range(2..8) * c * f;
-            let skew = rng.random_range(-3..=3) * c * f;
+            let r1 = rng.random_range(8..24) * c * k;
+            let r2 = r1 + rng.random_range(8..32) * c * k;
+            let skew = rng.random_range(-12..=12) * c * k;
             let (pa, pd) = ([r1, 0], [r2, skew]);
             let g = move |z: [i64; 2]| [(a * z[0] - b * z[1]) / c, (b * z[0] + a * z[1]) / c];
             let quad = if b > 0 {
@@ -84,9 +84,9 @@ pub fn random_tube<S: Scalar>(
             };
             (quad, (a, b, c), Box::new(g))
         } else {
-            let t = [rng.random_range(-8..=-2) * f, rng.random_range(-3..=3) * f];
-            let h = rng.random_range(2..8) * f;
-            let skew = rng.random_range(-30..=30) * f;
+            let t = [rng.random_range(-64..=-8), rng.random_range(-24..=24)];
+            let h = rng.random_range(16..=64) * k;
+            let skew = rng.random_range(-240..=240) * k;
             let (pa, pd) = ([0, 0], [skew, h]);
             let g = move |z: [i64; 2]| [z[0] + t[0], z[1] + t[1]];
             ([pa, pd, g(pd), g(pa)], (1, 0, 1), Box::new(g))
@@ -116,6 +116,7 @@ pub fn random_tube<S: Scalar>(
         let mut points: Vec<[i64; 2]> = vec![a, d, b, c];
         points.extend(&rung);
         points.extend(&images);
+        let mut taken: std::collections::HashSet<[i64; 2]> = points.iter().copied().collect();
         let mut added = 0;
         let mut tries = 0;
         while added < inner && tries < 100 * (inner + 1) {
@@ -124,7 +125,7 @@ pub fn random_tube<S: Scalar>(
                 rng.random_range(lo[0]..=hi[0]),
                 rng.random_range(lo[1]..=hi[1]),
             ];
-            if (0..4).all(|i| orient(quad[i], quad[(i + 1) % 4], p) > 0) && !points.contains(&p) {
+            if (0..4).all(|i| orient(quad[i], quad[(i + 1) % 4], p) > 0) && taken.insert(p) {
                 points.push(p);
                 added += 1;
             }
