@@ -24,6 +24,7 @@
 //! `(3n)^15·L`. The paper's route is kept as the faithful variant and as a cross-check.
 
 use std::cmp::Ordering;
+use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 
 use crate::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
@@ -329,14 +330,14 @@ impl<S: Scalar> Portalgon<S> {
                 };
                 let q = self.owner(t);
                 let tree_side = |x: PolygonId| parent.get(&x).map(|e| e.1);
-                if !placed.contains_key(&q) {
+                if let Entry::Vacant(slot) = placed.entry(q) {
                     let across = Motion::taking(
                         self.start_ref(t),
                         self.end_ref(t),
                         self.end_ref(s),
                         self.start_ref(s),
                     );
-                    placed.insert(q, mp.compose(&across));
+                    slot.insert(mp.compose(&across));
                     parent.insert(q, (p, s));
                     queue.push_back(q);
                 } else if s < t && tree_side(q) != Some(s) && tree_side(p) != Some(t) {
