@@ -76,6 +76,7 @@ use std::cmp::Ordering;
 use crate::geometry::{
     Motion, Point, Scalar, add, complex_div, dist2, dot, orient, scale, sub, twice_signed_area,
 };
+use crate::portalgon::points_inside;
 
 /// Largest offset the rotation case handles (`|m| ≤ 2⁵²`: integers exact in a double).
 const MAX_ROTATION_OFFSET: i64 = 1 << 52;
@@ -565,21 +566,15 @@ pub fn good_biface_of_ladder<S: Scalar>(
 }
 
 /// Whether the direction `v − o` is strictly inside the angle swept counter-clockwise at `o`
-/// from `u − o` to `w − o` (an angle in `(0, 2π)`), by exact orientation tests.
+/// from `u − o` to `w − o` (an angle in `(0, 2π)`): a polygon's interior angle at `o` with next
+/// corner `u` and previous corner `w` ([`points_inside`], exact orientation tests).
 fn strictly_inside_sweep<S: Scalar>(
     o: &Point<S>,
     u: &Point<S>,
     v: &Point<S>,
     w: &Point<S>,
 ) -> bool {
-    let uv = orient(o, u, v);
-    let vw = orient(o, v, w);
-    match orient(o, u, w) {
-        Ordering::Greater => uv == Ordering::Greater && vw == Ordering::Greater,
-        Ordering::Less => uv == Ordering::Greater || vw == Ordering::Greater,
-        // A half-turn: v must be to the left of u.
-        Ordering::Equal => uv == Ordering::Greater,
-    }
+    points_inside(w, o, u, v)
 }
 
 /// An integer offset held in `S` as an `i64`, refusing `|m| > 2⁵²`.

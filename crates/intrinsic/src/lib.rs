@@ -8,8 +8,12 @@
 //! edits: [`Portalgon::cut`] and [`Portalgon::shortcut`] (INSERTEDGES),
 //! [`Portalgon::delete_vertex`] (DELETEVERTICES), [`Portalgon::merge`], [`Portalgon::glue`] /
 //! [`Portalgon::unglue`], [`Portalgon::sub_portalgon`] and [`Regions`] (Section 4.4's active and
-//! inactive regions). Not here yet: tubes, bifaces and SIMPLIFYTUBES (Section 3, Appendix B), the
-//! wave algorithm (Appendix D).
+//! inactive regions), [`Portalgon::split_side`] (INSERTVERTICES), [`Portalgon::vertex_info`]
+//! (weak and strong vertices, Section 4.2), [`Portalgon::components`] and [`Portalgon::splice`].
+//! Section 3 and Appendix B: [`Biface`] with the good-biface kernel [`Biface::make_good`] (Lemma 25
+//! by DUBOIS.md §2.1's closed forms), and tubes with Proposition 4
+//! ([`Portalgon::good_biface_of_tube`], [`TubeRoute`]). Not here yet: SIMPLIFYTUBES and ALGORITHM
+//! (Section 4), the wave algorithm (Appendix D).
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh

@@ -67,7 +67,7 @@ pub fn signed_area<S: Scalar>(corners: &[Point<S>]) -> S {
 /// Whether the direction from corner `cur` towards `target` points strictly into the interior
 /// angle of a counter-clockwise polygon at `cur` (neighbours `prev` and `next`). Exact signs
 /// ([`orient`]).
-fn points_inside<S: Scalar>(
+pub(crate) fn points_inside<S: Scalar>(
     prev: &Point<S>,
     cur: &Point<S>,
     next: &Point<S>,

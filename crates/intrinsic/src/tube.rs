@@ -18,6 +18,11 @@
 //! `tests/bifaces.rs` (both routes give the same biface, which the brute-force ladder oracle
 //! confirms good, of the same area, boundary lengths, holonomy and angle at `b₀`).
 //!
+//! **Both routes give the same biface** when the good biface is unique. With ties of lengths
+//! (a rectangle, two shortest paths) several bifaces are good, and the tie rule that keeps the
+//! current edges makes the answer depend on the intermediate bifaces: the routes may then return
+//! different good bifaces (both good; the random-tube test counts these cases).
+//!
 //! **Default: [`TubeRoute::Direct`].** It does one unfolding and one kernel call, O(n) plus the
 //! kernel, against Lemma 28's O(n log n) deletions and re-triangulations followed by O(n) kernel
 //! calls; it also never builds the intermediate bifaces whose edges Lemma 28 only bounds by

@@ -416,40 +416,38 @@ fn exact_agreement(
     seed: u64,
 ) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut kinds = Vec::new();
-    let mut changed = 0;
-    for _ in 0..translations {
-        let b = random_translation(&mut rng);
-        assert!(b.is_translation());
-        changed += usize::from(!b.is_good().unwrap());
-        kinds.push(check_exact(&b, w_t));
+    // Per kind: count, generator, window, the thin and not-good fractions expected at least.
+    type Generator = Box<dyn Fn(&mut ChaCha8Rng) -> Biface<Rational>>;
+    let kinds: [(usize, bool, Generator, i64, usize, usize); 2] = [
+        (translations, true, Box::new(random_translation), w_t, 20, 2),
+        (
+            rotations,
+            false,
+            Box::new(move |rng| random_rotation(rng, min_u)),
+            w_r,
+            50,
+            4,
+        ),
+    ];
+    for (count, translation, generate, w, thin_part, changed_part) in kinds {
+        let mut seen = Vec::new();
+        let mut changed = 0;
+        for _ in 0..count {
+            let b = generate(&mut rng);
+            assert_eq!(b.is_translation(), translation);
+            changed += usize::from(!b.is_good().unwrap());
+            seen.push(check_exact(&b, w));
+        }
+        let (thin, thick) = kind_counts(&seen);
+        assert!(
+            thin > count / thin_part && thick > count / 20,
+            "{thin} thin, {thick} thick"
+        );
+        assert!(
+            changed > count / changed_part,
+            "only {changed} of {count} bifaces were not good"
+        );
     }
-    let (thin, thick) = kind_counts(&kinds);
-    assert!(
-        thin > translations / 20 && thick > translations / 20,
-        "{thin} thin, {thick} thick"
-    );
-    assert!(
-        changed > translations / 2,
-        "only {changed} translation bifaces were not good"
-    );
-    kinds.clear();
-    changed = 0;
-    for _ in 0..rotations {
-        let b = random_rotation(&mut rng, min_u);
-        assert!(!b.is_translation());
-        changed += usize::from(!b.is_good().unwrap());
-        kinds.push(check_exact(&b, w_r));
-    }
-    let (thin, thick) = kind_counts(&kinds);
-    assert!(
-        thin > rotations / 50 && thick > rotations / 20,
-        "{thin} thin, {thick} thick"
-    );
-    assert!(
-        changed > rotations / 4,
-        "only {changed} rotation bifaces were not good"
-    );
 }
 
 #[test]

@@ -61,18 +61,34 @@ pub fn random_tube<S: Scalar>(
     rung_points: usize,
     inner: usize,
 ) -> RandomTube<S> {
+    random_tube_skewed(seed, rotation, rung_points, inner, None)
+}
+
+/// A random tube; for a translation, `skew` (when given) is the rung's horizontal extent in units
+/// of `rung_points + 1` (the height is 16 to 64 such units and `|t|` at most 68, all times
+/// `1 + √(inner/100)` to leave room for the interior points): the shortest offset, and with it
+/// the happiness, grows like `skew/|t|`.
+pub fn random_tube_skewed<S: Scalar>(
+    seed: u64,
+    rotation: bool,
+    rung_points: usize,
+    inner: usize,
+    skew: Option<i64>,
+) -> RandomTube<S> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     // The rung's vector is a multiple of k, so it divides into k equal integer steps; the other
     // coordinates are free integers, so that ties between lengths are rare.
     let k = rung_points as i64 + 1;
+    // Room for the interior points: lengths grow like √inner.
+    let lambda = 1 + ((inner / 100) as f64).sqrt() as i64;
     loop {
         let (quad, omega, g): ([[i64; 2]; 4], (i64, i64, i64), Gluing) = if rotation {
             let (a, b, c) = TRIPLES[rng.random_range(0..TRIPLES.len())];
             let b = if rng.random_range(0..2) == 0 { b } else { -b };
             // g(z) = ωz around the origin; A, D multiples of c (so ω·A, ω·D are integers).
-            let r1 = rng.random_range(8..24) * c * k;
-            let r2 = r1 + rng.random_range(8..32) * c * k;
-            let skew = rng.random_range(-12..=12) * c * k;
+            let r1 = rng.random_range(8..24) * c * k * lambda;
+            let r2 = r1 + rng.random_range(8..32) * c * k * lambda;
+            let skew = rng.random_range(-12..=12) * c * k * lambda;
             let (pa, pd) = ([r1, 0], [r2, skew]);
             let g = move |z: [i64; 2]| [(a * z[0] - b * z[1]) / c, (b * z[0] + a * z[1]) / c];
             let quad = if b > 0 {
@@ -84,9 +100,12 @@ pub fn random_tube<S: Scalar>(
             };
             (quad, (a, b, c), Box::new(g))
         } else {
-            let t = [rng.random_range(-64..=-8), rng.random_range(-24..=24)];
-            let h = rng.random_range(16..=64) * k;
-            let skew = rng.random_range(-240..=240) * k;
+            let t = [
+                rng.random_range(-64..=-8) * lambda,
+                rng.random_range(-24..=24) * lambda,
+            ];
+            let h = rng.random_range(16..=64) * k * lambda;
+            let skew = skew.unwrap_or_else(|| rng.random_range(-240..=240)) * k * lambda;
             let (pa, pd) = ([0, 0], [skew, h]);
             let g = move |z: [i64; 2]| [z[0] + t[0], z[1] + t[1]];
             ([pa, pd, g(pd), g(pa)], (1, 0, 1), Box::new(g))
