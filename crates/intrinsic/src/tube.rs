@@ -84,7 +84,8 @@ pub enum TubeError {
         /// Its angle, as a double.
         angle: f64,
     },
-    /// No deck transformation maps the `b₀` side's end onto its start (an inconsistent chart).
+    /// No deck transformation maps the `b₀` side's end onto its start and the `b₁` side's start
+    /// onto its end (an inconsistent chart).
     #[error("no side of the unfolded tube carries the gluing of its boundary side {side}")]
     NoHolonomy {
         /// The `b₀` boundary side.
@@ -379,10 +380,14 @@ impl<S: Scalar> Portalgon<S> {
         let Some((err, g)) = best else {
             return Err(TubeError::NoHolonomy { side: beta0.idx() });
         };
+        // g must also take the b₁ side's start to its end (DUBOIS.md §2.1(c), step 2).
+        let q1 = m1.apply(self.end_ref(beta1));
+        let err_b1 = dist2(&g.apply(&q0), &q1);
         let acceptable = if S::EXACT {
-            err.is_zero()
+            err.is_zero() && err_b1.is_zero()
         } else {
-            err.to_f64() <= (tolerance * tolerance) * scale2.to_f64()
+            let limit = (tolerance * tolerance) * scale2.to_f64().max(dist2(&q0, &q1).to_f64());
+            err.to_f64() <= limit && err_b1.to_f64() <= limit
         };
         if !acceptable {
             return Err(TubeError::NoHolonomy { side: beta0.idx() });
