@@ -641,9 +641,13 @@ fn check_random_tube(
     let [qa, qd, qb, qc] = tube.quad.map(|v| point(ri(v[0]), ri(v[1])));
     let (a, b, c) = tube.omega;
     let omega = [ri(a) / ri(c), ri(b) / ri(c)];
+    // The quad's angles at b₀ (corners A and C) and at b₁ (corners D and B).
     let mut angle = AngleSum::zero();
     angle.add_corner(&qa, &qd, &qc);
     angle.add_corner(&qc, &qa, &qb);
+    let mut angle_b1 = AngleSum::zero();
+    angle_b1.add_corner(&qd, &qb, &qa);
+    angle_b1.add_corner(&qb, &qc, &qd);
     // The first boundary side in id order is CA or DB of the quad.
     let ca_first = tube.boundary[0] < tube.boundary[1];
     let mut results = Vec::new();
@@ -670,6 +674,10 @@ fn check_random_tube(
             assert!(angle_at_b0(&corners).same(&angle), "seed {seed} {route:?}");
         } else {
             assert_eq!((l0, l1), (db, ca));
+            assert!(
+                angle_at_b0(&corners).same(&angle_b1),
+                "seed {seed} {route:?}"
+            );
         }
         let w = if rotation { 26 } else { 14 };
         let oracle = Oracle::new(&corners, w);
@@ -841,4 +849,50 @@ fn t_x_tube_gives_d_x_by_both_routes() {
             );
         }
     }
+}
+
+/// An annulus cut from a hexagon A, r, D, B, r′, C (A = (0,0), D = (0,2h), B = (−w,2h),
+/// C = (−w,0), r = (1,h)) with the bent rung A → r → D glued to r′ → C and B → r′. With
+/// r′ = r − (w, 0) = g(r) the vertex r is flat; with r′ mirrored to (−w − 1, h) its angle is
+/// below 2π: a cone point, not a tube.
+fn bent_rung_annulus<S: Scalar>(mirrored: bool) -> Portalgon<S> {
+    let (h, w) = (3, 5);
+    let p = |x: i64, y: i64| [S::from_i64(x), S::from_i64(y)];
+    let (a, r, d, b, c) = (p(0, 0), p(1, h), p(0, 2 * h), p(-w, 2 * h), p(-w, 0));
+    let r2 = if mirrored { p(-w - 1, h) } else { p(1 - w, h) };
+    let mut x = Portalgon::<S>::empty();
+    let fan = [[&a, &r, &d], [&a, &d, &b], [&a, &b, &r2], [&a, &r2, &c]]
+        .map(|t| x.add_polygon(&t.map(|q| q.clone())).unwrap());
+    for k in 0..3 {
+        x.glue(x.side(fan[k], 2), x.side(fan[k + 1], 0), 1e-12)
+            .unwrap();
+    }
+    x.glue(x.side(fan[0], 0), x.side(fan[3], 1), 1e-12).unwrap();
+    x.glue(x.side(fan[0], 1), x.side(fan[2], 1), 1e-12).unwrap();
+    x
+}
+
+#[test]
+fn a_cone_point_inside_is_not_a_tube() {
+    fn check<S: Scalar>(tolerance: f64) {
+        let flat = bent_rung_annulus::<S>(false);
+        flat.check_invariants().unwrap();
+        let all: Vec<_> = flat.polygons().collect();
+        assert!(flat.tube(&all, tolerance).is_ok());
+        let (direct, _) = flat
+            .good_biface_of_tube(&all, TubeRoute::Direct, tolerance)
+            .unwrap();
+        let (paper, _) = flat
+            .good_biface_of_tube(&all, TubeRoute::Paper, tolerance)
+            .unwrap();
+        assert_eq!(direct.shortest_length2, paper.shortest_length2);
+        let cone = bent_rung_annulus::<S>(true);
+        cone.check_invariants().unwrap();
+        assert!(matches!(
+            cone.tube(&all, tolerance),
+            Err(surftopo_intrinsic::TubeError::NotFlat { .. })
+        ));
+    }
+    check::<Rational>(0.0);
+    check::<f64>(1e-9);
 }
