@@ -452,7 +452,7 @@ fn exact_agreement(
 
 #[test]
 fn kernel_agrees_with_the_ladder_oracle_exact() {
-    exact_agreement(1000, 1000, 0.16, [14, 22], 1);
+    exact_agreement(800, 800, 0.16, [14, 22], 1);
 }
 
 #[test]
