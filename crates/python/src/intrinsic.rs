@@ -1,0 +1,478 @@
+//! Intrinsic Delaunay triangulations, their Laplacian and mass matrices as `scipy.sparse`
+//! matrices, portalgons, and the isometry test.
+//!
+//! Matrix rows and columns are the input's vertex indices: `len(V)` rows for a mesh (an
+//! unreferenced vertex gets an empty row and column), the dense vertex order for a portalgon.
+
+use crate::arrays::{Faces, VertexArray, index_array, vector};
+use crate::errors::{Failure, invalid};
+use crate::surface::{choose, input_index, json_to_python};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use std::time::Instant;
+use surftopo_intrinsic::{
+    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, DelaunayStats,
+    IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle,
+    cotan_laplacian, delaunay_tessellation, delaunay_with_stats, dense_vertex_index,
+    intrinsic_delaunay_laplacian, lumped_mass,
+};
+
+/// The ways to compute an intrinsic Delaunay triangulation (`method=`).
+#[derive(Clone, Copy, Debug)]
+enum Method {
+    /// Bobenko–Springborn edge flipping (`surftopo_intrinsic::flip_to_delaunay`).
+    Flip,
+}
+
+/// The `method=` names.
+const METHODS: &[(&str, Method)] = &[("flip", Method::Flip)];
+
+/// An intrinsic triangulation and where its vertices go in the output matrices.
+struct Located {
+    tri: IntrinsicTriangulation,
+    /// Output row of each vertex id (`u32::MAX` for a removed id).
+    row_of: Vec<u32>,
+    /// Number of output rows.
+    rows: usize,
+}
+
+impl Located {
+    /// The intrinsic triangulation of a mesh in space; rows are the input vertex indices.
+    fn from_arrays(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
+        let (tri, report) =
+            IntrinsicTriangulation::from_soup(positions, triangles).map_err(|e| match e {
+                surftopo_intrinsic::SoupError::Build(b) => Failure::Build(b),
+                surftopo_intrinsic::SoupError::Geometry(g) => Failure::Geometry(g),
+            })?;
+        let mut row_of = input_index(&report);
+        row_of.resize(tri.mesh().vertex_slots(), u32::MAX);
+        Ok(Self {
+            tri,
+            row_of,
+            rows: positions.len(),
+        })
+    }
+
+    /// A triangulation without input vertices (a portalgon): rows in vertex id order.
+    fn dense(tri: IntrinsicTriangulation) -> Self {
+        let (row_of, rows) = dense_vertex_index(&tri);
+        Self { tri, row_of, rows }
+    }
+
+    /// Output row of each dense matrix index (the live vertices in id order).
+    fn dense_rows(&self) -> Vec<u32> {
+        self.tri
+            .mesh()
+            .vertices()
+            .map(|v| self.row_of[v.idx()])
+            .collect()
+    }
+}
+
+/// `scipy.sparse.csr_matrix` of `m`, its dense rows moved to `rows_of_dense` (increasing) in a
+/// `rows x rows` matrix. Index arrays are int32 when they fit (as scipy makes them), else int64.
+fn csr<'py>(
+    py: Python<'py>,
+    m: SparseMatrix,
+    rows_of_dense: &[u32],
+    rows: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let mut indptr = vec![0usize; rows + 1];
+    for (k, &r) in rows_of_dense.iter().enumerate() {
+        indptr[r as usize + 1] = m.row_start[k + 1] - m.row_start[k];
+    }
+    for i in 0..rows {
+        indptr[i + 1] += indptr[i];
+    }
+    let identity = rows == m.n;
+    let data = vector(py, m.values);
+    let small = rows <= i32::MAX as usize && indptr[rows] <= i32::MAX as usize;
+    let (indices, indptr) = if small {
+        let column = |c: &u32| {
+            if identity {
+                *c as i32
+            } else {
+                rows_of_dense[*c as usize] as i32
+            }
+        };
+        (
+            vector(py, m.cols.iter().map(column).collect::<Vec<i32>>()).into_any(),
+            vector(py, indptr.iter().map(|&p| p as i32).collect::<Vec<i32>>()).into_any(),
+        )
+    } else {
+        let column = |c: &u32| i64::from(rows_of_dense[*c as usize]);
+        (
+            vector(py, m.cols.iter().map(column).collect::<Vec<i64>>()).into_any(),
+            vector(py, indptr.iter().map(|&p| p as i64).collect::<Vec<i64>>()).into_any(),
+        )
+    };
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("shape", (rows, rows))?;
+    py.import("scipy.sparse")?
+        .getattr("csr_matrix")?
+        .call(((data, indices, indptr),), Some(&kwargs))
+}
+
+/// Delaunay options from the Python arguments.
+fn options(mollify: Option<f64>, max_flips: Option<u64>) -> DelaunayOptions {
+    DelaunayOptions {
+        max_flips,
+        mollify,
+        ..DelaunayOptions::default()
+    }
+}
+
+/// A closed polyhedral surface given by flat polygons glued along their sides (a portalgon,
+/// `crates/intrinsic/PORTALGON_FORMAT.md`): its JSON document.
+#[pyclass(frozen, module = "surftopo", name = "Portalgon")]
+pub struct Portalgon {
+    doc: PortalgonDoc,
+}
+
+#[pymethods]
+impl Portalgon {
+    /// Parses and validates a portalgon JSON text.
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
+        let doc = PortalgonDoc::from_json(text)
+            .and_then(|doc| doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map(|_| doc))
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+        Ok(Self { doc })
+    }
+
+    /// The JSON text (compact, one line).
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        self.doc
+            .to_json()
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    /// Number of polygons.
+    #[getter]
+    fn polygon_count(&self) -> usize {
+        self.doc.polygons.len()
+    }
+
+    /// Number of polygon sides (twice the number of glued pairs on a closed surface).
+    #[getter]
+    fn side_count(&self) -> usize {
+        self.doc
+            .polygons
+            .iter()
+            .map(|p| match (&p.corners, &p.lengths) {
+                (Some(c), _) => c.len(),
+                (None, Some(l)) => l.len(),
+                (None, None) => 0,
+            })
+            .sum()
+    }
+
+    /// Number of glued side pairs.
+    #[getter]
+    fn matched_pairs(&self) -> usize {
+        self.doc.matching.len()
+    }
+
+    /// Total area.
+    #[getter]
+    fn area(&self, py: Python<'_>) -> PyResult<f64> {
+        self.doc
+            .to_portalgon(DEFAULT_LENGTH_TOLERANCE)
+            .map(|p| p.area())
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Portalgon({} polygons, {} sides)",
+            self.polygon_count(),
+            self.side_count()
+        )
+    }
+}
+
+impl Portalgon {
+    /// The intrinsic triangulation of a triangular portalgon.
+    fn triangulation(&self) -> Result<IntrinsicTriangulation, Failure> {
+        self.doc
+            .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
+            .map_err(Failure::Portalgon)
+    }
+}
+
+/// An intrinsic Delaunay triangulation: its topology, edge lengths and the matrices.
+#[pyclass(frozen, module = "surftopo", name = "IntrinsicTriangulation")]
+pub struct Intrinsic {
+    located: Located,
+    stats: DelaunayStats,
+}
+
+#[pymethods]
+impl Intrinsic {
+    /// The cotan Laplacian (positive semidefinite), `scipy.sparse.csr_matrix`.
+    fn laplacian<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let m = py.detach(|| cotan_laplacian(&self.located.tri));
+        csr(py, m, &self.located.dense_rows(), self.located.rows)
+    }
+
+    /// The lumped (barycentric) mass matrix, diagonal, `scipy.sparse.csr_matrix`.
+    fn mass<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let m = lumped_mass(&self.located.tri);
+        csr(py, m, &self.located.dense_rows(), self.located.rows)
+    }
+
+    /// The Delaunay tessellation (co-circular triangles merged) as a [`Portalgon`].
+    #[pyo3(signature = (cocircular_tolerance = DEFAULT_COCIRCULAR_TOLERANCE))]
+    fn tessellation(&self, py: Python<'_>, cocircular_tolerance: f64) -> Portalgon {
+        let doc = py.detach(|| {
+            let t = delaunay_tessellation(&self.located.tri, cocircular_tolerance);
+            PortalgonDoc::from_portalgon(&t.portalgon)
+        });
+        Portalgon { doc }
+    }
+
+    /// The triangulation as portalgon JSON (triangles by their side lengths), as
+    /// `surftopo delaunay -o OUT.json` writes it.
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths)
+            .to_json()
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    /// The triangulation as a [`Portalgon`].
+    fn to_portalgon(&self) -> Portalgon {
+        Portalgon {
+            doc: PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths),
+        }
+    }
+
+    /// The faces `(m, 3)` as output vertex indices, corner `i` to corner `i + 1` being side `i`.
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        let rows: Vec<[u32; 3]> = mesh
+            .faces()
+            .map(|f| mesh.face_vertices(f).map(|v| self.located.row_of[v.idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
+    }
+
+    /// The edges `(E, 2)` as output vertex indices (a loop has both ends equal).
+    #[getter]
+    fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        let rows: Vec<[u32; 2]> = mesh
+            .edges()
+            .map(|e| mesh.edge_vertices(e).map(|v| self.located.row_of[v.idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
+    }
+
+    /// The edge of each face side `(m, 3)`: side `i` of face `f` is edge `face_edges[f, i]`.
+    #[getter]
+    fn face_edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        let (_, dense_edge) = edge_ranks(&self.located.tri);
+        let rows: Vec<[u32; 3]> = mesh
+            .faces()
+            .map(|f| mesh.face_halfedges(f).map(|h| dense_edge[h.edge().idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
+    }
+
+    /// The intrinsic length of each edge `(E,)`, in the order of `edges`.
+    #[getter]
+    fn edge_lengths<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let (live, _) = edge_ranks(&self.located.tri);
+        let lengths = self.located.tri.lengths();
+        vector(py, live.iter().map(|&e| lengths[e]).collect::<Vec<f64>>()).into_any()
+    }
+
+    /// The number of flips made.
+    #[getter]
+    fn flips(&self) -> u64 {
+        self.stats.flips
+    }
+
+    /// The figures `surftopo delaunay --json` prints.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = serde_json::to_string(&self.stats)
+            .map_err(|e| invalid(e.to_string()).into_pyerr(py))?;
+        json_to_python(py, &text)
+    }
+
+    /// Number of rows of the matrices (input vertices, or the portalgon's vertices).
+    #[getter]
+    fn vertex_count(&self) -> usize {
+        self.located.rows
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "IntrinsicTriangulation({} vertices, {} edges, {} faces, {} flips)",
+            self.stats.vertices, self.stats.edges, self.stats.faces, self.stats.flips
+        )
+    }
+}
+
+/// The live edge ids in order, and the rank of each edge id among them.
+fn edge_ranks(tri: &IntrinsicTriangulation) -> (Vec<usize>, Vec<u32>) {
+    let mesh = tri.mesh();
+    let live: Vec<usize> = mesh.edges().map(|e| e.idx()).collect();
+    let mut rank = vec![u32::MAX; mesh.edge_slots()];
+    for (k, &e) in live.iter().enumerate() {
+        rank[e] = k as u32;
+    }
+    (live, rank)
+}
+
+/// A surface argument: `(V, F)` arrays, or a portalgon, or an intrinsic triangulation.
+fn located_surface(
+    py: Python<'_>,
+    surface: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Located> {
+    if let Some(faces) = faces {
+        let vertices = VertexArray::extract(surface)?;
+        let triangles = Faces::triangles(faces, vertices.len())?;
+        let positions = vertices.positions();
+        return py
+            .detach(|| Located::from_arrays(&positions, &triangles))
+            .map_err(|f| f.into_pyerr(py));
+    }
+    if let Ok(p) = surface.cast::<Portalgon>() {
+        let tri = p.get().triangulation().map_err(|f| f.into_pyerr(py))?;
+        return Ok(Located::dense(tri));
+    }
+    if let Ok(t) = surface.cast::<Intrinsic>() {
+        let t = t.get();
+        return Ok(Located {
+            tri: t.located.tri.clone(),
+            row_of: t.located.row_of.clone(),
+            rows: t.located.rows,
+        });
+    }
+    if let Ok(pair) = surface.cast::<PyTuple>()
+        && pair.len() == 2
+    {
+        return located_surface(py, &pair.get_item(0)?, Some(&pair.get_item(1)?));
+    }
+    Err(
+        invalid("a surface is (V, F) arrays, a Portalgon or an IntrinsicTriangulation")
+            .into_pyerr(py),
+    )
+}
+
+/// The intrinsic Delaunay triangulation of a closed polyhedral surface.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces = None, method = "flip", mollify = None, max_flips = None))]
+pub fn intrinsic_delaunay(
+    py: Python<'_>,
+    vertices: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+    method: &str,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<Intrinsic> {
+    let method = choose("method", method, METHODS).map_err(|f| f.into_pyerr(py))?;
+    let mut located = located_surface(py, vertices, faces)?;
+    let options = options(mollify, max_flips);
+    let stats = py
+        .detach(|| match method {
+            Method::Flip => delaunay_with_stats(&mut located.tri, &options),
+        })
+        .map_err(|e| Failure::Delaunay(e).into_pyerr(py))?;
+    Ok(Intrinsic { located, stats })
+}
+
+/// `laplacian` and the seconds of the library calls alone (soup to matrices), for the benchmark.
+fn laplacian_and_seconds<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    let vertices = VertexArray::extract(vertices)?;
+    let triangles = Faces::triangles(faces, vertices.len())?;
+    let positions = vertices.positions();
+    let options = options(mollify, max_flips);
+    let computed = py.detach(|| {
+        let start = Instant::now();
+        let mut located = Located::from_arrays(&positions, &triangles)?;
+        let (_, l) =
+            intrinsic_delaunay_laplacian(&mut located.tri, &options).map_err(Failure::Delaunay)?;
+        let m = lumped_mass(&located.tri);
+        let seconds = start.elapsed().as_secs_f64();
+        Ok::<_, Failure>((located, l, m, seconds))
+    });
+    let (located, l, m, seconds) = computed.map_err(|f| f.into_pyerr(py))?;
+    let rows = located.dense_rows();
+    Ok((
+        csr(py, l, &rows, located.rows)?,
+        csr(py, m, &rows, located.rows)?,
+        seconds,
+    ))
+}
+
+/// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
+/// Delaunay triangulation of `(V, F)`, as `robust_laplacian.mesh_laplacian` returns them.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
+pub fn laplacian<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    laplacian_and_seconds(py, vertices, faces, mollify, max_flips).map(|(l, m, _)| (l, m))
+}
+
+/// [`laplacian`], also returning the seconds spent in the library calls (the benchmark's
+/// reference for the Python overhead).
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
+pub fn _laplacian_timed<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    laplacian_and_seconds(py, vertices, faces, mollify, max_flips)
+}
+
+/// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay
+/// paper: equal canonical Delaunay tessellations).
+#[pyfunction]
+#[pyo3(signature = (a, b, allow_reflection = true))]
+pub fn isometric(
+    py: Python<'_>,
+    a: &Bound<'_, PyAny>,
+    b: &Bound<'_, PyAny>,
+    allow_reflection: bool,
+) -> PyResult<bool> {
+    let first = located_surface(py, a, None)?.tri;
+    let second = located_surface(py, b, None)?.tri;
+    let options = IsometryOptions {
+        allow_reflection,
+        ..IsometryOptions::default()
+    };
+    py.detach(|| surftopo_intrinsic::isometric(first, second, &options))
+        .map(|outcome| outcome.is_isometric())
+        .map_err(|e| Failure::Isometry(e).into_pyerr(py))
+}
+
+/// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles
+/// (0,0), (1,0), (x,2); refined `m x m` when `m > 1`. A [`Portalgon`].
+#[pyfunction]
+#[pyo3(signature = (x, m = 1))]
+pub fn flat_torus(py: Python<'_>, x: f64, m: u32) -> PyResult<Portalgon> {
+    let tri = surftopo_intrinsic::generators::flat_torus(x, m)
+        .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+    Ok(Portalgon {
+        doc: PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths),
+    })
+}
