@@ -250,22 +250,14 @@ impl Intrinsic {
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
         let mesh = self.located.tri.mesh();
-        let rows: Vec<[u32; 3]> = mesh
-            .faces()
-            .map(|f| mesh.face_vertices(f).map(|v| self.located.row_of[v.idx()]))
-            .collect();
-        index_array(py, &rows).into_any()
+        self.vertex_rows(py, mesh.faces().map(|f| mesh.face_vertices(f)))
     }
 
     /// The edges `(E, 2)` as output vertex indices (a loop has both ends equal).
     #[getter]
     fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
         let mesh = self.located.tri.mesh();
-        let rows: Vec<[u32; 2]> = mesh
-            .edges()
-            .map(|e| mesh.edge_vertices(e).map(|v| self.located.row_of[v.idx()]))
-            .collect();
-        index_array(py, &rows).into_any()
+        self.vertex_rows(py, mesh.edges().map(|e| mesh.edge_vertices(e)))
     }
 
     /// The edge of each face side `(m, 3)`: side `i` of face `f` is edge `face_edges[f, i]`.
@@ -313,6 +305,20 @@ impl Intrinsic {
             "IntrinsicTriangulation({} vertices, {} edges, {} faces, {} flips)",
             self.stats.vertices, self.stats.edges, self.stats.faces, self.stats.flips
         )
+    }
+}
+
+impl Intrinsic {
+    /// Rows of vertex ids as an int64 array of output vertex indices.
+    fn vertex_rows<'py, const K: usize>(
+        &self,
+        py: Python<'py>,
+        rows: impl Iterator<Item = [surftopo_mesh::VertexId; K]>,
+    ) -> Bound<'py, PyAny> {
+        let rows: Vec<[u32; K]> = rows
+            .map(|r| r.map(|v| self.located.row_of[v.idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
     }
 }
 

@@ -13,62 +13,8 @@ for every function; invalid input raises a subclass of :class:`InvalidInputError
 (162, 162)
 """
 
-from ._errors import (
-    FlipLimitError,
-    InternalError,
-    InvalidGeometryError,
-    InvalidInputError,
-    InvalidMeshError,
-    MeshFileError,
-    NotSimplicialError,
-    NumericalBreakdownError,
-    PortalgonError,
-    SurftopoError,
-)
-from ._native import (
-    IntrinsicTriangulation,
-    Portalgon,
-    cavity_box,
-    flat_torus,
-    genus_surface,
-    icosphere,
-    info,
-    intrinsic_delaunay,
-    irreducible,
-    isometric,
-    laplacian,
-    quadrangulate,
-    read_mesh,
-    tetrahedron,
-    torus,
-    write_mesh,
-)
+from . import _errors, _native
+from ._errors import *  # noqa: F403 (the exception classes, listed in _errors.__all__)
+from ._native import *  # noqa: F403 (the functions and classes; the type stubs list them)
 
-__all__ = [
-    "read_mesh",
-    "write_mesh",
-    "info",
-    "irreducible",
-    "quadrangulate",
-    "intrinsic_delaunay",
-    "laplacian",
-    "isometric",
-    "IntrinsicTriangulation",
-    "Portalgon",
-    "tetrahedron",
-    "icosphere",
-    "torus",
-    "genus_surface",
-    "cavity_box",
-    "flat_torus",
-    "SurftopoError",
-    "InvalidInputError",
-    "InvalidMeshError",
-    "NotSimplicialError",
-    "InvalidGeometryError",
-    "FlipLimitError",
-    "PortalgonError",
-    "MeshFileError",
-    "NumericalBreakdownError",
-    "InternalError",
-]
+__all__ = [name for name in dir(_native) if not name.startswith("_")] + _errors.__all__
