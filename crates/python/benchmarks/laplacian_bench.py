@@ -5,11 +5,11 @@ call. A benchmark, not a test.
 
 Inputs: the shared meshes of about 100k faces (SURFTOPO_MESHES, relative to the repository root)
 and two generated ones. Each round calls every contender once on the same arrays, in turn; the
-table gives the minimum over the rounds and the ratios of minima. The overhead is measured inside
-one call: `surftopo._native._laplacian_timed` returns the seconds of the library calls (soup to
-matrices, GIL released) and the wall time around the same Python call includes everything else
-(reading the numpy arrays, index conversion, building the two scipy.sparse.csr_matrix); the
-median over the rounds of wall / library - 1 is reported.
+table gives the minimum over the rounds and the ratios of minima. surftopo is timed through
+`surftopo._native._laplacian_timed`, the code of `surftopo.laplacian` that also returns the seconds
+of the library calls inside it (soup to matrices, GIL released); the wall time around the same
+call adds everything else (reading the numpy arrays, index conversion, building the two
+scipy.sparse.csr_matrix), and the median over the rounds of wall / library - 1 is the overhead.
 
     python crates/python/benchmarks/laplacian_bench.py --rounds 15 --out results/python_laplacian.md
 """
@@ -86,10 +86,11 @@ def timed(f, *args):
 def measure(name, V, F, rounds, contenders):
     rows = {"surftopo": [], "library": [], "overhead": []}
     rows.update({k: [] for k in contenders})
+    timed(surftopo.laplacian, V, F)  # warm-up
     for _ in range(rounds):
-        wall, _ = timed(surftopo.laplacian, V, F)
-        rows["surftopo"].append(wall)
+        # The same code as surftopo.laplacian, also returning the seconds of the library calls.
         wall, (_, _, library) = timed(surftopo._native._laplacian_timed, V, F)
+        rows["surftopo"].append(wall)
         rows["library"].append(library)
         rows["overhead"].append(wall / library - 1.0)
         for peer, f in contenders.items():
@@ -162,10 +163,13 @@ def main():
         + ", ".join(f"{k} {v}" for k, v in versions.items()),
         "",
         f"Minimum wall time over {args.rounds} rounds (each round calls every contender once, in "
-        "turn). The Rust call is the library work inside surftopo.laplacian (mesh build, lengths, "
-        "flips, Laplacian, mass); the overhead is wall / Rust - 1 within the same call (median "
-        "and maximum over the rounds). The peers' Laplacians agree with surftopo's to the "
-        "relative difference in the .jsonl.",
+        "turn, after one warm-up call of surftopo.laplacian). surftopo is timed through "
+        "`surftopo._native._laplacian_timed`, the code of surftopo.laplacian that also returns the "
+        "seconds of the library calls inside it (mesh build, lengths, flips, Laplacian, mass: the "
+        "Rust call column); the overhead is wall / Rust - 1 of the same call (median and maximum "
+        "over the rounds): reading the numpy arrays, converting the indices, building the two "
+        "scipy.sparse.csr_matrix. The peers' Laplacians agree with surftopo's to the relative "
+        "difference in the .jsonl (libigl's with the opposite sign).",
         "",
         table(results, contenders),
         "",

@@ -8,7 +8,7 @@
 //! numpy without a copy (the array owns the `Vec`).
 
 use crate::errors::{Failure, invalid};
-use numpy::ndarray::{Array1, Array2, ArrayView2};
+use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -75,86 +75,138 @@ enum IndexArray<'py> {
     I64(PyReadonlyArray2<'py, i64>),
 }
 
-/// Reads the rows of an index array as `u32`, checking `0 <= i < vertex_count`.
-fn read_rows<T: Copy + Into<i64>>(
-    view: ArrayView2<'_, T>,
+/// Checks `0 <= value < vertex_count` for the index of face `face`.
+#[inline]
+fn checked(value: i64, face: usize, vertex_count: usize) -> Result<u32, Failure> {
+    if (0..vertex_count as i64).contains(&value) {
+        Ok(value as u32)
+    } else {
+        Err(Failure::Index {
+            face,
+            value,
+            vertex_count,
+        })
+    }
+}
+
+/// One row of indices as `[u32; K]`, checked against `vertex_count`.
+#[inline]
+fn row<T: Into<i64>, const K: usize>(
+    face: usize,
+    values: impl Iterator<Item = T>,
     vertex_count: usize,
-) -> Result<Vec<u32>, Failure> {
-    let mut out = Vec::with_capacity(view.len());
-    for (face, row) in view.rows().into_iter().enumerate() {
-        for &i in row {
-            let value: i64 = i.into();
-            if !(0..vertex_count as i64).contains(&value) {
-                return Err(Failure::Index {
-                    face,
-                    value,
-                    vertex_count,
-                });
-            }
-            out.push(value as u32);
-        }
+) -> Result<[u32; K], Failure> {
+    let mut out = [0u32; K];
+    for (slot, value) in out.iter_mut().zip(values) {
+        *slot = checked(value.into(), face, vertex_count)?;
     }
     Ok(out)
 }
 
-/// Faces as flat `u32` indices with `sides` per face.
-pub struct Faces {
-    /// Row-major indices.
-    pub indices: Vec<u32>,
-    /// Columns of the array (3 for triangles, 4 for quads).
-    pub sides: usize,
+/// The rows of a `(m, K)` index array as `[u32; K]`, checked against `vertex_count`; a
+/// C-contiguous array is read as one flat slice.
+fn read_rows<T: numpy::Element + Copy + Into<i64>, const K: usize>(
+    array: &PyReadonlyArray2<'_, T>,
+    vertex_count: usize,
+) -> Result<Vec<[u32; K]>, Failure> {
+    if array.is_c_contiguous()
+        && let Ok(flat) = array.as_slice()
+    {
+        // The range by a minimum and maximum (branch-free, vectorised), then a plain conversion;
+        // the checked conversion below finds the offending face otherwise.
+        let (low, high) = flat.iter().fold((i64::MAX, i64::MIN), |(low, high), &v| {
+            let v: i64 = v.into();
+            (low.min(v), high.max(v))
+        });
+        if flat.is_empty() || (low >= 0 && high < vertex_count as i64) {
+            let rows = flat.as_chunks::<K>().0;
+            return Ok(rows
+                .iter()
+                .map(|r| r.map(|v| Into::<i64>::into(v) as u32))
+                .collect());
+        }
+    }
+    array
+        .as_array()
+        .rows()
+        .into_iter()
+        .enumerate()
+        .map(|(face, r)| row(face, r.iter().copied(), vertex_count))
+        .collect()
 }
 
-impl Faces {
-    /// Takes `x` as an integer `(m, k)` array of indices into `vertex_count` vertices, `k` being
-    /// `sides` when given (else at least 3).
-    pub fn extract(
-        x: &Bound<'_, PyAny>,
-        vertex_count: usize,
-        sides: Option<usize>,
-    ) -> PyResult<Self> {
-        let array: IndexArray<'_> = match x.extract() {
-            Ok(a) => a,
-            Err(_) => {
-                let a = asarray(x, None)?;
-                let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
-                if kind != "i" && kind != "u" {
-                    return Err(PyTypeError::new_err(format!(
-                        "faces: expected an integer array, got dtype {}",
-                        a.getattr("dtype")?.str()?
-                    )));
-                }
-                a.call_method1("astype", ("int64",))?.extract()?
+/// Takes `x` as an int32 or int64 array (other integer dtypes and lists through
+/// `numpy.asarray(x).astype(int64)`), returning it and its shape `(m, k)`.
+fn extract_indices<'py>(x: &Bound<'py, PyAny>) -> PyResult<(IndexArray<'py>, [usize; 2])> {
+    let array: IndexArray<'py> = match x.extract() {
+        Ok(a) => a,
+        Err(_) => {
+            let a = asarray(x, None)?;
+            let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+            if kind != "i" && kind != "u" {
+                return Err(PyTypeError::new_err(format!(
+                    "faces: expected an integer array, got dtype {}",
+                    a.getattr("dtype")?.str()?
+                )));
             }
-        };
-        let shape = match &array {
-            IndexArray::I32(a) => a.shape().to_vec(),
-            IndexArray::I64(a) => a.shape().to_vec(),
-        };
-        let wanted = sides.map_or(shape[1] >= 3, |k| shape[1] == k);
-        if !wanted {
-            let expected = sides.map_or("(m, k) with k >= 3".to_string(), |k| format!("(m, {k})"));
-            return Err(invalid(format!(
-                "faces: expected shape {expected}, got ({}, {})",
-                shape[0], shape[1]
-            ))
-            .into());
+            a.call_method1("astype", ("int64",))?.extract()?
         }
-        let indices = match &array {
-            IndexArray::I32(a) => read_rows(a.as_array(), vertex_count),
-            IndexArray::I64(a) => read_rows(a.as_array(), vertex_count),
-        }?;
-        Ok(Self {
-            indices,
-            sides: shape[1],
-        })
-    }
+    };
+    let shape = match &array {
+        IndexArray::I32(a) => a.shape(),
+        IndexArray::I64(a) => a.shape(),
+    };
+    let shape = [shape[0], shape[1]];
+    Ok((array, shape))
+}
 
-    /// Takes `x` as triangles `(m, 3)`.
-    pub fn triangles(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Vec<[u32; 3]>> {
-        let faces = Self::extract(x, vertex_count, Some(3))?;
-        Ok(faces.indices.as_chunks::<3>().0.to_vec())
+/// The `InvalidInputError` of a faces array of the wrong shape.
+fn wrong_shape(expected: &str, shape: [usize; 2]) -> PyErr {
+    invalid(format!(
+        "faces: expected shape {expected}, got ({}, {})",
+        shape[0], shape[1]
+    ))
+    .into()
+}
+
+/// Takes `x` as faces with `K` sides `(m, K)` into `vertex_count` vertices.
+pub fn faces<const K: usize>(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Vec<[u32; K]>> {
+    let (array, shape) = extract_indices(x)?;
+    if shape[1] != K {
+        return Err(wrong_shape(&format!("(m, {K})"), shape));
     }
+    Ok(match &array {
+        IndexArray::I32(a) => read_rows::<i32, K>(a, vertex_count),
+        IndexArray::I64(a) => read_rows::<i64, K>(a, vertex_count),
+    }?)
+}
+
+/// Takes `x` as polygons `(m, k)`, `k >= 3`, into `vertex_count` vertices: the row-major
+/// indices and `k`.
+pub fn polygons(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<(Vec<u32>, usize)> {
+    let (array, shape) = extract_indices(x)?;
+    if shape[1] < 3 {
+        return Err(wrong_shape("(m, k) with k >= 3", shape));
+    }
+    let k = shape[1];
+    let check = |(i, value): (usize, i64)| checked(value, i / k, vertex_count);
+    let indices: Result<Vec<u32>, Failure> = match &array {
+        IndexArray::I32(a) => a
+            .as_array()
+            .iter()
+            .map(|&v| i64::from(v))
+            .enumerate()
+            .map(check)
+            .collect(),
+        IndexArray::I64(a) => a
+            .as_array()
+            .iter()
+            .copied()
+            .enumerate()
+            .map(check)
+            .collect(),
+    };
+    Ok((indices?, k))
 }
 
 /// A `(rows, k)` array owning `flat` (row-major).

@@ -62,7 +62,7 @@ fn variant_name(debug: &impl std::fmt::Debug) -> String {
 }
 
 /// Attributes of a mesh build error: `face`, `edge` (input vertex indices), `vertex`.
-fn build_fields(py: Python<'_>, e: &BuildError, d: &Bound<'_, PyDict>) -> PyResult<()> {
+fn build_fields(e: &BuildError, d: &Bound<'_, PyDict>) -> PyResult<()> {
     use BuildError as B;
     match e {
         B::IndexOutOfRange { face, index, .. } => {
@@ -89,7 +89,6 @@ fn build_fields(py: Python<'_>, e: &BuildError, d: &Bound<'_, PyDict>) -> PyResu
         }
         B::Empty | B::TooLarge { .. } => {}
     }
-    let _ = py;
     Ok(())
 }
 
@@ -106,7 +105,7 @@ fn geometry_fields(e: &GeometryError, d: &Bound<'_, PyDict>) -> PyResult<()> {
 }
 
 /// Attributes of a portalgon error: `polygon` and `side`.
-fn portalgon_fields(py: Python<'_>, e: &PortalgonError, d: &Bound<'_, PyDict>) -> PyResult<()> {
+fn portalgon_fields(e: &PortalgonError, d: &Bound<'_, PyDict>) -> PyResult<()> {
     use PortalgonError as P;
     match e {
         P::Shape { polygon }
@@ -138,7 +137,7 @@ fn portalgon_fields(py: Python<'_>, e: &PortalgonError, d: &Bound<'_, PyDict>) -
             d.set_item("polygon", polygon_a)?;
             d.set_item("side", side_a)
         }
-        P::Gluing(b) => build_fields(py, b, d),
+        P::Gluing(b) => build_fields(b, d),
         P::Geometry(g) => geometry_fields(g, d),
         P::Json(_) | P::Io(_) | P::Version { .. } | P::Empty => Ok(()),
     }
@@ -167,11 +166,11 @@ fn exception(py: Python<'_>, class: &str, message: String, fields: &Bound<'_, Py
 
 impl Failure {
     /// The exception class (in `surftopo._errors`); fills in the attributes.
-    fn class(&self, py: Python<'_>, d: &Bound<'_, PyDict>) -> PyResult<&'static str> {
+    fn class(&self, d: &Bound<'_, PyDict>) -> PyResult<&'static str> {
         Ok(match self {
             Failure::Build(e) => {
                 d.set_item("kind", variant_name(e))?;
-                build_fields(py, e, d)?;
+                build_fields(e, d)?;
                 "InvalidMeshError"
             }
             Failure::Index { face, value, .. } => {
@@ -195,7 +194,7 @@ impl Failure {
             }
             Failure::Quad(e) => match e {
                 QuadError::NotSimplicial(inner) => {
-                    return Failure::Irreducible(inner.clone()).class(py, d);
+                    return Failure::Irreducible(inner.clone()).class(d);
                 }
                 QuadError::Internal(_) => "InternalError",
                 QuadError::Empty | QuadError::NoPerfectPairing(_) => {
@@ -209,7 +208,7 @@ impl Failure {
                 "InvalidGeometryError"
             }
             Failure::Delaunay(e) => match e {
-                DelaunayError::Geometry(g) => return Failure::Geometry(g.clone()).class(py, d),
+                DelaunayError::Geometry(g) => return Failure::Geometry(g.clone()).class(d),
                 DelaunayError::MaxFlips { flips, pending } => {
                     d.set_item("kind", "MaxFlips")?;
                     d.set_item("flips", flips)?;
@@ -228,21 +227,21 @@ impl Failure {
             },
             Failure::Portalgon(e) => {
                 d.set_item("kind", variant_name(e))?;
-                portalgon_fields(py, e, d)?;
+                portalgon_fields(e, d)?;
                 "PortalgonError"
             }
             Failure::Isometry(e) => {
                 d.set_item("surface", surface_of(e))?;
                 match e {
                     IsometryError::Delaunay { source, .. } => {
-                        Failure::Delaunay(source.clone()).class(py, d)?
+                        Failure::Delaunay(source.clone()).class(d)?
                     }
                     IsometryError::Removal { source, .. } => {
                         d.set_item("kind", variant_name(source))?;
                         "InvalidGeometryError"
                     }
                     IsometryError::Portalgon { source, .. } => {
-                        Failure::Portalgon(source.clone()).class(py, d)?
+                        Failure::Portalgon(source.clone()).class(d)?
                     }
                 }
             }
@@ -265,7 +264,7 @@ impl Failure {
             };
         }
         let fields = PyDict::new(py);
-        match self.class(py, &fields) {
+        match self.class(&fields) {
             Ok(class) => exception(py, class, self.to_string(), &fields),
             Err(e) => e,
         }

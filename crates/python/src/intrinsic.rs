@@ -4,7 +4,7 @@
 //! Matrix rows and columns are the input's vertex indices: `len(V)` rows for a mesh (an
 //! unreferenced vertex gets an empty row and column), the dense vertex order for a portalgon.
 
-use crate::arrays::{Faces, VertexArray, index_array, vector};
+use crate::arrays::{self, VertexArray, index_array, vector};
 use crate::errors::{Failure, invalid};
 use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
@@ -69,48 +69,68 @@ impl Located {
     }
 }
 
-/// `scipy.sparse.csr_matrix` of `m`, its dense rows moved to `rows_of_dense` (increasing) in a
-/// `rows x rows` matrix. Index arrays are int32 when they fit (as scipy makes them), else int64.
-fn csr<'py>(
-    py: Python<'py>,
-    m: SparseMatrix,
-    rows_of_dense: &[u32],
+/// The arrays of a `scipy.sparse.csr_matrix`: index arrays int32 when they fit (as scipy makes
+/// them), else int64.
+enum CsrIndices {
+    /// `indices`, `indptr` as int32.
+    Narrow(Vec<i32>, Vec<i32>),
+    /// `indices`, `indptr` as int64.
+    Wide(Vec<i64>, Vec<i64>),
+}
+
+/// A square CSR matrix ready for scipy (built without the GIL).
+struct Csr {
     rows: usize,
-) -> PyResult<Bound<'py, PyAny>> {
-    let mut indptr = vec![0usize; rows + 1];
-    for (k, &r) in rows_of_dense.iter().enumerate() {
-        indptr[r as usize + 1] = m.row_start[k + 1] - m.row_start[k];
-    }
-    for i in 0..rows {
-        indptr[i + 1] += indptr[i];
-    }
-    let identity = rows == m.n;
-    let data = vector(py, m.values);
-    let small = rows <= i32::MAX as usize && indptr[rows] <= i32::MAX as usize;
-    let (indices, indptr) = if small {
-        let column = |c: &u32| {
-            if identity {
-                *c as i32
+    data: Vec<f64>,
+    indices: CsrIndices,
+}
+
+impl Csr {
+    /// `m` with its dense rows and columns moved to `rows_of_dense` (increasing, so rows stay
+    /// sorted) in a `rows x rows` matrix.
+    fn new(m: SparseMatrix, rows_of_dense: &[u32], rows: usize) -> Self {
+        let mut indptr = vec![0usize; rows + 1];
+        for (k, &r) in rows_of_dense.iter().enumerate() {
+            indptr[r as usize + 1] = m.row_start[k + 1] - m.row_start[k];
+        }
+        for i in 0..rows {
+            indptr[i + 1] += indptr[i];
+        }
+        let identity = rows == m.n;
+        let indices = if rows <= i32::MAX as usize && indptr[rows] <= i32::MAX as usize {
+            let cols = if identity {
+                m.cols.iter().map(|&c| c as i32).collect()
             } else {
-                rows_of_dense[*c as usize] as i32
-            }
+                m.cols
+                    .iter()
+                    .map(|&c| rows_of_dense[c as usize] as i32)
+                    .collect()
+            };
+            CsrIndices::Narrow(cols, indptr.iter().map(|&p| p as i32).collect())
+        } else {
+            let cols = m.cols.iter().map(|&c| i64::from(rows_of_dense[c as usize]));
+            CsrIndices::Wide(cols.collect(), indptr.iter().map(|&p| p as i64).collect())
         };
-        (
-            vector(py, m.cols.iter().map(column).collect::<Vec<i32>>()).into_any(),
-            vector(py, indptr.iter().map(|&p| p as i32).collect::<Vec<i32>>()).into_any(),
-        )
-    } else {
-        let column = |c: &u32| i64::from(rows_of_dense[*c as usize]);
-        (
-            vector(py, m.cols.iter().map(column).collect::<Vec<i64>>()).into_any(),
-            vector(py, indptr.iter().map(|&p| p as i64).collect::<Vec<i64>>()).into_any(),
-        )
-    };
-    let kwargs = PyDict::new(py);
-    kwargs.set_item("shape", (rows, rows))?;
-    py.import("scipy.sparse")?
-        .getattr("csr_matrix")?
-        .call(((data, indices, indptr),), Some(&kwargs))
+        Self {
+            rows,
+            data: m.values,
+            indices,
+        }
+    }
+
+    /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
+    fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+        let data = vector(py, self.data);
+        let (indices, indptr) = match self.indices {
+            CsrIndices::Narrow(i, p) => (vector(py, i).into_any(), vector(py, p).into_any()),
+            CsrIndices::Wide(i, p) => (vector(py, i).into_any(), vector(py, p).into_any()),
+        };
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("shape", (self.rows, self.rows))?;
+        py.import("scipy.sparse")?
+            .getattr("csr_matrix")?
+            .call(((data, indices, indptr),), Some(&kwargs))
+    }
 }
 
 /// Delaunay options from the Python arguments.
@@ -211,21 +231,35 @@ pub struct Intrinsic {
 impl Intrinsic {
     /// The cotan Laplacian (positive semidefinite), `scipy.sparse.csr_matrix`.
     fn laplacian<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let m = py.detach(|| cotan_laplacian(&self.located.tri));
-        csr(py, m, &self.located.dense_rows(), self.located.rows)
+        let located = &self.located;
+        let m = py.detach(|| {
+            Csr::new(
+                cotan_laplacian(&located.tri),
+                &located.dense_rows(),
+                located.rows,
+            )
+        });
+        m.into_scipy(py)
     }
 
     /// The lumped (barycentric) mass matrix, diagonal, `scipy.sparse.csr_matrix`.
     fn mass<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let m = lumped_mass(&self.located.tri);
-        csr(py, m, &self.located.dense_rows(), self.located.rows)
+        let located = &self.located;
+        Csr::new(
+            lumped_mass(&located.tri),
+            &located.dense_rows(),
+            located.rows,
+        )
+        .into_scipy(py)
     }
 
-    /// The Delaunay tessellation (co-circular triangles merged) as a [`Portalgon`].
-    #[pyo3(signature = (cocircular_tolerance = DEFAULT_COCIRCULAR_TOLERANCE))]
-    fn tessellation(&self, py: Python<'_>, cocircular_tolerance: f64) -> Portalgon {
+    /// The Delaunay tessellation (co-circular triangles merged) as a [`Portalgon`];
+    /// `cocircular_tolerance` `None` is the library's default.
+    #[pyo3(signature = (cocircular_tolerance = None))]
+    fn tessellation(&self, py: Python<'_>, cocircular_tolerance: Option<f64>) -> Portalgon {
+        let tolerance = cocircular_tolerance.unwrap_or(DEFAULT_COCIRCULAR_TOLERANCE);
         let doc = py.detach(|| {
-            let t = delaunay_tessellation(&self.located.tri, cocircular_tolerance);
+            let t = delaunay_tessellation(&self.located.tri, tolerance);
             PortalgonDoc::from_portalgon(&t.portalgon)
         });
         Portalgon { doc }
@@ -341,7 +375,7 @@ fn located_surface(
 ) -> PyResult<Located> {
     if let Some(faces) = faces {
         let vertices = VertexArray::extract(surface)?;
-        let triangles = Faces::triangles(faces, vertices.len())?;
+        let triangles = arrays::faces::<3>(faces, vertices.len())?;
         let positions = vertices.positions();
         return py
             .detach(|| Located::from_arrays(&positions, &triangles))
@@ -401,7 +435,7 @@ fn laplacian_and_seconds<'py>(
     max_flips: Option<u64>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = Faces::triangles(faces, vertices.len())?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
     let options = options(mollify, max_flips);
     let computed = py.detach(|| {
@@ -411,15 +445,15 @@ fn laplacian_and_seconds<'py>(
             intrinsic_delaunay_laplacian(&mut located.tri, &options).map_err(Failure::Delaunay)?;
         let m = lumped_mass(&located.tri);
         let seconds = start.elapsed().as_secs_f64();
-        Ok::<_, Failure>((located, l, m, seconds))
+        let rows = located.dense_rows();
+        let matrices = (
+            Csr::new(l, &rows, located.rows),
+            Csr::new(m, &rows, located.rows),
+        );
+        Ok::<_, Failure>((matrices, seconds))
     });
-    let (located, l, m, seconds) = computed.map_err(|f| f.into_pyerr(py))?;
-    let rows = located.dense_rows();
-    Ok((
-        csr(py, l, &rows, located.rows)?,
-        csr(py, m, &rows, located.rows)?,
-        seconds,
-    ))
+    let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
+    Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
 }
 
 /// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic

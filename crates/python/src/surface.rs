@@ -5,7 +5,7 @@
 //! vertices (its vertex ids are the input indices without them, `surftopo_mesh::build`), so every
 //! index the libraries return is mapped back through [`Input::input_index`].
 
-use crate::arrays::{Faces, VertexArray, index_array, positions_array, vector};
+use crate::arrays::{self, VertexArray, index_array, positions_array, vector};
 use crate::errors::{Failure, invalid};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -54,7 +54,7 @@ fn input_surface(
     faces: &Bound<'_, PyAny>,
 ) -> PyResult<Input> {
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = Faces::triangles(faces, vertices.len())?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
     py.detach(|| Input::build(&positions, &triangles))
         .map_err(|f| f.into_pyerr(py))
@@ -128,10 +128,10 @@ pub fn write_mesh(
     faces: &Bound<'_, PyAny>,
 ) -> PyResult<()> {
     let vertices = VertexArray::extract(vertices)?;
-    let faces = Faces::extract(faces, vertices.len(), None)?;
+    let (indices, sides) = arrays::polygons(faces, vertices.len())?;
     let mut soup = PolygonSoup::new();
     soup.positions = vertices.positions().into_owned();
-    for face in faces.indices.chunks_exact(faces.sides) {
+    for face in indices.chunks_exact(sides) {
         soup.push_face(face);
     }
     py.detach(|| surftopo_io::write_path(&path, &soup, &WriteOptions::default()))
@@ -148,8 +148,7 @@ pub fn info<'py>(
     weld: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let vertices = VertexArray::extract(vertices)?;
-    let faces = Faces::extract(faces, vertices.len(), Some(3))?;
-    let mut triangles = faces.indices.as_chunks::<3>().0.to_vec();
+    let mut triangles = arrays::faces::<3>(faces, vertices.len())?;
     let mut positions = vertices.positions();
     let mut welded = 0;
     if weld {

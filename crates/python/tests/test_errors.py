@@ -50,6 +50,12 @@ def test_index_out_of_range_names_the_face():
             surftopo.laplacian(V, G)
         assert (caught.value.face, caught.value.vertex) == (2, bad)
         assert str(caught.value) == f"face 2: vertex index {bad} out of range (4 vertices)"
+    for layout in (np.ascontiguousarray, np.asfortranarray):
+        G = layout(F.astype(np.int32))
+        G[3, 0] = -7
+        with pytest.raises(surftopo.InvalidMeshError) as caught:
+            surftopo.laplacian(V, G)
+        assert (caught.value.face, caught.value.vertex) == (3, -7)
 
 
 def test_non_manifold_edge_and_disconnected_and_non_finite():

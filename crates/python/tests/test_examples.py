@@ -43,5 +43,8 @@ def test_stubs_cover_the_public_api():
     stubbed |= {a.asname for n in tree.body if isinstance(n, ast.ImportFrom) for a in n.names
                 if a.asname}
     assert stubbed == set(surftopo.__all__)
+    declared = next(n.value for n in tree.body if isinstance(n, ast.Assign)
+                    and any(getattr(t, "id", None) == "__all__" for t in n.targets))
+    assert sorted(ast.literal_eval(declared)) == sorted(surftopo.__all__)
     for name in surftopo.__all__:
         assert getattr(surftopo, name).__doc__, f"{name} has no docstring"

@@ -14,7 +14,7 @@ message is the one the ``surftopo`` CLI prints and whose attributes name the ele
 from __future__ import annotations
 
 import os
-from typing import Any, Sequence, Tuple, Union
+from typing import Any, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -33,11 +33,40 @@ from ._errors import (
     SurftopoError as SurftopoError,
 )
 
-Vertices = Union[npt.NDArray[np.float64], Sequence[Sequence[float]]]
+__all__ = [
+    "FlipLimitError",
+    "InternalError",
+    "IntrinsicTriangulation",
+    "InvalidGeometryError",
+    "InvalidInputError",
+    "InvalidMeshError",
+    "MeshFileError",
+    "NotSimplicialError",
+    "NumericalBreakdownError",
+    "Portalgon",
+    "PortalgonError",
+    "SurftopoError",
+    "cavity_box",
+    "flat_torus",
+    "genus_surface",
+    "icosphere",
+    "info",
+    "intrinsic_delaunay",
+    "irreducible",
+    "isometric",
+    "laplacian",
+    "quadrangulate",
+    "read_mesh",
+    "tetrahedron",
+    "torus",
+    "write_mesh",
+]
+
+_Vertices = Union[npt.NDArray[np.float64], Sequence[Sequence[float]]]
 """Vertex positions, ``(n, 3)``; float64 arrays are read in place when C-contiguous."""
-Faces = Union[npt.NDArray[np.int32], npt.NDArray[np.int64], Sequence[Sequence[int]]]
+_Faces = Union[npt.NDArray[np.int32], npt.NDArray[np.int64], Sequence[Sequence[int]]]
 """Vertex indices, ``(m, 3)`` triangles (``(m, k)`` polygons for :func:`write_mesh`)."""
-Surface = Union[Tuple[Vertices, Faces], "Portalgon", "IntrinsicTriangulation"]
+_Surface = Union[Tuple[_Vertices, _Faces], "Portalgon", "IntrinsicTriangulation"]
 """A closed polyhedral surface: ``(V, F)``, a :class:`Portalgon` or an intrinsic triangulation."""
 
 def read_mesh(
@@ -61,7 +90,7 @@ def read_mesh(
     ((162, 3), (320, 3))
     """
 
-def write_mesh(path: Union[str, os.PathLike[str]], vertices: Vertices, faces: Faces) -> None:
+def write_mesh(path: Union[str, os.PathLike[str]], vertices: _Vertices, faces: _Faces) -> None:
     """Write ``(V, F)`` to a mesh file, atomically (a failure leaves no half-written file).
 
     The format follows the extension: ``.obj``, ``.off``, ``.ply`` (binary little-endian),
@@ -70,7 +99,7 @@ def write_mesh(path: Union[str, os.PathLike[str]], vertices: Vertices, faces: Fa
     back gives the same bits.
     """
 
-def info(vertices: Vertices, faces: Faces, weld: bool = False) -> dict[str, Any]:
+def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, Any]:
     """Counts, topology and every problem found, valid surface or not.
 
     The keys of ``surftopo info --json``: ``vertices``, ``edges``, ``faces``, ``genus`` (``None``
@@ -89,7 +118,7 @@ def info(vertices: Vertices, faces: Faces, weld: bool = False) -> dict[str, Any]
     """
 
 def irreducible(
-    vertices: Vertices, faces: Faces, algorithm: str = "rs", seed: int = 1
+    vertices: _Vertices, faces: _Faces, algorithm: str = "rs", seed: int = 1
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], dict[str, Any]]:
     """An irreducible triangulation of the surface by topology-preserving edge contractions.
 
@@ -113,8 +142,8 @@ def irreducible(
     """
 
 def quadrangulate(
-    vertices: Vertices,
-    faces: Faces,
+    vertices: _Vertices,
+    faces: _Faces,
     algorithm: str = "ks",
     objective: str = "count",
     seed: int = 1,
@@ -137,8 +166,8 @@ def quadrangulate(
     """
 
 def laplacian(
-    vertices: Vertices,
-    faces: Faces,
+    vertices: _Vertices,
+    faces: _Faces,
     mollify: float | None = None,
     max_flips: int | None = None,
 ) -> tuple[scipy.sparse.csr_matrix, scipy.sparse.csr_matrix]:
@@ -162,8 +191,8 @@ def laplacian(
     """
 
 def intrinsic_delaunay(
-    vertices: Union[Vertices, Portalgon, IntrinsicTriangulation],
-    faces: Faces | None = None,
+    vertices: Union[_Vertices, Portalgon, IntrinsicTriangulation],
+    faces: _Faces | None = None,
     method: str = "flip",
     mollify: float | None = None,
     max_flips: int | None = None,
@@ -181,7 +210,7 @@ def intrinsic_delaunay(
     Portalgon(1 polygons, 4 sides)
     """
 
-def isometric(a: Surface, b: Surface, allow_reflection: bool = True) -> bool:
+def isometric(a: _Surface, b: _Surface, allow_reflection: bool = True) -> bool:
     """Whether two closed polyhedral surfaces are isometric.
 
     Compares their canonical Delaunay tessellations (Corollary 2 of the intrinsic-Delaunay paper;
@@ -194,6 +223,7 @@ def isometric(a: Surface, b: Surface, allow_reflection: bool = True) -> bool:
     (True, False)
     """
 
+@final
 class IntrinsicTriangulation:
     """An intrinsic Delaunay triangulation (made by :func:`intrinsic_delaunay`).
 
@@ -209,8 +239,12 @@ class IntrinsicTriangulation:
         """The cotan Laplacian, positive semidefinite (see :func:`laplacian`)."""
     def mass(self) -> scipy.sparse.csr_matrix:
         """The lumped (barycentric) mass matrix, diagonal."""
-    def tessellation(self, cocircular_tolerance: float = 1e-9) -> Portalgon:
-        """The Delaunay tessellation: co-circular triangles merged into polygons (unique)."""
+    def tessellation(self, cocircular_tolerance: float | None = None) -> Portalgon:
+        """The Delaunay tessellation: co-circular triangles merged into polygons (unique).
+
+        Two triangles are co-circular when ``|tan(γ/2) tan(δ/2) - 1|`` is at most
+        ``cocircular_tolerance`` (``None``: the library's default, 1e-9).
+        """
     def to_json(self) -> str:
         """Portalgon JSON, triangles by side lengths: what ``surftopo delaunay -o`` writes."""
     def to_portalgon(self) -> Portalgon:
@@ -239,6 +273,7 @@ class IntrinsicTriangulation:
     def vertex_count(self) -> int:
         """Rows of the matrices: ``len(V)``, or the portalgon's vertex count."""
 
+@final
 class Portalgon:
     """A closed polyhedral surface as flat polygons glued along their sides.
 
