@@ -165,22 +165,40 @@ fn exception(py: Python<'_>, class: &str, message: String, fields: &Bound<'_, Py
 }
 
 impl Failure {
-    /// The exception class (in `surftopo._errors`); fills in the attributes.
+    /// The name of the innermost library error's variant (`BoundaryEdge`, `MaxFlips`, ...).
+    fn kind(&self) -> Option<String> {
+        Some(match self {
+            Failure::Build(e) => variant_name(e),
+            Failure::Index { .. } => "IndexOutOfRange".to_string(),
+            Failure::Irreducible(e) => variant_name(e),
+            Failure::Quad(QuadError::NotSimplicial(e)) => variant_name(e),
+            Failure::Quad(e) => variant_name(e),
+            Failure::Geometry(e) | Failure::Delaunay(DelaunayError::Geometry(e)) => variant_name(e),
+            Failure::Delaunay(e) => variant_name(e),
+            Failure::Portalgon(e) => variant_name(e),
+            Failure::Isometry(IsometryError::Delaunay { source, .. }) => {
+                return Failure::Delaunay(source.clone()).kind();
+            }
+            Failure::Isometry(IsometryError::Removal { source, .. }) => variant_name(source),
+            Failure::Isometry(IsometryError::Portalgon { source, .. }) => variant_name(source),
+            Failure::Io(e) => variant_name(e),
+            Failure::Invalid(..) => return None,
+        })
+    }
+
+    /// The exception class (in `surftopo._errors`); fills in the attributes but `kind`.
     fn class(&self, d: &Bound<'_, PyDict>) -> PyResult<&'static str> {
         Ok(match self {
             Failure::Build(e) => {
-                d.set_item("kind", variant_name(e))?;
                 build_fields(e, d)?;
                 "InvalidMeshError"
             }
             Failure::Index { face, value, .. } => {
-                d.set_item("kind", "IndexOutOfRange")?;
                 d.set_item("face", face)?;
                 d.set_item("vertex", value)?;
                 "InvalidMeshError"
             }
             Failure::Irreducible(e) => {
-                d.set_item("kind", variant_name(e))?;
                 match e {
                     IrreducibleError::Loop { edge, vertex } => {
                         d.set_item("edge", edge.0)?;
@@ -197,36 +215,28 @@ impl Failure {
                     return Failure::Irreducible(inner.clone()).class(d);
                 }
                 QuadError::Internal(_) => "InternalError",
-                QuadError::Empty | QuadError::NoPerfectPairing(_) => {
-                    d.set_item("kind", variant_name(e))?;
-                    "InvalidMeshError"
-                }
+                QuadError::Empty | QuadError::NoPerfectPairing(_) => "InvalidMeshError",
             },
             Failure::Geometry(e) => {
-                d.set_item("kind", variant_name(e))?;
                 geometry_fields(e, d)?;
                 "InvalidGeometryError"
             }
             Failure::Delaunay(e) => match e {
                 DelaunayError::Geometry(g) => return Failure::Geometry(g.clone()).class(d),
                 DelaunayError::MaxFlips { flips, pending } => {
-                    d.set_item("kind", "MaxFlips")?;
                     d.set_item("flips", flips)?;
                     d.set_item("pending", pending)?;
                     "FlipLimitError"
                 }
                 DelaunayError::NumericalBreakdown { edge, .. } => {
-                    d.set_item("kind", "NumericalBreakdown")?;
                     d.set_item("edge", edge)?;
                     "NumericalBreakdownError"
                 }
                 DelaunayError::InvalidMollify(_) | DelaunayError::InvalidTolerance(_) => {
-                    d.set_item("kind", variant_name(e))?;
                     "InvalidInputError"
                 }
             },
             Failure::Portalgon(e) => {
-                d.set_item("kind", variant_name(e))?;
                 portalgon_fields(e, d)?;
                 "PortalgonError"
             }
@@ -236,19 +246,13 @@ impl Failure {
                     IsometryError::Delaunay { source, .. } => {
                         Failure::Delaunay(source.clone()).class(d)?
                     }
-                    IsometryError::Removal { source, .. } => {
-                        d.set_item("kind", variant_name(source))?;
-                        "InvalidGeometryError"
-                    }
+                    IsometryError::Removal { .. } => "InvalidGeometryError",
                     IsometryError::Portalgon { source, .. } => {
                         Failure::Portalgon(source.clone()).class(d)?
                     }
                 }
             }
-            Failure::Io(e) => {
-                d.set_item("kind", variant_name(e))?;
-                "MeshFileError"
-            }
+            Failure::Io(_) => "MeshFileError",
             Failure::Invalid(class, _) => class,
         })
     }
@@ -264,7 +268,8 @@ impl Failure {
             };
         }
         let fields = PyDict::new(py);
-        match self.class(&fields) {
+        let kind = fields.set_item("kind", self.kind());
+        match kind.and_then(|()| self.class(&fields)) {
             Ok(class) => exception(py, class, self.to_string(), &fields),
             Err(e) => e,
         }

@@ -470,18 +470,15 @@ pub fn laplacian<'py>(
     laplacian_and_seconds(py, vertices, faces, mollify, max_flips).map(|(l, m, _)| (l, m))
 }
 
-/// [`laplacian`], also returning the seconds spent in the library calls (the benchmark's
-/// reference for the Python overhead).
+/// [`laplacian`] with the default options, also returning the seconds spent in the library calls
+/// (the benchmark's reference for the Python overhead).
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
 pub fn _laplacian_timed<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
-    mollify: Option<f64>,
-    max_flips: Option<u64>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
-    laplacian_and_seconds(py, vertices, faces, mollify, max_flips)
+    laplacian_and_seconds(py, vertices, faces, None, None)
 }
 
 /// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay

@@ -82,6 +82,7 @@ def test_degenerate_geometry_and_mollify():
     with pytest.raises(surftopo.InvalidGeometryError) as caught:
         surftopo.laplacian(W, F)
     assert isinstance(caught.value, ValueError) and caught.value.edge is not None
+    assert caught.value.kind == "NonPositiveLength"
     L, M = surftopo.laplacian(W, F, mollify=1e-3)
     assert np.isfinite(L.data).all() and M.diagonal().min() > 0
 
@@ -90,6 +91,7 @@ def test_flip_limit():
     with pytest.raises(surftopo.FlipLimitError) as caught:
         surftopo.intrinsic_delaunay(surftopo.flat_torus(100.0), max_flips=10)
     assert caught.value.flips == 10 and caught.value.pending > 0
+    assert caught.value.kind == "MaxFlips"
 
 
 def test_two_triangle_sphere_is_refused():
@@ -107,6 +109,9 @@ def test_bad_names_list_the_allowed_values():
     V, F = surftopo.tetrahedron()
     with pytest.raises(ValueError, match=r"objective: expected one of \"count\", got \"quality\""):
         surftopo.quadrangulate(V, F, objective="quality")
+    with pytest.raises(surftopo.InvalidInputError) as caught:
+        surftopo.quadrangulate(V, F, objective="quality")
+    assert caught.value.kind is None
     with pytest.raises(ValueError, match=r"method: expected one of \"flip\""):
         surftopo.intrinsic_delaunay(V, F, method="voronoi")
     with pytest.raises(ValueError, match=r"\"rs\", \"schipper\", \"brute-force\""):
