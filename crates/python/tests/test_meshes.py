@@ -141,3 +141,19 @@ def test_generators():
         surftopo.torus(2, 5)
     with pytest.raises(ValueError, match="at most 200000000"):
         surftopo.icosphere(14)
+
+
+def test_unreferenced_vertices_keep_input_indices():
+    V, F = surftopo.torus(8, 5)
+    # An unreferenced vertex inserted at index 3: every index returned must still point into
+    # the new V.
+    W = np.vstack([V[:3], [[7.0, 7.0, 7.0]], V[3:]])
+    G = np.where(F >= 3, F + 1, F)
+    Q, _ = surftopo.quadrangulate(W, G, algorithm="sg", seed=3)
+    Q0, _ = surftopo.quadrangulate(V, F, algorithm="sg", seed=3)
+    assert np.array_equal(Q, np.where(Q0 >= 3, Q0 + 1, Q0))
+    assert quads_pair_triangles(Q, G)
+    V2, F2, stats = surftopo.irreducible(W, G)
+    assert 3 not in stats["vertex_indices"].tolist()
+    assert np.array_equal(V2, W[stats["vertex_indices"]])
+    assert surftopo.info(W, G)["dropped_vertices"] == 1
