@@ -51,6 +51,7 @@ mod error;
 mod flat;
 pub mod format;
 pub mod generators;
+pub mod geometry;
 mod isometry;
 mod laplacian;
 mod matrix_market;

@@ -87,7 +87,8 @@ fn build_fields(e: &BuildError, d: &Bound<'_, PyDict>) -> PyResult<()> {
         B::NonManifoldVertex { vertex, .. } | B::NonFinite { vertex, .. } => {
             d.set_item("vertex", vertex)?;
         }
-        B::Empty | B::TooLarge { .. } => {}
+        // Empty, TooLarge (and variants added later) name no element.
+        _ => {}
     }
     Ok(())
 }
@@ -100,7 +101,7 @@ fn geometry_fields(e: &GeometryError, d: &Bound<'_, PyDict>) -> PyResult<()> {
         GeometryError::TriangleInequality { face, .. } | GeometryError::ZeroArea { face, .. } => {
             d.set_item("face", face)
         }
-        GeometryError::LengthCount { .. } => Ok(()),
+        _ => Ok(()),
     }
 }
 
@@ -139,7 +140,8 @@ fn portalgon_fields(e: &PortalgonError, d: &Bound<'_, PyDict>) -> PyResult<()> {
         }
         P::Gluing(b) => build_fields(b, d),
         P::Geometry(g) => geometry_fields(g, d),
-        P::Json(_) | P::Io(_) | P::Version { .. } | P::Empty => Ok(()),
+        // Json, Io, Version, Empty, Invariant (and variants added later) name no element.
+        _ => Ok(()),
     }
 }
 
@@ -206,7 +208,7 @@ impl Failure {
                     }
                     IrreducibleError::MultiEdge { edges, .. } => d.set_item("edge", edges[0].0)?,
                     IrreducibleError::DuplicateFace { faces } => d.set_item("face", faces[1].0)?,
-                    IrreducibleError::Empty => {}
+                    _ => {}
                 }
                 "NotSimplicialError"
             }
@@ -215,7 +217,7 @@ impl Failure {
                     return Failure::Irreducible(inner.clone()).class(d);
                 }
                 QuadError::Internal(_) => "InternalError",
-                QuadError::Empty | QuadError::NoPerfectPairing(_) => "InvalidMeshError",
+                _ => "InvalidMeshError",
             },
             Failure::Geometry(e) => {
                 geometry_fields(e, d)?;
@@ -232,9 +234,7 @@ impl Failure {
                     d.set_item("edge", edge)?;
                     "NumericalBreakdownError"
                 }
-                DelaunayError::InvalidMollify(_) | DelaunayError::InvalidTolerance(_) => {
-                    "InvalidInputError"
-                }
+                _ => "InvalidInputError",
             },
             Failure::Portalgon(e) => {
                 portalgon_fields(e, d)?;
