@@ -52,6 +52,7 @@ mod flat;
 pub mod format;
 pub mod generators;
 mod isometry;
+mod isometry_decision;
 mod laplacian;
 mod matrix_market;
 mod mollify;
@@ -74,12 +75,13 @@ pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, IsometryOptions, Outcome, canonical_tessellation,
     compare_tessellations, isometric,
 };
+pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use laplacian::{
     SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, intrinsic_delaunay_laplacian,
     lumped_mass,
 };
 pub use matrix_market::{read_matrix_market, write_matrix_market};
-pub use mollify::mollify;
+pub use mollify::{MAX_MOLLIFY, mollify};
 pub use portalgon::{
     DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
     signed_area,

@@ -246,8 +246,9 @@ impl IntrinsicTriangulation {
         [[0.0, 0.0], [l0, 0.0], trig::third_corner(l0, l1, l2)]
     }
 
-    /// Flips the edge intrinsically if its two faces differ and the quad they form is strictly
-    /// convex (so both new triangles are non-degenerate); returns whether it flipped.
+    /// Flips the edge intrinsically if its two faces differ, the quad they form is strictly
+    /// convex and both new triangles, with the rounded new length, satisfy the strict triangle
+    /// inequality (so the result is always a valid triangulation); returns whether it flipped.
     pub fn flip_if_convex(&mut self, e: EdgeId) -> bool {
         self.flip_if_convex_with_margin(e, 1.0)
     }
@@ -265,7 +266,9 @@ impl IntrinsicTriangulation {
             return false;
         }
         let length = q.flipped_length();
-        if !(length.is_finite() && length > 0.0) {
+        // Both new triangles must satisfy the strict triangle inequality as rounded, or the flip
+        // would leave an invalid triangulation (needles: a convex quad, a rounded diagonal).
+        if !(trig::is_triangle(length, q.ca, q.ad) && trig::is_triangle(length, q.db, q.bc)) {
             return false;
         }
         self.apply_flip(e, length);

@@ -1,0 +1,193 @@
+//! A three-way isometry verdict: isometric, not isometric, or undecidable in double precision.
+//!
+//! [`crate::isometric`] (Dubois, Corollary 2: equal canonical Delaunay tessellations) makes
+//! threshold decisions in floating point: which vertices are flat (angle sum within a tolerance of
+//! 2π), which triangles are co-circular, which lengths are equal. Near a threshold (a vertex with
+//! angle defect 1e-10, a nearly co-circular quad, a nearly degenerate triangle) two triangulations
+//! of one surface can fall on different sides of it, and the flat-vertex removal can get stuck
+//! ([`crate::RemovalError::Stuck`]) on a valid surface. Such a "not isometric" or failure says
+//! nothing about the surfaces. [`decide_isometry`] never reports it as an answer:
+//!
+//! 1. Robust certificates first: different Euler characteristics, or total areas differing by
+//!    more than `1e-6` relative (each area is a sum of Kahan-accurate triangle areas), prove
+//!    "not isometric" whatever the rounding.
+//! 2. Then the test with the given options. "Isometric" is the answer (a correspondence of the
+//!    tessellations within the length tolerance was found).
+//! 3. A "not isometric", a stuck removal or a numerical breakdown is re-examined with every
+//!    tolerance moved by a factor of 1000 (angle and co-circularity) or 100 (lengths) each way. If
+//!    every variant still finds them different, the answer is "not isometric"; if any finds a
+//!    correspondence, or gets stuck, the verdict is [`IsometryDecision::Undecidable`]: the
+//!    surfaces are equal up to rounding-level differences that double precision cannot settle.
+//!    (Exact arithmetic — the Dubois algorithm on exact input, where the input's lengths allow
+//!    it — is the way to settle such cases.)
+//!
+//! Decision (the paper is silent on floating point): "undecidable" is preferred to a verdict that
+//! depends on a tolerance; it is never given when the default test and all its variants agree.
+
+use crate::error::{DelaunayError, IsometryError, RemovalError};
+use crate::isometry::{IsometryOptions, Outcome, isometric};
+use crate::triangulation::IntrinsicTriangulation;
+use std::fmt;
+
+/// Relative difference of total areas beyond which two surfaces are certainly not isometric.
+pub const AREA_CERTIFICATE: f64 = 1e-6;
+
+/// The verdict of [`decide_isometry`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum IsometryDecision {
+    /// A correspondence was found (the outcome says which).
+    Isometric(Outcome),
+    /// Not isometric: by a robust certificate, or by the test under every tolerance variant.
+    NotIsometric(String),
+    /// Double precision cannot decide (the reason says which threshold was too close).
+    Undecidable(String),
+}
+
+impl IsometryDecision {
+    /// Whether the verdict is [`IsometryDecision::Isometric`].
+    pub fn is_isometric(&self) -> bool {
+        matches!(self, IsometryDecision::Isometric(_))
+    }
+}
+
+impl fmt::Display for IsometryDecision {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            IsometryDecision::Isometric(outcome) => write!(f, "{outcome}"),
+            IsometryDecision::NotIsometric(reason) => write!(f, "not isometric: {reason}"),
+            IsometryDecision::Undecidable(reason) => write!(
+                f,
+                "undecidable in double precision: {reason} (exact arithmetic on exact input would \
+                 settle it)"
+            ),
+        }
+    }
+}
+
+/// Whether two closed surfaces are isometric, or that double precision cannot tell (see the
+/// module doc). Costs one [`isometric`] call, up to six more when the first says "not
+/// isometric" without a certificate.
+///
+/// # Errors
+/// As [`isometric`] for unusable input (non-positive or non-finite lengths, violated triangle
+/// inequalities, a flip budget exceeded); a stuck removal or a numerical breakdown is
+/// [`IsometryDecision::Undecidable`] instead.
+pub fn decide_isometry(
+    a: &IntrinsicTriangulation,
+    b: &IntrinsicTriangulation,
+    options: &IsometryOptions,
+) -> Result<IsometryDecision, IsometryError> {
+    let (chi_a, chi_b) = (
+        a.mesh().euler_characteristic(),
+        b.mesh().euler_characteristic(),
+    );
+    if chi_a != chi_b {
+        return Ok(IsometryDecision::NotIsometric(format!(
+            "Euler characteristics {chi_a} and {chi_b} differ"
+        )));
+    }
+    let (area_a, area_b) = (a.total_area(), b.total_area());
+    if (area_a - area_b).abs() > AREA_CERTIFICATE * area_a.max(area_b) {
+        return Ok(IsometryDecision::NotIsometric(format!(
+            "total areas {area_a} and {area_b} differ"
+        )));
+    }
+    let first = match attempt(a, b, options)? {
+        Attempt::Isometric(outcome) => return Ok(IsometryDecision::Isometric(outcome)),
+        Attempt::Different(outcome) => outcome,
+        Attempt::Unsettled(reason) => return Ok(IsometryDecision::Undecidable(reason)),
+    };
+    for (what, variant) in variants(options) {
+        match attempt(a, b, &variant)? {
+            Attempt::Different(_) => {}
+            Attempt::Isometric(_) => {
+                return Ok(IsometryDecision::Undecidable(format!(
+                    "the tessellations differ with the default tolerances ({first}) but match \
+                     with {what}"
+                )));
+            }
+            Attempt::Unsettled(reason) => {
+                return Ok(IsometryDecision::Undecidable(format!(
+                    "the tessellations differ with the default tolerances ({first}); with {what}: \
+                     {reason}"
+                )));
+            }
+        }
+    }
+    Ok(IsometryDecision::NotIsometric(
+        first
+            .to_string()
+            .trim_start_matches("not isometric: ")
+            .to_string(),
+    ))
+}
+
+/// One run of the test.
+enum Attempt {
+    Isometric(Outcome),
+    Different(Outcome),
+    /// A failure of the method, not of the input.
+    Unsettled(String),
+}
+
+fn attempt(
+    a: &IntrinsicTriangulation,
+    b: &IntrinsicTriangulation,
+    options: &IsometryOptions,
+) -> Result<Attempt, IsometryError> {
+    match isometric(a.clone(), b.clone(), options) {
+        Ok(outcome) if outcome.is_isometric() => Ok(Attempt::Isometric(outcome)),
+        Ok(outcome) => Ok(Attempt::Different(outcome)),
+        Err(e) if is_precision_failure(&e) => Ok(Attempt::Unsettled(e.to_string())),
+        Err(e) => Err(e),
+    }
+}
+
+/// Whether an error of [`isometric`] comes from rounding rather than from the input.
+fn is_precision_failure(e: &IsometryError) -> bool {
+    match e {
+        IsometryError::Removal { source, .. } => matches!(
+            source,
+            RemovalError::Stuck { .. }
+                | RemovalError::Delaunay(DelaunayError::NumericalBreakdown { .. })
+        ),
+        IsometryError::Delaunay { source, .. } => {
+            matches!(source, DelaunayError::NumericalBreakdown { .. })
+        }
+        IsometryError::Portalgon { .. } => true,
+    }
+}
+
+/// The tolerance variants of step 3, each with a description.
+fn variants(options: &IsometryOptions) -> Vec<(String, IsometryOptions)> {
+    let mut out = Vec::new();
+    for factor in [1e3, 1e-3] {
+        out.push((
+            format!("angle tolerance {:e}", options.angle_tolerance * factor),
+            IsometryOptions {
+                angle_tolerance: options.angle_tolerance * factor,
+                ..*options
+            },
+        ));
+        out.push((
+            format!(
+                "co-circularity tolerance {:e}",
+                options.cocircular_tolerance * factor
+            ),
+            IsometryOptions {
+                cocircular_tolerance: options.cocircular_tolerance * factor,
+                ..*options
+            },
+        ));
+    }
+    for factor in [1e2, 1e-2] {
+        out.push((
+            format!("length tolerance {:e}", options.length_tolerance * factor),
+            IsometryOptions {
+                length_tolerance: options.length_tolerance * factor,
+                ..*options
+            },
+        ));
+    }
+    out
+}
