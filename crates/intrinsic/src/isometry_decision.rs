@@ -13,11 +13,14 @@
 //!    "not isometric" whatever the rounding.
 //! 2. Then the test with the given options. "Isometric" is the answer (a correspondence of the
 //!    tessellations within the length tolerance was found).
-//! 3. A "not isometric", a stuck removal or a numerical breakdown is re-examined with every
-//!    tolerance moved by a factor of 1000 (angle and co-circularity) or 100 (lengths) each way. If
-//!    every variant still finds them different, the answer is "not isometric"; if any finds a
-//!    correspondence, or gets stuck, the verdict is [`IsometryDecision::Undecidable`]: the
-//!    surfaces are equal up to rounding-level differences that double precision cannot settle.
+//! 3. A "not isometric" is re-examined with every tolerance moved by a factor of 1000 (angle and
+//!    co-circularity) or 100 (lengths) each way. If every variant still finds them different, the
+//!    answer is "not isometric"; if any finds a correspondence, or gets stuck, the verdict is
+//!    [`IsometryDecision::Undecidable`]: the surfaces are equal up to rounding-level differences
+//!    that double precision cannot settle.
+//! 4. A stuck removal or a numerical breakdown (no finding either way) is retried with the angle
+//!    and co-circularity variants: a correspondence found by one (with the default length
+//!    tolerance) is the answer "isometric"; otherwise the verdict is undecidable.
 //!    (Exact arithmetic — the Dubois algorithm on exact input, where the input's lengths allow
 //!    it — is the way to settle such cases.)
 //!
@@ -65,8 +68,8 @@ impl fmt::Display for IsometryDecision {
 }
 
 /// Whether two closed surfaces are isometric, or that double precision cannot tell (see the
-/// module doc). Costs one [`isometric`] call, up to six more when the first says "not
-/// isometric" without a certificate.
+/// module doc). Costs one [`isometric`] call, up to six more when the first does not find a
+/// correspondence and no certificate settles it.
 ///
 /// # Errors
 /// As [`isometric`] for unusable input (non-positive or non-finite lengths, violated triangle
@@ -95,7 +98,7 @@ pub fn decide_isometry(
     let first = match attempt(a, b, options)? {
         Attempt::Isometric(outcome) => return Ok(IsometryDecision::Isometric(outcome)),
         Attempt::Different(outcome) => outcome,
-        Attempt::Unsettled(reason) => return Ok(IsometryDecision::Undecidable(reason)),
+        Attempt::Unsettled(reason) => return retry_unsettled(a, b, options, reason),
     };
     for (what, variant) in variants(options) {
         match attempt(a, b, &variant)? {
@@ -120,6 +123,27 @@ pub fn decide_isometry(
             .trim_start_matches("not isometric: ")
             .to_string(),
     ))
+}
+
+/// After a stuck removal or a breakdown with the default options (no finding either way): the
+/// angle and co-circularity variants, which move the flat and co-circular decisions away from the
+/// values that got stuck; the first that finds a correspondence (with the default length
+/// tolerance) is the answer, otherwise the verdict is undecidable.
+fn retry_unsettled(
+    a: &IntrinsicTriangulation,
+    b: &IntrinsicTriangulation,
+    options: &IsometryOptions,
+    reason: String,
+) -> Result<IsometryDecision, IsometryError> {
+    for (_, variant) in variants(options) {
+        if variant.length_tolerance != options.length_tolerance {
+            continue;
+        }
+        if let Attempt::Isometric(outcome) = attempt(a, b, &variant)? {
+            return Ok(IsometryDecision::Isometric(outcome));
+        }
+    }
+    Ok(IsometryDecision::Undecidable(reason))
 }
 
 /// One run of the test.

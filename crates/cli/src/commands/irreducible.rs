@@ -110,7 +110,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
     let (irreducible, report) = crate::progress::step("contracting", || {
         reduce_surface(&loaded.surface, name, seed)
     })
-    .map_err(|e| e.context(crate::failure::shown(input).to_string()))?;
+    .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_surface(output, &irreducible)?;
     if job.json {
         crate::output::print_json(&report)?;

@@ -63,7 +63,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
     let result = crate::progress::step("pairing triangles", || {
         quadrangulate_surface(&loaded.surface, name, seed)
     })
-    .map_err(|e| e.context(crate::failure::shown(input).to_string()))?;
+    .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
     let stats = &result.stats;
     if job.json {
