@@ -95,7 +95,8 @@ pub use surftopo_mesh::generators::sheared_torus;
 /// Re-triangulates `tri` isometrically by up to `count` random intrinsic flips: edges drawn
 /// uniformly (seeded `ChaCha8Rng`), flipped only when their quad is convex with margin
 /// (`tan(α₁/2) tan(α₂/2) < 0.9` at both ends, i.e. angles below about 168°, so no new triangle is
-/// nearly degenerate). At most `20 · count` draws, so it always returns. Returns the number of
+/// nearly degenerate) and keeps the triangulation valid and its area (see
+/// [`IntrinsicTriangulation::flip_if_convex`]). At most `20 · count` draws, so it always returns. Returns the number of
 /// flips made. Same seed, same result.
 pub fn random_flips(tri: &mut IntrinsicTriangulation, count: u64, seed: u64) -> u64 {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);

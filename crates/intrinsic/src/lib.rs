@@ -91,4 +91,4 @@ pub use stats::{DelaunayStats, delaunay_with_stats};
 pub use tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };
-pub use triangulation::IntrinsicTriangulation;
+pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
