@@ -3,8 +3,12 @@
 //! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
 //! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY.
 //! Paths ending in `.gz` are read and written through gzip. Errors name the
-//! file and the line (text) or byte offset (binary); no input makes a reader
-//! panic, loop forever or allocate beyond what the input could hold.
+//! file and the line (text) or byte offset (binary), with control characters
+//! of quoted input escaped; no input makes a reader panic, loop forever or
+//! allocate beyond what the input could hold. Files are read within
+//! [`ReadLimits`] (decompressed bytes), growing buffers fallibly, so a gzip
+//! bomb or an endless file is a typed error, never an abort; an input
+//! without faces is [`IoError::NoFaces`].
 //!
 //! ```
 //! use surftopo_io::{Format, PolygonSoup, WriteOptions};
