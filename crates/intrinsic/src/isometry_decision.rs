@@ -188,34 +188,24 @@ fn is_precision_failure(e: &IsometryError) -> bool {
 
 /// The tolerance variants of step 3, each with a description.
 fn variants(options: &IsometryOptions) -> Vec<(String, IsometryOptions)> {
+    type Field = fn(&mut IsometryOptions) -> &mut f64;
+    let fields: [(&str, Field, [f64; 2]); 3] = [
+        ("angle", |o| &mut o.angle_tolerance, [1e3, 1e-3]),
+        (
+            "co-circularity",
+            |o| &mut o.cocircular_tolerance,
+            [1e3, 1e-3],
+        ),
+        ("length", |o| &mut o.length_tolerance, [1e2, 1e-2]),
+    ];
     let mut out = Vec::new();
-    for factor in [1e3, 1e-3] {
-        out.push((
-            format!("angle tolerance {:e}", options.angle_tolerance * factor),
-            IsometryOptions {
-                angle_tolerance: options.angle_tolerance * factor,
-                ..*options
-            },
-        ));
-        out.push((
-            format!(
-                "co-circularity tolerance {:e}",
-                options.cocircular_tolerance * factor
-            ),
-            IsometryOptions {
-                cocircular_tolerance: options.cocircular_tolerance * factor,
-                ..*options
-            },
-        ));
-    }
-    for factor in [1e2, 1e-2] {
-        out.push((
-            format!("length tolerance {:e}", options.length_tolerance * factor),
-            IsometryOptions {
-                length_tolerance: options.length_tolerance * factor,
-                ..*options
-            },
-        ));
+    for (name, field, factors) in fields {
+        for factor in factors {
+            let mut variant = *options;
+            *field(&mut variant) *= factor;
+            let value = *field(&mut variant);
+            out.push((format!("{name} tolerance {value:e}"), variant));
+        }
     }
     out
 }

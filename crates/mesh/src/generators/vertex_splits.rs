@@ -86,22 +86,11 @@ pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surf
 
 /// Whether every face around `v` has an area above 1e-12 of its longest side squared.
 fn star_has_area(mesh: &crate::SurfaceMesh, positions: &[Point3], v: VertexId) -> bool {
+    use crate::geometry::{distance, face_area};
     mesh.outgoing(v).all(|h| {
-        let [a, b, c] = mesh.face_vertices(mesh.face(h)).map(|w| positions[w.idx()]);
-        let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-        let n = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
-        let longest = [
-            crate::geometry::distance(a, b),
-            crate::geometry::distance(b, c),
-            crate::geometry::distance(c, a),
-        ]
-        .into_iter()
-        .fold(0.0f64, f64::max);
-        (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() > 1e-12 * longest * longest
+        let f = mesh.face(h);
+        let [a, b, c] = mesh.face_vertices(f).map(|w| positions[w.idx()]);
+        let longest = distance(a, b).max(distance(b, c)).max(distance(c, a));
+        face_area(mesh, positions, f) > 0.5e-12 * longest * longest
     })
 }
