@@ -82,7 +82,7 @@ fn item1_memory_is_bounded() {
     );
 
     // An endless input (a link to /dev/zero) under a 400 MB address-space limit: the default cap
-    // (2 GiB) is above what the machine allows, so the reservation fails: a typed error.
+    // (1 GiB) is above what the machine allows, so the reservation fails: a typed error.
     let zero = dir.path().join("zero.obj");
     std::os::unix::fs::symlink("/dev/zero", &zero).unwrap();
     let out = Command::new("sh")

@@ -15,8 +15,9 @@ use flate2::write::GzEncoder;
 use crate::error::Ctx;
 use crate::{Format, IoError, PolygonSoup, WriteOptions, is_gzip_path};
 
-/// Default [`ReadLimits::max_bytes`]: 2 GiB of (decompressed) input.
-pub const DEFAULT_MAX_INPUT_BYTES: u64 = 2 << 30;
+/// Default [`ReadLimits::max_bytes`]: 1 GiB of (decompressed) input, about what a mesh of 25
+/// million faces takes as OBJ; the soup read from it takes at most about three times as much.
+pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 30;
 
 /// Bounds on what reading a file may hold in memory.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -414,5 +415,34 @@ mod tests {
             fs::remove_file(&target).unwrap();
         }
         assert!(entries(dir.path()).is_empty());
+    }
+
+    fn gz(data: &[u8]) -> Vec<u8> {
+        let mut e = GzEncoder::new(Vec::new(), Compression::fast());
+        e.write_all(data).unwrap();
+        e.finish().unwrap()
+    }
+
+    #[test]
+    fn gzip_members_padding_and_limits() {
+        let limits = ReadLimits { max_bytes: 1000 };
+        let two = [gz(b"ab"), gz(b"cd"), vec![0; 700]].concat();
+        assert_eq!(decompress_gzip(&two[..], &limits, "x").unwrap(), b"abcd");
+        let junk = [gz(b"ab"), b"\0\0x".to_vec()].concat();
+        let e = decompress_gzip(&junk[..], &limits, "x").unwrap_err();
+        assert!(e.to_string().contains("trailing garbage"), "{e}");
+        // A bomb stops at the limit, whatever its trailer claims.
+        let bomb = gz(&vec![0u8; 1 << 20]);
+        let e = decompress_gzip(&bomb[..], &limits, "bomb.gz").unwrap_err();
+        assert!(
+            matches!(e, IoError::InputTooLarge { limit: 1000, .. }),
+            "{e}"
+        );
+        assert!(decompress_gzip(&b""[..], &limits, "x").is_err());
+        let exact = gz(&[7u8; 1000]);
+        assert_eq!(
+            decompress_gzip(&exact[..], &limits, "x").unwrap().len(),
+            1000
+        );
     }
 }
