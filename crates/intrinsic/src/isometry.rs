@@ -79,9 +79,6 @@ pub enum Outcome {
         /// Whether the second tessellation was mirrored.
         reflected: bool,
     },
-    /// The same triangulation with the same lengths: isometric by the identity (found before any
-    /// tessellation is computed, by [`crate::decide_isometry`]).
-    Identical,
     /// Different numbers of polygons, sides or vertices.
     Counts {
         /// `[polygons, sides, vertices]` of the first.
@@ -120,9 +117,9 @@ pub enum Outcome {
 }
 
 impl Outcome {
-    /// Whether the outcome is [`Outcome::Isometric`] or [`Outcome::Identical`].
+    /// Whether the outcome is [`Outcome::Isometric`].
     pub fn is_isometric(&self) -> bool {
-        matches!(self, Outcome::Isometric { .. } | Outcome::Identical)
+        matches!(self, Outcome::Isometric { .. })
     }
 }
 
@@ -142,7 +139,6 @@ impl fmt::Display for Outcome {
                     ""
                 }
             ),
-            Outcome::Identical => f.write_str("isometric: the same triangulation and lengths"),
             Outcome::Counts { a, b } => write!(
                 f,
                 "not isometric: [polygons, sides, vertices] {a:?} vs {b:?}"

@@ -12,14 +12,18 @@
 //!    itself) is isometric by the identity; different Euler characteristics, or total areas
 //!    differing by more than `1e-6` relative (each area is a sum of Kahan-accurate triangle
 //!    areas), prove "not isometric" whatever the rounding.
-//! 2. Then the test with the given options. "Isometric" is the answer (a correspondence of the
+//! 2. Two flat tori (genus 1, every vertex flat: the flat-vertex removal is most fragile there)
+//!    are compared by their period lattices instead ([`crate::flat_torus_lattice`]): congruent
+//!    within the length tolerance is "isometric", different by more than `1e-4` relative is
+//!    "not isometric", in between "undecidable".
+//! 3. Then the test with the given options. "Isometric" is the answer (a correspondence of the
 //!    tessellations within the length tolerance was found).
-//! 3. A "not isometric" is re-examined with every tolerance moved by a factor of 1000 (angle and
+//! 4. A "not isometric" is re-examined with every tolerance moved by a factor of 1000 (angle and
 //!    co-circularity) or 100 (lengths) each way. If every variant still finds them different, the
 //!    answer is "not isometric"; if any finds a correspondence, or gets stuck, the verdict is
 //!    [`IsometryDecision::Undecidable`]: the surfaces are equal up to rounding-level differences
 //!    that double precision cannot settle.
-//! 4. A stuck removal or a numerical breakdown (no finding either way) is retried with the angle
+//! 5. A stuck removal or a numerical breakdown (no finding either way) is retried with the angle
 //!    and co-circularity variants: a correspondence found by one (with the default length
 //!    tolerance) is the answer "isometric"; otherwise the verdict is undecidable.
 //!    (Exact arithmetic — the Dubois algorithm on exact input, where the input's lengths allow
@@ -29,6 +33,7 @@
 //! depends on a tolerance; it is never given when the default test and all its variants agree.
 
 use crate::error::{DelaunayError, IsometryError, RemovalError};
+use crate::flat_torus_lattice::flat_torus_invariants;
 use crate::isometry::{IsometryOptions, Outcome, isometric};
 use crate::triangulation::IntrinsicTriangulation;
 use std::fmt;
@@ -39,8 +44,9 @@ pub const AREA_CERTIFICATE: f64 = 1e-6;
 /// The verdict of [`decide_isometry`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum IsometryDecision {
-    /// A correspondence was found (the outcome says which).
-    Isometric(Outcome),
+    /// Isometric (the reason says how it was found: identity, period lattices, or the
+    /// tessellations' correspondence).
+    Isometric(String),
     /// Not isometric: by a robust certificate, or by the test under every tolerance variant.
     NotIsometric(String),
     /// Double precision cannot decide (the reason says which threshold was too close).
@@ -57,7 +63,7 @@ impl IsometryDecision {
 impl fmt::Display for IsometryDecision {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            IsometryDecision::Isometric(outcome) => write!(f, "{outcome}"),
+            IsometryDecision::Isometric(reason) => write!(f, "isometric: {reason}"),
             IsometryDecision::NotIsometric(reason) => write!(f, "not isometric: {reason}"),
             IsometryDecision::Undecidable(reason) => write!(
                 f,
@@ -82,7 +88,9 @@ pub fn decide_isometry(
     options: &IsometryOptions,
 ) -> Result<IsometryDecision, IsometryError> {
     if a.mesh() == b.mesh() && a.lengths() == b.lengths() {
-        return Ok(IsometryDecision::Isometric(Outcome::Identical));
+        return Ok(IsometryDecision::Isometric(
+            "the same triangulation with the same lengths".into(),
+        ));
     }
     let (chi_a, chi_b) = (
         a.mesh().euler_characteristic(),
@@ -99,8 +107,11 @@ pub fn decide_isometry(
             "total areas {area_a} and {area_b} differ"
         )));
     }
+    if let Some(decision) = compare_flat_tori(a, b, options) {
+        return Ok(decision);
+    }
     let first = match attempt(a, b, options)? {
-        Attempt::Isometric(outcome) => return Ok(IsometryDecision::Isometric(outcome)),
+        Attempt::Isometric(outcome) => return Ok(isometric_by(&outcome)),
         Attempt::Different(outcome) => outcome,
         Attempt::Unsettled(reason) => return retry_unsettled(a, b, options, reason),
     };
@@ -144,10 +155,56 @@ fn retry_unsettled(
             continue;
         }
         if let Attempt::Isometric(outcome) = attempt(a, b, &variant)? {
-            return Ok(IsometryDecision::Isometric(outcome));
+            return Ok(isometric_by(&outcome));
         }
     }
     Ok(IsometryDecision::Undecidable(reason))
+}
+
+/// The verdict of a correspondence found by [`isometric`].
+fn isometric_by(outcome: &Outcome) -> IsometryDecision {
+    let text = outcome.to_string();
+    IsometryDecision::Isometric(text.trim_start_matches("isometric: ").to_string())
+}
+
+/// Relative difference of the lattice invariants beyond which two flat tori are certainly not
+/// congruent (far above the development's rounding).
+const LATTICE_CERTIFICATE: f64 = 1e-4;
+
+/// Two flat tori (genus 1, all vertices flat) compared by their period lattices
+/// ([`flat_torus_invariants`]): congruent within the length tolerance is isometric, different by
+/// more than [`LATTICE_CERTIFICATE`] is not, in between undecidable. `None` unless both are flat
+/// tori whose lattices could be read.
+fn compare_flat_tori(
+    a: &IntrinsicTriangulation,
+    b: &IntrinsicTriangulation,
+    options: &IsometryOptions,
+) -> Option<IsometryDecision> {
+    let la = flat_torus_invariants(a, options.angle_tolerance)?;
+    let lb = flat_torus_invariants(b, options.angle_tolerance)?;
+    let scale = la[1].max(lb[1]);
+    let difference = ((la[0] - lb[0]).abs() / scale)
+        .max((la[1] - lb[1]).abs() / scale)
+        .max((la[2] - lb[2]).abs() / (scale * scale));
+    let shown = |l: [f64; 3]| format!("|b1| {}, |b2| {}, |b1·b2| {}", l[0], l[1], l[2]);
+    Some(if difference <= options.length_tolerance {
+        IsometryDecision::Isometric(format!(
+            "flat tori with congruent period lattices ({})",
+            shown(la)
+        ))
+    } else if difference > LATTICE_CERTIFICATE {
+        IsometryDecision::NotIsometric(format!(
+            "flat tori with different period lattices ({} vs {})",
+            shown(la),
+            shown(lb)
+        ))
+    } else {
+        IsometryDecision::Undecidable(format!(
+            "flat tori whose period lattices differ by {difference:e} relative ({} vs {})",
+            shown(la),
+            shown(lb)
+        ))
+    })
 }
 
 /// One run of the test.
@@ -186,7 +243,7 @@ fn is_precision_failure(e: &IsometryError) -> bool {
     }
 }
 
-/// The tolerance variants of step 3, each with a description.
+/// The tolerance variants of steps 4 and 5, each with a description.
 fn variants(options: &IsometryOptions) -> Vec<(String, IsometryOptions)> {
     type Field = fn(&mut IsometryOptions) -> &mut f64;
     let fields: [(&str, Field, [f64; 2]); 3] = [

@@ -49,6 +49,7 @@ mod convert;
 mod delaunay;
 mod error;
 mod flat;
+pub mod flat_torus_lattice;
 pub mod format;
 pub mod generators;
 mod isometry;

@@ -103,3 +103,42 @@ fn written_lengths_read_back_bit_for_bit() {
     let back = IntrinsicTriangulation::read_json(&bytes[..], DEFAULT_LENGTH_TOLERANCE).unwrap();
     assert_eq!(back.lengths(), tri.lengths());
 }
+
+/// Flat tori are compared by their period lattices: refined and re-triangulated copies of one
+/// T_x are isometric to it (where flat-vertex removal often gets stuck on loops); T_x depends on
+/// x modulo 1 and up to a reflection only; different lattices are not isometric.
+#[test]
+fn flat_tori_are_compared_by_their_period_lattices() {
+    use surftopo_intrinsic::flat_torus_lattice::flat_torus_invariants;
+    let options = IsometryOptions::default();
+    let decide = |a: &IntrinsicTriangulation, b: &IntrinsicTriangulation| {
+        decide_isometry(a, b, &options).unwrap()
+    };
+    let t = flat_torus(2.3, 1).unwrap();
+    let [b1, b2, d] = flat_torus_invariants(&t, 1e-9).unwrap();
+    // (1, 0), (0.3, 2): already reduced.
+    assert!((b1 - 1.0).abs() < 1e-12 && (b2 - 0.3f64.hypot(2.0)).abs() < 1e-12);
+    assert!((d - 0.3).abs() < 1e-12);
+    let mut stuck = 0;
+    for (m, seed) in [(2, 1), (3, 2), (3, 3), (4, 4)] {
+        let mut refined = flat_torus(2.3, m).unwrap();
+        random_flips(&mut refined, 40, seed);
+        if isometric(t.clone(), refined.clone(), &options).is_err() {
+            stuck += 1;
+        }
+        let decision = decide(&t, &refined);
+        assert!(decision.is_isometric(), "m = {m}: {decision}");
+    }
+    assert!(stuck > 0, "no input exercises the stuck removal any more");
+    for same in [3.3, -0.7, 1.7] {
+        let decision = decide(&t, &flat_torus(same, 2).unwrap());
+        assert!(decision.is_isometric(), "T_{same}: {decision}");
+    }
+    for other in [2.4, 2.0] {
+        let decision = decide(&t, &flat_torus(other, 2).unwrap());
+        assert!(
+            matches!(decision, IsometryDecision::NotIsometric(_)),
+            "T_{other}: {decision}"
+        );
+    }
+}
