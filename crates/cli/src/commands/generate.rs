@@ -76,7 +76,7 @@ pub enum Kind {
         /// A mesh or portalgon JSON file.
         #[arg(long)]
         input: PathBuf,
-        /// Number of flips (at most 100 per edge).
+        /// Number of flips (at most 100 per edge, or 1000000).
         #[arg(long, default_value_t = 1000)]
         count: u64,
     },
@@ -104,7 +104,7 @@ pub struct Modifiers {
     #[arg(long, global = true)]
     pub simplify: Option<usize>,
     /// Random simplicial edge flips applied after simplification (irregular connectivity); at
-    /// most 100 per edge.
+    /// most 100 per edge, or 1000000.
     #[arg(long, default_value_t = 0, global = true)]
     pub flips: usize,
     /// Random vertex splits applied after the flips.
@@ -223,18 +223,21 @@ fn check_size(source: &str, triangles: u64) -> anyhow::Result<()> {
     crate::limits::check_elements(source, triangles, "triangles")
 }
 
-/// The most random flips per edge `--flips` and `intrinsic-flips --count` accept: far more than
-/// random flips need to mix, and a bound on the time they take.
+/// The most random flips per edge `--flips` and `intrinsic-flips --count` accept beyond
+/// [`MIN_FLIP_CAP`]: far more than random flips need to mix, and a bound on the time they take.
 pub const MAX_FLIPS_PER_EDGE: u64 = 100;
 
-/// Refuses `count` random flips of a mesh with `edges` edges beyond [`MAX_FLIPS_PER_EDGE`] per
-/// edge (the flip loops would otherwise run for days).
+/// Flips always allowed, whatever the mesh size (a second's work).
+pub const MIN_FLIP_CAP: u64 = 1_000_000;
+
+/// Refuses `count` random flips of a mesh with `edges` edges beyond
+/// `max(MAX_FLIPS_PER_EDGE · edges, MIN_FLIP_CAP)` (the flip loops would otherwise run for days).
 fn check_flips(option: &str, count: u64, edges: usize) -> anyhow::Result<()> {
-    let max = MAX_FLIPS_PER_EDGE * edges as u64;
+    let max = (MAX_FLIPS_PER_EDGE * edges as u64).max(MIN_FLIP_CAP);
     if count > max {
         return Err(crate::failure::invalid(format!(
-            "{option} {count}: at most {MAX_FLIPS_PER_EDGE} flips per edge are made ({max} for \
-             this mesh's {edges} edges)"
+            "{option} {count}: at most {MAX_FLIPS_PER_EDGE} flips per edge (or {MIN_FLIP_CAP}) are \
+             made: {max} for this mesh's {edges} edges"
         )));
     }
     Ok(())
