@@ -183,21 +183,42 @@ fn skip_zero_padding(input: &mut impl BufRead) -> Result<(), Load> {
 }
 
 /// Appends all of `reader` to `out`, growing it fallibly (`try_reserve`), and stops with
-/// [`Load::TooLarge`] once `out` would exceed `limit` bytes.
+/// [`Load::TooLarge`] once `out` would exceed `limit` bytes. Capacity reserved beforehand (the
+/// file's size) is filled first; a full buffer is grown (doubling) only once a probe read shows
+/// there is more, so an input of exactly the reserved size costs no extra memory.
 fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result<(), Load> {
     const CHUNK: usize = 1 << 16;
     let limit = usize::try_from(limit).unwrap_or(usize::MAX);
     let mut len = out.len();
     let result = loop {
         if len == out.len() {
-            // Double (at least one chunk), but never reserve beyond limit + 1 bytes.
-            let room = len
-                .max(CHUNK)
-                .min(limit.saturating_add(1).saturating_sub(len).max(1));
-            if out.try_reserve(room).is_err() {
-                break Err(Load::OutOfMemory((len + room) as u64));
+            let reserved = out.capacity().min(limit.saturating_add(1));
+            if reserved > len {
+                out.resize(reserved, 0);
+            } else {
+                let mut probe = [0u8; 8192];
+                let n = match reader.read(&mut probe) {
+                    Ok(0) => break Ok(()),
+                    Ok(n) => n,
+                    Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                    Err(e) => break Err(Load::Io(e)),
+                };
+                // Double (at least one chunk), but never beyond limit + 1 bytes.
+                let room = len
+                    .max(CHUNK)
+                    .min(limit.saturating_add(1).saturating_sub(len))
+                    .max(n);
+                if out.try_reserve(room).is_err() {
+                    break Err(Load::OutOfMemory((len + room) as u64));
+                }
+                out.resize(len + room, 0);
+                out[len..len + n].copy_from_slice(&probe[..n]);
+                len += n;
+                if len > limit {
+                    break Err(Load::TooLarge);
+                }
+                continue;
             }
-            out.resize(len + room, 0);
         }
         match reader.read(&mut out[len..]) {
             Ok(0) => break Ok(()),
@@ -444,5 +465,16 @@ mod tests {
             decompress_gzip(&exact[..], &limits, "x").unwrap().len(),
             1000
         );
+    }
+
+    #[test]
+    fn a_file_is_read_into_exactly_its_size() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("m.obj");
+        fs::write(&path, vec![b'#'; 300_001]).unwrap();
+        let bytes = load_path(&path, &ReadLimits::default()).unwrap();
+        assert_eq!((bytes.len(), bytes.capacity()), (300_001, 300_001));
+        let e = load_path(&path, &ReadLimits { max_bytes: 300_000 }).unwrap_err();
+        assert!(matches!(e, IoError::InputTooLarge { .. }), "{e}");
     }
 }
