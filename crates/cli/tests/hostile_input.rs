@@ -236,21 +236,18 @@ fn item3_intrinsic_flips_of_needles_stay_valid() {
 fn item4_matrices_are_finite_and_scale_free() {
     let dir = tempfile::tempdir().unwrap();
     let tetra = surftopo_mesh::generators::icosphere(1);
+    let delaunay = |input: &Path, extra: &[&str]| {
+        let output = dir.path().join("d.json");
+        run(&[&["delaunay", s(input), "-o", s(&output)][..], extra].concat())
+    };
     let mass = |scale: f64| {
         let input = dir.path().join(format!("m{scale:e}.obj"));
         write_obj(&input, &tetra, scale);
-        let m = dir.path().join("M.mtx");
-        let out = run(&[
-            "delaunay",
-            s(&input),
-            "-o",
-            s(&dir.path().join("d.json")),
-            "--mass",
-            s(&m),
-            "--laplacian",
-            s(&dir.path().join("L.mtx")),
-        ]);
-        (out, m)
+        let (m, l) = (dir.path().join("M.mtx"), dir.path().join("L.mtx"));
+        (
+            delaunay(&input, &["--mass", s(&m), "--laplacian", s(&l)]),
+            m,
+        )
     };
     let (out, m) = mass(1.0);
     assert!(out.status.success(), "{}", stderr(&out));
@@ -278,15 +275,7 @@ fn item4_matrices_are_finite_and_scale_free() {
     let (out, m) = mass(1e-170); // areas near 1e-340: below double precision
     assert_fails(&out, 2, &["mass matrix", "too small"]);
     assert!(!m.exists());
-    let input = dir.path().join("m1e0.obj");
-    let out = run(&[
-        "delaunay",
-        s(&input),
-        "-o",
-        s(&dir.path().join("x.json")),
-        "--mollify",
-        "1e308",
-    ]);
+    let out = delaunay(&dir.path().join("m1e0.obj"), &["--mollify", "1e308"]);
     assert_fails(&out, 2, &["mollification epsilon 1e308"]);
     let torus = dir.path().join("t.json");
     let out = run(&["generate", "flat-torus", "--x", "1e300", "-o", s(&torus)]);
@@ -518,35 +507,38 @@ fn item8_exit_codes_and_messages() {
         "neg.json",
         r#"{"polygons": [{"lengths": [1, -1, 1]}, {"lengths": [1, 1, 1]}], "matching": []}"#,
     );
-    let out = run(&[
-        "delaunay",
-        s(&negative),
-        "-o",
-        s(&dir.path().join("o.json")),
-    ]);
-    assert_fails(&out, 2, &["\"lengths\"[1] = -1 is negative"]);
-    let out = run(&[
-        "generate",
-        "flat-torus",
-        "--x",
-        "2",
-        "--m",
-        "0",
-        "-o",
-        s(&torus),
-    ]);
-    assert_fails(&out, 2, &["parameter m = 0"]);
-    let out = run(&["generate", "flat-torus", "--x", "nan", "-o", s(&torus)]);
-    assert_fails(&out, 2, &["parameter x = NaN"]);
-    let out = run(&[
-        "generate",
-        "genus",
-        "--size",
-        "0",
-        "-o",
-        s(&dir.path().join("g.obj")),
-    ]);
-    assert_fails(&out, 2, &["--size must be at least 1"]);
+    let o = dir.path().join("o.json");
+    let g = dir.path().join("g.obj");
+    let named: [(&[&str], &str); 4] = [
+        (
+            &["delaunay", s(&negative), "-o", s(&o)],
+            "\"lengths\"[1] = -1 is negative",
+        ),
+        (
+            &[
+                "generate",
+                "flat-torus",
+                "--x",
+                "2",
+                "--m",
+                "0",
+                "-o",
+                s(&torus),
+            ],
+            "parameter m = 0",
+        ),
+        (
+            &["generate", "flat-torus", "--x", "nan", "-o", s(&torus)],
+            "parameter x = NaN",
+        ),
+        (
+            &["generate", "genus", "--size", "0", "-o", s(&g)],
+            "--size must be at least 1",
+        ),
+    ];
+    for (args, needle) in named {
+        assert_fails(&run(args), 2, &[needle]);
+    }
     // An OS error once.
     let out = run(&["info", s(&dir.path().join("absent.obj"))]);
     assert_fails(&out, 2, &["absent.obj"]);
