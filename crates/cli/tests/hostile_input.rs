@@ -614,15 +614,15 @@ fn item9_work_is_bounded_and_interruptible() {
         &["--count 1000000000000000", "at most 100 flips per edge"],
     );
     assert!(start.elapsed() < Duration::from_secs(10));
-    // A long but bounded run (12M flips allowed on icosphere(6)) is interrupted at once.
+    // A long but bounded run (49M flips allowed on icosphere(7)) is interrupted at once.
     let mut child = Command::new(binary())
         .args([
             "generate",
             "icosphere",
             "--subdivisions",
-            "6",
+            "7",
             "--flips",
-            "12000000",
+            "40000000",
         ])
         .args(["-o", s(&out_path)])
         .stderr(Stdio::null())
