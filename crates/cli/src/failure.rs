@@ -1,6 +1,16 @@
-//! Exit codes: 0 success, 2 invalid input or usage, 1 internal failure.
+//! Exit codes and error messages.
+//!
+//! | code | meaning |
+//! |---|---|
+//! | 0 | success (`isometric`: isometric) |
+//! | 1 | internal failure (`isometric`: not isometric) |
+//! | 2 | invalid input or usage, or an output that cannot be written (missing folder, read-only or full disk, full stdout): something the user must fix |
+//! | 3 | `isometric` only: double precision cannot decide |
+//! | 4 | `isometric` only: internal failure |
+//! | 128 + N | stopped by signal N (SIGHUP 129, SIGINT 130, SIGTERM 143) after removing temporary files |
 
 use std::fmt;
+use std::path::Path;
 
 /// Marks an error as the user's input being invalid (exit code 2).
 #[derive(Debug)]
@@ -19,11 +29,63 @@ pub fn invalid(message: impl Into<String>) -> anyhow::Error {
     anyhow::Error::new(InvalidInput(message.into()))
 }
 
+/// An output that could not be written (exit code 2, like every unwritable output): the path and
+/// the cause, once.
+pub fn unwritable(path: &Path, cause: &dyn fmt::Display) -> anyhow::Error {
+    invalid(format!("{}: not written: {cause}", shown(path)))
+}
+
+/// A path as messages show it: control characters escaped ([`surftopo_mesh::printable`]).
+pub fn shown(path: &Path) -> String {
+    surftopo_mesh::printable(&path.display().to_string()).into_owned()
+}
+
 /// The exit code for an error: 2 when any cause is invalid input (including every reader error),
 /// 1 otherwise.
 pub fn exit_code(error: &anyhow::Error) -> u8 {
-    let input = error
+    if is_invalid_input(error) { 2 } else { 1 }
+}
+
+/// Whether any cause of `error` is invalid input (including every reader error).
+pub fn is_invalid_input(error: &anyhow::Error) -> bool {
+    error
         .chain()
-        .any(|cause| cause.is::<InvalidInput>() || cause.is::<surftopo_io::IoError>());
-    if input { 2 } else { 1 }
+        .any(|cause| cause.is::<InvalidInput>() || cause.is::<surftopo_io::IoError>())
+}
+
+/// The message of `error` and its causes, each cause once: a cause whose text the message
+/// already holds (an error that prints its source and also returns it from `source()`) is
+/// skipped. Control characters are escaped, since messages quote input.
+pub fn message(error: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in error.chain() {
+        let part = cause.to_string();
+        if text.contains(&part) {
+            continue;
+        }
+        if !text.is_empty() {
+            text.push_str(": ");
+        }
+        text.push_str(&part);
+    }
+    surftopo_mesh::printable(&text).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_each_cause_once_and_escape_controls() {
+        let os = std::io::Error::from(std::io::ErrorKind::NotFound);
+        let io = surftopo_io::IoError::Io {
+            file: "m.obj".into(),
+            source: os,
+        };
+        let error = anyhow::Error::new(io).context("reading \u{1b}[2J");
+        let text = message(&error);
+        assert_eq!(text.matches("entity not found").count(), 1, "{text}");
+        assert!(text.starts_with("reading \\u{1b}[2J: m.obj: "), "{text}");
+        assert_eq!(exit_code(&error), 2);
+    }
 }

@@ -37,7 +37,12 @@ pub struct Loaded {
 
 /// Reads a polygon soup, welding exactly coincident positions when asked (always for STL).
 pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)> {
-    let mut soup = surftopo_io::read_path(path)?;
+    let mut soup =
+        surftopo_io::read_path_with(path, &crate::limits::read_limits()).map_err(explain_limit)?;
+    let source = crate::failure::shown(path);
+    crate::limits::check_elements(&source, soup.vertex_count() as u64, "vertices")?;
+    crate::limits::check_elements(&source, soup.face_count() as u64, "faces")?;
+    crate::limits::check_elements(&source, soup.face_indices.len() as u64 / 3, "triangles")?;
     let is_stl = surftopo_io::Format::from_path(path) == Some(surftopo_io::Format::Stl);
     let mut welded = 0;
     if weld || is_stl {
@@ -49,6 +54,16 @@ pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)
         soup.positions = positions;
     }
     Ok((soup, welded))
+}
+
+/// A reader error, with the option that raises the limit it hit, if any.
+pub fn explain_limit(error: surftopo_io::IoError) -> anyhow::Error {
+    match error {
+        surftopo_io::IoError::InputTooLarge { .. } => {
+            crate::failure::invalid(format!("{error}; raise --max-input-bytes to read it"))
+        }
+        other => anyhow::Error::new(other),
+    }
 }
 
 /// The input face a build error names, if any (mutable, to renumber it).
@@ -95,7 +110,7 @@ pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
         .and_then(|f| soup.face_lines.get(*f))
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
-    format!("{}: {line}{error}", path.display())
+    format!("{}: {line}{error}", crate::failure::shown(path))
 }
 
 /// The soup's triangles, or an invalid-input error naming the first non-triangular face.
@@ -131,7 +146,7 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
 
 /// Notes on stderr what building changed (reoriented faces, dropped or welded vertices).
 pub fn log_report(path: &Path, loaded: &Loaded) {
-    let name = path.display();
+    let name = crate::failure::shown(path);
     if loaded.welded > 0 {
         eprintln!("note: {name}: welded {} coincident vertices", loaded.welded);
     }

@@ -1,12 +1,15 @@
 //! `surftopo`: triangulations of closed surfaces from the command line.
 //!
-//! A thin layer over the surftopo libraries. Exit code 0 on success, 2 on invalid input or usage
-//! (message on stderr starting with `error:`), 1 on an internal failure. Results go to stdout,
-//! progress and notes to stderr; output files are written atomically.
+//! A thin layer over the surftopo libraries. Exit codes (see [`failure`]): 0 on success, 2 on
+//! invalid input, usage or an unwritable output (message on stderr starting with `error:`), 1 on
+//! an internal failure; `isometric` has its own (0, 1, 2, 3 undecidable, 4). Results go to stdout,
+//! progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
+//! SIGHUP remove the temporary file of a write in progress before the process exits.
 
 mod commands;
 mod failure;
 mod input;
+mod limits;
 mod output;
 mod progress;
 
@@ -17,11 +20,25 @@ use std::process::ExitCode;
 /// Triangulations of closed surfaces: irreducible triangulations, quadrangulations, intrinsic
 /// Delaunay triangulations.
 #[derive(Parser, Debug)]
-#[command(name = "surftopo", version, about, long_about = None)]
+#[command(name = "surftopo", version, about, long_about = None, after_help = EXIT_CODES)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// The most bytes read from one input file, after decompression (inputs beyond are refused
+    /// with exit code 2 before more memory is used).
+    #[arg(long, global = true, default_value_t = surftopo_io::DEFAULT_MAX_INPUT_BYTES)]
+    max_input_bytes: u64,
+    /// The most vertices or faces of an input, and the most triangles a generator or modifier may
+    /// make (about 100 bytes each once built); checked before allocating.
+    #[arg(long, global = true, default_value_t = limits::DEFAULT_MAX_ELEMENTS)]
+    max_elements: u64,
 }
+
+/// The exit codes, at the end of `--help`.
+const EXIT_CODES: &str = "Exit codes: 0 success; 1 internal failure; 2 invalid input or usage, or an \
+output that cannot be written (missing folder, read-only or full disk, full stdout); 128+N stopped by \
+signal N, temporary files removed. `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
+undecidable in double precision, 4 internal failure.";
 
 #[derive(Subcommand, Debug)]
 enum Command {
@@ -78,8 +95,9 @@ enum Command {
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
     Delaunay(commands::delaunay::Options),
-    /// Whether two closed polyhedral surfaces are isometric: prints `isometric` (exit 0) or
-    /// `not isometric` (exit 1).
+    /// Whether two closed polyhedral surfaces are isometric: prints `isometric` (exit 0),
+    /// `not isometric` (exit 1) or `undecidable in double precision` (exit 3); exit 2 for invalid
+    /// input, 4 for an internal failure.
     Isometric {
         /// First surface (mesh or portalgon JSON).
         a: PathBuf,
@@ -97,9 +115,9 @@ enum Command {
     },
 }
 
-fn run(cli: Cli) -> anyhow::Result<ExitCode> {
+fn run(command: Command) -> anyhow::Result<ExitCode> {
     let done = |r: anyhow::Result<()>| r.map(|()| ExitCode::SUCCESS);
-    match cli.command {
+    match command {
         Command::Info {
             mesh,
             json,
@@ -117,23 +135,54 @@ fn run(cli: Cli) -> anyhow::Result<ExitCode> {
         }
         Command::Quad { job, algorithm } => done(commands::quad::run(&job, algorithm)),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
-        Command::Isometric { a, b, weld } => Ok(if commands::isometric::run(&a, &b, weld)? {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        }),
+        Command::Isometric { a, b, weld } => {
+            commands::isometric::run(&a, &b, weld).map(|v| ExitCode::from(v.exit_code()))
+        }
         Command::Demo { out } => done(commands::demo::run(&out)),
     }
 }
 
+/// Removes the temporary files of writes in progress on SIGINT, SIGTERM and SIGHUP, then exits
+/// with 128 + the signal number. A thread waits for the signals, so a long computation is
+/// interrupted too.
+fn remove_temporaries_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return; // the default actions stay: termination without the clean-up
+    };
+    std::thread::spawn(move || {
+        if let Some(signal) = signals.forever().next() {
+            surftopo_io::remove_temporaries_then(|| std::process::exit(128 + signal))
+        }
+    });
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    match run(cli) {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            eprintln!("error: a command is needed\n");
+            let _ = e.print();
+            return ExitCode::from(2);
+        }
+        Err(e) => e.exit(),
+    };
+    limits::set(limits::Limits {
+        max_input_bytes: cli.max_input_bytes,
+        max_elements: cli.max_elements,
+    });
+    remove_temporaries_on_signals();
+    let isometric = matches!(cli.command, Command::Isometric { .. });
+    match run(cli.command) {
         Ok(code) => code,
         Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
-            ExitCode::from(failure::exit_code(&error))
+            eprintln!("error: {}", failure::message(&error));
+            let code = failure::exit_code(&error);
+            ExitCode::from(match (isometric, code) {
+                (true, 1) => commands::isometric::INTERNAL_FAILURE,
+                _ => code,
+            })
         }
     }
 }

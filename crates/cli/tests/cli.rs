@@ -79,7 +79,7 @@ fn info_json_has_the_documented_keys() {
 #[test]
 fn malformed_inputs_exit_with_code_2_and_say_where() {
     let cases: &[(&str, &str, &str)] = &[
-        ("empty.obj", "v 0 0 0\n", "empty mesh"),
+        ("empty.obj", "v 0 0 0\n", "no faces"),
         (
             "range.obj",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n",

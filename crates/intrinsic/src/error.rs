@@ -80,7 +80,9 @@ pub enum DelaunayError {
         length: f64,
     },
     /// The mollification parameter is not a finite positive number.
-    #[error("mollification epsilon {0} must be finite and positive")]
+    #[error(
+        "mollification epsilon {0:?} must be positive and at most 1 (relative to the mean edge length)"
+    )]
     InvalidMollify(f64),
     /// The tolerance is not a finite non-negative number.
     #[error("Delaunay tolerance {0} must be finite and non-negative")]
@@ -138,6 +140,26 @@ pub enum PortalgonError {
         polygon: usize,
         /// Corner (or side) index.
         index: usize,
+    },
+    /// A triangle side length given in the file is negative.
+    #[error("polygon {polygon}: \"lengths\"[{side}] = {value} is negative")]
+    NegativeLength {
+        /// Polygon index.
+        polygon: usize,
+        /// Side index.
+        side: usize,
+        /// The length given.
+        value: f64,
+    },
+    /// A parameter of a generator is out of its range.
+    #[error("parameter {name} = {value}: {requirement}")]
+    InvalidParameter {
+        /// The parameter's name.
+        name: &'static str,
+        /// Its value, as given.
+        value: String,
+        /// What it must satisfy.
+        requirement: String,
     },
     /// A side has zero length.
     #[error("polygon {polygon}: side {side} has zero length")]

@@ -48,6 +48,12 @@ use serde::{Deserialize, Serialize};
 use std::io::{Read, Write};
 use surftopo_mesh::Side;
 
+/// A JSON syntax or schema error; the message quotes the input (field names, strings), so
+/// control characters are escaped ([`surftopo_mesh::printable`]).
+fn json_error(e: &serde_json::Error) -> PortalgonError {
+    PortalgonError::Json(surftopo_mesh::printable(&e.to_string()).into_owned())
+}
+
 /// The `format` field.
 pub const FORMAT_NAME: &str = "surftopo-portalgon";
 /// The `version` field.
@@ -111,8 +117,7 @@ impl PortalgonDoc {
     /// # Errors
     /// [`PortalgonError::Json`] (with line and column), [`PortalgonError::Version`].
     pub fn from_json(text: &str) -> Result<Self, PortalgonError> {
-        let doc: Self =
-            serde_json::from_str(text).map_err(|e| PortalgonError::Json(e.to_string()))?;
+        let doc: Self = serde_json::from_str(text).map_err(|e| json_error(&e))?;
         doc.check_header()?;
         Ok(doc)
     }
@@ -126,7 +131,7 @@ impl PortalgonDoc {
             if e.is_io() {
                 PortalgonError::Io(e.to_string())
             } else {
-                PortalgonError::Json(e.to_string())
+                json_error(&e)
             }
         })?;
         doc.check_header()?;
@@ -357,8 +362,15 @@ impl PortalgonDoc {
                 (None, Some(l)) => [l[0], l[1], l[2]],
                 (None, None) => unreachable!("side_counts checked the shape"),
             };
-            if let Some(index) = l.iter().position(|x| !x.is_finite() || *x < 0.0) {
+            if let Some(index) = l.iter().position(|x| !x.is_finite()) {
                 return Err(PortalgonError::NonFinite { polygon, index });
+            }
+            if let Some(side) = l.iter().position(|x| *x < 0.0) {
+                return Err(PortalgonError::NegativeLength {
+                    polygon,
+                    side,
+                    value: l[side],
+                });
             }
             sides.push(l);
         }

@@ -24,18 +24,38 @@ use surftopo_mesh::{EdgeId, Side};
 /// 1 × 2 rectangle split by a diagonal: lengths 1, 2, √5.
 ///
 /// # Errors
-/// [`PortalgonError::NonFinite`] unless `x` is finite and `m >= 1`; a gluing error is impossible.
+/// [`PortalgonError::InvalidParameter`] unless `x` is finite and `1 <= m <= 30000`, or when `x`
+/// is so large that the rounded lengths give triangles whose area is off by more than 1e-3 (from
+/// about `|x| = 10^5`: they no longer describe T_x); a gluing error is impossible.
 pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonError> {
-    if !x.is_finite() || m == 0 || m > 30_000 {
-        return Err(PortalgonError::NonFinite {
-            polygon: 0,
-            index: 0,
-        });
+    let invalid = |name, value: String, requirement: &str| PortalgonError::InvalidParameter {
+        name,
+        value,
+        requirement: requirement.into(),
+    };
+    if !x.is_finite() {
+        return Err(invalid("x", format!("{x:?}"), "must be a finite number"));
+    }
+    if !(1..=30_000).contains(&m) {
+        return Err(invalid("m", m.to_string(), "must be between 1 and 30000"));
     }
     let mf = f64::from(m);
     let len_u = 1.0 / mf;
     let len_w = x.hypot(2.0) / mf;
     let len_d = (x - 1.0).hypot(2.0) / mf;
+    // Each triangle has area 1/m² (T_x has area 2); lengths rounded beyond that (huge |x|) no
+    // longer describe T_x.
+    let area = crate::trig::area(len_u, len_d, len_w) * mf * mf;
+    if (area - 1.0).abs().is_nan() || (area - 1.0).abs() > 1e-3 {
+        return Err(invalid(
+            "x",
+            format!("{x:?}"),
+            &format!(
+                "too large for double precision: the rounded side lengths give triangles of \
+                 area {area:e} instead of 1/m²"
+            ),
+        ));
+    }
     let cell = |i: u32, j: u32| (j % m) * m + (i % m);
     let n = (m * m) as usize;
     let mut sides = Vec::with_capacity(2 * n);
@@ -75,7 +95,8 @@ pub use surftopo_mesh::generators::sheared_torus;
 /// Re-triangulates `tri` isometrically by up to `count` random intrinsic flips: edges drawn
 /// uniformly (seeded `ChaCha8Rng`), flipped only when their quad is convex with margin
 /// (`tan(α₁/2) tan(α₂/2) < 0.9` at both ends, i.e. angles below about 168°, so no new triangle is
-/// nearly degenerate). At most `20 · count` draws, so it always returns. Returns the number of
+/// nearly degenerate) and keeps the triangulation valid and its area (see
+/// [`IntrinsicTriangulation::flip_if_convex`]). At most `20 · count` draws, so it always returns. Returns the number of
 /// flips made. Same seed, same result.
 pub fn random_flips(tri: &mut IntrinsicTriangulation, count: u64, seed: u64) -> u64 {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);

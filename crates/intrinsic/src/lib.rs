@@ -54,10 +54,12 @@ mod convert;
 mod delaunay;
 mod error;
 mod flat;
+pub mod flat_torus_lattice;
 pub mod format;
 pub mod generators;
 pub mod geometry;
 mod isometry;
+mod isometry_decision;
 mod laplacian;
 mod matrix_market;
 mod mollify;
@@ -83,12 +85,13 @@ pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, IsometryOptions, Outcome, canonical_tessellation,
     compare_tessellations, isometric,
 };
+pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use laplacian::{
     SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, intrinsic_delaunay_laplacian,
     lumped_mass,
 };
 pub use matrix_market::{read_matrix_market, write_matrix_market};
-pub use mollify::mollify;
+pub use mollify::{MAX_MOLLIFY, mollify};
 pub use portalgon::{
     DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
     signed_area,
@@ -99,5 +102,5 @@ pub use stats::{DelaunayStats, delaunay_with_stats};
 pub use tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };
-pub use triangulation::IntrinsicTriangulation;
+pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
 pub use tube::{LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon};

@@ -11,16 +11,20 @@
 use crate::error::{DelaunayError, GeometryError};
 use crate::triangulation::IntrinsicTriangulation;
 
+/// The largest mollification ε accepted: a margin of one mean edge length. Beyond, δ would
+/// dwarf the lengths (and at 1e308 overflow them): the metric would no longer be the input's.
+pub const MAX_MOLLIFY: f64 = 1.0;
+
 /// Mollifies the lengths in place; returns the δ added to every edge (0 when nothing was needed).
 ///
 /// `epsilon` is relative to the mean edge length (Sharp & Crane use `1e-6`). O(F).
 ///
 /// # Errors
-/// [`DelaunayError::InvalidMollify`] if `epsilon` is not finite and positive;
+/// [`DelaunayError::InvalidMollify`] unless `0 < epsilon <= MAX_MOLLIFY`;
 /// [`GeometryError::NonFiniteLength`] for a non-finite or negative input length (mollification
 /// cannot repair those); [`GeometryError::NonPositiveLength`] if every edge has length 0.
 pub fn mollify(tri: &mut IntrinsicTriangulation, epsilon: f64) -> Result<f64, DelaunayError> {
-    if !(epsilon.is_finite() && epsilon > 0.0) {
+    if !(epsilon.is_finite() && epsilon > 0.0 && epsilon <= MAX_MOLLIFY) {
         return Err(DelaunayError::InvalidMollify(epsilon));
     }
     let (mesh, lengths) = tri.parts_mut();

@@ -246,8 +246,11 @@ impl IntrinsicTriangulation {
         [[0.0, 0.0], [l0, 0.0], trig::third_corner(l0, l1, l2)]
     }
 
-    /// Flips the edge intrinsically if its two faces differ and the quad they form is strictly
-    /// convex (so both new triangles are non-degenerate); returns whether it flipped.
+    /// Flips the edge intrinsically if its two faces differ, the quad they form is strictly
+    /// convex, both new triangles, with the rounded new length, satisfy the strict triangle
+    /// inequality (so the result is always a valid triangulation) and their areas add up to the
+    /// quad's within [`FLIP_AREA_TOLERANCE`] (so rounding on needle-like quads cannot change the
+    /// metric: the result stays isometric to double precision); returns whether it flipped.
     pub fn flip_if_convex(&mut self, e: EdgeId) -> bool {
         self.flip_if_convex_with_margin(e, 1.0)
     }
@@ -265,7 +268,12 @@ impl IntrinsicTriangulation {
             return false;
         }
         let length = q.flipped_length();
-        if !(length.is_finite() && length > 0.0) {
+        // Both new triangles must satisfy the strict triangle inequality as rounded, or the flip
+        // would leave an invalid triangulation (needles: a convex quad, a rounded diagonal).
+        if !(trig::is_triangle(length, q.ca, q.ad) && trig::is_triangle(length, q.db, q.bc)) {
+            return false;
+        }
+        if !keeps_area(&q, length) {
             return false;
         }
         self.apply_flip(e, length);
@@ -281,6 +289,20 @@ impl IntrinsicTriangulation {
             .expect("caller checked that the edge is flippable");
         self.lengths[e.idx()] = length;
     }
+}
+
+/// Relative change of a quad's area beyond which [`IntrinsicTriangulation::flip_if_convex`]
+/// refuses a flip: on needle-like quads the rounded new diagonal can change the area by far more
+/// than rounding of the area itself (errors grow with the squared aspect ratio), and repeated
+/// flips would drift away from the surface.
+pub const FLIP_AREA_TOLERANCE: f64 = 1e-12;
+
+/// Whether flipping the quad's diagonal to `length` keeps its area within
+/// [`FLIP_AREA_TOLERANCE`] (Kahan's areas of the two old and the two new triangles).
+fn keeps_area(q: &Quad, length: f64) -> bool {
+    let before = trig::area(q.ab, q.bc, q.ca) + trig::area(q.ab, q.ad, q.db);
+    let after = trig::area(length, q.ca, q.ad) + trig::area(length, q.db, q.bc);
+    (after - before).abs() <= FLIP_AREA_TOLERANCE * before
 }
 
 /// Stores the half-angle tangents squared of the triangle with sides `lengths` into `t2`, entry

@@ -35,6 +35,37 @@ pub fn excesses(o: f64, x: f64, y: f64) -> [f64; 4] {
     [a + (b + c), rank(o), rank(x), rank(y)]
 }
 
+/// Lengths whose products of four (Kahan's Heron formula) neither overflow nor underflow: the
+/// largest side within `[2^-250, 2^250]` needs no scaling.
+const SAFE_EXPONENT: i32 = 250;
+
+/// The sides scaled by an exact power of two `2^-k` so that the largest lies in `[1, 2)`, and `k`;
+/// the sides themselves and `k = 0` when the largest is within `[2^-250, 2^250]` (or is zero or
+/// not finite). Angles and the triangle inequality do not change under scaling, lengths scale by
+/// `2^k` and areas by `4^k`, so the formulas below are scale-free: no overflow for sides up to
+/// `f64::MAX`, no underflow down to the smallest normal numbers (Kahan's factors stay accurate).
+#[inline]
+fn normalized(o: f64, x: f64, y: f64) -> (f64, f64, f64, i32) {
+    let m = o.max(x).max(y);
+    if !(m.is_finite() && m > 0.0) {
+        return (o, x, y, 0);
+    }
+    let k = m.log2().floor() as i32;
+    if (-SAFE_EXPONENT..=SAFE_EXPONENT).contains(&k) {
+        return (o, x, y, 0);
+    }
+    let s = pow2(-k);
+    (o * s, x * s, y * s, k)
+}
+
+/// `2^k` exactly, for `|k| <= 2000` (two steps, so that `2^-1074..2^1023` sides scale without
+/// overflowing the factor itself).
+#[inline]
+fn pow2(k: i32) -> f64 {
+    let half = k / 2;
+    2f64.powi(half) * 2f64.powi(k - half)
+}
+
 /// Whether three lengths are finite, positive and satisfy the triangle inequality strictly
 /// (the triangle has positive area).
 #[inline]
@@ -50,6 +81,7 @@ pub fn is_triangle(a: f64, b: f64, c: f64) -> bool {
 /// `+inf` (θ = π); invalid ones give a negative value or NaN.
 #[inline]
 pub fn tan_half_sq(o: f64, x: f64, y: f64) -> f64 {
+    let (o, x, y, _) = normalized(o, x, y);
     let [p, eo, ex, ey] = excesses(o, x, y);
     (ex * ey) / (p * eo)
 }
@@ -73,11 +105,18 @@ pub fn cot_from_tan_half_sq(t2: f64) -> f64 {
     (1.0 - t2) / (2.0 * t2.sqrt())
 }
 
-/// The area of the triangle with sides `a, b, c` (Kahan's Heron formula); NaN if invalid.
+/// The area of the triangle with sides `a, b, c` (Kahan's Heron formula, on the sides scaled by a
+/// power of two when needed and scaled back: finite whenever the area is); NaN if invalid.
 #[inline]
 pub fn area(a: f64, b: f64, c: f64) -> f64 {
+    let (a, b, c, k) = normalized(a, b, c);
     let [p, ea, eb, ec] = excesses(a, b, c);
-    0.25 * (p * ea * eb * ec).sqrt()
+    let area = 0.25 * (p * ea * eb * ec).sqrt();
+    if k == 0 {
+        area
+    } else {
+        area * pow2(k) * pow2(k)
+    }
 }
 
 /// Position of corner 2 of a triangle laid out with corner 0 at the origin and corner 1 at
@@ -184,10 +223,12 @@ impl Quad {
 /// (see [`Quad::flipped_length`]).
 #[inline]
 pub fn chord(s1: f64, s2: f64, r1: f64, r2: f64) -> f64 {
+    let (r1, r2, _, k) = normalized(r1, r2, 0.0);
     let (t1, t2) = (s1.sqrt(), s2.sqrt());
     let sin2 = (t1 + t2) * (t1 + t2) / ((1.0 + s1) * (1.0 + s2));
     let diff = r1 - r2;
-    (diff * diff + 4.0 * r1 * r2 * sin2).sqrt()
+    let length = (diff * diff + 4.0 * r1 * r2 * sin2).sqrt();
+    if k == 0 { length } else { length * pow2(k) }
 }
 
 /// `tan²` of the half angles of a triangle with sides `[l0, l1, l2]`: entry `i` is for the angle
@@ -195,7 +236,8 @@ pub fn chord(s1: f64, s2: f64, r1: f64, r2: f64) -> f64 {
 /// inequality holds strictly). One sort for the three angles.
 #[inline]
 pub fn tan_half_sq_all(l: [f64; 3]) -> ([f64; 3], f64) {
-    let [p, e0, e1, e2] = excesses(l[0], l[1], l[2]);
+    let (l0, l1, l2, _) = normalized(l[0], l[1], l[2]);
+    let [p, e0, e1, e2] = excesses(l0, l1, l2);
     let smallest = p.min(e0).min(e1).min(e2);
     (
         [e1 * e2 / (p * e0), e0 * e2 / (p * e1), e0 * e1 / (p * e2)],
@@ -313,5 +355,37 @@ mod tests {
     fn third_corner_matches_coordinates() {
         let [x, y] = third_corner(1.0, (16.0f64 + 4.0).sqrt(), (25.0f64 + 4.0).sqrt());
         assert!((x - 5.0).abs() < 1e-14 && (y - 2.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn formulas_are_scale_free() {
+        let (a, b, c) = (3.0, 4.0, 5.0);
+        for k in [-1000i32, -600, -251, 251, 600, 1000] {
+            let s = pow2(k);
+            let (x, y, z) = (a * s, b * s, c * s);
+            assert_eq!(tan_half_sq(x, y, z), tan_half_sq(a, b, c), "2^{k}");
+            assert_eq!(tan_half_sq_all([x, y, z]).0, tan_half_sq_all([a, b, c]).0);
+            assert!(is_triangle(x, y, z));
+            let want = 6.0 * s * s;
+            let got = area(x, y, z);
+            if want.is_finite() && want > f64::MIN_POSITIVE {
+                assert!((got - want).abs() <= 1e-15 * want, "2^{k}: {got} vs {want}");
+            }
+            let square = Quad {
+                ab: 2f64.sqrt() * s,
+                bc: s,
+                ca: s,
+                ad: s,
+                db: s,
+            };
+            let flipped = square.flipped_length();
+            assert!(
+                (flipped - 2f64.sqrt() * s).abs() <= 1e-15 * flipped,
+                "2^{k}"
+            );
+        }
+        // Coordinates scaled by 1e150: areas near 1e300 are finite.
+        assert!(area(3e150, 4e150, 5e150).is_finite());
+        assert!(area(3e-100, 4e-100, 5e-100) > 0.0);
     }
 }

@@ -125,6 +125,32 @@ pub enum IoError {
         /// What.
         message: String,
     },
+    /// The (decompressed) input is longer than the limit it is read with
+    /// ([`crate::ReadLimits::max_bytes`]); nothing beyond the limit was kept in memory.
+    #[error("{file}: input larger than the limit of {limit} bytes (decompressed)")]
+    InputTooLarge {
+        /// File name.
+        file: String,
+        /// The limit, in bytes.
+        limit: u64,
+    },
+    /// Memory for the input could not be reserved.
+    #[error("{file}: cannot reserve {bytes} bytes of memory for the input")]
+    OutOfMemory {
+        /// File name.
+        file: String,
+        /// The reservation that failed.
+        bytes: u64,
+    },
+    /// The input has no face: it is empty, not a mesh in this format, or binary data in a text
+    /// format (then `binary_at` is the offset of the first byte that no text file holds).
+    #[error("{file}: no faces{}", binary_at.map(|at| format!(" (binary data at byte {at}: not a text mesh file)")).unwrap_or_default())]
+    NoFaces {
+        /// File name.
+        file: String,
+        /// Offset of the first NUL or other binary control byte, if any.
+        binary_at: Option<u64>,
+    },
     /// The soup given to a writer is inconsistent (bad offsets, index out of
     /// range, face with fewer than 3 vertices, non-finite coordinate).
     #[error("cannot write invalid polygon soup: {message}")]
@@ -145,7 +171,10 @@ impl IoError {
             | IoError::IndexOutOfRange { file, .. }
             | IoError::NonFinite { file, .. }
             | IoError::FaceTooSmall { file, .. }
-            | IoError::TooLarge { file, .. } => Some(file),
+            | IoError::TooLarge { file, .. }
+            | IoError::InputTooLarge { file, .. }
+            | IoError::OutOfMemory { file, .. }
+            | IoError::NoFaces { file, .. } => Some(file),
             IoError::UnsupportedFormat { path } => Some(path),
             IoError::UnsupportedWrite { .. } | IoError::InvalidSoup { .. } => None,
         }

@@ -3,53 +3,241 @@
 
 use std::ffi::OsString;
 use std::fs::{self, File, OpenOptions};
-use std::io::{self, BufReader, Read, Seek, SeekFrom, Write};
+use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use flate2::Compression;
-use flate2::read::MultiGzDecoder;
+use flate2::bufread::GzDecoder;
 use flate2::write::GzEncoder;
 
 use crate::error::Ctx;
 use crate::{Format, IoError, PolygonSoup, WriteOptions, is_gzip_path};
 
-/// Reads a mesh file.
+/// Default [`ReadLimits::max_bytes`]: 1 GiB of (decompressed) input, about what a mesh of 25
+/// million faces takes as OBJ; the soup read from it takes at most about three times as much.
+pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 30;
+
+/// Bounds on what reading a file may hold in memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ReadLimits {
+    /// The most bytes an input may have after decompression. Reading stops with
+    /// [`IoError::InputTooLarge`] as soon as more arrive, so a gzip bomb or `/dev/zero` costs at
+    /// most this much memory; what a header or a gzip trailer claims is never trusted.
+    pub max_bytes: u64,
+}
+
+impl Default for ReadLimits {
+    fn default() -> Self {
+        ReadLimits {
+            max_bytes: DEFAULT_MAX_INPUT_BYTES,
+        }
+    }
+}
+
+/// Reads a mesh file within the default [`ReadLimits`].
 ///
 /// `path`: the file; its extension gives the format (`.obj`, `.off`, `.ply`,
 /// `.stl`, case-insensitive) and a trailing `.gz` means gzip-compressed,
-/// e.g. `bunny.off.gz`. Error messages name the path as given.
+/// e.g. `bunny.off.gz`. Error messages name the path as given (control
+/// characters escaped).
 pub fn read_path(path: &Path) -> Result<PolygonSoup, IoError> {
-    let name = path.display().to_string();
+    read_path_with(path, &ReadLimits::default())
+}
+
+/// [`read_path`] within `limits`.
+///
+/// # Errors
+/// As [`read_path`]; [`IoError::InputTooLarge`] beyond `limits.max_bytes`.
+pub fn read_path_with(path: &Path, limits: &ReadLimits) -> Result<PolygonSoup, IoError> {
+    let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
-    let ctx = Ctx { name: &name };
-    let bytes = load(path, is_gzip_path(path)).map_err(|e| ctx.io(e))?;
+    let bytes = load_path(path, limits)?;
     crate::read_bytes(&bytes, format, &name)
 }
 
-/// Reads the whole file, decompressing if `gz`.
-fn load(path: &Path, gz: bool) -> io::Result<Vec<u8>> {
-    let mut file = File::open(path)?;
+/// A path as error messages show it (control characters escaped).
+fn path_name(path: &Path) -> String {
+    surftopo_mesh::printable(&path.display().to_string()).into_owned()
+}
+
+/// The whole contents of a file within `limits`, decompressed when its name ends in `.gz`
+/// (every gzip member, then trailing zero padding is ignored, as `gzip -d` does).
+///
+/// # Errors
+/// [`IoError::Io`] (open, read, corrupt gzip), [`IoError::InputTooLarge`],
+/// [`IoError::OutOfMemory`].
+pub fn load_path(path: &Path, limits: &ReadLimits) -> Result<Vec<u8>, IoError> {
+    let name = path_name(path);
+    let ctx = Ctx { name: &name };
+    let mut file = File::open(path).map_err(|e| ctx.io(e))?;
     let len = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut bytes = Vec::new();
-    if gz {
-        // The gzip trailer holds the uncompressed size mod 2^32: a capacity
-        // hint, capped at 32 times the compressed size.
+    if is_gzip_path(path) {
+        // The gzip trailer holds the uncompressed size mod 2^32: a capacity hint only, capped
+        // at 32 times the compressed size and at the limit.
         if len >= 18 {
-            file.seek(SeekFrom::End(-4))?;
             let mut isize = [0u8; 4];
-            file.read_exact(&mut isize)?;
-            file.seek(SeekFrom::Start(0))?;
-            let hint = u64::from(u32::from_le_bytes(isize)).min(len.saturating_mul(32));
-            bytes.reserve(usize::try_from(hint).unwrap_or(0));
+            file.seek(SeekFrom::End(-4))
+                .and_then(|_| file.read_exact(&mut isize))
+                .and_then(|()| file.rewind())
+                .map_err(|e| ctx.io(e))?;
+            let hint = u64::from(u32::from_le_bytes(isize))
+                .min(len.saturating_mul(32))
+                .min(limits.max_bytes);
+            let _ = bytes.try_reserve_exact(usize::try_from(hint).unwrap_or(0));
         }
-        MultiGzDecoder::new(BufReader::with_capacity(1 << 16, file)).read_to_end(&mut bytes)?;
+        gunzip_into(BufReader::with_capacity(1 << 16, file), limits, &mut bytes)
     } else {
-        bytes.reserve(usize::try_from(len).unwrap_or(0));
-        file.read_to_end(&mut bytes)?;
+        if len > limits.max_bytes {
+            return Err(Load::TooLarge.into_error(ctx, limits));
+        }
+        let _ = bytes.try_reserve_exact(usize::try_from(len).unwrap_or(0));
+        read_limited(&mut file, limits.max_bytes, &mut bytes)
     }
+    .map_err(|e| e.into_error(ctx, limits))?;
     Ok(bytes)
+}
+
+/// Decompresses a whole gzip stream within `limits`: every member in turn, then trailing zero
+/// bytes (tape or block padding, which `gzip -d` accepts) are ignored; anything else after a
+/// member must be another member. Memory grows with the output actually produced, never with
+/// what the stream's header or trailer claims. `name` is the file name used in errors.
+///
+/// # Errors
+/// [`IoError::Io`] for a corrupt or truncated stream or non-zero trailing garbage,
+/// [`IoError::InputTooLarge`], [`IoError::OutOfMemory`].
+pub fn decompress_gzip(
+    reader: impl BufRead,
+    limits: &ReadLimits,
+    name: &str,
+) -> Result<Vec<u8>, IoError> {
+    let mut bytes = Vec::new();
+    gunzip_into(reader, limits, &mut bytes).map_err(|e| e.into_error(Ctx { name }, limits))?;
+    Ok(bytes)
+}
+
+/// Why loading stopped.
+enum Load {
+    Io(io::Error),
+    TooLarge,
+    OutOfMemory(u64),
+}
+
+impl From<io::Error> for Load {
+    fn from(e: io::Error) -> Self {
+        Load::Io(e)
+    }
+}
+
+impl Load {
+    fn into_error(self, ctx: Ctx<'_>, limits: &ReadLimits) -> IoError {
+        match self {
+            Load::Io(e) => ctx.io(e),
+            Load::TooLarge => IoError::InputTooLarge {
+                file: ctx.name.to_owned(),
+                limit: limits.max_bytes,
+            },
+            Load::OutOfMemory(bytes) => IoError::OutOfMemory {
+                file: ctx.name.to_owned(),
+                bytes,
+            },
+        }
+    }
+}
+
+fn gunzip_into(
+    mut input: impl BufRead,
+    limits: &ReadLimits,
+    out: &mut Vec<u8>,
+) -> Result<(), Load> {
+    loop {
+        read_limited(&mut GzDecoder::new(&mut input), limits.max_bytes, out)?;
+        let rest = input.fill_buf()?;
+        match rest.first() {
+            None => return Ok(()),
+            Some(0) => return skip_zero_padding(&mut input),
+            Some(_) => {} // another member
+        }
+    }
+}
+
+/// Consumes the rest of `input`, which must be zero bytes.
+fn skip_zero_padding(input: &mut impl BufRead) -> Result<(), Load> {
+    loop {
+        let rest = input.fill_buf()?;
+        if rest.is_empty() {
+            return Ok(());
+        }
+        if rest.iter().any(|&b| b != 0) {
+            return Err(Load::Io(io::Error::new(
+                io::ErrorKind::InvalidData,
+                "trailing garbage after the gzip data (only zero padding is allowed)",
+            )));
+        }
+        let n = rest.len();
+        input.consume(n);
+    }
+}
+
+/// Appends all of `reader` to `out`, growing it fallibly (`try_reserve`), and stops with
+/// [`Load::TooLarge`] once `out` would exceed `limit` bytes. Capacity reserved beforehand (the
+/// file's size) is filled first; a full buffer is grown (doubling) only once a probe read shows
+/// there is more, so an input of exactly the reserved size costs no extra memory.
+fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result<(), Load> {
+    const CHUNK: usize = 1 << 16;
+    let limit = usize::try_from(limit).unwrap_or(usize::MAX);
+    let mut len = out.len();
+    let result = loop {
+        if len == out.len() {
+            let reserved = out.capacity().min(limit.saturating_add(1));
+            if reserved > len {
+                out.resize(reserved, 0);
+            } else {
+                let mut probe = [0u8; 8192];
+                let n = match reader.read(&mut probe) {
+                    Ok(0) => break Ok(()),
+                    Ok(n) => n,
+                    Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                    Err(e) => break Err(Load::Io(e)),
+                };
+                // Double (at least one chunk), but never beyond limit + 1 bytes.
+                let room = len
+                    .max(CHUNK)
+                    .min(limit.saturating_add(1).saturating_sub(len))
+                    .max(n);
+                if out.try_reserve(room).is_err() {
+                    break Err(Load::OutOfMemory((len + room) as u64));
+                }
+                out.resize(len + room, 0);
+                out[len..len + n].copy_from_slice(&probe[..n]);
+                len += n;
+                if len > limit {
+                    break Err(Load::TooLarge);
+                }
+                continue;
+            }
+        }
+        match reader.read(&mut out[len..]) {
+            Ok(0) => break Ok(()),
+            Ok(n) => {
+                len += n;
+                if len > limit {
+                    break Err(Load::TooLarge);
+                }
+            }
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => break Err(Load::Io(e)),
+        }
+    };
+    out.truncate(len);
+    if result.is_err() {
+        // What was read is dropped now, not when the caller gets round to it.
+        *out = Vec::new();
+    }
+    result
 }
 
 /// Writes a mesh file atomically.
@@ -62,7 +250,7 @@ fn load(path: &Path, gz: bool) -> io::Result<Vec<u8>> {
 /// renamed over `path`; on any error the temporary file is removed and
 /// `path` is left as it was.
 pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Result<(), IoError> {
-    let name = path.display().to_string();
+    let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
     crate::check_writable(soup, format)?;
@@ -82,13 +270,42 @@ pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Re
 /// Counter making temporary names unique within the process.
 static TMP_COUNTER: AtomicU64 = AtomicU64::new(0);
 
-/// Temporary sibling of `path`: `.name.tmp-<pid>-<n>`.
+/// The temporary files [`atomic_write`] has open, for [`remove_temporaries_then`].
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The most bytes of the target's name kept in a temporary name: with the dot and the
+/// `.tmp-<pid>-<n>` suffix (at most 46 bytes) the name stays within the usual 255-byte limit
+/// of a file name whenever the target's own name is legal.
+const TMP_NAME_PREFIX: usize = 200;
+
+/// Temporary sibling of `path`: `.name.tmp-<pid>-<n>`, `name` cut to its first 200 bytes (at a
+/// character boundary) so that the temporary name is legal whenever the target's is.
 fn temp_path(path: &Path) -> io::Result<PathBuf> {
     let file_name = path
         .file_name()
         .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "path has no file name"))?;
     let mut tmp = OsString::from(".");
-    tmp.push(file_name);
+    match file_name.to_str() {
+        Some(name) if name.len() > TMP_NAME_PREFIX => {
+            let cut = (0..=TMP_NAME_PREFIX)
+                .rev()
+                .find(|&i| name.is_char_boundary(i))
+                .unwrap_or(0);
+            tmp.push(&name[..cut]);
+        }
+        Some(_) => tmp.push(file_name),
+        // Not UTF-8: a lossy prefix is as good a temporary name.
+        None => tmp.push(
+            file_name
+                .to_string_lossy()
+                .chars()
+                .scan(0usize, |bytes, c| {
+                    *bytes += c.len_utf8();
+                    (*bytes <= TMP_NAME_PREFIX).then_some(c)
+                })
+                .collect::<String>(),
+        ),
+    }
     tmp.push(format!(
         ".tmp-{}-{}",
         std::process::id(),
@@ -97,11 +314,36 @@ fn temp_path(path: &Path) -> io::Result<PathBuf> {
     Ok(path.with_file_name(tmp))
 }
 
+fn temporaries() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// Removes every temporary file of an [`atomic_write`] still in progress, then runs `last`
+/// (typically `std::process::exit`) while no write can rename its temporary file or start a new
+/// one. For signal handlers (SIGINT, SIGTERM, SIGHUP): an interrupted write leaves neither a
+/// temporary file nor a half-written target.
+pub fn remove_temporaries_then<T>(last: impl FnOnce() -> T) -> T {
+    let mut open = temporaries();
+    for tmp in open.drain(..) {
+        let _ = fs::remove_file(tmp);
+    }
+    last()
+}
+
 /// Runs `fill` on a new temporary file next to `path`, syncs it and renames
-/// it over `path`; removes the temporary file on any error.
+/// it over `path`; removes the temporary file on any error. The temporary file is registered
+/// for [`remove_temporaries_then`] while it exists.
 pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) -> io::Result<()> {
     let tmp = temp_path(path)?;
-    let file = OpenOptions::new().write(true).create_new(true).open(&tmp)?;
+    let file = {
+        let mut open = temporaries();
+        let file = OpenOptions::new().write(true).create_new(true).open(&tmp)?;
+        open.push(tmp.clone());
+        file
+    };
+    let unregister = |open: &mut Vec<PathBuf>| open.retain(|p| p != &tmp);
     let result = (|| {
         if let Ok(meta) = fs::metadata(path) {
             // Keep the permissions of the file being replaced.
@@ -111,10 +353,15 @@ pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) ->
         file.flush()?;
         file.sync_all()?;
         drop(file);
-        fs::rename(&tmp, path)
+        let mut open = temporaries();
+        fs::rename(&tmp, path)?;
+        unregister(&mut open);
+        Ok(())
     })();
     if let Err(e) = result {
+        let mut open = temporaries();
         let _ = fs::remove_file(&tmp);
+        unregister(&mut open);
         return Err(e);
     }
     // Make the rename durable; best effort.
@@ -168,5 +415,66 @@ mod tests {
         .unwrap();
         assert_eq!(fs::read(&target).unwrap(), b"new");
         assert_eq!(entries(dir.path()), ["m.obj"]);
+    }
+
+    #[test]
+    fn temporary_names_stay_within_the_file_name_limit() {
+        let dir = tempfile::tempdir().unwrap();
+        for len in [5usize, 200, 201, 241, 250, 255] {
+            let stem = "é".repeat((len - 4) / 2) + &"x".repeat((len - 4) % 2);
+            let name = format!("{stem}.obj");
+            assert_eq!(name.len(), len);
+            let target = dir.path().join(&name);
+            let tmp = temp_path(&target).unwrap();
+            assert!(tmp.file_name().unwrap().len() <= 255, "{len}");
+            atomic_write(&target, |mut f| {
+                f.write_all(b"x")?;
+                Ok(f)
+            })
+            .unwrap();
+            assert_eq!(fs::read(&target).unwrap(), b"x");
+            fs::remove_file(&target).unwrap();
+        }
+        assert!(entries(dir.path()).is_empty());
+    }
+
+    fn gz(data: &[u8]) -> Vec<u8> {
+        let mut e = GzEncoder::new(Vec::new(), Compression::fast());
+        e.write_all(data).unwrap();
+        e.finish().unwrap()
+    }
+
+    #[test]
+    fn gzip_members_padding_and_limits() {
+        let limits = ReadLimits { max_bytes: 1000 };
+        let two = [gz(b"ab"), gz(b"cd"), vec![0; 700]].concat();
+        assert_eq!(decompress_gzip(&two[..], &limits, "x").unwrap(), b"abcd");
+        let junk = [gz(b"ab"), b"\0\0x".to_vec()].concat();
+        let e = decompress_gzip(&junk[..], &limits, "x").unwrap_err();
+        assert!(e.to_string().contains("trailing garbage"), "{e}");
+        // A bomb stops at the limit, whatever its trailer claims.
+        let bomb = gz(&vec![0u8; 1 << 20]);
+        let e = decompress_gzip(&bomb[..], &limits, "bomb.gz").unwrap_err();
+        assert!(
+            matches!(e, IoError::InputTooLarge { limit: 1000, .. }),
+            "{e}"
+        );
+        assert!(decompress_gzip(&b""[..], &limits, "x").is_err());
+        let exact = gz(&[7u8; 1000]);
+        assert_eq!(
+            decompress_gzip(&exact[..], &limits, "x").unwrap().len(),
+            1000
+        );
+    }
+
+    #[test]
+    fn a_file_is_read_into_exactly_its_size() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("m.obj");
+        fs::write(&path, vec![b'#'; 300_001]).unwrap();
+        let bytes = load_path(&path, &ReadLimits::default()).unwrap();
+        assert_eq!((bytes.len(), bytes.capacity()), (300_001, 300_001));
+        let e = load_path(&path, &ReadLimits { max_bytes: 300_000 }).unwrap_err();
+        assert!(matches!(e, IoError::InputTooLarge { .. }), "{e}");
     }
 }

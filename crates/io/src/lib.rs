@@ -3,8 +3,12 @@
 //! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
 //! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY.
 //! Paths ending in `.gz` are read and written through gzip. Errors name the
-//! file and the line (text) or byte offset (binary); no input makes a reader
-//! panic, loop forever or allocate beyond what the input could hold.
+//! file and the line (text) or byte offset (binary), with control characters
+//! of quoted input escaped; no input makes a reader panic, loop forever or
+//! allocate beyond what the input could hold. Files are read within
+//! [`ReadLimits`] (decompressed bytes), growing buffers fallibly, so a gzip
+//! bomb or an endless file is a typed error, never an abort; an input
+//! without faces is [`IoError::NoFaces`].
 //!
 //! ```
 //! use surftopo_io::{Format, PolygonSoup, WriteOptions};
@@ -34,7 +38,10 @@ use std::io::{self, Read, Write};
 
 pub use error::{IoError, Location};
 pub use format::{Format, is_gzip_path};
-pub use fs::{atomic_write, read_path, write_path};
+pub use fs::{
+    DEFAULT_MAX_INPUT_BYTES, ReadLimits, atomic_write, decompress_gzip, load_path, read_path,
+    read_path_with, remove_temporaries_then, write_path,
+};
 pub use soup::{NotTriangles, PolygonSoup};
 
 use error::Ctx;
@@ -88,27 +95,53 @@ impl WriteOptions {
 ///
 /// `bytes`: the whole file; `format`: how to parse it; `name`: the file name
 /// used in error messages. Errors carry the 1-based line (text) or byte
-/// offset (binary) of the problem.
+/// offset (binary) of the problem; an input without a single face (empty,
+/// another format, binary data in a text format) is [`IoError::NoFaces`].
 pub fn read_bytes(bytes: &[u8], format: Format, name: &str) -> Result<PolygonSoup, IoError> {
     let ctx = Ctx { name };
-    match format {
+    let soup = match format {
         Format::Obj => obj::read(bytes, ctx),
         Format::Off => off::read(bytes, ctx),
         Format::Ply => ply::read(bytes, ctx),
         Format::Stl => stl::read(bytes, ctx),
+    }?;
+    if soup.face_count() == 0 {
+        let text = matches!(format, Format::Obj | Format::Off);
+        return Err(IoError::NoFaces {
+            file: name.to_owned(),
+            binary_at: text.then(|| first_binary_byte(bytes)).flatten(),
+        });
     }
+    Ok(soup)
+}
+
+/// Offset of the first byte no text file holds: NUL or a C0 control other than tab, newline,
+/// vertical tab, form feed and carriage return.
+fn first_binary_byte(bytes: &[u8]) -> Option<u64> {
+    bytes
+        .iter()
+        .position(|&b| b < 0x20 && !matches!(b, b'\t' | b'\n' | 0x0b | 0x0c | b'\r'))
+        .map(|i| i as u64)
 }
 
 /// Reads a whole (uncompressed) stream and parses it.
 ///
 /// `reader`: the file's bytes (read to the end; any `BufRead` or `Read`,
 /// e.g. `&[u8]` or a `File`); `format`: how to parse it; `name`: the file
-/// name used in error messages.
-pub fn read(mut reader: impl Read, format: Format, name: &str) -> Result<PolygonSoup, IoError> {
+/// name used in error messages. At most [`DEFAULT_MAX_INPUT_BYTES`] are read
+/// ([`IoError::InputTooLarge`] beyond).
+pub fn read(reader: impl Read, format: Format, name: &str) -> Result<PolygonSoup, IoError> {
     let mut bytes = Vec::new();
     reader
+        .take(DEFAULT_MAX_INPUT_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| Ctx { name }.io(e))?;
+    if bytes.len() as u64 > DEFAULT_MAX_INPUT_BYTES {
+        return Err(IoError::InputTooLarge {
+            file: name.to_owned(),
+            limit: DEFAULT_MAX_INPUT_BYTES,
+        });
+    }
     read_bytes(&bytes, format, name)
 }
 

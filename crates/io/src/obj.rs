@@ -14,10 +14,10 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
     // Typical meshes spend 60-80 bytes per vertex (one `v` line, two `f`
     // lines); reserving more is cheap (untouched pages cost nothing).
     let est = buf.len() / 48;
-    soup.positions.reserve(est);
-    soup.face_indices.reserve(est * 6);
-    soup.face_offsets.reserve(est * 2);
-    soup.face_lines.reserve(est * 2);
+    let _ = soup.positions.try_reserve(est);
+    let _ = soup.face_indices.try_reserve(est * 6);
+    let _ = soup.face_offsets.try_reserve(est * 2);
+    let _ = soup.face_lines.try_reserve(est * 2);
     // Largest 0-based positive index seen; positive indices may refer to
     // vertices defined later, so they are checked once at the end.
     let mut max_index: u32 = 0;

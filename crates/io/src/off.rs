@@ -31,11 +31,11 @@ fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> 
     let remaining = buf.len().saturating_sub(lx.pos);
     let mut soup = PolygonSoup::new();
     // Cap reservations by what the rest of the input could hold.
-    soup.positions.reserve(nv.min(remaining / 6));
+    let _ = soup.positions.try_reserve(nv.min(remaining / 6));
     let nf_cap = nf.min(remaining / 8);
-    soup.face_offsets.reserve(nf_cap);
-    soup.face_lines.reserve(nf_cap);
-    soup.face_indices.reserve(nf_cap * 3);
+    let _ = soup.face_offsets.try_reserve(nf_cap);
+    let _ = soup.face_lines.try_reserve(nf_cap);
+    let _ = soup.face_indices.try_reserve(nf_cap * 3);
 
     for i in 0..nv {
         let mut p = [0.0; 3];

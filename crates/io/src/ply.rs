@@ -446,8 +446,8 @@ fn read_binary<const BE: bool>(
             let cap = usize::try_from(el.count)
                 .unwrap_or(usize::MAX)
                 .min(remaining / (count.size() + 3 * item.size()));
-            soup.face_offsets.reserve(cap);
-            soup.face_indices.reserve(cap.saturating_mul(3));
+            let _ = soup.face_offsets.try_reserve(cap);
+            let _ = soup.face_indices.try_reserve(cap.saturating_mul(3));
             pos = faces_single_list::<BE>(buf, pos, el, count, item, nv, &mut soup, ctx)?;
             continue;
         }
@@ -461,10 +461,12 @@ fn read_binary<const BE: bool>(
             .unwrap_or(usize::MAX)
             .min(remaining / min_size);
         match role {
-            Role::Vertex(_) => soup.positions.reserve(cap),
+            Role::Vertex(_) => {
+                let _ = soup.positions.try_reserve(cap);
+            }
             Role::Faces(_) => {
-                soup.face_offsets.reserve(cap);
-                soup.face_indices.reserve(cap.saturating_mul(3));
+                let _ = soup.face_offsets.try_reserve(cap);
+                let _ = soup.face_indices.try_reserve(cap.saturating_mul(3));
             }
             _ => {}
         }
@@ -517,7 +519,7 @@ fn read_binary<const BE: bool>(
                             }
                             Role::Strips(k) if k == pi => {
                                 strip.clear();
-                                strip.reserve(n as usize);
+                                let _ = strip.try_reserve(n as usize);
                                 for (j, b) in items.chunks_exact(isz).enumerate() {
                                     let v = load_i64::<BE>(item, b);
                                     if v != -1 {
@@ -572,7 +574,7 @@ fn read_vertices_fixed<const BE: bool>(
             types[axis] = t;
         }
     }
-    soup.positions.reserve(data.len() / stride);
+    let _ = soup.positions.try_reserve(data.len() / stride);
     // Monomorphized loops for the usual all-float / all-double layouts.
     match types {
         [Scalar::F32, Scalar::F32, Scalar::F32] => {
@@ -739,12 +741,14 @@ fn read_ascii(
         let remaining = buf.len().saturating_sub(lx.pos);
         let cap = usize::try_from(el.count).unwrap_or(usize::MAX);
         match role {
-            Role::Vertex(_) => soup.positions.reserve(cap.min(remaining / 6)),
+            Role::Vertex(_) => {
+                let _ = soup.positions.try_reserve(cap.min(remaining / 6));
+            }
             Role::Faces(_) => {
                 let cap = cap.min(remaining / 8);
-                soup.face_offsets.reserve(cap);
-                soup.face_lines.reserve(cap);
-                soup.face_indices.reserve(cap * 3);
+                let _ = soup.face_offsets.try_reserve(cap);
+                let _ = soup.face_lines.try_reserve(cap);
+                let _ = soup.face_indices.try_reserve(cap * 3);
             }
             _ => {}
         }

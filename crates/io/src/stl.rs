@@ -9,7 +9,8 @@ const HEADER: usize = 84;
 const RECORD: usize = 50;
 
 /// Reads an STL file held in memory: binary when `84 + 50 n` equals the
-/// length, ascii when it starts with `solid`, binary otherwise.
+/// length, ascii when it starts with `solid` (unless that reading finds no
+/// facet or fails and the bytes are not text), binary otherwise.
 pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
     let n = buf
         .get(80..84)
@@ -22,11 +23,13 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
     lx.skip_space(None);
     if lx.peek_token().eq_ignore_ascii_case(b"solid") {
         match read_ascii(buf, ctx) {
-            Ok(soup) => Ok(soup),
+            Ok(soup) if soup.face_count() > 0 || !looks_binary(buf) => Ok(soup),
             // A binary file whose header starts with "solid" (and is truncated
-            // or has trailing bytes): read it as binary if it is not text.
-            Err(_) if looks_binary(buf) => read_binary(buf, ctx),
-            Err(e) => Err(e),
+            // or has trailing bytes): read it as binary if it is not text. Its
+            // "name" line can swallow the whole body when it holds no newline,
+            // leaving an ascii reading without facets.
+            Ok(_) | Err(_) if looks_binary(buf) => read_binary(buf, ctx),
+            other => other,
         }
     } else {
         read_binary(buf, ctx)
@@ -56,9 +59,9 @@ fn read_binary(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
         return Err(ctx.too_large(Location::Offset(80), format!("{n} triangles")));
     }
     let mut soup = PolygonSoup::new();
-    soup.positions.reserve(3 * n);
-    soup.face_indices.reserve(3 * n);
-    soup.face_offsets.reserve(n);
+    let _ = soup.positions.try_reserve(3 * n);
+    let _ = soup.face_indices.try_reserve(3 * n);
+    let _ = soup.face_offsets.try_reserve(n);
     let data = &buf[HEADER..HEADER + n * RECORD];
     for (t, rec) in data.chunks_exact(RECORD).enumerate() {
         for k in 0..3 {

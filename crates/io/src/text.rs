@@ -318,16 +318,18 @@ pub(crate) fn parse_i64_prefix(s: &[u8]) -> Option<(i64, usize)> {
     }
 }
 
-/// A token for an error message: lossy UTF-8, at most 40 characters.
+/// A token for an error message: lossy UTF-8, at most 40 characters, control characters escaped
+/// ([`surftopo_mesh::printable`]).
 pub(crate) fn show(tok: &[u8]) -> String {
     let s = String::from_utf8_lossy(tok);
-    if s.chars().count() > 40 {
+    let s = if s.chars().count() > 40 {
         let mut t: String = s.chars().take(40).collect();
         t.push('…');
-        t
+        std::borrow::Cow::Owned(t)
     } else {
-        s.into_owned()
-    }
+        s
+    };
+    surftopo_mesh::printable(&s).into_owned()
 }
 
 #[cfg(test)]

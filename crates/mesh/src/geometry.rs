@@ -26,11 +26,22 @@ pub fn check_finite(positions: &[Point3]) -> Result<(), BuildError> {
     Ok(())
 }
 
-/// Euclidean distance.
+/// Euclidean distance. When the sum of squares overflows or falls below the normal range (points
+/// beyond about 1e154 or closer than about 1e-154), the differences are scaled by their largest
+/// magnitude first, so the distance is finite and non-zero whenever it is representable.
 #[inline]
 pub fn distance(p: Point3, q: Point3) -> f64 {
     let d = [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
-    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+    let squares = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if squares.is_normal() || squares == 0.0 && d == [0.0; 3] {
+        return squares.sqrt();
+    }
+    let m = d[0].abs().max(d[1].abs()).max(d[2].abs());
+    if !m.is_finite() {
+        return squares.sqrt();
+    }
+    let [x, y, z] = d.map(|c| c / m);
+    m * (x * x + y * y + z * z).sqrt()
 }
 
 /// Edge lengths from vertex positions, indexed by edge id (0 for removed edges).

@@ -18,6 +18,7 @@ pub mod geometry;
 mod gluing;
 mod ids;
 mod invariants;
+mod printable;
 mod topology;
 
 pub use build::{BuildReport, Inspection, MAX_LISTED_PROBLEMS, build, build_topology, inspect};
@@ -27,4 +28,5 @@ pub use error::{BuildError, EditError, InvariantError};
 pub use geometry::{Point3, reorder_morton};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
+pub use printable::printable;
 pub use topology::{Outgoing, SurfaceMesh};

@@ -9,7 +9,7 @@ pub fn run(input: &Path, output: &Path, weld: bool) -> anyhow::Result<()> {
     crate::output::write_soup(output, &soup)?;
     eprintln!(
         "wrote {} ({} vertices, {} faces{})",
-        output.display(),
+        crate::failure::shown(output),
         soup.positions.len(),
         soup.face_count(),
         if welded > 0 {

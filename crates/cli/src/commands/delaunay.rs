@@ -6,8 +6,8 @@ use crate::output::write_file;
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
-    IntrinsicTriangulation, PortalgonDoc, TriangleStyle, cotan_laplacian, delaunay_tessellation,
-    delaunay_with_stats, lumped_mass, write_matrix_market,
+    IntrinsicTriangulation, PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian,
+    delaunay_tessellation, delaunay_with_stats, lumped_mass, write_matrix_market,
 };
 
 /// Options of `delaunay`.
@@ -41,23 +41,54 @@ pub struct Options {
     pub json: bool,
 }
 
-/// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation.
+/// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation, within the limits
+/// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
     let is_json = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    let name = crate::failure::shown(path);
     if is_json {
-        let file =
-            std::fs::File::open(path).map_err(|e| invalid(format!("{}: {e}", path.display())))?;
-        return IntrinsicTriangulation::read_json(
-            std::io::BufReader::new(file),
-            DEFAULT_LENGTH_TOLERANCE,
-        )
-        .map_err(|e| invalid(format!("{}: {e}", path.display())));
+        let bytes = surftopo_io::load_path(path, &crate::limits::read_limits())
+            .map_err(crate::input::explain_limit)?;
+        let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
+        drop(bytes);
+        crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
+        return doc
+            .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
+            .map_err(|e| invalid(format!("{name}: {e}")));
     }
     let loaded = crate::input::read_surface(path, weld)?;
     IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
-        .map_err(|e| invalid(format!("{}: {e}", path.display())))
+        .map_err(|e| invalid(format!("{name}: {e}")))
+}
+
+/// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
+/// whose diagonal holds areas) a diagonal entry that is not a positive normal number: the areas
+/// are beyond double precision's range (they overflow or underflow), and writing them would give
+/// `inf` or a silently zero matrix. Lengths themselves are handled scale-free
+/// (`surftopo_intrinsic::trig`; cotan weights do not depend on the scale), so this happens only
+/// when the results are not representable. (A Laplacian may have a zero diagonal: a one-vertex
+/// torus.)
+fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> anyhow::Result<()> {
+    if let Some((i, j, v)) = matrix.triplets().find(|t| !t.2.is_finite()) {
+        return Err(invalid(format!(
+            "{what}: entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
+            i + 1,
+            j + 1
+        )));
+    }
+    let small = (0..matrix.n)
+        .map(|i| (i, matrix.get(i, i)))
+        .find(|&(_, v)| v.is_nan() || v < f64::MIN_POSITIVE);
+    if let Some((i, v)) = small.filter(|_| positive_diagonal) {
+        return Err(invalid(format!(
+            "{what}: diagonal entry {} is {v:e}, not a positive normal number: the triangles are \
+             too small for double precision (scale the input)",
+            i + 1
+        )));
+    }
+    Ok(())
 }
 
 /// Runs `delaunay`.
@@ -74,7 +105,10 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     })
     .map_err(|e| match e {
         DelaunayError::NumericalBreakdown { .. } => anyhow::Error::new(e),
-        other => invalid(format!("{}: {other}", options.input.display())),
+        other => invalid(format!(
+            "{}: {other}",
+            crate::failure::shown(&options.input)
+        )),
     })?;
     write_file(&options.output, |w| {
         Ok(tri.write_json(w, TriangleStyle::Lengths)?)
@@ -87,22 +121,22 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     }
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
-        write_file(path, |w| {
-            Ok(write_matrix_market(w, &cotan_laplacian(&tri), comment)?)
-        })?;
+        let laplacian = cotan_laplacian(&tri);
+        check_matrix(&laplacian, "the cotan Laplacian", false)?;
+        write_file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
-        write_file(path, |w| {
-            Ok(write_matrix_market(w, &lumped_mass(&tri), comment)?)
-        })?;
+        let mass = lumped_mass(&tri);
+        check_matrix(&mass, "the mass matrix", true)?;
+        write_file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
     }
     if options.json {
         crate::output::print_json(&stats)?;
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s\n",
-            options.output.display(),
+            crate::failure::shown(&options.output),
             stats.vertices,
             stats.edges,
             stats.faces,

@@ -14,7 +14,7 @@ use surftopo_intrinsic::{
 /// Generates a surface (a genus-2 brick with irregular connectivity), runs every capability on it,
 /// writes the results into `out_dir` and prints a summary.
 pub fn run(out_dir: &Path) -> anyhow::Result<()> {
-    std::fs::create_dir_all(out_dir)?;
+    std::fs::create_dir_all(out_dir).map_err(|e| crate::failure::unwritable(out_dir, &e))?;
     let mut summary = String::new();
     let kind = Kind::Genus { genus: 2, size: 2 };
     let modifiers = Modifiers {
@@ -30,11 +30,15 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     let input = out_dir.join("input.obj");
     crate::output::write_surface(&input, &surface)?;
     let mesh = &surface.mesh;
-    writeln!(summary, "surftopo demo: results in {}", out_dir.display())?;
+    writeln!(
+        summary,
+        "surftopo demo: results in {}",
+        crate::failure::shown(out_dir)
+    )?;
     writeln!(
         summary,
         "  input         {}: genus-2 brick, subdivided, 2000 random flips: {} vertices, {} edges, {} faces, genus {}",
-        input.display(),
+        crate::failure::shown(&input),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),
@@ -47,7 +51,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     writeln!(
         summary,
         "  irreducible   {}: {} vertices, {} edges, {} faces, genus {} (RS: {} contractions, {} link tests, {} edges tested twice, {:.4} s)",
-        irreducible_path.display(),
+        crate::failure::shown(&irreducible_path),
         report.output.vertices,
         report.output.edges,
         report.output.faces,
@@ -67,7 +71,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         writeln!(
             summary,
             "  quad ({label:<3})    {}: {} quads; initial pairing {:.1}% ({} unpaired), {} flipped edges, {:.4} s in all",
-            path.display(),
+            crate::failure::shown(&path),
             result.quads.len(),
             stats.paired_percent,
             stats.unpaired,
@@ -94,12 +98,12 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
     writeln!(
         summary,
         "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {:.3} s; Laplacian in {}",
-        delaunay.display(),
+        crate::failure::shown(&delaunay),
         stats.flips,
         stats.non_delaunay_edges,
         stats.multi_edges,
         stats.seconds,
-        laplacian.display()
+        crate::failure::shown(&laplacian)
     )?;
     emit(&summary)
 }

@@ -31,7 +31,7 @@ pub enum Kind {
         /// The genus.
         #[arg(long, default_value_t = 2)]
         genus: u32,
-        /// Resolution: lattice steps per pit side (triangles grow with its square).
+        /// Resolution: lattice steps per pit side, at least 1 (triangles grow with its square).
         #[arg(long, default_value_t = 2)]
         size: u32,
     },
@@ -76,7 +76,7 @@ pub enum Kind {
         /// A mesh or portalgon JSON file.
         #[arg(long)]
         input: PathBuf,
-        /// Number of flips.
+        /// Number of flips (at most 100 per edge, or 1000000).
         #[arg(long, default_value_t = 1000)]
         count: u64,
     },
@@ -103,7 +103,8 @@ pub struct Modifiers {
     /// applied after subdivision.
     #[arg(long, global = true)]
     pub simplify: Option<usize>,
-    /// Random simplicial edge flips applied after simplification (irregular connectivity).
+    /// Random simplicial edge flips applied after simplification (irregular connectivity); at
+    /// most 100 per edge, or 1000000.
     #[arg(long, default_value_t = 0, global = true)]
     pub flips: usize,
     /// Random vertex splits applied after the flips.
@@ -123,9 +124,10 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
     let invalid = |e: &dyn std::fmt::Display| crate::failure::invalid(format!("{e}"));
     Ok(match kind {
         Kind::FlatTorus { x, m } => {
-            check_size(2 * u64::from(*m).pow(2))?;
+            check_size(&format!("flat-torus --m {m}"), 2 * u64::from(*m).pow(2))?;
             Generated::Intrinsic(
-                intrinsic::generators::flat_torus(*x, *m).map_err(|e| invalid(&e))?,
+                intrinsic::generators::flat_torus(*x, *m)
+                    .map_err(|e| invalid(&format!("flat-torus: {e}")))?,
             )
         }
         Kind::ShearedTorus { m, n, shear } => {
@@ -134,11 +136,15 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
                     "sheared-torus: m and n must be at least 3",
                 ));
             }
-            check_size(2 * u64::from(*m) * u64::from(*n))?;
+            check_size(
+                &format!("sheared-torus --m {m} --n {n}"),
+                2 * u64::from(*m) * u64::from(*n),
+            )?;
             Generated::Surface(generators::sheared_torus(*m, *n, *shear))
         }
         Kind::IntrinsicFlips { input, count } => {
             let mut tri = crate::commands::delaunay::load_intrinsic(input, false)?;
+            check_flips("intrinsic-flips --count", *count, tri.mesh().edge_count())?;
             intrinsic::generators::random_flips(&mut tri, *count, seed);
             Generated::Intrinsic(tri)
         }
@@ -164,21 +170,34 @@ pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
                     "icosphere: at most 10 subdivisions (21M triangles)",
                 ));
             }
+            check_size(
+                &format!("icosphere --subdivisions {subdivisions}"),
+                20 * 4u64.pow(subdivisions),
+            )?;
             generators::icosphere(subdivisions)
         }
         Kind::Torus { m, n } => {
             if m < 3 || n < 3 {
                 return Err(crate::failure::invalid("torus: m and n must be at least 3"));
             }
-            check_size(2 * u64::from(m) * u64::from(n))?;
+            check_size(
+                &format!("torus --m {m} --n {n}"),
+                2 * u64::from(m) * u64::from(n),
+            )?;
             generators::torus(m, n)
         }
         Kind::Genus { genus, size } => {
+            if size == 0 {
+                return Err(crate::failure::invalid("genus: --size must be at least 1"));
+            }
             // F = 4 W^2 + 16 W s + 12 g s^2 with W = (2k + 1) s, k = ceil(sqrt(g)) (see genus_surface).
-            let (g, s) = (u64::from(genus), u64::from(size.max(1)));
+            let (g, s) = (u64::from(genus), u64::from(size));
             let k = g.isqrt() + u64::from(g.isqrt().pow(2) < g);
             let w = (2 * k + 1) * s;
-            check_size(4 * w * w + 16 * w * s + 12 * g * s * s)?;
+            check_size(
+                &format!("genus --genus {genus} --size {size}"),
+                4 * w * w + 16 * w * s + 12 * g * s * s,
+            )?;
             generators::genus_surface(genus, size)
         }
         Kind::CavityBox {
@@ -186,19 +205,39 @@ pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
             holes,
             triangles,
         } => {
-            check_size(triangles)?;
-            check_size(generators::CavityBox::fit(cavities, holes, triangles).triangle_count())?;
+            let source =
+                format!("cavity-box --cavities {cavities} --holes {holes} --triangles {triangles}");
+            check_size(&source, triangles)?;
+            check_size(
+                &source,
+                generators::CavityBox::fit(cavities, holes, triangles).triangle_count(),
+            )?;
             generators::cavity_box(cavities, holes, triangles)
         }
     })
 }
 
-/// Refuses sizes beyond what `u32` ids (and this machine) can hold.
-fn check_size(triangles: u64) -> anyhow::Result<()> {
-    const MAX_TRIANGLES: u64 = 200_000_000;
-    if triangles > MAX_TRIANGLES {
+/// Refuses a surface of `triangles` triangles asked for by `source` (the options) beyond
+/// `--max-elements`, before allocating it.
+fn check_size(source: &str, triangles: u64) -> anyhow::Result<()> {
+    crate::limits::check_elements(source, triangles, "triangles")
+}
+
+/// The most random flips per edge `--flips` and `intrinsic-flips --count` accept beyond
+/// [`MIN_FLIP_CAP`]: far more than random flips need to mix, and a bound on the time they take.
+pub const MAX_FLIPS_PER_EDGE: u64 = 100;
+
+/// Flips always allowed, whatever the mesh size (a second's work).
+pub const MIN_FLIP_CAP: u64 = 1_000_000;
+
+/// Refuses `count` random flips of a mesh with `edges` edges beyond
+/// `max(MAX_FLIPS_PER_EDGE · edges, MIN_FLIP_CAP)` (the flip loops would otherwise run for days).
+fn check_flips(option: &str, count: u64, edges: usize) -> anyhow::Result<()> {
+    let max = (MAX_FLIPS_PER_EDGE * edges as u64).max(MIN_FLIP_CAP);
+    if count > max {
         return Err(crate::failure::invalid(format!(
-            "about {triangles} triangles asked for; at most {MAX_TRIANGLES} are supported"
+            "{option} {count}: at most {MAX_FLIPS_PER_EDGE} flips per edge (or {MIN_FLIP_CAP}) are \
+             made: {max} for this mesh's {edges} edges"
         )));
     }
     Ok(())
@@ -210,17 +249,21 @@ pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Sur
     if modifiers.subdivide > 0 {
         let grown = (surface.mesh.face_count() as u64)
             .saturating_mul(4u64.saturating_pow(modifiers.subdivide));
-        check_size(grown)?;
+        check_size(&format!("--subdivide {}", modifiers.subdivide), grown)?;
         surface = generators::subdivide_midpoint(&surface, modifiers.subdivide);
     }
     if let Some(target) = modifiers.simplify {
         surface = generators::simplify(&surface, target, modifiers.seed);
     }
     if modifiers.flips > 0 {
+        check_flips("--flips", modifiers.flips as u64, surface.mesh.edge_count())?;
         surface = generators::random_flips(&surface, modifiers.flips, modifiers.seed);
     }
     if modifiers.splits > 0 {
-        check_size(surface.mesh.face_count() as u64 + 2 * modifiers.splits as u64)?;
+        check_size(
+            &format!("--splits {}", modifiers.splits),
+            surface.mesh.face_count() as u64 + 2 * modifiers.splits as u64,
+        )?;
         surface = generators::random_vertex_splits(&surface, modifiers.splits, modifiers.seed);
     }
     if modifiers.shuffle_faces {
@@ -253,6 +296,7 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
                 ));
             }
             if modifiers.flips > 0 {
+                check_flips("--flips", modifiers.flips as u64, tri.mesh().edge_count())?;
                 intrinsic::generators::random_flips(
                     &mut tri,
                     modifiers.flips as u64,
@@ -265,7 +309,7 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
             if !is_json {
                 return Err(crate::failure::invalid(format!(
                     "{}: an intrinsic triangulation is written as portalgon JSON (.json)",
-                    output.display()
+                    crate::failure::shown(output)
                 )));
             }
             crate::output::write_file(output, |w| {
@@ -276,7 +320,7 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
     };
     eprintln!(
         "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}",
-        output.display(),
+        crate::failure::shown(output),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),

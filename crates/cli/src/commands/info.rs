@@ -104,7 +104,7 @@ pub fn run(path: &Path, json: bool, weld: bool, strict: bool) -> anyhow::Result<
     if strict && !valid {
         return Err(invalid(format!(
             "{}: {} problem(s) found",
-            path.display(),
+            crate::failure::shown(path),
             info.problem_count
         )));
     }
@@ -115,7 +115,7 @@ fn text(path: &Path, info: &Info) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let yes = |b: bool| if b { "yes" } else { "no" };
-    writeln!(s, "{}", path.display()).ok();
+    writeln!(s, "{}", crate::failure::shown(path)).ok();
     writeln!(s, "  vertices              {}", info.vertices).ok();
     writeln!(s, "  edges                 {}", info.edges).ok();
     writeln!(s, "  faces                 {}", info.faces).ok();

@@ -110,14 +110,14 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
     let (irreducible, report) = crate::progress::step("contracting", || {
         reduce_surface(&loaded.surface, name, seed)
     })
-    .map_err(|e| e.context(input.display().to_string()))?;
+    .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_surface(output, &irreducible)?;
     if job.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {:.3} s ({})\n",
-            output.display(),
+            crate::failure::shown(output),
             report.output.vertices,
             report.output.edges,
             report.output.faces,

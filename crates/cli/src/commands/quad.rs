@@ -63,7 +63,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
     let result = crate::progress::step("pairing triangles", || {
         quadrangulate_surface(&loaded.surface, name, seed)
     })
-    .map_err(|e| e.context(input.display().to_string()))?;
+    .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
     let stats = &result.stats;
     if job.json {
@@ -82,7 +82,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
         };
         crate::output::emit(&format!(
             "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges\n",
-            output.display(),
+            crate::failure::shown(output),
             result.quads.len(),
             stats.faces,
             stats.algorithm,

@@ -12,7 +12,10 @@ use rand_chacha::ChaCha8Rng;
 /// half-edges `u -> y`, `u -> x` of it with `x != y`; the neighbours strictly between them in
 /// rotation order move to the new vertex `v`, which is joined to `u`, `x` and `y`. So each split
 /// adds 1 vertex, 3 edges and 2 faces and keeps the genus. The new vertex is placed at the
-/// midpoint of `u` and the centroid of its other neighbours (`x`, `y` and the moved ones).
+/// midpoint of `u` and the centroid of its other neighbours (`x`, `y` and the moved ones), or,
+/// when that makes a triangle at `v` of (nearly) zero area (neighbours balanced around `u`), at
+/// the centroid of the face of `u` at `x` or at `y`, so that written meshes have no zero-length
+/// edge or flat triangle where a placement avoids them.
 ///
 /// A simplicial input stays simplicial (the new edges all end at the new vertex, and every moved
 /// neighbour was adjacent to `u` once); a vertex whose outgoing half-edges all reach one
@@ -44,6 +47,9 @@ pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surf
             .filter(|&&h| mesh.dest(h) != mesh.dest(to_y))
             .nth(pick)
             .expect("pick < choices");
+        // Faces of u at x and at y, for the fallback positions below.
+        let face_at_x = [u, mesh.dest(to_x), mesh.dest(mesh.next(to_x))];
+        let face_at_y = [u, mesh.dest(to_y), mesh.dest(mesh.next(to_y))];
         let record = mesh
             .split_vertex_new(to_y, to_x)
             .expect("two outgoing half-edges of u with distinct destinations");
@@ -55,10 +61,36 @@ pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surf
             count += 1.0;
         }
         let pu = positions[u.idx()];
-        let p: Point3 = [0, 1, 2].map(|k| 0.5 * (pu[k] + sum[k] / count));
+        let midpoint: Point3 = [0, 1, 2].map(|k| 0.5 * (pu[k] + sum[k] / count));
+        let centroid = |face: [VertexId; 3]| {
+            let [a, b, c] = face.map(|w| positions[w.idx()]);
+            [0, 1, 2].map(|k| (a[k] + b[k] + c[k]) / 3.0)
+        };
+        // The midpoint of u and the centroid of the other neighbours, unless that makes a
+        // (nearly) zero-area triangle at v (neighbours balanced around u, as on a regular grid,
+        // put it on u or on a line through two of them): then the centroid of a face of u, which
+        // lies strictly inside that face.
+        let candidates = [midpoint, centroid(face_at_x), centroid(face_at_y)];
         debug_assert_eq!(v.idx(), positions.len());
-        positions.push(p);
+        positions.push(midpoint);
+        for p in candidates {
+            positions[v.idx()] = p;
+            if star_has_area(mesh, positions, v) {
+                break;
+            }
+        }
     }
     debug_assert!(!simplicial_input || out.mesh.is_simplicial());
     out
+}
+
+/// Whether every face around `v` has an area above 1e-12 of its longest side squared.
+fn star_has_area(mesh: &crate::SurfaceMesh, positions: &[Point3], v: VertexId) -> bool {
+    use crate::geometry::{distance, face_area};
+    mesh.outgoing(v).all(|h| {
+        let f = mesh.face(h);
+        let [a, b, c] = mesh.face_vertices(f).map(|w| positions[w.idx()]);
+        let longest = distance(a, b).max(distance(b, c)).max(distance(c, a));
+        face_area(mesh, positions, f) > 0.5e-12 * longest * longest
+    })
 }
