@@ -14,10 +14,9 @@ use surftopo_intrinsic::generators::{flat_torus, sheared_torus};
 use surftopo_intrinsic::{DelaunayOptions, IntrinsicTriangulation, flip_to_delaunay};
 
 use super::inputs::{self, Scale};
-use super::measure;
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{header, row, seconds};
-use super::{Options, preamble, read_jsonl, write_jsonl};
+use super::{Measured, Options, finish, measured_or_rendered, preamble};
 
 /// One measured surface.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -145,27 +144,14 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
 /// Runs the suite (or, with `--render`, reads its jsonl) and writes `intrinsic.md`, `intrinsic.jsonl` and
 /// the plots.
 pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
-    let jsonl = options.out.join("intrinsic.jsonl");
-    let (records, failures, load) = if options.render {
-        let rows: Vec<Record> = read_jsonl(&jsonl)?;
-        (
-            rows,
-            Vec::new(),
-            "not recorded (rendered from the jsonl)".to_string(),
-        )
-    } else {
-        let load = measure::load_average();
-        let (rows, failures) = measure_all(options, meshes);
-        write_jsonl(&jsonl, &rows)?;
-        (rows, failures, load)
-    };
+    let Measured {
+        rows: records,
+        failures,
+        load,
+    } = measured_or_rendered(options, "intrinsic", || measure_all(options, meshes))?;
     let plots = write_plots(&options.out, &records)?;
-    std::fs::write(
-        options.out.join("intrinsic.md"),
-        markdown(options, &records, &plots, &load),
-    )?;
-    anyhow::ensure!(failures.is_empty(), "intrinsic: {}", failures.join("; "));
-    Ok(())
+    let md = markdown(options, &records, &plots, &load);
+    finish(options, "intrinsic", &md, &failures)
 }
 
 fn markdown(
@@ -266,18 +252,14 @@ fn markdown(
             seconds(r.seconds),
         ]);
     }
-    md += "\n## Plots\n\n";
-    for (file, caption) in plots {
-        let _ = writeln!(md, "- [{caption}]({file})");
-    }
-    md += "\n";
+    md += &plot::section(plots);
     md += &super::differences::intrinsic(records);
     md
 }
 
 fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, String)>> {
     let tx: Vec<&Record> = records.iter().filter(|r| r.kind == "flat_torus").collect();
-    let mut written = Vec::new();
+    let mut gallery = plot::Gallery::new(out);
     let title = "T_x: flips against x";
     let file = "intrinsic-tx-flips.svg";
     let plot = Plot {
@@ -301,9 +283,7 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
                 .collect(),
         },
     ];
-    if plot::write(&out.join(file), &plot, &series)? {
-        written.push((file.into(), title.into()));
-    }
+    gallery.add(file, &plot, &series)?;
     let title = "T_x: error of the final lengths against x";
     let file = "intrinsic-tx-length-error.svg";
     let plot = Plot {
@@ -321,8 +301,6 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
             .map(|r| (r.parameter, r.length_error.unwrap_or(0.0).max(1e-17)))
             .collect(),
     }];
-    if plot::write(&out.join(file), &plot, &series)? {
-        written.push((file.into(), title.into()));
-    }
-    Ok(written)
+    gallery.add(file, &plot, &series)?;
+    Ok(gallery.written)
 }

@@ -11,11 +11,11 @@ use serde::{Deserialize, Serialize};
 use surftopo_irreducible::{Algorithm, SurfaceMesh, check_simplicial, is_irreducible, reduce};
 
 use super::inputs::{self, Input, Scale};
-use super::measure::{self, mean, timed};
+use super::measure::{mean, timed};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
-use super::{Options, preamble, read_jsonl, write_jsonl};
+use super::{Measured, Options, finish, measured_or_rendered, preamble};
 
 /// BF runs per input (Section 5.2).
 pub const BF_RUNS: u64 = 10;
@@ -211,25 +211,14 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
 /// Runs the suite (or, with `--render`, reads its jsonl) and writes `irreducible.md`, `irreducible.jsonl` and
 /// the plots.
 pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
-    let jsonl = options.out.join("irreducible.jsonl");
-    let (rows, failures, load) = if options.render {
-        let rows: Vec<Row> = read_jsonl(&jsonl)?;
-        (
-            rows,
-            Vec::new(),
-            "not recorded (rendered from the jsonl)".to_string(),
-        )
-    } else {
-        let load = measure::load_average();
-        let (rows, failures) = measure_all(options, meshes);
-        write_jsonl(&jsonl, &rows)?;
-        (rows, failures, load)
-    };
+    let Measured {
+        rows,
+        failures,
+        load,
+    } = measured_or_rendered(options, "irreducible", || measure_all(options, meshes))?;
     let plots = write_plots(&options.out, &rows)?;
     let md = markdown(options, &rows, &failures, &plots, &load);
-    std::fs::write(options.out.join("irreducible.md"), md)?;
-    anyhow::ensure!(failures.is_empty(), "irreducible: {}", failures.join("; "));
-    Ok(())
+    finish(options, "irreducible", &md, &failures)
 }
 
 fn find<'a>(rows: &'a [Row], group: &str, input: &str) -> Option<&'a Row> {
@@ -331,11 +320,7 @@ fn markdown(
         md += &group_tables(rows, group);
     }
     md += &delta_analysis(rows);
-    md += "\n## Plots\n\n";
-    for (file, caption) in plots {
-        let _ = writeln!(md, "- [{caption}]({file})");
-    }
-    md += "\n";
+    md += &plot::section(plots);
     md += &differences(rows);
     md
 }
@@ -463,7 +448,7 @@ fn delta_analysis(rows: &[Row]) -> String {
 type Measure = fn(&Row) -> f64;
 
 fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>> {
-    let mut written = Vec::new();
+    let mut gallery = plot::Gallery::new(out);
     let algorithms: [(&str, Measure); 3] = [
         ("RS", |r| r.rs.cpu_seconds),
         ("S", |r| r.s.cpu_seconds),
@@ -529,9 +514,7 @@ fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>
             y_axis: Axis::Log,
             scatter: group == "first",
         };
-        if plot::write(&out.join(file), &plot, &series(group, x))? {
-            written.push((file.to_string(), title.to_string()));
-        }
+        gallery.add(file, &plot, &series(group, x))?;
     }
     // ℓ per triangle, groups B and C.
     let mut per_triangle = Vec::new();
@@ -563,9 +546,7 @@ fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>
         y_axis: Axis::Linear,
         scatter: false,
     };
-    if plot::write(&out.join(file), &plot, &per_triangle)? {
-        written.push((file.into(), title.into()));
-    }
+    gallery.add(file, &plot, &per_triangle)?;
     let title = "RS time against g·n_f, group D";
     let file = "irreducible-rs-time-against-g-nf.svg";
     let mut points: Vec<(f64, f64)> = rows
@@ -582,17 +563,15 @@ fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>
         y_axis: Axis::Linear,
         scatter: false,
     };
-    if plot::write(
-        &out.join(file),
+    gallery.add(
+        file,
         &plot,
         &[Series {
             name: "RS".into(),
             points,
         }],
-    )? {
-        written.push((file.into(), title.into()));
-    }
-    Ok(written)
+    )?;
+    Ok(gallery.written)
 }
 
 /// "Where we differ from the paper": the measured facts behind each disagreement.

@@ -138,6 +138,48 @@ pub fn write_jsonl<T: serde::Serialize>(path: &Path, rows: &[T]) -> anyhow::Resu
     Ok(())
 }
 
+/// A report's rows, the inputs that failed, and the machine load when the measuring started.
+pub struct Measured<T> {
+    /// One per input (and algorithm).
+    pub rows: Vec<T>,
+    /// The inputs that failed, with why.
+    pub failures: Vec<String>,
+    /// 1-minute load average at the start.
+    pub load: String,
+}
+
+/// Measures (writing `<name>.jsonl` in `--out`) or, with `--render`, reads that jsonl back.
+pub fn measured_or_rendered<T: serde::Serialize + serde::de::DeserializeOwned>(
+    options: &Options,
+    name: &str,
+    measure: impl FnOnce() -> (Vec<T>, Vec<String>),
+) -> anyhow::Result<Measured<T>> {
+    let jsonl = options.out.join(format!("{name}.jsonl"));
+    if options.render {
+        return Ok(Measured {
+            rows: read_jsonl(&jsonl)?,
+            failures: Vec::new(),
+            load: "not recorded (rendered from the jsonl)".into(),
+        });
+    }
+    let load = measure::load_average();
+    let (rows, failures) = measure();
+    write_jsonl(&jsonl, &rows)?;
+    Ok(Measured {
+        rows,
+        failures,
+        load,
+    })
+}
+
+/// Writes `<name>.md` in `--out`; an error naming the failed inputs if there are any (the
+/// report, written first, lists them too).
+pub fn finish(options: &Options, name: &str, md: &str, failures: &[String]) -> anyhow::Result<()> {
+    std::fs::write(options.out.join(format!("{name}.md")), md)?;
+    anyhow::ensure!(failures.is_empty(), "{name}: {}", failures.join("; "));
+    Ok(())
+}
+
 /// Reads the rows of a `.jsonl` file written by [`write_jsonl`].
 pub fn read_jsonl<T: serde::de::DeserializeOwned>(path: &Path) -> anyhow::Result<Vec<T>> {
     let text = std::fs::read_to_string(path)

@@ -37,6 +37,41 @@ pub struct Plot<'a> {
     pub scatter: bool,
 }
 
+/// The plots of one report, written into one folder.
+pub struct Gallery<'a> {
+    out: &'a Path,
+    /// (file name, title) of each plot written.
+    pub written: Vec<(String, String)>,
+}
+
+impl<'a> Gallery<'a> {
+    /// An empty gallery writing into `out`.
+    pub fn new(out: &'a Path) -> Self {
+        Self {
+            out,
+            written: Vec::new(),
+        }
+    }
+
+    /// Writes `plot` as `file` (see [`write`]) and lists it if anything was drawn.
+    pub fn add(&mut self, file: &str, plot: &Plot, series: &[Series]) -> anyhow::Result<()> {
+        if write(&self.out.join(file), plot, series)? {
+            self.written
+                .push((file.to_string(), plot.title.to_string()));
+        }
+        Ok(())
+    }
+}
+
+/// The "Plots" section of a report: one link per plot written.
+pub fn section(plots: &[(String, String)]) -> String {
+    let mut md = String::from("\n## Plots\n\n");
+    for (file, title) in plots {
+        md += &format!("- [{title}]({file})\n");
+    }
+    md + "\n"
+}
+
 const COLOURS: [RGBColor; 6] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),

@@ -11,11 +11,11 @@ use serde::{Deserialize, Serialize};
 use surftopo_quad::{QuadAlgorithm, QuadOptions, quadrangulate_with};
 
 use super::inputs::{self, Input, Scale};
-use super::measure::{self, mean, thread_cpu_seconds};
+use super::measure::{mean, thread_cpu_seconds};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
-use super::{Options, preamble, read_jsonl, write_jsonl};
+use super::{Measured, Options, finish, measured_or_rendered, preamble};
 
 /// Seeds of SG and PS (the paper: ten executions).
 pub const SEEDS: u64 = 10;
@@ -174,25 +174,14 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
 /// Runs the suite (or, with `--render`, reads its jsonl) and writes `quad.md`, `quad.jsonl` and
 /// the plots.
 pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
-    let jsonl = options.out.join("quad.jsonl");
-    let (records, failures, load) = if options.render {
-        let rows: Vec<Record> = read_jsonl(&jsonl)?;
-        (
-            rows,
-            Vec::new(),
-            "not recorded (rendered from the jsonl)".to_string(),
-        )
-    } else {
-        let load = measure::load_average();
-        let (rows, failures) = measure_all(options, meshes);
-        write_jsonl(&jsonl, &rows)?;
-        (rows, failures, load)
-    };
+    let Measured {
+        rows: records,
+        failures,
+        load,
+    } = measured_or_rendered(options, "quad", || measure_all(options, meshes))?;
     let plots = write_plots(&options.out, &records)?;
     let md = markdown(options, &records, &failures, &plots, &load, options.scale());
-    std::fs::write(options.out.join("quad.md"), md)?;
-    anyhow::ensure!(failures.is_empty(), "quad: {}", failures.join("; "));
-    Ok(())
+    finish(options, "quad", &md, &failures)
 }
 
 fn find<'a>(records: &'a [Record], input: &str, algorithm: &str) -> Option<&'a Record> {
@@ -347,11 +336,7 @@ fn markdown(
     md += &bound_table(records);
     md += &clustering_table(records);
     md += &ds_table(records);
-    md += "\n## Plots\n\n";
-    for (file, caption) in plots {
-        let _ = writeln!(md, "- [{caption}]({file})");
-    }
-    md += "\n";
+    md += &plot::section(plots);
     md += &super::differences::quad(records, scale);
     md
 }
@@ -490,7 +475,7 @@ fn ds_table(records: &[Record]) -> String {
 }
 
 fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, String)>> {
-    let mut written = Vec::new();
+    let mut gallery = plot::Gallery::new(out);
     for (group, file, title) in [
         (
             "A",
@@ -526,9 +511,7 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
             y_axis: Axis::Log,
             scatter: false,
         };
-        if plot::write(&out.join(file), &plot, &series)? {
-            written.push((file.into(), title.into()));
-        }
+        gallery.add(file, &plot, &series)?;
     }
     let lrs: Vec<&Record> = records.iter().filter(|r| r.algorithm == "LRS").collect();
     let title = "LRS unpaired triangles against max(4, 56g − 12)";
@@ -559,9 +542,7 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
         y_axis: Axis::Log,
         scatter: false,
     };
-    if plot::write(&out.join(file), &plot, &series)? {
-        written.push((file.into(), title.into()));
-    }
+    gallery.add(file, &plot, &series)?;
     let title = "Nodes reached per unpaired triangle: LRS and PS";
     let file = "quad-reached-per-unpaired.svg";
     let series: Vec<Series> = ["LRS", "PS"]
@@ -583,9 +564,7 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
         y_axis: Axis::Log,
         scatter: true,
     };
-    if plot::write(&out.join(file), &plot, &series)? {
-        written.push((file.into(), title.into()));
-    }
+    gallery.add(file, &plot, &series)?;
     let title = "DS total time / (n log² n)";
     let file = "quad-ds-time-over-n-log2n.svg";
     let mut points: Vec<(f64, f64)> = records
@@ -605,15 +584,13 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
         y_axis: Axis::Linear,
         scatter: true,
     };
-    if plot::write(
-        &out.join(file),
+    gallery.add(
+        file,
         &plot,
         &[Series {
             name: "DS".into(),
             points,
         }],
-    )? {
-        written.push((file.into(), title.into()));
-    }
-    Ok(written)
+    )?;
+    Ok(gallery.written)
 }
