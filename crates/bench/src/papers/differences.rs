@@ -40,7 +40,7 @@ pub fn irreducible(rows: &[Row]) -> String {
     md += "Inputs (issue item 9): groups B and C are made as the paper made them — B0 and C0 \
            bricks, each B_i (C_i) the previous one simplified to the paper's triangle count — \
            and BF runs ten times per input (seeds 1..=10), as in the paper. The bricks are our \
-           polycube ([`CavityBox`]): the paper gives only counts, so V, E, F differ from Tables \
+           polycube (`CavityBox`): the paper gives only counts, so V, E, F differ from Tables \
            3–5 by the fraction shown in the size tables; the simplification is random \
            link-condition contraction (the paper's process is not named), so the simplified \
            inputs share the paper's F and genus, not its connectivity.\n\n";
@@ -54,16 +54,37 @@ pub fn irreducible(rows: &[Row]) -> String {
             )
         })
         .collect();
+    let per_test = |f: fn(&Row) -> (f64, f64)| -> String {
+        let mut v: Vec<(usize, f64)> = rows
+            .iter()
+            .filter(|r| r.group != "first")
+            .map(|r| {
+                let (t, l) = f(r);
+                (r.faces, 1e9 * t / l.max(1.0))
+            })
+            .collect();
+        v.sort_by_key(|x| x.0);
+        match (v.first(), v.last()) {
+            (Some(a), Some(b)) => format!(
+                "{:.0} ns at {} triangles, {:.0} ns at {}",
+                a.1, a.0, b.1, b.0
+            ),
+            _ => "not run".into(),
+        }
+    };
     let _ = writeln!(
         md,
-        "- **S against BF (item 3)** — t_s/t_bf, {}. Not yet explained as a cause in the \
-         paper's implementation; measured in ours: ℓ_s < ℓ_bf everywhere (Tables 6, 8, 10), as \
-         in the paper, so the difference is in the cost per test, which in our S (a bucket \
-         queue of degrees, O(1) per update, where the paper's S uses an O(lg m) heap: its \
-         Section 5.3 blames that O(lg m) for S's time) is lower than the paper's; our BF pays a \
-         full link test for every random edge. The counts agree; the time ratios measure the \
-         two implementations' constant factors.\n",
-        ts_bf.join("; ")
+        "- **S against BF (item 3)** — t_s/t_bf, {}. ℓ_s < ℓ_bf everywhere, as in the paper \
+         (Tables 6, 8, 10), so the difference is in the time per link test: CPU time per test, \
+         BF {}; S {}. BF's cost per test grows with n much more than S's: BF visits the edges in \
+         a random order (its shuffle), so at millions of triangles nearly every test and \
+         contraction misses the caches, while S works around one low-degree vertex at a time. \
+         The paper's BF, on a machine with a 4 MB cache, did not show this growth as strongly \
+         (its t_s/t_bf stays above 1 on B0–B2). Measured cause of the trend; the size of the \
+         effect on the paper's machine is not known.\n",
+        ts_bf.join("; "),
+        per_test(|r| (r.bf.cpu_seconds, r.bf.link_tests)),
+        per_test(|r| (r.s.cpu_seconds, r.s.link_tests)),
     );
     let tbf: Vec<String> = ["B", "C", "D"]
         .iter()
@@ -78,9 +99,9 @@ pub fn irreducible(rows: &[Row]) -> String {
     let _ = writeln!(
         md,
         "- **t_bf/t_rs (item 4)** — {}. The ℓ ratios ℓ_bf/ℓ_rs agree with the paper's (Tables \
-         7, 9, 11 above), so the time ratio comes from the cost per test: our RS is faster per \
-         test than the paper's by more than our BF is. Not yet explained further (no profile of \
-         the paper's code exists).\n",
+         7, 9, 11 above), so the time ratio comes from the cost per test, and BF's grows with n \
+         (item 3: random edge order, cache misses), which is why D (4.2M triangles) has the \
+         largest t_bf/t_rs. The reversed trend with genus on C is not yet explained.\n",
         tbf.join("; ")
     );
     let first: Vec<String> = rows
@@ -117,9 +138,9 @@ pub fn irreducible(rows: &[Row]) -> String {
         "- **ε_s at high genus (item 6)** — paper: ε_s ≈ 99·g on C0/D0 (346,735 at g = \
          3,500); ours: {}. ε_s counts the edges S tests more than once; it depends on which \
          lowest-degree vertex S takes among equals and in which order it tries that vertex's \
-         edges, which the paper does not specify (we take the most recently queued vertex and \
-         its edges in rotation order). ℓ_s agrees closely with the paper (Tables 8 and 10). Not \
-         yet explained: we have not found a tie-breaking rule that gives the paper's ε_s.\n",
+         edges, which the paper does not specify (ours: ties to the smallest vertex id, the \
+         edges in rotation order from the vertex's stored half-edge). ℓ_s agrees closely with the paper (Tables 8 and 10). Not \
+         yet explained: we have not tried other tie-breaking rules against the paper's ε_s.\n",
         if eps.is_empty() {
             "no input of genus ≥ 100 run".into()
         } else {
@@ -129,7 +150,7 @@ pub fn irreducible(rows: &[Row]) -> String {
     if let Some(b7) = rows.iter().find(|r| r.input == "B7") {
         let _ = writeln!(
             md,
-            "- **B7 (item 8)** — now made as in the paper (B6 simplified): ℓ_rs {:.0} against \
+            "- **B7 (item 8)** — made as in the paper (B6 simplified): ℓ_rs {:.0} against \
              the paper's 14,085. ℓ_rs on a simplified input depends on its connectivity, which \
              differs from the paper's (random contractions against the paper's unnamed \
              process).\n",
@@ -158,15 +179,34 @@ pub fn quad(records: &[QuadRecord], scale: Scale) -> String {
             )
         })
         .collect();
+    let botijo = |name: &str, alg: &str| {
+        records
+            .iter()
+            .find(|r| r.input == name && r.algorithm == alg)
+    };
+    let rebuilt = match (
+        botijo("Botijo (simplified)", "LRS"),
+        botijo("Botijo (simplified)", "SG"),
+    ) {
+        (Some(l), Some(g)) => format!(
+            " Botijo rebuilt at the paper's size (botijo_41k simplified to 40,016 triangles: \
+             the paper's V, E, F and genus) gives LRS {:.1}% flipped edges, (c) {:.0} for LRS \
+             (paper 62.0) and {:.1} for SG (paper 5,023.8).",
+            100.0 * l.flipped_edges / l.edges as f64,
+            l.unpaired,
+            g.unpaired
+        ),
+        _ => String::new(),
+    };
     let _ = writeln!(
         md,
         "- **LRS flips (item 1)** — paper: 5–10% of the edges (Botijo 3,392 of 60,024, \
-         5.7%); ours: {}. Our count is the number of input edges whose flip is in K \
-         (`QuadStats::flipped_edges`), an edge flipped twice back counted once if it ends \
-         flipped; the paper does not define its count. Not yet explained: Algorithm 3.1's flips \
-         are forced by the expansion's case analysis, and our expansion follows its cases, so \
-         the difference may lie in the contraction order of the RS stage (which decides the \
-         expansion), which the paper leaves free.\n",
+         5.7%); ours: {}. Measured cause: the connectivity of the input. LRS flips far more on \
+         regular meshes (botijo_41k is a uniform remesh; the bricks A1 and B1 are polycubes) \
+         than on the same surfaces made irregular by simplification (A2–A5, B2–B5, the \
+         simplified Botijo), which fall in or near the paper's range.{rebuilt} Our count is \
+         the number of input edges whose flip is in K (`QuadStats::flipped_edges`); the paper \
+         does not define its count.\n",
         flips.join(", ")
     );
     let ps_a: Vec<String> = records
@@ -174,21 +214,26 @@ pub fn quad(records: &[QuadRecord], scale: Scale) -> String {
         .filter(|r| r.algorithm == "PS" && r.group == "A")
         .map(|r| format!("{} {:.1}", r.input, r.unpaired))
         .collect();
+    let ps = |name: &str| {
+        botijo(name, "PS").map_or("not run".to_string(), |r| format!("{:.1}", r.unpaired))
+    };
     let _ = writeln!(
         md,
         "- **PS on group A (item 2)** — paper: 136 unpaired on A1 (α = 3.2·10⁻⁵), 621–733 on \
-         A2–A5; ours: {}. A1 is a brick in both, but ours is a polycube whose squares are all \
-         split the same way: its vertex degrees are 4, 6 and 8 in a regular pattern, while the \
-         paper's A1 has \"almost all vertices [of] the same degree\". PS's priority (fewest \
-         unpaired neighbours first) ties on every triangle of a flat region of our brick, so \
-         its choices fall back to the random order: that is where our PS leaves more triangles \
-         unpaired. Not yet settled by an experiment on a brick with the paper's connectivity, \
-         which we cannot rebuild (the paper gives counts only).\n",
+         A2–A5; ours: {}. Partly measured: PS leaves few triangles on a regular real mesh \
+         (botijo_41k: {} against the paper's 10.6 on its Botijo) and many on our simplified \
+         meshes (Botijo simplified to the paper's size: {}; A2–A5): our simplification \
+         (random link-condition contractions, no shape criterion) makes the connectivity far \
+         more irregular than Graphite's, and the paper itself finds PS \"affected by the \
+         triangulation connectivity regularity\" (Section 4). Not yet explained: A1, a \
+         regular brick in both, where ours still leaves far more than 136.\n",
         if ps_a.is_empty() {
             "not run".into()
         } else {
             ps_a.join(", ")
-        }
+        },
+        ps("Botijo"),
+        ps("Botijo (simplified)")
     );
     let ds: Vec<String> = records
         .iter()
@@ -204,14 +249,21 @@ pub fn quad(records: &[QuadRecord], scale: Scale) -> String {
             ))
         })
         .collect();
+    let ds_botijo = botijo("Botijo (simplified)", "DS").map_or(String::new(), |d| {
+        format!(
+            " On Botijo at the paper's size our DS takes {:.2} s against the paper's 1.93 s: \
+             our DS is not slower than the paper's.",
+            d.total_seconds
+        )
+    });
     let _ = writeln!(
         md,
         "- **DS against LRS (item 7)** — paper: t_LRS/t_DS = 1.12 on B1, 3.7 on B5 (DS faster); \
-         ours (t_LRS/t_DS): {}. Our LRS on group B is fast because our augmenting search \
-         (`forest`) is not the paper's one-BFS-per-unpaired-triangle: the paper's LRS spends \
-         1,381 s of 1,395 s in augmentation on B1. Not yet explained on DS's side: our DS is a \
-         faithful O(n lg² n) implementation (time / (n log² n) in the table above) whose \
-         constant we have not compared with the paper's.\n",
+         ours (t_LRS/t_DS): {}. Measured cause: LRS's augmentation. The paper's LRS spends \
+         1,381 of its 1,395 s on B1 in augmentation (d); ours also leaves thousands of \
+         triangles unpaired on group B ((c) above), but its default `forest` search pairs them in a small fraction of that, and even the paper's global \
+         search, in our implementation, is far faster than the paper's (table \"Augmentation \
+         with the paper's search\").{ds_botijo}\n",
         if ds.is_empty() {
             "not run".into()
         } else {

@@ -191,19 +191,22 @@ pub fn shared_mesh(dir: &std::path::Path, file: &str) -> Option<SharedMesh> {
     })
 }
 
-/// The stand-ins for `models` (papers' names) that exist in `dir` and fit the scale, loaded.
+/// The stand-ins for `models` (the papers' names and triangle counts) that exist in `dir` and fit
+/// the scale, loaded; where the stand-in has more triangles than the paper's model, also the
+/// stand-in simplified to the paper's count (named `MODEL (simplified)`): on a closed surface of
+/// the same genus, F fixes V and E, so it has the paper's V, E, F and genus (Botijo, Fertility).
 pub fn stand_ins(
     scale: Scale,
     dir: Option<&std::path::Path>,
-    models: &[&str],
+    models: &[(&str, u64)],
     mut each: impl FnMut(Input),
 ) {
     let Some(dir) = dir else {
         eprintln!("no shared meshes (SURFTOPO_MESHES or --meshes): stand-ins skipped");
         return;
     };
-    for model in models {
-        let Some((_, file)) = STAND_INS.iter().find(|(m, _)| m == model) else {
+    for &(model, paper_faces) in models {
+        let Some((_, file)) = STAND_INS.iter().find(|(m, _)| *m == model) else {
             continue;
         };
         let Some(mesh) = shared_mesh(dir, file) else {
@@ -213,10 +216,20 @@ pub fn stand_ins(
         if mesh.faces > scale.max_stand_in_faces() {
             continue;
         }
+        let surface = surftopo_testkit::load(&mesh);
+        let simplified = (paper_faces < mesh.faces as u64)
+            .then(|| simplify(&surface, paper_faces as usize, SIMPLIFY_SEED));
         each(Input {
             name: model.to_string(),
             made: format!("stand-in: {file}"),
-            surface: surftopo_testkit::load(&mesh),
+            surface,
         });
+        if let Some(surface) = simplified {
+            each(Input {
+                name: format!("{model} (simplified)"),
+                made: format!("stand-in: {file} simplified to {paper_faces} triangles"),
+                surface,
+            });
+        }
     }
 }

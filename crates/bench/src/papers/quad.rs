@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
-use surftopo_quad::{QuadAlgorithm, QuadOptions, quadrangulate_with};
+use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_with};
 
 use super::inputs::{self, Input, Scale};
 use super::measure::{mean, thread_cpu_seconds};
@@ -42,6 +42,9 @@ pub struct Record {
     pub genus: i64,
     /// `SG`, `PS`, `DS` or `LRS`.
     pub algorithm: String,
+    /// Augmenting search: `forest` (the library's default) or `global` (the paper's procedure,
+    /// [`AugmentStrategy::Global`]).
+    pub augment: String,
     /// Runs (seeds 1..=runs for SG and PS).
     pub runs: u64,
     /// (a) initial pairing seconds (wall-clock, mean).
@@ -73,7 +76,15 @@ fn algorithm(name: &str, seed: u64) -> QuadAlgorithm {
     }
 }
 
-fn measure_one(group: &str, input: &Input, name: &str) -> anyhow::Result<Record> {
+/// Largest unpaired/2 × faces for which the global search is run (its work is about that).
+pub const GLOBAL_MAX_WORK: f64 = 3e9;
+
+fn measure_one(
+    group: &str,
+    input: &Input,
+    name: &str,
+    augment: AugmentStrategy,
+) -> anyhow::Result<Record> {
     let mesh = &input.surface.mesh;
     let runs = if matches!(name, "SG" | "PS") {
         SEEDS
@@ -89,13 +100,21 @@ fn measure_one(group: &str, input: &Input, name: &str) -> anyhow::Result<Record>
         faces: mesh.face_count(),
         genus: mesh.genus(),
         algorithm: name.into(),
+        augment: match augment {
+            AugmentStrategy::Global => "global".into(),
+            _ => "forest".into(),
+        },
         runs,
         ..Record::default()
     };
     let mut all = Vec::new();
     let cpu_start = thread_cpu_seconds();
     for seed in 1..=runs {
-        let result = quadrangulate_with(mesh, algorithm(name, seed), &QuadOptions::default())
+        let options = QuadOptions {
+            augment,
+            ..QuadOptions::default()
+        };
+        let result = quadrangulate_with(mesh, algorithm(name, seed), &options)
             .map_err(|e| anyhow::anyhow!("{} {name}: {e}", input.name))?;
         anyhow::ensure!(
             2 * result.quads.len() == mesh.face_count(),
@@ -127,8 +146,9 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         if !options.runs_input(&input.name) {
             return;
         }
+        let forest = AugmentStrategy::Forest;
         for a in ALGORITHMS {
-            match measure_one(group, &input, a) {
+            match measure_one(group, &input, a, forest) {
                 Ok(r) => {
                     eprintln!(
                         "quad {:5} {:13} F {:>9} g {:>5} {:3} (c) {:>10.1} (e) {} flipped {:.0}",
@@ -146,8 +166,24 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
                 Err(e) => failures.push(e.to_string()),
             }
         }
+        for a in ["PS", "LRS"] {
+            let affordable = records.iter().any(|r| {
+                r.input == input.name
+                    && r.algorithm == a
+                    && r.unpaired / 2.0 * r.faces as f64 <= GLOBAL_MAX_WORK
+            });
+            if affordable {
+                match measure_one(group, &input, a, AugmentStrategy::Global) {
+                    Ok(r) => records.push(r),
+                    Err(e) => failures.push(e.to_string()),
+                }
+            }
+        }
     };
-    let models: Vec<&str> = numbers::QUAD_TABLE_4_1.iter().map(|m| m.0).collect();
+    let models: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_1
+        .iter()
+        .map(|m| (m.0, value(m.3) as u64))
+        .collect();
     inputs::stand_ins(scale, meshes, &models, |i| record("first", i, &mut records));
     for (group, cavities, holes) in [("A", 3844, 0), ("B", 344, 3500)] {
         let sizes: Vec<_> = numbers::QUAD_TABLE_4_2
@@ -179,15 +215,67 @@ pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
         failures,
         load,
     } = measured_or_rendered(options, "quad", || measure_all(options, meshes))?;
-    let plots = write_plots(&options.out, &records)?;
+    let forest: Vec<Record> = records
+        .iter()
+        .filter(|r| r.augment == "forest")
+        .cloned()
+        .collect();
+    let plots = write_plots(&options.out, &forest)?;
     let md = markdown(options, &records, &failures, &plots, &load, options.scale());
     finish(options, "quad", &md, &failures)
 }
 
+/// The record of `algorithm` on `input` with the default (`forest`) search.
 fn find<'a>(records: &'a [Record], input: &str, algorithm: &str) -> Option<&'a Record> {
     records
         .iter()
-        .find(|r| r.input == input && r.algorithm == algorithm)
+        .find(|r| r.input == input && r.algorithm == algorithm && r.augment == "forest")
+}
+
+/// (d) with the paper's global search beside the paper's (d), and ours with the default search.
+fn global_table(records: &[Record]) -> String {
+    let mut md = String::from(
+        "\n## Augmentation with the paper's search (Section 3.1's procedure)\n\n(d) \
+         augmentation seconds with `AugmentStrategy::Global` (a forest from all unpaired \
+         triangles, restarted after each augmenting path, as the paper's), run where \
+         unpaired/2 × faces ≤ 3e9, beside the paper's (d) and ours with the default `forest` \
+         search.\n\n",
+    );
+    md += &header(
+        &[
+            "input",
+            "alg.",
+            "(c)",
+            "(d) global",
+            "(d) forest",
+            "global / forest",
+        ],
+        2,
+    );
+    for g in records.iter().filter(|r| r.augment == "global") {
+        let model = g.input.split(" (").next().unwrap_or(&g.input);
+        let paper = numbers::QUAD_RUNS
+            .iter()
+            .find(|p| p.0 == model && p.1 == g.algorithm);
+        let f = find(records, &g.input, &g.algorithm);
+        md += &row(&[
+            g.input.clone(),
+            g.algorithm.clone(),
+            number(g.unpaired, 1),
+            match paper {
+                Some(p) => beside(Some(g.augmentation_seconds), p.2[3], 5),
+                None => number(g.augmentation_seconds, 5),
+            },
+            f.map_or("–".into(), |f| number(f.augmentation_seconds, 5)),
+            f.map_or("–".into(), |f| {
+                number(
+                    g.augmentation_seconds / f.augmentation_seconds.max(1e-12),
+                    2,
+                )
+            }),
+        ]);
+    }
+    md
 }
 
 /// Columns (a)–(e) of a record.
@@ -218,12 +306,15 @@ fn runs_table(records: &[Record], inputs: &[&str], with_flips: bool) -> String {
         ],
         3,
     );
-    for input in inputs {
+    let names = inputs
+        .iter()
+        .flat_map(|i| [i.to_string(), format!("{i} (simplified)")])
+        .filter(|n| !n.ends_with(" (simplified)") || records.iter().any(|r| r.input == *n));
+    for input in names {
+        let model = input.split(" (").next().unwrap_or(&input);
         for a in ALGORITHMS {
-            let paper = numbers::QUAD_RUNS
-                .iter()
-                .find(|p| p.0 == *input && p.1 == a);
-            let ours = find(records, input, a);
+            let paper = numbers::QUAD_RUNS.iter().find(|p| p.0 == model && p.1 == a);
+            let ours = find(records, &input, a);
             if paper.is_none() && ours.is_none() {
                 continue;
             }
@@ -262,6 +353,13 @@ fn markdown(
     load: &str,
     scale: Scale,
 ) -> String {
+    let all = records;
+    let forest: Vec<Record> = all
+        .iter()
+        .filter(|r| r.augment == "forest")
+        .cloned()
+        .collect();
+    let records = &forest[..];
     let mut md = preamble(
         "Quadrangulation by triangle pairing: SG, PS, DS, LRS — Section 4",
         options,
@@ -280,10 +378,15 @@ fn markdown(
     md += "## First group (Tables 4.1 and 4.3): stand-ins\n\nNone of the paper's models is in \
            the shared meshes: each row is a stand-in (closest genus and size).\n\n";
     md += &header(&["model", "made", "V", "E", "F", "g"], 2);
-    for (m, v, e, f, g) in numbers::QUAD_TABLE_4_1 {
+    for (m, v, e, f, g) in numbers::QUAD_TABLE_4_1
+        .iter()
+        .flat_map(|p| [(p.0.to_string(), p), (format!("{} (simplified)", p.0), p)])
+        .filter(|(name, p)| *name == p.0 || records.iter().any(|r| r.input == *name))
+        .map(|(name, p)| (name, p.1, p.2, p.3, p.4))
+    {
         let o = records.iter().find(|r| r.input == m);
         md += &row(&[
-            m.to_string(),
+            m.clone(),
             o.map_or("not run".into(), |o| o.made.clone()),
             beside(o.map(|o| o.vertices as f64), v, 0),
             beside(o.map(|o| o.edges as f64), e, 0),
@@ -332,6 +435,7 @@ fn markdown(
         };
         md += &row(&[i.to_string(), beside(q, paper, 2)]);
     }
+    md += &global_table(all);
     md += &alpha_table(records);
     md += &bound_table(records);
     md += &clustering_table(records);
