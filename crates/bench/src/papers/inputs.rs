@@ -156,6 +156,25 @@ pub fn chain(
     }
 }
 
+/// A group made as the papers made it: the brick nearest the first size, each next input the
+/// previous one simplified ([`chain`]); nothing is built when `runs` accepts none of the names
+/// that the scale keeps.
+pub fn brick_chain(
+    scale: Scale,
+    runs: impl Fn(&str) -> bool,
+    sizes: &[(&str, u64)],
+    (cavities, holes): (u32, u32),
+    each: impl FnMut(Input),
+) {
+    let names: Vec<&str> = sizes.iter().map(|s| s.0).collect();
+    let triangles: Vec<u64> = sizes.iter().map(|s| s.1).collect();
+    if !names.iter().take(scale.per_group()).any(|n| runs(n)) {
+        return;
+    }
+    let first = brick(scale, cavities, holes, triangles[0]);
+    chain(scale, &names, &triangles, first, each);
+}
+
 /// The shared meshes folder: `SURFTOPO_MESHES` (relative to the workspace root), else
 /// `../shared/meshes` beside the workspace.
 pub fn meshes_dir(given: Option<PathBuf>) -> Option<PathBuf> {
@@ -230,6 +249,41 @@ pub fn stand_ins(
                 made: format!("stand-in: {file} simplified to {paper_faces} triangles"),
                 surface,
             });
+        }
+    }
+}
+
+/// An input as the reports list it: its group, its name, how it was made and its sizes.
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+pub struct Described {
+    /// The group (`first` for the stand-ins, else the paper's group letter).
+    pub group: String,
+    /// The paper's name.
+    pub input: String,
+    /// How it was made.
+    pub made: String,
+    /// Vertices.
+    pub vertices: usize,
+    /// Edges.
+    pub edges: usize,
+    /// Faces.
+    pub faces: usize,
+    /// Genus.
+    pub genus: i64,
+}
+
+impl Described {
+    /// The description of `input` in `group`.
+    pub fn of(group: &str, input: &Input) -> Self {
+        let mesh = &input.surface.mesh;
+        Self {
+            group: group.into(),
+            input: input.name.clone(),
+            made: input.made.clone(),
+            vertices: mesh.vertex_count(),
+            edges: mesh.edge_count(),
+            faces: mesh.face_count(),
+            genus: mesh.genus(),
         }
     }
 }

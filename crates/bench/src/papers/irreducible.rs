@@ -10,7 +10,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 use surftopo_irreducible::{Algorithm, SurfaceMesh, check_simplicial, is_irreducible, reduce};
 
-use super::inputs::{self, Input, Scale};
+use super::inputs::{self, Described, Input, Scale};
 use super::measure::{mean, timed};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
@@ -41,20 +41,9 @@ pub struct AlgorithmRun {
 /// One input's row.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Row {
-    /// `first`, `B`, `C` or `D`.
-    pub group: String,
-    /// The paper's name.
-    pub input: String,
-    /// How it was made.
-    pub made: String,
-    /// Vertices.
-    pub vertices: usize,
-    /// Edges.
-    pub edges: usize,
-    /// Faces.
-    pub faces: usize,
-    /// Genus.
-    pub genus: i64,
+    /// The input (group, name, how it was made, sizes).
+    #[serde(flatten)]
+    pub about: Described,
     /// RS.
     pub rs: AlgorithmRun,
     /// Schipper.
@@ -125,13 +114,7 @@ fn measure_input(group: &str, input: &Input, scale: Scale) -> anyhow::Result<Row
         calls: bf_runs.iter().map(|r| r.calls).sum(),
     };
     Ok(Row {
-        group: group.into(),
-        input: input.name.clone(),
-        made: input.made.clone(),
-        vertices: mesh.vertex_count(),
-        edges: mesh.edge_count(),
-        faces: mesh.face_count(),
-        genus: mesh.genus(),
+        about: Described::of(group, input),
         rs,
         s,
         bf,
@@ -170,21 +153,13 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
         .collect();
     inputs::stand_ins(scale, meshes, &models, |i| record("first", i, &mut rows));
     for (group, cavities, holes) in [("B", 3844, 0), ("C", 344, 3500)] {
-        let sizes: Vec<_> = numbers::IRREDUCIBLE_SIZES
+        let sizes: Vec<(&str, u64)> = numbers::IRREDUCIBLE_SIZES
             .iter()
             .filter(|s| s.0.starts_with(group))
+            .map(|s| (s.0, value(s.3) as u64))
             .collect();
-        let names: Vec<&str> = sizes.iter().map(|s| s.0).collect();
-        let triangles: Vec<u64> = sizes.iter().map(|s| value(s.3) as u64).collect();
-        let wanted = names
-            .iter()
-            .take(scale.per_group())
-            .any(|n| options.runs_input(n));
-        if !wanted {
-            continue;
-        }
-        let first = inputs::brick(scale, cavities, holes, triangles[0]);
-        inputs::chain(scale, &names, &triangles, first, |i| {
+        let runs = |n: &str| options.runs_input(n);
+        inputs::brick_chain(scale, runs, &sizes, (cavities, holes), |i| {
             record(group, i, &mut rows)
         });
     }
@@ -586,4 +561,13 @@ fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>
 /// "Where we differ from the paper": the measured facts behind each disagreement.
 fn differences(rows: &[Row]) -> String {
     super::differences::irreducible(rows)
+}
+
+impl std::ops::Deref for Row {
+    type Target = Described;
+
+    /// The input's description, so that `row.faces` reads as a field of the row.
+    fn deref(&self) -> &Described {
+        &self.about
+    }
 }

@@ -210,11 +210,14 @@ pub fn preamble(title: &str, options: &Options, load_at_start: &str) -> String {
         match options.scale() {
             Scale::Full => " (the papers' sizes)".to_string(),
             s => format!(
-                " (pits / {}, triangles / {}: the paper's numbers are for inputs {} times \
-                 larger, so the ratios of sizes, counts and times are not comparisons)",
+                " (bricks with pits / {} and triangles / {}, and their simplifications: the \
+                 paper's numbers for those groups are for inputs {} times larger, so their \
+                 ratios are not comparisons; the stand-in meshes are at their own size, up to \
+                 {} triangles)",
                 s.pit_divisor(),
                 s.triangle_divisor(),
-                s.triangle_divisor()
+                s.triangle_divisor(),
+                s.max_stand_in_faces()
             ),
         },
         measure::load_average()

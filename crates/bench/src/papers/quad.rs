@@ -10,7 +10,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_with};
 
-use super::inputs::{self, Input, Scale};
+use super::inputs::{self, Described, Input, Scale};
 use super::measure::{mean, thread_cpu_seconds};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
@@ -26,20 +26,9 @@ pub const ALGORITHMS: [&str; 4] = ["SG", "PS", "DS", "LRS"];
 /// One algorithm on one input: means over the runs.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Record {
-    /// `first`, `A` or `B`.
-    pub group: String,
-    /// The paper's name.
-    pub input: String,
-    /// How it was made.
-    pub made: String,
-    /// Vertices.
-    pub vertices: usize,
-    /// Edges.
-    pub edges: usize,
-    /// Faces.
-    pub faces: usize,
-    /// Genus.
-    pub genus: i64,
+    /// The input (group, name, how it was made, sizes).
+    #[serde(flatten)]
+    pub about: Described,
     /// `SG`, `PS`, `DS` or `LRS`.
     pub algorithm: String,
     /// Augmenting search: `forest` (the library's default) or `global` (the paper's procedure,
@@ -92,13 +81,7 @@ fn measure_one(
         1
     };
     let mut r = Record {
-        group: group.into(),
-        input: input.name.clone(),
-        made: input.made.clone(),
-        vertices: mesh.vertex_count(),
-        edges: mesh.edge_count(),
-        faces: mesh.face_count(),
-        genus: mesh.genus(),
+        about: Described::of(group, input),
         algorithm: name.into(),
         augment: match augment {
             AugmentStrategy::Global => "global".into(),
@@ -186,21 +169,13 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         .collect();
     inputs::stand_ins(scale, meshes, &models, |i| record("first", i, &mut records));
     for (group, cavities, holes) in [("A", 3844, 0), ("B", 344, 3500)] {
-        let sizes: Vec<_> = numbers::QUAD_TABLE_4_2
+        let sizes: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_2
             .iter()
             .filter(|s| s.0.starts_with(group))
+            .map(|s| (s.0, value(s.3) as u64))
             .collect();
-        let names: Vec<&str> = sizes.iter().map(|s| s.0).collect();
-        let triangles: Vec<u64> = sizes.iter().map(|s| value(s.3) as u64).collect();
-        if !names
-            .iter()
-            .take(scale.per_group())
-            .any(|n| options.runs_input(n))
-        {
-            continue;
-        }
-        let first = inputs::brick(scale, cavities, holes, triangles[0]);
-        inputs::chain(scale, &names, &triangles, first, |i| {
+        let runs = |n: &str| options.runs_input(n);
+        inputs::brick_chain(scale, runs, &sizes, (cavities, holes), |i| {
             record(group, i, &mut records)
         });
     }
@@ -697,4 +672,13 @@ fn write_plots(out: &Path, records: &[Record]) -> anyhow::Result<Vec<(String, St
         }],
     )?;
     Ok(gallery.written)
+}
+
+impl std::ops::Deref for Record {
+    type Target = Described;
+
+    /// The input's description, so that `row.faces` reads as a field of the row.
+    fn deref(&self) -> &Described {
+        &self.about
+    }
 }
