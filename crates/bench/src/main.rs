@@ -17,10 +17,14 @@ struct Cli {
 enum Command {
     /// Reading OBJ / binary PLY and building the half-edge mesh, at 1M and 4M triangles.
     ReadBuild(read_build::Options),
+    /// The papers' experiments as the papers made them: `irreducible.md`, `quad.md`,
+    /// `intrinsic.md`, jsonl and SVG plots under `--out` (default `results/papers`).
+    Papers(surftopo_bench::papers::Options),
 }
 
 fn main() -> anyhow::Result<()> {
     match Cli::parse().command {
         Command::ReadBuild(options) => read_build::run(&options),
+        Command::Papers(options) => surftopo_bench::papers::run(&options),
     }
 }

@@ -1,6 +1,7 @@
-//! Intrinsic Delaunay by edge flipping: flip counts and seconds on the shared meshes, on randomly
-//! flipped meshes, on sheared tori (shear 1 to 16) and on the flat torus T_x for x from 10 to 10⁶
-//! (where double precision breaks down), with the libigl peer comparison.
+//! Intrinsic Delaunay by edge flipping: flip counts and seconds on the shared meshes and on randomly
+//! flipped meshes, with the libigl peer comparison. The paper's own experiment (the flat torus
+//! T_x of Section 9) and the sheared tori are in `surftopo-bench papers`
+//! (`results/papers/intrinsic.md`).
 //!
 //! ```text
 //! cargo run --release -p surftopo-intrinsic --example delaunay_bench -- \
@@ -27,7 +28,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde_json::{Value, json};
-use surftopo_intrinsic::generators::{flat_torus, random_flips, sheared_torus};
+use surftopo_intrinsic::generators::random_flips;
 use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, IsometryOptions, SparseMatrix, flip_to_delaunay,
     intrinsic_delaunay_laplacian, isometric, read_matrix_market,
@@ -322,101 +323,11 @@ fn main() {
         eprintln!("no shared meshes (set SURFTOPO_MESHES or --meshes): mesh tables skipped");
     }
 
-    // 3. Sheared tori.
-    let (tm, tn) = (128u32, 64u32);
     let _ = writeln!(
         md,
-        "\n## Sheared tori\n\nTorus of revolution on a {tm} x {tn} grid ({} faces) whose quads \
-         join (i, j) to (i+1, j+shear).\n\n| shear | flips | flips/E | flip |\n|---:|---:|---:|---:|",
-        2 * tm * tn
+        "\n\nThe flat torus T_x (Section 9) and the sheared tori: \
+         [papers/intrinsic.md](papers/intrinsic.md).\n"
     );
-    for shear in 1..=16u32 {
-        let s = sheared_torus(tm, tn, shear);
-        let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
-        let (_, flips, flip_s) = time_flips(&tri, args.repeat);
-        let edges = tri.mesh().edge_count();
-        let row = json!({
-            "kind": "sheared_torus", "m": tm, "n": tn, "shear": shear, "edges": edges,
-            "flips": flips, "flip_seconds": flip_s,
-        });
-        eprintln!("{row}");
-        let _ = writeln!(
-            md,
-            "| {shear} | {flips} | {:.2} | {:.3} |",
-            flips as f64 / edges as f64,
-            1e3 * flip_s
-        );
-        rows.push(row);
-    }
-
-    // 4. The flat torus T_x.
-    let _ = writeln!(
-        md,
-        "\n## The flat torus T_x (Dubois, Section 9)\n\nExact arithmetic: x - 1 flips for \
-         integer x, ending in the 1 x 2 rectangle (lengths 1, 2, √5). `length error` = max |ℓ - \
-         exact| over the three final lengths. Tolerance of the Delaunay test: 1e-10.\n\n\
-         | x | flips | expected | flip | length error | verdict |\n|---:|---:|---:|---:|---:|---|"
-    );
-    let xs: [f64; 11] = [10.0, 30.0, 100.0, 300.0, 1e3, 3e3, 1e4, 3e4, 1e5, 3e5, 1e6];
-    let mut first_wrong = None;
-    for x in xs {
-        let mut tri = match flat_torus(x, 1) {
-            Ok(tri) => tri,
-            Err(e) => {
-                let row =
-                    json!({ "kind": "flat_torus", "x": x, "verdict": format!("refused: {e}") });
-                eprintln!("{row}");
-                let _ = writeln!(
-                    md,
-                    "| {x:e} | - | {} | - | - | refused: {e} |",
-                    x as u64 - 1
-                );
-                first_wrong.get_or_insert(x);
-                rows.push(row);
-                continue;
-            }
-        };
-        let start = Instant::now();
-        let result = flip_to_delaunay(&mut tri, &delaunay_options());
-        let seconds = start.elapsed().as_secs_f64();
-        let expected = x as u64 - 1;
-        let mut l: Vec<f64> = tri.lengths().to_vec();
-        l.sort_by(f64::total_cmp);
-        let error = l
-            .iter()
-            .zip([1.0, 2.0, 5f64.sqrt()])
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
-        let (flips, verdict) = match &result {
-            Ok(r) if r.flips == expected && error < 1e-6 => (r.flips, "correct".to_string()),
-            Ok(r) if r.flips == expected => (r.flips, "right count, wrong lengths".into()),
-            Ok(r) => (r.flips, "wrong flip count".into()),
-            Err(e) => (0, format!("error: {e}")),
-        };
-        let row = json!({
-            "kind": "flat_torus", "x": x, "flips": flips, "expected_flips": expected,
-            "flip_seconds": seconds, "length_error": error, "verdict": verdict,
-        });
-        eprintln!("{row}");
-        let _ = writeln!(
-            md,
-            "| {x:e} | {flips} | {expected} | {:.3} | {error:.1e} | {verdict} |",
-            1e3 * seconds
-        );
-        if verdict != "correct" && first_wrong.is_none() {
-            first_wrong = Some(x);
-        }
-        rows.push(row);
-    }
-
-    if let Some(x) = first_wrong {
-        let _ = writeln!(
-            md,
-            "\nDouble precision breaks down at x = {x:e}: the first x of the list whose result is \
-             not exact (flip count and final lengths)."
-        );
-    }
-
     if let (Some(a), Some(b)) = (load_at_start, load_average()) {
         let _ = writeln!(
             md,
