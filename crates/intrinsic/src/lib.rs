@@ -8,8 +8,10 @@
 //! edits: [`Portalgon::cut`] and [`Portalgon::shortcut`] (INSERTEDGES),
 //! [`Portalgon::delete_vertex`] (DELETEVERTICES), [`Portalgon::merge`], [`Portalgon::glue`] /
 //! [`Portalgon::unglue`], [`Portalgon::sub_portalgon`] and [`Regions`] (Section 4.4's active and
-//! inactive regions). Not here yet: tubes, bifaces and SIMPLIFYTUBES (Section 3, Appendix B), the
-//! wave algorithm (Appendix D).
+//! inactive regions). [`voronoi`] is Proposition 3's second route to the Delaunay tessellation,
+//! the multi-source wave of Appendix D and the dual of its Voronoi diagram, in `f64` or exactly
+//! over the rationals ([`geometry`]). Not here yet: tubes, bifaces and SIMPLIFYTUBES (Section 3,
+//! Appendix B).
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
@@ -17,7 +19,8 @@
 //!   ([`PortalgonDoc`], format in [`mod@format`] and `PORTALGON_FORMAT.md`).
 //! - [`flip_to_delaunay`]: Bobenko–Springborn edge flipping with robust half-angle formulas
 //!   ([`trig`]), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
-//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation.
+//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation;
+//!   [`voronoi::voronoi_delaunay`] computes it by the wave instead (exactly with rational corners).
 //! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
 //!   ([`write_matrix_market`]). Convention: the Laplacian is positive semidefinite.
 //!   [`intrinsic_delaunay_laplacian`] flips and assembles in one call (libigl's
@@ -62,6 +65,7 @@ mod stats;
 mod tessellation;
 mod triangulation;
 pub mod trig;
+pub mod voronoi;
 
 pub use delaunay::{
     DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,

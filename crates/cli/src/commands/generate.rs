@@ -3,8 +3,8 @@
 
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
-use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
 use surftopo_intrinsic::geometry::Scalar as _;
+use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
 use surftopo_mesh::generators::{self, Surface};
 
 /// The surface to generate.
