@@ -88,6 +88,9 @@ enum Command {
         /// Merge vertices with exactly equal positions first (mesh input).
         #[arg(long)]
         weld: bool,
+        /// How the canonical tessellations are computed.
+        #[command(flatten)]
+        method: commands::delaunay::MethodOptions,
     },
     /// Run every capability on a built-in example and write the results into a folder.
     Demo {
@@ -117,11 +120,13 @@ fn run(cli: Cli) -> anyhow::Result<ExitCode> {
         }
         Command::Quad { job, algorithm } => done(commands::quad::run(&job, algorithm)),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
-        Command::Isometric { a, b, weld } => Ok(if commands::isometric::run(&a, &b, weld)? {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        }),
+        Command::Isometric { a, b, weld, method } => {
+            Ok(if commands::isometric::run(&a, &b, weld, &method)? {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            })
+        }
         Command::Demo { out } => done(commands::demo::run(&out)),
     }
 }

@@ -100,14 +100,48 @@ impl<S: Scalar> VoronoiDelaunay<S> {
     /// # Errors
     /// A [`PortalgonError`] if a polygon cannot be cut (it would not be convex).
     pub fn triangulation(&self) -> Result<IntrinsicTriangulation, PortalgonError> {
+        IntrinsicTriangulation::from_portalgon(&self.triangulated()?, 1e-6)
+    }
+
+    /// The tessellation with every polygon cut along shortcuts into triangles, in `S` (exact
+    /// corners in exact mode), dense ids, labels kept.
+    ///
+    /// # Errors
+    /// As [`Self::triangulation`].
+    pub fn triangulated(&self) -> Result<Portalgon<S>, PortalgonError> {
         let mut t = self.tessellation.clone();
         let polygons: Vec<_> = t.polygons().collect();
         for q in polygons {
             t.triangulate_by_shortcuts(q)?;
         }
-        let (dense, _) = t.compacted();
-        IntrinsicTriangulation::from_portalgon(&dense, 1e-6)
+        Ok(t.compacted().0)
     }
+}
+
+/// The portalgon with its corners rounded to doubles, compacted (dense ids, labels and matching
+/// kept).
+pub fn to_f64<S: Scalar>(p: &Portalgon<S>) -> Portalgon<f64> {
+    let (p, _) = p.compacted();
+    let mut out = Portalgon::new();
+    for q in p.polygons() {
+        let corners: Vec<[f64; 2]> = p
+            .corners(q)
+            .iter()
+            .map(|c| [c[0].to_f64(), c[1].to_f64()])
+            .collect();
+        let labels: Vec<u32> = p
+            .polygon_sides(q)
+            .iter()
+            .map(|&s| p.vertex_label(s).unwrap_or(u32::MAX))
+            .collect();
+        out.push_polygon(&corners, Some(&labels));
+    }
+    for s in p.sides() {
+        if let Some(t) = p.mate(s) {
+            out.set_mates(s, t);
+        }
+    }
+    out
 }
 
 /// Proposition 3 by its proof: V ([`wave_sources`]), the wave ([`run_wave`], Proposition 11),
