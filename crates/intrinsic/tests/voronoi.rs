@@ -11,9 +11,11 @@ use std::cmp::Ordering;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use surftopo_intrinsic::generators::{flat_torus_portalgon, random_flips};
-use surftopo_intrinsic::geometry::{Point, Rational, Scalar, dist2, dot, incircle, orient, sub};
+use surftopo_intrinsic::geometry::{
+    Motion, Point, Rational, Scalar, dist2, dot, incircle, orient, sub,
+};
 use surftopo_intrinsic::voronoi::{
-    DualError, Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex,
+    DualError, Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, to_f64,
     voronoi_delaunay,
 };
 use surftopo_intrinsic::{
@@ -282,10 +284,37 @@ fn integer_lattice_tori_give_the_gauss_reduced_basis() {
     }
 }
 
+/// The side `t` matched with `s` when it belongs to another triangle, and the motion carrying
+/// `t`'s triangle next to `s`'s (footnote 2).
+fn across(p: &Portalgon<Rational>, s: SideId) -> Option<(SideId, Motion<Rational>)> {
+    let t = p.mate(s)?;
+    (p.owner(s) != p.owner(t)).then(|| {
+        let motion = Motion::taking(p.start_ref(t), p.end_ref(t), p.end_ref(s), p.start_ref(s));
+        (t, motion)
+    })
+}
+
+/// Flips side `s` (apex `c` of its triangle, `d` of the other one carried into its frame): merge
+/// the two triangles, cut the quad along `c d`.
+fn flip_side(p: &mut Portalgon<Rational>, s: SideId, c: &Point<Rational>, d: &Point<Rational>) {
+    let q = p.merge(s).unwrap();
+    let corners = p.corners(q);
+    let i = corners.iter().position(|x| x == c).unwrap();
+    let j = corners.iter().position(|x| x == d).unwrap();
+    p.cut(q, i.min(j), i.max(j)).unwrap();
+    p.check_invariants().unwrap();
+}
+
+/// The apexes of the two triangles at side `s`, in `s`'s frame, and the matched side's motion.
+fn quad(p: &Portalgon<Rational>, s: SideId) -> Option<[Point<Rational>; 4]> {
+    let (t, motion) = across(p, s)?;
+    let d = motion.apply(p.start_ref(p.prev_side(t)));
+    Some([p.start(s), p.end(s), p.start(p.prev_side(s)), d])
+}
+
 /// An exact flip algorithm, independent of the wave: flip every side whose two triangles fail
 /// the exact in-circle test (merge, cut the other diagonal), then merge the co-circular pairs.
 fn exact_flip_tessellation(mut p: Portalgon<Rational>) -> Portalgon<Rational> {
-    // Flip until Delaunay.
     loop {
         let mut flipped = false;
         let sides: Vec<SideId> = p.sides().collect();
@@ -293,31 +322,13 @@ fn exact_flip_tessellation(mut p: Portalgon<Rational>) -> Portalgon<Rational> {
             if !p.is_side_live(s) {
                 continue;
             }
-            let Some(t) = p.mate(s) else { continue };
-            if p.owner(s) == p.owner(t) {
+            let Some([a, b, c, d]) = quad(&p, s) else {
                 continue;
+            };
+            if incircle(&a, &b, &c, &d) == Ordering::Greater {
+                flip_side(&mut p, s, &c, &d);
+                flipped = true;
             }
-            // The apex of t's triangle carried into s's frame.
-            let apex = p.start(p.prev_side(t));
-            let motion = surftopo_intrinsic::geometry::Motion::taking(
-                p.start_ref(t),
-                p.end_ref(t),
-                p.end_ref(s),
-                p.start_ref(s),
-            );
-            let d = motion.apply(&apex);
-            let (a, b, c) = (p.start(s), p.end(s), p.start(p.prev_side(s)));
-            if incircle(&a, &b, &c, &d) != Ordering::Greater {
-                continue;
-            }
-            let q = p.merge(s).unwrap();
-            // The quad: corners of q; cut along the diagonal not through a, b.
-            let corners = p.corners(q);
-            let i = corners.iter().position(|x| *x == c).unwrap();
-            let j = corners.iter().position(|x| *x == d).unwrap();
-            p.cut(q, i.min(j), i.max(j)).unwrap();
-            p.check_invariants().unwrap();
-            flipped = true;
         }
         if !flipped {
             break;
@@ -331,19 +342,12 @@ fn exact_flip_tessellation(mut p: Portalgon<Rational>) -> Portalgon<Rational> {
             if !p.is_side_live(s) {
                 continue;
             }
-            let Some(t) = p.mate(s) else { continue };
-            if p.owner(s) == p.owner(t) {
+            let Some((t, motion)) = across(&p, s) else {
                 continue;
-            }
+            };
             let c = p.corners(p.owner(s));
-            let other = p.corners(p.owner(t));
-            let motion = surftopo_intrinsic::geometry::Motion::taking(
-                p.start_ref(t),
-                p.end_ref(t),
-                p.end_ref(s),
-                p.start_ref(s),
-            );
-            let on = other
+            let on = p
+                .corners(p.owner(t))
                 .iter()
                 .all(|x| incircle(&c[0], &c[1], &c[2], &motion.apply(x)) == Ordering::Equal);
             if on {
@@ -358,32 +362,18 @@ fn exact_flip_tessellation(mut p: Portalgon<Rational>) -> Portalgon<Rational> {
     p.compacted().0
 }
 
-/// Random exact flips of a portalgon (merge two triangles, cut the other diagonal when the quad
-/// is strictly convex): a random rational re-triangulation of the same surface.
+/// Random exact flips of a portalgon (when the quad is strictly convex): a random rational
+/// re-triangulation of the same surface.
 fn random_exact_flips(p: &mut Portalgon<Rational>, count: usize, rng: &mut ChaCha8Rng) {
     for _ in 0..count {
         let sides: Vec<SideId> = p.sides().collect();
         let s = sides[rng.random_range(0..sides.len())];
-        let t = p.mate(s).unwrap();
-        if p.owner(s) == p.owner(t) {
+        let Some([a, b, c, d]) = quad(p, s) else {
             continue;
-        }
-        let c = p.start(p.prev_side(s));
-        let motion = surftopo_intrinsic::geometry::Motion::taking(
-            p.start_ref(t),
-            p.end_ref(t),
-            p.end_ref(s),
-            p.start_ref(s),
-        );
-        let d = motion.apply(&p.start(p.prev_side(t)));
-        let (a, b) = (p.start(s), p.end(s));
+        };
         // Strictly convex quad a, d, b, c.
         if orient(&c, &d, &a) == Ordering::Greater && orient(&d, &c, &b) == Ordering::Greater {
-            let q = p.merge(s).unwrap();
-            let corners = p.corners(q);
-            let i = corners.iter().position(|x| *x == c).unwrap();
-            let j = corners.iter().position(|x| *x == d).unwrap();
-            p.cut(q, i.min(j), i.max(j)).unwrap();
+            flip_side(p, s, &c, &d);
         }
     }
     *p = p.compacted().0;
@@ -403,25 +393,6 @@ fn doubled_triangle(c: [Point<Rational>; 3]) -> Portalgon<Rational> {
         p.glue(p.side(a, i), p.side(b, j), 0.0).unwrap();
     }
     p
-}
-
-fn to_f64(p: &Portalgon<Rational>) -> Portalgon<f64> {
-    let mut out = Portalgon::new();
-    for q in p.polygons() {
-        let c: Vec<[f64; 2]> = p
-            .corners(q)
-            .iter()
-            .map(|x| [x[0].to_f64(), x[1].to_f64()])
-            .collect();
-        out.add_polygon(&c).unwrap();
-    }
-    for s in p.sides() {
-        let t = p.mate(s).unwrap();
-        if s < t {
-            out.glue(s, t, 1e-9).unwrap();
-        }
-    }
-    out
 }
 
 #[test]
@@ -465,13 +436,10 @@ fn random_rational_portalgons_agree_with_an_exact_flip_algorithm() {
                 a.sort();
                 b.sort();
                 assert_eq!(a, b, "case {case}: the polygons differ");
-                let outcome = compare_tessellations(
-                    &to_f64(&v.tessellation),
-                    &to_f64(&reference),
-                    1e-9,
-                    false,
-                )
-                .unwrap();
+                let (ta, tb) = (to_f64(&v.tessellation), to_f64(&reference));
+                ta.check_invariants().unwrap();
+                tb.check_invariants().unwrap();
+                let outcome = compare_tessellations(&ta, &tb, 1e-9, false).unwrap();
                 assert!(outcome.is_isometric(), "case {case}: {outcome}");
             } else {
                 let flat = p

@@ -108,6 +108,8 @@ struct Dual<'a, S: Scalar> {
     wave: &'a Wave<S>,
     eps: f64,
     instances: Vec<Vec<Instance<S>>>,
+    /// The most triangles a followed edge may cross (a guard against an `f64` loop).
+    step_budget: usize,
 }
 
 /// The result of [`build_dual`].
@@ -137,6 +139,7 @@ pub(crate) fn build_dual<S: Scalar>(
         wave,
         eps: point_tolerance * scale,
         instances: vec![Vec::new(); p.polygon_slots()],
+        step_budget: 4 * (p.polygon_slots() + wave.total_points()) + 16,
     };
     for q in p.polygons() {
         dual.find_vertices(q);
@@ -600,8 +603,7 @@ impl<S: Scalar> Dual<'_, S> {
         let mut tri = q;
         let mut skip: Vec<u32> = inst.sites.clone();
         let mut segments = Vec::new();
-        let budget = 4 * (p.polygon_slots() + self.wave.total_points()) + 16;
-        for step in 0..budget {
+        for step in 0..self.step_budget {
             let missing = |y: &Point<S>| {
                 let best = self
                     .pts(tri)

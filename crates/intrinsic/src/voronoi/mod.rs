@@ -15,7 +15,23 @@
 //! construction is exact and dates are compared squared). The output tessellation is a portalgon,
 //! like [`crate::delaunay_tessellation`]'s, with vertex labels numbering V; its Delaunay
 //! triangulation ([`VoronoiDelaunay::triangulation`], the polygons cut by shortcuts) feeds the
-//! Laplacian.
+//! Laplacian. The cotan Laplacian does not depend on the diagonals cut into co-circular polygons,
+//! so it is the flip route's; the lumped mass does (only its total, the area, is the same).
+//!
+//! Deviations from the paper, all listed in the files' docs: V may be every vertex of T
+//! ([`Sources::All`], the flip algorithm's vertex set) as well as the singular ones; the Voronoi
+//! diagram is output as polylines in T instead of a refined portalgon T′ (Proposition 11); the
+//! polygons are read off the constellations (DUBOIS.md §2.7) instead of Proposition 12's
+//! unfoldings; Lemma 41's lists are vectors (O(k) splices) instead of search trees; `f64` compares
+//! with tolerances (exact mode compares exactly). Where the design notes (DUBOIS.md) and the tests
+//! disagreed, the tests decided: closed cells with ties in `f64` (see [`wave`]); crossings of the
+//! side lists taken at the bisector of consecutive cells, not at their (overlapping) ends.
+//!
+//! Limits: the `f64` mode can refuse a surface with a typed [`DualError`] when rounding makes the
+//! traced Voronoi edges inconsistent (one shared mesh, chassis_upright, and T_x for large x, where
+//! doubles cannot hold the needle); it never returns an unchecked polygon (each is validated by
+//! [`Portalgon::add_polygon`], each gluing by [`Portalgon::glue`]). The exact mode has no
+//! tolerance.
 
 pub mod dual;
 pub mod singular;

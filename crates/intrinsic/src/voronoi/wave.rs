@@ -28,6 +28,11 @@
 //! - In `f64`, "x ∈ X_Δ" is decided up to `point_tolerance · L` (L the longest side of the
 //!   portalgon): the same surface point reached along two routes differs by rounding. In exact
 //!   mode it is equality.
+//! - In `f64`, two sites tie on a side where their squared distances differ by at most
+//!   `4 · point_tolerance · L · (|a − y| + |s|)`: the cells are closed, as the paper's `Vor(x, X)`
+//!   is, and a site tied at a single point (a Voronoi vertex on a side, common on meshes with
+//!   right triangles) keeps its cell there instead of losing it to rounding, so it still reaches
+//!   the neighbouring triangle. Cells may then overlap by that tolerance.
 //! - Ties between equal dates are broken by (side, site) ids, so the run is deterministic.
 //! - The events are counted ([`Wave::events`]: points added, the paper's iterations) along with
 //!   the pops that were dropped ([`Wave::stale_events`]).
@@ -37,6 +42,9 @@ use std::collections::{BinaryHeap, HashMap};
 
 use crate::geometry::{Motion, Point, Scalar, dist2, dot, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
+
+/// Constellations up to this size are searched by a scan; larger ones through a hash grid.
+const INDEXED: usize = 48;
 
 /// One cell of a side's diagram: site `site` of the side's triangle is a nearest site for the
 /// parameters `lo ..= hi` along the side.
@@ -118,15 +126,16 @@ impl<S: Scalar> Ord for Event<S> {
 pub struct WaveOptions {
     /// In `f64`: points of a constellation closer than this times the longest side are the same.
     pub point_tolerance: f64,
-    /// Give up after this many events (points added).
-    pub max_events: u64,
+    /// Give up after this many events (points added); `None`: `64 n + 4·10⁶` for `n` triangles
+    /// (T_x needs about `2x`; a mesh near Delaunay about one per triangle).
+    pub max_events: Option<u64>,
 }
 
 impl Default for WaveOptions {
     fn default() -> Self {
         Self {
             point_tolerance: 1e-9,
-            max_events: 1 << 40,
+            max_events: None,
         }
     }
 }
@@ -189,16 +198,24 @@ pub fn run_wave<S: Scalar>(
             *x = true;
         }
     }
+    let max_events = options.max_events.unwrap_or(64 * n as u64 + 4_000_000);
     let mut heap = BinaryHeap::new();
+    // Every corner in V first, then the side lists: no event is pushed for an image that is
+    // already there.
     for q in p.polygons() {
         for &s in p.polygon_sides(q) {
             let c = class[s.idx()];
             if in_v[c as usize] {
                 let x = p.start(s);
                 if wave.find(q, &x).is_none() {
-                    wave.insert(p, q, x, c, &mut heap);
+                    wave.add_point(q, x, c);
                 }
             }
+        }
+    }
+    for q in p.polygons() {
+        for site in 0..wave.points[q.idx()].len() as u32 {
+            wave.update_sides(p, q, site, &mut heap);
         }
     }
     while let Some(Reverse(event)) = heap.pop() {
@@ -214,8 +231,8 @@ pub fn run_wave<S: Scalar>(
             wave.stale_events += 1;
             continue;
         }
-        if wave.events >= options.max_events {
-            return Err(WaveError::Budget(options.max_events));
+        if wave.events >= max_events {
+            return Err(WaveError::Budget(max_events));
         }
         wave.events += 1;
         let source = wave.sources[from.idx()][event.site as usize];
@@ -272,6 +289,10 @@ impl<S: Scalar> Wave<S> {
 
     /// The index of point `x` in the constellation of triangle `q`, if present.
     pub fn find(&self, q: PolygonId, x: &Point<S>) -> Option<u32> {
+        let points = &self.points[q.idx()];
+        if points.len() <= INDEXED {
+            return (0..points.len() as u32).find(|&i| self.same_point(&points[i as usize], x));
+        }
         let (bx, by) = self.bucket(x);
         for dx in -1..=1 {
             for dy in -1..=1 {
@@ -297,19 +318,54 @@ impl<S: Scalar> Wave<S> {
         source: u32,
         heap: &mut BinaryHeap<Reverse<Event<S>>>,
     ) {
+        let site = self.add_point(q, z, source);
+        self.update_sides(p, q, site, heap);
+    }
+
+    /// Adds `z` to X_q (and to the grid of a large constellation); returns its index.
+    fn add_point(&mut self, q: PolygonId, z: Point<S>, source: u32) -> u32 {
         let site = self.points[q.idx()].len() as u32;
-        let key = self.bucket(&z);
-        self.index
-            .entry((q.0, key.0, key.1))
-            .or_default()
-            .push(site);
         self.points[q.idx()].push(z);
         self.sources[q.idx()].push(source);
+        // Large constellations are found through a grid of buckets, small ones by a scan.
+        let count = self.points[q.idx()].len();
+        let newly_indexed = if count == INDEXED + 1 {
+            0..count
+        } else {
+            count - 1..count
+        };
+        if count > INDEXED {
+            for i in newly_indexed {
+                let key = self.bucket(&self.points[q.idx()][i]);
+                self.index
+                    .entry((q.0, key.0, key.1))
+                    .or_default()
+                    .push(i as u32);
+            }
+        }
+        site
+    }
+
+    /// Inserts site `site` of X_q into the three side lists of `q`, pushing the events of the
+    /// cells that changed or appeared (Proposition 14).
+    fn update_sides(
+        &mut self,
+        p: &Portalgon<S>,
+        q: PolygonId,
+        site: u32,
+        heap: &mut BinaryHeap<Reverse<Event<S>>>,
+    ) {
         for &s in p.polygon_sides(q) {
             let changed = self.insert_on_side(p, s, site);
+            let target = p.owner(p.mate(s).expect("closed"));
             for k in changed {
                 let cell = &self.cells[s.idx()][k];
                 let y = &self.points[q.idx()][cell.site as usize];
+                // Points are never removed: an image already in the target's constellation can
+                // never be a candidate event again (Proposition 14's deletions, done early).
+                if self.find(target, &self.to_mate[s.idx()].apply(y)).is_some() {
+                    continue;
+                }
                 let date2 = date2(p.start_ref(s), p.end_ref(s), y, &cell.lo, &cell.hi);
                 heap.push(Reverse(Event {
                     date2,
@@ -499,7 +555,8 @@ impl<S: Scalar> Wave<S> {
         );
         let mut run = Vec::with_capacity(before.len() + after.len() + 1);
         let mut changed = Vec::new();
-        for (mut cell, same) in before {
+        // A kept cell keeps its stamp (its event stays valid); a shrunk one gets a fresh stamp.
+        let mut push = |run: &mut Vec<SideCell<S>>, mut cell: SideCell<S>, same: bool| {
             if same {
                 alive[cell.stamp as usize] = true;
             } else {
@@ -507,22 +564,19 @@ impl<S: Scalar> Wave<S> {
                 changed.push(l + run.len());
             }
             run.push(cell);
+        };
+        for (cell, same) in before {
+            push(&mut run, cell, same);
         }
-        changed.push(l + run.len());
-        run.push(SideCell {
+        let new_cell = SideCell {
             site,
             lo: z_lo,
             hi: z_hi,
-            stamp: fresh(alive),
-        });
-        for (mut cell, same) in after {
-            if same {
-                alive[cell.stamp as usize] = true;
-            } else {
-                cell.stamp = fresh(alive);
-                changed.push(l + run.len());
-            }
-            run.push(cell);
+            stamp: 0,
+        };
+        push(&mut run, new_cell, false);
+        for (cell, same) in after {
+            push(&mut run, cell, same);
         }
         self.cells[s.idx()].splice(l..r, run);
         changed
