@@ -312,53 +312,53 @@ fn quad(p: &Portalgon<Rational>, s: SideId) -> Option<[Point<Rational>; 4]> {
     Some([p.start(s), p.end(s), p.start(p.prev_side(s)), d])
 }
 
+/// Applies `edit` to every live side, over and over, until a sweep changes nothing.
+fn until_stable(
+    p: &mut Portalgon<Rational>,
+    mut edit: impl FnMut(&mut Portalgon<Rational>, SideId) -> bool,
+) {
+    loop {
+        let sides: Vec<SideId> = p.sides().collect();
+        let mut changed = false;
+        for s in sides {
+            if p.is_side_live(s) {
+                changed |= edit(p, s);
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
 /// An exact flip algorithm, independent of the wave: flip every side whose two triangles fail
 /// the exact in-circle test (merge, cut the other diagonal), then merge the co-circular pairs.
 fn exact_flip_tessellation(mut p: Portalgon<Rational>) -> Portalgon<Rational> {
-    loop {
-        let mut flipped = false;
-        let sides: Vec<SideId> = p.sides().collect();
-        for s in sides {
-            if !p.is_side_live(s) {
-                continue;
-            }
-            let Some([a, b, c, d]) = quad(&p, s) else {
-                continue;
-            };
-            if incircle(&a, &b, &c, &d) == Ordering::Greater {
-                flip_side(&mut p, s, &c, &d);
-                flipped = true;
-            }
+    until_stable(&mut p, |p, s| {
+        let Some([a, b, c, d]) = quad(p, s) else {
+            return false;
+        };
+        let flip = incircle(&a, &b, &c, &d) == Ordering::Greater;
+        if flip {
+            flip_side(p, s, &c, &d);
         }
-        if !flipped {
-            break;
-        }
-    }
+        flip
+    });
     // Merge co-circular neighbours.
-    loop {
-        let mut merged = false;
-        let sides: Vec<SideId> = p.sides().collect();
-        for s in sides {
-            if !p.is_side_live(s) {
-                continue;
-            }
-            let Some((t, motion)) = across(&p, s) else {
-                continue;
-            };
-            let c = p.corners(p.owner(s));
-            let on = p
-                .corners(p.owner(t))
-                .iter()
-                .all(|x| incircle(&c[0], &c[1], &c[2], &motion.apply(x)) == Ordering::Equal);
-            if on {
-                p.merge(s).unwrap();
-                merged = true;
-            }
+    until_stable(&mut p, |p, s| {
+        let Some((t, motion)) = across(p, s) else {
+            return false;
+        };
+        let c = p.corners(p.owner(s));
+        let on = p
+            .corners(p.owner(t))
+            .iter()
+            .all(|x| incircle(&c[0], &c[1], &c[2], &motion.apply(x)) == Ordering::Equal);
+        if on {
+            p.merge(s).unwrap();
         }
-        if !merged {
-            break;
-        }
-    }
+        on
+    });
     p.compacted().0
 }
 
