@@ -459,6 +459,24 @@ fn random_rational_portalgons_agree_with_an_exact_flip_algorithm() {
     }
 }
 
+/// Checks the voronoi output of `tri` (as the portalgon `p`, V = every vertex) and that it is the
+/// flip route's tessellation; returns the flipped triangulation.
+fn assert_same_as_flip(
+    tri: &IntrinsicTriangulation,
+    p: &Portalgon,
+    v: &VoronoiDelaunay<f64>,
+    what: &str,
+) -> IntrinsicTriangulation {
+    check_empty_circles(v);
+    check_invariants_kept(p, v, Sources::All);
+    let mut flipped = tri.clone();
+    flip_to_delaunay(&mut flipped, &DelaunayOptions::default()).unwrap();
+    let t = delaunay_tessellation(&flipped, DEFAULT_COCIRCULAR_TOLERANCE);
+    let outcome = compare_tessellations(&v.tessellation, &t.portalgon, 1e-7, false).unwrap();
+    assert!(outcome.is_isometric(), "{what}: {outcome}");
+    flipped
+}
+
 /// On a shared mesh: the voronoi tessellation (V = every vertex, f64) is the flip route's, and the
 /// Laplacians of their triangulations agree to 1e-9 relative. `Err` when the f64 dual refuses the
 /// mesh with its typed error (exactly co-circular configurations, see the dual's module doc);
@@ -474,13 +492,7 @@ fn check_against_flip(mesh: &SharedMesh) -> Result<(), String> {
         }
         Err(e) => panic!("{}: {e}", mesh.file),
     };
-    check_empty_circles(&v);
-    check_invariants_kept(&p, &v, Sources::All);
-    let mut flipped = tri.clone();
-    flip_to_delaunay(&mut flipped, &DelaunayOptions::default()).unwrap();
-    let t = delaunay_tessellation(&flipped, DEFAULT_COCIRCULAR_TOLERANCE);
-    let outcome = compare_tessellations(&v.tessellation, &t.portalgon, 1e-7, false).unwrap();
-    assert!(outcome.is_isometric(), "{}: {outcome}", mesh.file);
+    let flipped = assert_same_as_flip(&tri, &p, &v, &mesh.file);
     let ours = v.triangulation().unwrap();
     let (la, lb) = (cotan_laplacian(&ours), cotan_laplacian(&flipped));
     assert_eq!(la.n, lb.n);
@@ -577,12 +589,6 @@ fn random_intrinsic_retriangulations_and_sheared_tori() {
     for tri in tris {
         let (p, _) = tri.to_portalgon();
         let v = voronoi_delaunay(&p, &VoronoiOptions::default()).unwrap();
-        check_empty_circles(&v);
-        check_invariants_kept(&p, &v, Sources::All);
-        let mut flipped = tri.clone();
-        flip_to_delaunay(&mut flipped, &DelaunayOptions::default()).unwrap();
-        let t = delaunay_tessellation(&flipped, DEFAULT_COCIRCULAR_TOLERANCE);
-        let outcome = compare_tessellations(&v.tessellation, &t.portalgon, 1e-7, false).unwrap();
-        assert!(outcome.is_isometric(), "{outcome}");
+        assert_same_as_flip(&tri, &p, &v, "a re-triangulation");
     }
 }
