@@ -106,6 +106,9 @@ enum Command {
         /// Merge vertices with exactly equal positions first (mesh input).
         #[arg(long)]
         weld: bool,
+        /// How the canonical tessellations are computed.
+        #[command(flatten)]
+        method: commands::delaunay::MethodOptions,
     },
     /// Run every capability on a built-in example and write the results into a folder.
     Demo {
@@ -135,8 +138,8 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         }
         Command::Quad { job, algorithm } => done(commands::quad::run(&job, algorithm)),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
-        Command::Isometric { a, b, weld } => {
-            commands::isometric::run(&a, &b, weld).map(|v| ExitCode::from(v.exit_code()))
+        Command::Isometric { a, b, weld, method } => {
+            commands::isometric::run(&a, &b, weld, &method).map(|v| ExitCode::from(v.exit_code()))
         }
         Command::Demo { out } => done(commands::demo::run(&out)),
     }

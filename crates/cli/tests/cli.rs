@@ -751,3 +751,148 @@ fn quad_json_says_whether_the_file_order_or_a_subdivision_was_taken() {
         );
     }
 }
+
+#[test]
+fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    // T_x for a fractional x, written by exact corners.
+    surftopo()
+        .args(["generate", "flat-torus", "--x", "1001/3", "-o"])
+        .arg(d("t.json"))
+        .assert()
+        .success();
+    assert!(
+        std::fs::read_to_string(d("t.json"))
+            .unwrap()
+            .contains("\"1001/3\"")
+    );
+    for exact in [false, true] {
+        let mut cmd = surftopo();
+        cmd.arg("delaunay")
+            .arg(d("t.json"))
+            .args(["--method", "voronoi", "-o"])
+            .arg(d("vd.json"))
+            .arg("--tessellation")
+            .arg(d("vt.json"))
+            .arg("--laplacian")
+            .arg(d("VL.mtx"))
+            .arg("--mass")
+            .arg(d("VM.mtx"))
+            .arg("--json");
+        if exact {
+            cmd.arg("--exact");
+        }
+        let v = json_of(
+            &mut cmd,
+            &[
+                "method",
+                "arithmetic",
+                "wave_events",
+                "max_constellation",
+                "faces",
+            ],
+        );
+        assert_eq!(v["method"], "voronoi");
+        assert_eq!(v["arithmetic"], if exact { "exact" } else { "f64" });
+        assert_eq!(v["faces"], 2);
+        assert!(v["max_constellation"].as_u64().unwrap() > 300);
+        for f in ["vd.json", "vt.json", "VL.mtx", "VM.mtx"] {
+            assert!(d(f).is_file(), "{f} not written");
+        }
+        // D_x: two triangles congruent to (0,0), (1,0), (2/3, 2); exactly so with --exact.
+        let tess = std::fs::read_to_string(d("vt.json")).unwrap();
+        if exact {
+            assert!(tess.contains("/3\""), "{tess}");
+        }
+        // The voronoi triangulation is isometric to the input, by both methods.
+        for method in ["flip", "voronoi"] {
+            surftopo()
+                .arg("isometric")
+                .arg(d("t.json"))
+                .arg(d("vd.json"))
+                .args(["--method", method])
+                .assert()
+                .code(0);
+        }
+    }
+    surftopo()
+        .arg("isometric")
+        .arg(d("t.json"))
+        .arg(d("vd.json"))
+        .args(["--method", "voronoi", "--exact"])
+        .assert()
+        .code(0);
+    // --exact is refused for meshes, lengths and the flip method (exit 2, saying why).
+    surftopo()
+        .args(["generate", "tetrahedron", "-o"])
+        .arg(d("tet.obj"))
+        .assert()
+        .success();
+    let refused = |args: &[&str], input: &std::path::Path, why: &str| {
+        let out = surftopo()
+            .arg("delaunay")
+            .arg(input)
+            .arg("-o")
+            .arg(d("x.json"))
+            .args(args)
+            .assert()
+            .code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
+        assert!(stderr.contains(why), "{stderr}");
+    };
+    refused(
+        &["--method", "voronoi", "--exact"],
+        &d("tet.obj"),
+        "exact corners",
+    );
+    refused(&["--exact"], &d("t.json"), "--method voronoi");
+    std::fs::write(
+        d("lengths.json"),
+        r#"{"polygons": [{"lengths": [1, 1, 1]}, {"lengths": [1, 1, 1]}],
+            "matching": [[[0, 0], [1, 0]], [[0, 1], [1, 2]], [[0, 2], [1, 1]]]}"#,
+    )
+    .unwrap();
+    refused(
+        &["--method", "voronoi", "--exact"],
+        &d("lengths.json"),
+        "lengths",
+    );
+    // A mesh by the wave in f64: the same Laplacian as the flip route's.
+    for (method, out) in [("flip", "FL.mtx"), ("voronoi", "WL.mtx")] {
+        surftopo()
+            .arg("delaunay")
+            .arg(d("tet.obj"))
+            .arg("-o")
+            .arg(d("tet.json"))
+            .args(["--method", method, "--laplacian"])
+            .arg(d(out))
+            .assert()
+            .success();
+    }
+    let entries = |f: &str| -> Vec<(usize, usize, f64)> {
+        std::fs::read_to_string(d(f))
+            .unwrap()
+            .lines()
+            .filter(|l| !l.starts_with('%'))
+            .skip(1)
+            .map(|l| {
+                let w: Vec<&str> = l.split_whitespace().collect();
+                (
+                    w[0].parse().unwrap(),
+                    w[1].parse().unwrap(),
+                    w[2].parse().unwrap(),
+                )
+            })
+            .collect()
+    };
+    let (a, b) = (entries("FL.mtx"), entries("WL.mtx"));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!((x.0, x.1), (y.0, y.1));
+        assert!(
+            (x.2 - y.2).abs() <= 1e-9 * x.2.abs().max(1.0),
+            "{x:?} vs {y:?}"
+        );
+    }
+}

@@ -8,6 +8,7 @@
 //! exactly those vertex ids back.
 
 use crate::error::PortalgonError;
+use crate::geometry::Scalar;
 use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, SideId, signed_area};
 use crate::triangulation::IntrinsicTriangulation;
@@ -130,7 +131,10 @@ impl IntrinsicTriangulation {
     /// [`PortalgonError::Empty`], [`PortalgonError::NotTriangle`], [`PortalgonError::Unmatched`],
     /// [`PortalgonError::UnequalSides`], [`PortalgonError::VertexLabels`],
     /// [`PortalgonError::Gluing`] (not connected).
-    pub fn from_portalgon(p: &Portalgon, tolerance: f64) -> Result<Self, PortalgonError> {
+    pub fn from_portalgon<S: Scalar>(
+        p: &Portalgon<S>,
+        tolerance: f64,
+    ) -> Result<Self, PortalgonError> {
         let polygons: Vec<_> = p.polygons().collect();
         if polygons.is_empty() {
             return Err(PortalgonError::Empty);

@@ -133,6 +133,15 @@ pub enum PortalgonError {
         /// Number of lengths given.
         count: usize,
     },
+    /// Exact mode needs corners, but a polygon is given by its lengths (square roots in general).
+    #[error(
+        "polygon {polygon} is given by \"lengths\": exact arithmetic needs every polygon given by \
+         its corners"
+    )]
+    LengthsNotExact {
+        /// Polygon index.
+        polygon: usize,
+    },
     /// A coordinate or length is NaN or infinite.
     #[error("polygon {polygon}: corner or side {index} is not finite")]
     NonFinite {

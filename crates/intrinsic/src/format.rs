@@ -29,6 +29,10 @@
 //!   which keeps the surface oriented. A side appears in at most one pair; sides in no pair are
 //!   boundary. Matched sides must have equal lengths up to a relative tolerance
 //!   (`|a - b| <= tolerance · max(a, b)`, default [`crate::DEFAULT_LENGTH_TOLERANCE`] = 1e-9).
+//! - Every coordinate and length is a [`Number`]: a JSON number (the exact value of its double) or
+//!   a string holding an exact decimal or fraction (`"1000000000.333"`, `"3000000001/3"`); exact
+//!   mode ([`PortalgonDoc::to_portalgon_in`] with rationals) reads them exactly, and the writer
+//!   writes a number when the value is a double, a `"p/q"` string otherwise.
 //! - `format` and `version` may be omitted; if present they must be `"surftopo-portalgon"` and 1.
 //!   An optional `comment` string is kept. Unknown fields are errors (typos do not pass silently).
 //!
@@ -40,11 +44,12 @@
 
 use crate::convert::{TriangleGluing, is_clockwise, triangulation_from_gluing};
 use crate::error::PortalgonError;
+use crate::geometry::{Point, Rational, Scalar};
 use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, check_polygon};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::trig;
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
 use surftopo_mesh::Side;
 
@@ -64,6 +69,99 @@ fn format_name() -> String {
 }
 fn format_version() -> u32 {
     FORMAT_VERSION
+}
+
+/// A coordinate or a length of a portalgon file: a JSON number, read as the exact value of the
+/// double it parses to, or a string holding an exact rational (an integer, a decimal with an
+/// optional exponent, or a fraction `"p/q"`; [`Rational`]'s syntax).
+///
+/// Written as a JSON number when the value is exactly a double (so `f64` output is as before, bit
+/// for bit), as a `"p/q"` (or integer) string otherwise.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Number {
+    /// The exact value of a double (a JSON number).
+    Double(f64),
+    /// An exact rational that is not a double (a JSON string).
+    Exact(Rational),
+}
+
+impl Number {
+    /// The value of a scalar: a double for `f64`; for rationals a double when exactly one
+    /// (`Exact` otherwise). `Double(NaN)` for a non-finite double (rejected when written).
+    pub fn from_scalar<S: Scalar>(v: &S) -> Self {
+        if !S::EXACT {
+            return Number::Double(v.to_f64());
+        }
+        match v.to_rational() {
+            Some(r) => match r.as_exact_f64() {
+                Some(x) => Number::Double(x),
+                None => Number::Exact(r),
+            },
+            None => Number::Double(f64::NAN),
+        }
+    }
+
+    /// The nearest double.
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            Number::Double(x) => *x,
+            Number::Exact(r) => r.to_f64(),
+        }
+    }
+
+    /// The value in the scalar type `S` (exact for rationals; `None` for a non-finite double).
+    pub fn to_scalar<S: Scalar>(&self) -> Option<S> {
+        match self {
+            Number::Double(x) => S::from_f64(*x),
+            Number::Exact(r) => Some(S::from_rational(r)),
+        }
+    }
+
+    /// Whether the value is finite (strings always are).
+    pub fn is_finite(&self) -> bool {
+        matches!(self, Number::Exact(_)) || self.to_f64().is_finite()
+    }
+}
+
+impl From<f64> for Number {
+    fn from(x: f64) -> Self {
+        Number::Double(x)
+    }
+}
+
+impl Serialize for Number {
+    fn serialize<Z: Serializer>(&self, serializer: Z) -> Result<Z::Ok, Z::Error> {
+        match self {
+            Number::Double(x) => serializer.serialize_f64(*x),
+            Number::Exact(r) => serializer.serialize_str(&r.to_string()),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Number {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = Number;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a number, or a string holding an exact decimal or fraction p/q")
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Number, E> {
+                Ok(Number::Double(v))
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Number, E> {
+                Ok(Number::Double(v as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Number, E> {
+                Ok(Number::Double(v as f64))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Number, E> {
+                let r: Rational = v.parse().map_err(E::custom)?;
+                Ok(Number::from_scalar(&r))
+            }
+        }
+        deserializer.deserialize_any(Visitor)
+    }
 }
 
 /// A portalgon file, as parsed (see the module doc).
@@ -92,10 +190,10 @@ pub struct PortalgonDoc {
 pub struct PolygonDoc {
     /// Corners, counter-clockwise.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub corners: Option<Vec<[f64; 2]>>,
+    pub corners: Option<Vec<[Number; 2]>>,
     /// Side lengths of a triangle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub lengths: Option<Vec<f64>>,
+    pub lengths: Option<Vec<Number>>,
     /// Vertex label of each corner.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub vertices: Option<Vec<u32>>,
@@ -179,9 +277,13 @@ impl PortalgonDoc {
 
     fn check_finite(&self) -> Result<(), PortalgonError> {
         for (polygon, p) in self.polygons.iter().enumerate() {
-            let corners = p.corners.iter().flatten().flatten();
-            let lengths = p.lengths.iter().flatten();
-            if let Some(index) = corners.chain(lengths).position(|x| !x.is_finite()) {
+            if let Some(index) = p
+                .corners
+                .iter()
+                .flatten()
+                .position(|c| !(c[0].is_finite() && c[1].is_finite()))
+                .or_else(|| p.lengths.iter().flatten().position(|x| !x.is_finite()))
+            {
                 return Err(PortalgonError::NonFinite { polygon, index });
             }
         }
@@ -277,26 +379,53 @@ impl PortalgonDoc {
     /// # Errors
     /// Any [`PortalgonError`] about shapes or the matching.
     pub fn to_portalgon(&self, tolerance: f64) -> Result<Portalgon, PortalgonError> {
+        self.to_portalgon_in::<f64>(tolerance)
+    }
+
+    /// Whether every polygon is given by its corners (the input of exact mode: lengths are
+    /// square roots in general).
+    pub fn has_corners_only(&self) -> bool {
+        self.polygons.iter().all(|p| p.corners.is_some())
+    }
+
+    /// The portalgon in the scalar type `S` ([`Self::to_portalgon`] for `f64`). In exact mode
+    /// (`S::EXACT`) corners are read exactly (numbers as the doubles they are, strings as the
+    /// rationals they hold), matched sides must have exactly equal lengths, and a polygon given by
+    /// `lengths` is refused ([`PortalgonError::LengthsNotExact`]).
+    ///
+    /// # Errors
+    /// As [`Self::to_portalgon`]; [`PortalgonError::LengthsNotExact`].
+    pub fn to_portalgon_in<S: Scalar>(
+        &self,
+        tolerance: f64,
+    ) -> Result<Portalgon<S>, PortalgonError> {
         let counts = self.side_counts()?;
         let pairs = self.checked_pairs(&counts)?;
         let labelled = self.labels_present()?;
-        let mut out = Portalgon::new();
+        let mut out = Portalgon::empty();
         for (polygon, p) in self.polygons.iter().enumerate() {
-            let corners = match (&p.corners, &p.lengths) {
+            let corners: Vec<Point<S>> = match (&p.corners, &p.lengths) {
                 (Some(c), _) => {
-                    check_polygon(polygon, c)?;
-                    c.clone()
+                    let c = scalar_corners(polygon, c)?;
+                    check_polygon(polygon, &c)?;
+                    c
+                }
+                (None, Some(_)) if S::EXACT => {
+                    return Err(PortalgonError::LengthsNotExact { polygon });
                 }
                 (None, Some(l)) => {
+                    let l: Vec<f64> = l.iter().map(Number::to_f64).collect();
                     let lengths = [l[0], l[1], l[2]];
                     if !trig::is_triangle(l[0], l[1], l[2]) {
                         return Err(PortalgonError::TriangleInequality { polygon, lengths });
                     }
-                    vec![
-                        [0.0, 0.0],
-                        [l[0], 0.0],
-                        trig::third_corner(l[0], l[1], l[2]),
-                    ]
+                    let third = trig::third_corner(l[0], l[1], l[2]);
+                    [[0.0, 0.0], [l[0], 0.0], third]
+                        .iter()
+                        .map(|c| [S::from_f64(c[0]), S::from_f64(c[1])])
+                        .map(|c| c[0].clone().zip(c[1].clone()).map(|(x, y)| [x, y]))
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or(PortalgonError::NonFinite { polygon, index: 0 })?
                 }
                 (None, None) => unreachable!("side_counts checked the shape"),
             };
@@ -341,17 +470,12 @@ impl PortalgonDoc {
         let mut sides = Vec::with_capacity(self.polygons.len());
         for (polygon, p) in self.polygons.iter().enumerate() {
             let l = match (&p.corners, &p.lengths) {
-                (Some(c), _) => {
-                    if let Some(index) = c
-                        .iter()
-                        .position(|x| !(x[0].is_finite() && x[1].is_finite()))
-                    {
-                        return Err(PortalgonError::NonFinite { polygon, index });
-                    }
-                    if is_clockwise(c) {
+                (Some(c), _) if c.iter().flatten().all(|x| matches!(x, Number::Double(_))) => {
+                    let c: Vec<Point<f64>> = scalar_corners(polygon, c)?;
+                    if is_clockwise(&c) {
                         return Err(PortalgonError::NotCounterClockwise {
                             polygon,
-                            area: crate::portalgon::signed_area(c),
+                            area: crate::portalgon::signed_area(&c),
                         });
                     }
                     [0, 1, 2].map(|i| {
@@ -359,7 +483,24 @@ impl PortalgonDoc {
                         (a[0] - b[0]).hypot(a[1] - b[1])
                     })
                 }
-                (None, Some(l)) => [l[0], l[1], l[2]],
+                (Some(c), _) => {
+                    // Exact corners that are not all doubles: the orientation and the squared
+                    // lengths exactly, then one rounding and a square root.
+                    let c: Vec<Point<Rational>> = scalar_corners(polygon, c)?;
+                    let area = crate::portalgon::signed_area(&c);
+                    if area.sign() == std::cmp::Ordering::Less {
+                        return Err(PortalgonError::NotCounterClockwise {
+                            polygon,
+                            area: area.to_f64(),
+                        });
+                    }
+                    [0, 1, 2].map(|i| {
+                        crate::geometry::dist2(&c[i], &c[(i + 1) % 3])
+                            .to_f64()
+                            .sqrt()
+                    })
+                }
+                (None, Some(l)) => [l[0].to_f64(), l[1].to_f64(), l[2].to_f64()],
                 (None, None) => unreachable!("side_counts checked the shape"),
             };
             if let Some(index) = l.iter().position(|x| !x.is_finite()) {
@@ -412,13 +553,20 @@ impl PortalgonDoc {
 
     /// The document of a portalgon: live polygons in id order (renumbered densely) with their
     /// corners, labels if every corner has one, and the matching.
-    pub fn from_portalgon(p: &Portalgon) -> Self {
+    /// Exact corners are written exactly ([`Number::from_scalar`]).
+    pub fn from_portalgon<S: Scalar>(p: &Portalgon<S>) -> Self {
         let (dense, _) = p.compacted();
         let labelled = dense.sides().all(|s| dense.vertex_label(s).is_some());
         let polygons = dense
             .polygons()
             .map(|q| PolygonDoc {
-                corners: Some(dense.corners(q)),
+                corners: Some(
+                    dense
+                        .corners(q)
+                        .iter()
+                        .map(|c| [Number::from_scalar(&c[0]), Number::from_scalar(&c[1])])
+                        .collect(),
+                ),
                 lengths: None,
                 vertices: labelled.then(|| {
                     dense
@@ -463,11 +611,21 @@ impl PortalgonDoc {
             polygons.push(match style {
                 TriangleStyle::Lengths => PolygonDoc {
                     corners: None,
-                    lengths: Some(tri.face_sides(f).to_vec()),
+                    lengths: Some(
+                        tri.face_sides(f)
+                            .iter()
+                            .map(|&l| Number::Double(l))
+                            .collect(),
+                    ),
                     vertices,
                 },
                 TriangleStyle::Corners => PolygonDoc {
-                    corners: Some(tri.layout_face(f).to_vec()),
+                    corners: Some(
+                        tri.layout_face(f)
+                            .iter()
+                            .map(|c| [Number::Double(c[0]), Number::Double(c[1])])
+                            .collect(),
+                    ),
                     lengths: None,
                     vertices,
                 },
@@ -494,6 +652,21 @@ impl PortalgonDoc {
             matching,
         }
     }
+}
+
+/// The corners of polygon `polygon` in the scalar type `S`.
+fn scalar_corners<S: Scalar>(
+    polygon: usize,
+    corners: &[[Number; 2]],
+) -> Result<Vec<Point<S>>, PortalgonError> {
+    corners
+        .iter()
+        .enumerate()
+        .map(|(index, c)| match (c[0].to_scalar(), c[1].to_scalar()) {
+            (Some(x), Some(y)) => Ok([x, y]),
+            _ => Err(PortalgonError::NonFinite { polygon, index }),
+        })
+        .collect()
 }
 
 impl IntrinsicTriangulation {

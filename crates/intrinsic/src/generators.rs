@@ -3,6 +3,8 @@
 
 use crate::convert::{TriangleGluing, triangulation_from_gluing};
 use crate::error::PortalgonError;
+use crate::geometry::{Point, Scalar};
+use crate::portalgon::{PolygonId, Portalgon};
 use crate::triangulation::IntrinsicTriangulation;
 use rand::RngExt;
 use rand::SeedableRng;
@@ -56,7 +58,6 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
             ),
         ));
     }
-    let cell = |i: u32, j: u32| (j % m) * m + (i % m);
     let n = (m * m) as usize;
     let mut sides = Vec::with_capacity(2 * n);
     for _ in 0..n {
@@ -64,8 +65,70 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
         sides.push([len_u, len_d, len_w]);
         sides.push([len_w, len_u, len_d]);
     }
+    let pairs = flat_torus_pairs(m);
+    let polygon_index: Vec<usize> = (0..2 * n).collect();
+    triangulation_from_gluing(&TriangleGluing {
+        sides: &sides,
+        pairs: &pairs,
+        labels: None,
+        polygon_index: &polygon_index,
+        tolerance: 0.0,
+    })
+}
+
+/// T_x refined `m × m` as a portalgon given by corners, in the scalar type `S` (exactly, for
+/// [`crate::geometry::Rational`] and any rational `x`): the same triangles, sides and
+/// matching as [`flat_torus`] (triangle `2(jm + i)` has corners `p(i, j), p(i+1, j), p(i, j+1)`,
+/// triangle `2(jm + i) + 1` has `p(i+1, j), p(i+1, j+1), p(i, j+1)`, with `p(i, j) = (i u + j
+/// w)/m`, `u = (1, 0)`, `w = (x, 2)`); the corner at `p(i, j)` is labelled with the vertex
+/// `(j mod m) m + (i mod m)`. For `m = 1`: the corners `(0, 0), (1, 0), (x, 2)` and
+/// `(1, 0), (1 + x, 2), (x, 2)`.
+///
+/// # Errors
+/// [`PortalgonError::NonFinite`] unless `x` is finite and `1 <= m <= 30000`.
+pub fn flat_torus_portalgon<S: Scalar>(x: &S, m: u32) -> Result<Portalgon<S>, PortalgonError> {
+    if !x.is_finite() || m == 0 || m > 30_000 {
+        return Err(PortalgonError::NonFinite {
+            polygon: 0,
+            index: 0,
+        });
+    }
+    let ms = S::from_i64(i64::from(m));
+    let point = |i: u32, j: u32| -> Point<S> {
+        let (i, j) = (S::from_i64(i64::from(i)), S::from_i64(i64::from(j)));
+        [
+            (i + j.clone() * x.clone()) / ms.clone(),
+            (j * S::from_i64(2)) / ms.clone(),
+        ]
+    };
+    let label = |i: u32, j: u32| (j % m) * m + (i % m);
+    let mut p = Portalgon::empty();
+    for j in 0..m {
+        for i in 0..m {
+            p.push_polygon(
+                &[point(i, j), point(i + 1, j), point(i, j + 1)],
+                Some(&[label(i, j), label(i + 1, j), label(i, j + 1)]),
+            );
+            p.push_polygon(
+                &[point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)],
+                Some(&[label(i + 1, j), label(i + 1, j + 1), label(i, j + 1)]),
+            );
+        }
+    }
+    for (a, b) in flat_torus_pairs(m) {
+        let side = |s: Side| p.side(PolygonId(s.face), usize::from(s.side));
+        let (sa, sb) = (side(a), side(b));
+        // Exact lengths agree exactly; in f64 the tolerance covers the rounding of `point`.
+        p.glue(sa, sb, 1e-12)?;
+    }
+    Ok(p)
+}
+
+/// The matching of [`flat_torus`]: `3m²` pairs of sides.
+fn flat_torus_pairs(m: u32) -> Vec<(Side, Side)> {
+    let cell = |i: u32, j: u32| (j % m) * m + (i % m);
     let side = |face: u32, side: u8| Side { face, side };
-    let mut pairs = Vec::with_capacity(3 * n);
+    let mut pairs = Vec::with_capacity(3 * (m * m) as usize);
     for j in 0..m {
         for i in 0..m {
             let c = cell(i, j);
@@ -78,14 +141,7 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
             pairs.push((side(a, 2), side(2 * cell(i + m - 1, j) + 1, 0)));
         }
     }
-    let polygon_index: Vec<usize> = (0..2 * n).collect();
-    triangulation_from_gluing(&TriangleGluing {
-        sides: &sides,
-        pairs: &pairs,
-        labels: None,
-        polygon_index: &polygon_index,
-        tolerance: 0.0,
-    })
+    pairs
 }
 
 /// Sheared tori (a torus of revolution whose grid diagonals wind around the tube): the mesh

@@ -11,9 +11,10 @@
 //! inactive regions), [`Portalgon::split_side`] (INSERTVERTICES), [`Portalgon::vertex_info`]
 //! (weak and strong vertices, Section 4.2), [`Portalgon::components`] and [`Portalgon::splice`].
 //! Section 3 and Appendix B: [`Biface`] with the good-biface kernel [`Biface::make_good`] (Lemma 25
-//! by DUBOIS.md §2.1's closed forms), and tubes with Proposition 4
-//! ([`Portalgon::good_biface_of_tube`], [`TubeRoute`]). Not here yet: SIMPLIFYTUBES and ALGORITHM
-//! (Section 4), the wave algorithm (Appendix D).
+//! by closed forms), and tubes with Proposition 4 ([`Portalgon::good_biface_of_tube`],
+//! [`TubeRoute`]). [`voronoi`] is Proposition 3's second route to the Delaunay tessellation, the
+//! multi-source wave of Appendix D and the dual of its Voronoi diagram, in `f64` or exactly over the
+//! rationals ([`geometry`]). Not here yet: SIMPLIFYTUBES and ALGORITHM (Section 4).
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
@@ -21,7 +22,8 @@
 //!   ([`PortalgonDoc`], format in [`mod@format`] and `PORTALGON_FORMAT.md`).
 //! - [`flip_to_delaunay`]: Bobenko–Springborn edge flipping with robust half-angle formulas
 //!   ([`trig`]), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
-//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation.
+//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation;
+//!   [`voronoi::voronoi_delaunay`] computes it by the wave instead (exactly with rational corners).
 //! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
 //!   ([`write_matrix_market`]). Convention: the Laplacian is positive semidefinite.
 //!   [`intrinsic_delaunay_laplacian`] flips and assembles in one call (libigl's
@@ -71,6 +73,7 @@ mod tessellation;
 mod triangulation;
 pub mod trig;
 mod tube;
+pub mod voronoi;
 
 pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
 pub use delaunay::{

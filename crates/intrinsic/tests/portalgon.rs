@@ -3,7 +3,7 @@
 
 mod common;
 
-use surftopo_intrinsic::generators::flat_torus;
+use surftopo_intrinsic::generators::{flat_torus, flat_torus_portalgon};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::{
     DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, IntrinsicTriangulation, PolygonId, Portalgon,
@@ -536,4 +536,104 @@ fn exact_edits_stay_exact() {
         Err(PortalgonError::UnequalSides { .. })
     ));
     q.check_invariants().unwrap();
+}
+
+/// Exact numbers in the JSON: strings hold decimals and fractions, numbers are the doubles they
+/// parse to; the exact writer writes a number exactly when the value is a double.
+#[test]
+fn exact_coordinates_round_trip_through_json() {
+    let text = r#"{
+      "polygons": [
+        { "corners": [[0, 0], ["3000000001/3", "0"], ["1000000000.333", 2]] },
+        { "corners": [["3000000001/3", 0], ["6000000001/3", 2], ["1000000000.333", 2]] }
+      ],
+      "matching": [ [[0, 1], [1, 2]] ]
+    }"#;
+    let doc = PortalgonDoc::from_json(text).unwrap();
+    let p = doc.to_portalgon_in::<Rational>(0.0).unwrap();
+    p.check_invariants().unwrap();
+    let r = |x: &str| x.parse::<Rational>().unwrap();
+    assert_eq!(
+        p.start(p.side(PolygonId(0), 1)),
+        [r("3000000001/3"), r("0")]
+    );
+    assert_eq!(p.start(p.side(PolygonId(0), 2))[0], r("1000000000333/1000"));
+    // The exact writer: integers and doubles as numbers, the rest as "p/q" strings.
+    let written = PortalgonDoc::from_portalgon(&p).to_json().unwrap();
+    assert!(written.contains(r#"["3000000001/3",0.0]"#), "{written}");
+    assert!(
+        written.contains(r#"["1000000000333/1000",2.0]"#),
+        "{written}"
+    );
+    let back = PortalgonDoc::from_json(&written)
+        .unwrap()
+        .to_portalgon_in::<Rational>(0.0)
+        .unwrap();
+    assert_eq!(back, p);
+    // The same file in f64: the nearest doubles.
+    let f = doc.to_portalgon(1e-9).unwrap();
+    assert_eq!(f.start(f.side(PolygonId(0), 1))[0], 3000000001.0 / 3.0);
+    // A JSON number is the exact value of its double: 0.1 is not 1/10.
+    let tenth =
+        PortalgonDoc::from_json(r#"{"polygons": [{"corners": [[0, 0], [0.1, 0], [0, 1]]}]}"#)
+            .unwrap()
+            .to_portalgon_in::<Rational>(0.0)
+            .unwrap();
+    assert_eq!(
+        tenth.start(tenth.side(PolygonId(0), 1))[0],
+        Rational::from_f64(0.1).unwrap()
+    );
+    assert_ne!(tenth.start(tenth.side(PolygonId(0), 1))[0], r("1/10"));
+    // Version-1 files are read as before; lengths are refused in exact mode.
+    let t3 = PortalgonDoc::from_json(T3).unwrap();
+    assert!(matches!(
+        t3.to_portalgon_in::<Rational>(0.0),
+        Err(PortalgonError::LengthsNotExact { polygon: 1 })
+    ));
+    assert!(!t3.has_corners_only());
+    // Bad strings are JSON errors with a position.
+    for bad in [r#""1/0""#, r#""abc""#, r#""1e""#, "true"] {
+        let text = format!(r#"{{"polygons": [{{"corners": [[0, 0], [{bad}, 0], [0, 1]]}}]}}"#);
+        match PortalgonDoc::from_json(&text) {
+            Err(PortalgonError::Json(m)) => assert!(m.contains("line 1"), "{m}"),
+            other => panic!("{bad}: {other:?}"),
+        }
+    }
+}
+
+/// T_x by exact corners: for x = 10⁴ + 1/3 the two triangles, glued exactly, area 2, one vertex;
+/// written and read back as the same portalgon, and as a triangulation close to [`flat_torus`].
+#[test]
+fn exact_flat_torus_by_corners() {
+    let x: Rational = "30001/3".parse().unwrap();
+    for m in [1, 3] {
+        let p = flat_torus_portalgon(&x, m).unwrap();
+        p.check_invariants().unwrap();
+        p.check_closed().unwrap();
+        assert_eq!(p.area(), Rational::from_i64(2));
+        assert_eq!(p.vertex_classes().1, (m * m) as usize);
+        let doc = PortalgonDoc::from_portalgon(&p);
+        let text = doc.to_json().unwrap();
+        let back = PortalgonDoc::from_json(&text).unwrap();
+        assert_eq!(back.to_portalgon_in::<Rational>(0.0).unwrap(), p);
+        let tri = back.to_triangulation(1e-9).unwrap();
+        let reference = flat_torus(x.to_f64(), m).unwrap();
+        // Same faces, lengths and neighbours; vertices the same up to renumbering.
+        let (mt, mr) = (tri.mesh(), reference.mesh());
+        assert_eq!(mt.face_slots(), mr.face_slots());
+        let mut rename = std::collections::HashMap::new();
+        for f in mt.faces() {
+            let (lt, lr) = (common::sides(&tri, f), common::sides(&reference, f));
+            for k in 0..3 {
+                assert!((lt[k] - lr[k]).abs() <= 1e-12 * lr[k], "{lt:?} vs {lr:?}");
+            }
+            for (vt, vr) in mt.face_vertices(f).into_iter().zip(mr.face_vertices(f)) {
+                assert_eq!(*rename.entry(vt).or_insert(vr), vr);
+            }
+            for (ht, hr) in mt.face_halfedges(f).into_iter().zip(mr.face_halfedges(f)) {
+                assert_eq!(mt.face(ht.twin()), mr.face(hr.twin()));
+            }
+        }
+        assert_eq!(rename.len(), (m * m) as usize);
+    }
 }

@@ -1,13 +1,17 @@
-//! `surftopo delaunay`: the intrinsic Delaunay triangulation by edge flipping, its tessellation,
-//! the cotan Laplacian and the lumped mass matrix.
+//! `surftopo delaunay`: the intrinsic Delaunay triangulation by edge flipping (`--method flip`)
+//! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), its
+//! tessellation, the cotan Laplacian and the lumped mass matrix.
 
 use crate::failure::invalid;
 use crate::output::write_file;
 use std::path::{Path, PathBuf};
+use surftopo_intrinsic::geometry::{Rational, Scalar};
+use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
-    IntrinsicTriangulation, PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian,
-    delaunay_tessellation, delaunay_with_stats, lumped_mass, write_matrix_market,
+    DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, SparseMatrix,
+    TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats, lumped_mass,
+    write_matrix_market,
 };
 
 /// Options of `delaunay`.
@@ -39,6 +43,88 @@ pub struct Options {
     /// Print the figures as JSON.
     #[arg(long)]
     pub json: bool,
+    /// The algorithm and the arithmetic.
+    #[command(flatten)]
+    pub method: MethodOptions,
+}
+
+/// The algorithm computing the Delaunay tessellation.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// Edge flipping (Bobenko–Springborn).
+    #[default]
+    Flip,
+    /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
+    Voronoi,
+}
+
+/// `--method` and `--exact`, shared by `delaunay` and `isometric`.
+#[derive(clap::Args, Clone, Copy, Debug, Default)]
+pub struct MethodOptions {
+    /// The algorithm: flip (default) or voronoi.
+    #[arg(long, value_enum, default_value_t = Method::Flip)]
+    pub method: Method,
+    /// Compute in exact rational arithmetic (with --method voronoi; the input must be a portalgon
+    /// JSON file given by exact corners).
+    #[arg(long)]
+    pub exact: bool,
+}
+
+impl MethodOptions {
+    /// Refuses `--exact` where it cannot apply.
+    ///
+    /// # Errors
+    /// An invalid-input error (exit 2).
+    pub fn check(&self) -> anyhow::Result<()> {
+        if self.exact && self.method == Method::Flip {
+            return Err(invalid(
+                "--exact computes with --method voronoi only (the flip algorithm works on \
+                 lengths, which are square roots)",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Reads a portalgon JSON file given by exact corners, for `--exact`.
+///
+/// # Errors
+/// An invalid-input error naming the file: not JSON, not closed, or not given by corners (a mesh
+/// or a portalgon given by lengths: their lengths are square roots).
+pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
+    let is_json = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    if !is_json {
+        return Err(invalid(format!(
+            "{}: --exact needs a portalgon JSON file given by exact corners (a mesh's lengths are \
+             square roots)",
+            path.display()
+        )));
+    }
+    let file =
+        std::fs::File::open(path).map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+    let p = PortalgonDoc::read(std::io::BufReader::new(file))
+        .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
+        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+    p.check_closed()
+        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+    Ok(p)
+}
+
+/// The voronoi method's figures for `--json`.
+struct WaveFigures {
+    events: u64,
+    max_constellation: usize,
+    arithmetic: &'static str,
+}
+
+fn wave_figures<S: Scalar>(v: &VoronoiDelaunay<S>) -> WaveFigures {
+    WaveFigures {
+        events: v.wave.events,
+        max_constellation: v.wave.max_constellation(),
+        arithmetic: S::ARITHMETIC,
+    }
 }
 
 /// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation, within the limits
@@ -93,6 +179,10 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
 
 /// Runs `delaunay`.
 pub fn run(options: &Options) -> anyhow::Result<()> {
+    options.method.check()?;
+    if options.method.method == Method::Voronoi {
+        return run_voronoi(options);
+    }
     let mut tri =
         crate::progress::step("reading", || load_intrinsic(&options.input, options.weld))?;
     let flip_options = DelaunayOptions {
@@ -119,20 +209,111 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
             Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
         })?;
     }
+    write_matrices(options, &tri)?;
+    report(options, &stats, None)
+}
+
+/// Writes `--laplacian` and `--mass` of a Delaunay triangulation.
+fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
-        let laplacian = cotan_laplacian(&tri);
+        let laplacian = cotan_laplacian(tri);
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
         write_file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
-        let mass = lumped_mass(&tri);
+        let mass = lumped_mass(tri);
         check_matrix(&mass, "the mass matrix", true)?;
         write_file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
     }
+    Ok(())
+}
+
+/// `--method voronoi`: the wave (f64, or exact with `--exact`) and its dual; the triangulation
+/// written is the tessellation cut along shortcuts (by lengths, or by exact corners with
+/// `--exact`).
+fn run_voronoi(options: &Options) -> anyhow::Result<()> {
+    if options.mollify.is_some() || options.max_flips.is_some() {
+        return Err(invalid(
+            "--mollify and --max-flips apply to --method flip only",
+        ));
+    }
+    let start = std::time::Instant::now();
+    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
+    let (tri, figures) = if options.method.exact {
+        let p = crate::progress::step("reading", || load_exact(&options.input))?;
+        let v = crate::progress::step("running the Voronoi wave", || {
+            voronoi_delaunay(&p, &VoronoiOptions::default())
+        })
+        .map_err(|e| fail(&e))?;
+        let triangulated = v.triangulated().map_err(|e| fail(&e))?;
+        write_file(&options.output, |w| {
+            Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
+        })?;
+        write_tessellation(options, &v.tessellation)?;
+        let tri = v.triangulation().map_err(|e| fail(&e))?;
+        (tri, wave_figures(&v))
+    } else {
+        let tri =
+            crate::progress::step("reading", || load_intrinsic(&options.input, options.weld))?;
+        tri.validate().map_err(|e| fail(&e))?;
+        let (p, _) = tri.to_portalgon();
+        let v = crate::progress::step("running the Voronoi wave", || {
+            voronoi_delaunay(&p, &VoronoiOptions::default())
+        })
+        .map_err(|e| fail(&e))?;
+        let tri = v.triangulation().map_err(|e| fail(&e))?;
+        write_file(&options.output, |w| {
+            Ok(tri.write_json(w, TriangleStyle::Lengths)?)
+        })?;
+        write_tessellation(options, &v.tessellation)?;
+        (tri, wave_figures(&v))
+    };
+    let flips = FlipReport {
+        flips: 0,
+        mollify_delta: None,
+        non_delaunay_edges: tri.non_delaunay_edges(surftopo_intrinsic::DEFAULT_TOLERANCE),
+    };
+    let stats = DelaunayStats::new(&tri, &flips, start.elapsed().as_secs_f64());
+    write_matrices(options, &tri)?;
+    report(options, &stats, Some(&figures))
+}
+
+fn write_tessellation<S: Scalar>(options: &Options, t: &Portalgon<S>) -> anyhow::Result<()> {
+    if let Some(path) = &options.tessellation {
+        write_file(path, |w| {
+            Ok(PortalgonDoc::from_portalgon(t).write(w, false)?)
+        })?;
+    }
+    Ok(())
+}
+
+/// Prints the figures (`--json`: the stats with `method`, `arithmetic`, and for the voronoi
+/// method `wave_events` and `max_constellation`).
+fn report(
+    options: &Options,
+    stats: &DelaunayStats,
+    wave: Option<&WaveFigures>,
+) -> anyhow::Result<()> {
     if options.json {
-        crate::output::print_json(&stats)?;
+        let mut value = serde_json::to_value(stats)?;
+        if let Some(map) = value.as_object_mut() {
+            let method = match options.method.method {
+                Method::Flip => "flip",
+                Method::Voronoi => "voronoi",
+            };
+            map.insert("method".into(), method.into());
+            map.insert(
+                "arithmetic".into(),
+                wave.map_or("f64", |w| w.arithmetic).into(),
+            );
+            if let Some(w) = wave {
+                map.insert("wave_events".into(), w.events.into());
+                map.insert("max_constellation".into(), w.max_constellation.into());
+            }
+        }
+        crate::output::print_json(&value)?;
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s\n",

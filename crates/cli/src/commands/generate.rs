@@ -3,6 +3,7 @@
 
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
+use surftopo_intrinsic::geometry::Scalar as _;
 use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
 use surftopo_mesh::generators::{self, Surface};
 
@@ -50,11 +51,13 @@ pub enum Kind {
         triangles: u64,
     },
     /// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles
-    /// (0,0), (1,0), (x,2); refined m x m when m > 1. Written as portalgon JSON (`-o OUT.json`).
+    /// (0,0), (1,0), (x,2); refined m x m when m > 1. Written as portalgon JSON (`-o OUT.json`),
+    /// every triangle by its exact corners (with --flips, by lengths).
     FlatTorus {
-        /// The parameter x (the flip algorithm needs x - 1 flips for integer x).
+        /// The parameter x: an integer, a decimal or a fraction p/q, read exactly (the flip
+        /// algorithm needs x - 1 flips for integer x).
         #[arg(long)]
-        x: f64,
+        x: intrinsic::geometry::Rational,
         /// Refinement: the same torus as an m x m grid of parallelograms.
         #[arg(long, default_value_t = 1)]
         m: u32,
@@ -126,7 +129,7 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
         Kind::FlatTorus { x, m } => {
             check_size(&format!("flat-torus --m {m}"), 2 * u64::from(*m).pow(2))?;
             Generated::Intrinsic(
-                intrinsic::generators::flat_torus(*x, *m)
+                intrinsic::generators::flat_torus(x.to_f64(), *m)
                     .map_err(|e| invalid(&format!("flat-torus: {e}")))?,
             )
         }
@@ -312,9 +315,18 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
                     crate::failure::shown(output)
                 )));
             }
-            crate::output::write_file(output, |w| {
-                Ok(tri.write_json(w, intrinsic::TriangleStyle::Lengths)?)
-            })?;
+            if let (Kind::FlatTorus { x, m }, 0) = (kind, modifiers.flips) {
+                // Exact corners: the triangles of the lengths' triangulation, laid out exactly.
+                let exact = intrinsic::generators::flat_torus_portalgon(x, *m)
+                    .map_err(|e| crate::failure::invalid(format!("{e}")))?;
+                crate::output::write_file(output, |w| {
+                    Ok(intrinsic::PortalgonDoc::from_portalgon(&exact).write(w, false)?)
+                })?;
+            } else {
+                crate::output::write_file(output, |w| {
+                    Ok(tri.write_json(w, intrinsic::TriangleStyle::Lengths)?)
+                })?;
+            }
             (tri.into_parts().0, " (intrinsic)")
         }
     };

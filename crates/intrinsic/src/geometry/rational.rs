@@ -167,6 +167,12 @@ impl Scalar for Rational {
     fn to_f64(&self) -> f64 {
         self.0.to_f64().value()
     }
+    fn from_rational(v: &Rational) -> Self {
+        v.clone()
+    }
+    fn to_rational(&self) -> Option<Rational> {
+        Some(self.clone())
+    }
     fn is_zero(&self) -> bool {
         self.0.is_zero()
     }

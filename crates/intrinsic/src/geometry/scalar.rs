@@ -38,6 +38,10 @@ pub trait Scalar:
     fn from_f64(v: f64) -> Option<Self>;
     /// The nearest double.
     fn to_f64(&self) -> f64;
+    /// The value of an exact rational (exact for rationals; the nearest double for `f64`).
+    fn from_rational(v: &super::Rational) -> Self;
+    /// The exact value as a rational; `None` for a non-finite double.
+    fn to_rational(&self) -> Option<super::Rational>;
     /// Whether the value is finite (always for exact types; not NaN or infinite for `f64`).
     fn is_finite(&self) -> bool {
         true
@@ -104,6 +108,12 @@ impl Scalar for f64 {
     }
     fn to_f64(&self) -> f64 {
         *self
+    }
+    fn from_rational(v: &super::Rational) -> Self {
+        v.to_f64()
+    }
+    fn to_rational(&self) -> Option<super::Rational> {
+        super::Rational::from_f64(*self)
     }
     fn is_finite(&self) -> bool {
         f64::is_finite(*self)

@@ -1,0 +1,198 @@
+//! Delaunay tessellations by a Voronoi wave (Dubois, Appendix D: Proposition 3 = Propositions 11
+//! and 12), in exact and in double arithmetic; a second algorithm for the Delaunay tessellation of
+//! a closed portalgon, independent of edge flipping.
+//!
+//! The pieces, each in its own file with the paper's statements and the deviations:
+//! - [`singular`]: V, the singular vertices (Section 2.2), exactly in exact mode; one vertex for a
+//!   flat torus (Proof of Proposition 3);
+//! - [`wave`]: the multi-source wave of Appendix D.2 (Propositions 11, 13, 14; Lemmas 40, 41),
+//!   giving the constellations X_Δ;
+//! - [`dual`]: the Delaunay tessellation as the dual of the Voronoi diagram (Appendix C,
+//!   Lemmas 29–31; Proposition 12 by DUBOIS.md §2.7's route), and the Voronoi diagram itself.
+//!
+//! [`voronoi_delaunay`] runs them in order on a closed triangular portalgon in any [`Scalar`]:
+//! `f64`, or [`crate::geometry::Rational`] for exact results (then every predicate and
+//! construction is exact and dates are compared squared). The output tessellation is a portalgon,
+//! like [`crate::delaunay_tessellation`]'s, with vertex labels numbering V; its Delaunay
+//! triangulation ([`VoronoiDelaunay::triangulation`], the polygons cut by shortcuts) feeds the
+//! Laplacian. The cotan Laplacian does not depend on the diagonals cut into co-circular polygons,
+//! so it is the flip route's; the lumped mass does (only its total, the area, is the same).
+//!
+//! Deviations from the paper, all listed in the files' docs: V may be every vertex of T
+//! ([`Sources::All`], the flip algorithm's vertex set) as well as the singular ones; the Voronoi
+//! diagram is output as polylines in T instead of a refined portalgon T′ (Proposition 11); the
+//! polygons are read off the constellations (DUBOIS.md §2.7) instead of Proposition 12's
+//! unfoldings; Lemma 41's lists are vectors (O(k) splices) instead of search trees; `f64` compares
+//! with tolerances (exact mode compares exactly). Where the design notes (DUBOIS.md) and the tests
+//! disagreed, the tests decided: closed cells with ties in `f64` (see [`wave`]); crossings of the
+//! side lists taken at the bisector of consecutive cells, not at their (overlapping) ends.
+//!
+//! Limits: the `f64` mode can refuse a surface with a typed [`DualError`] when rounding makes the
+//! traced Voronoi edges inconsistent (one shared mesh, chassis_upright, and T_x for large x, where
+//! doubles cannot hold the needle); it never returns an unchecked polygon (each is validated by
+//! [`Portalgon::add_polygon`], each gluing by [`Portalgon::glue`]). The exact mode has no
+//! tolerance.
+
+pub mod dual;
+pub mod singular;
+pub mod wave;
+
+pub use dual::{DualError, Segment, VoronoiDiagram};
+pub use singular::{is_flat_vertex, wave_sources};
+pub use wave::{SideCell, Wave, WaveError, WaveOptions, run_wave};
+
+use crate::error::PortalgonError;
+use crate::geometry::Scalar;
+use crate::portalgon::Portalgon;
+use crate::quality::DEFAULT_ANGLE_TOLERANCE;
+use crate::triangulation::IntrinsicTriangulation;
+
+/// The vertex set V the wave starts from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sources {
+    /// Every vertex of T: the Delaunay tessellation with T's vertices, the one the flip algorithm
+    /// computes (its triangulation has a Laplacian row per vertex).
+    #[default]
+    All,
+    /// The singular vertices (one vertex for a flat torus): the canonical tessellation of
+    /// Theorem 1 and Corollary 2 ([`wave_sources`]).
+    Singular,
+}
+
+/// Options of [`voronoi_delaunay`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VoronoiOptions {
+    /// V: every vertex, or the singular ones.
+    pub sources: Sources,
+    /// In `f64`: a vertex is flat when its angle sum is within this many radians of 2π (exact
+    /// mode decides exactly).
+    pub angle_tolerance: f64,
+    /// The wave's options (its `point_tolerance` also serves the dual in `f64`).
+    pub wave: WaveOptions,
+}
+
+impl Default for VoronoiOptions {
+    fn default() -> Self {
+        Self {
+            sources: Sources::All,
+            angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
+            wave: WaveOptions::default(),
+        }
+    }
+}
+
+/// Why [`voronoi_delaunay`] failed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum VoronoiError {
+    /// The wave could not run (input, budget).
+    #[error(transparent)]
+    Wave(#[from] WaveError),
+    /// The dual could not be built.
+    #[error(transparent)]
+    Dual(#[from] DualError),
+}
+
+/// The Delaunay tessellation of (S(T), V) computed by the wave, with the wave's data.
+#[derive(Clone, Debug)]
+pub struct VoronoiDelaunay<S: Scalar> {
+    /// The Delaunay tessellation: convex polygons inscribed in empty circles, dense ids. Corners
+    /// are labelled with the input's vertex labels when V is every vertex and the input is
+    /// labelled (so the triangulation's vertex ids are the input's), otherwise with the index in
+    /// [`Self::sources`] of their vertex.
+    pub tessellation: Portalgon<S>,
+    /// The Voronoi diagram of V (its vertices dual to the polygons, its edges as polylines).
+    pub diagram: VoronoiDiagram<S>,
+    /// The wave: constellations X_Δ, side diagrams, event counts.
+    pub wave: Wave<S>,
+    /// V, as vertex classes of the input ([`Portalgon::vertex_classes`]).
+    pub sources: Vec<u32>,
+}
+
+impl<S: Scalar> VoronoiDelaunay<S> {
+    /// A Delaunay triangulation of the tessellation (each polygon cut along shortcuts, INSERTEDGES
+    /// of Section 4.1), as an intrinsic triangulation in `f64` whose vertex ids are the labels:
+    /// the input of [`crate::cotan_laplacian`] and [`crate::lumped_mass`].
+    ///
+    /// # Errors
+    /// A [`PortalgonError`] if a polygon cannot be cut (it would not be convex).
+    pub fn triangulation(&self) -> Result<IntrinsicTriangulation, PortalgonError> {
+        IntrinsicTriangulation::from_portalgon(&self.triangulated()?, 1e-6)
+    }
+
+    /// The tessellation with every polygon cut along shortcuts into triangles, in `S` (exact
+    /// corners in exact mode), dense ids, labels kept.
+    ///
+    /// # Errors
+    /// As [`Self::triangulation`].
+    pub fn triangulated(&self) -> Result<Portalgon<S>, PortalgonError> {
+        let mut t = self.tessellation.clone();
+        let polygons: Vec<_> = t.polygons().collect();
+        for q in polygons {
+            t.triangulate_by_shortcuts(q)?;
+        }
+        Ok(t.compacted().0)
+    }
+}
+
+/// The portalgon with its corners rounded to doubles, compacted (dense ids, labels and matching
+/// kept).
+pub fn to_f64<S: Scalar>(p: &Portalgon<S>) -> Portalgon<f64> {
+    let (p, _) = p.compacted();
+    let mut out = Portalgon::new();
+    for q in p.polygons() {
+        let corners: Vec<[f64; 2]> = p
+            .corners(q)
+            .iter()
+            .map(|c| [c[0].to_f64(), c[1].to_f64()])
+            .collect();
+        let labels: Vec<u32> = p
+            .polygon_sides(q)
+            .iter()
+            .map(|&s| p.vertex_label(s).unwrap_or(u32::MAX))
+            .collect();
+        out.push_polygon(&corners, Some(&labels));
+    }
+    for s in p.sides() {
+        if let Some(t) = p.mate(s) {
+            out.set_mates(s, t);
+        }
+    }
+    out
+}
+
+/// Proposition 3 by its proof: V ([`wave_sources`]), the wave ([`run_wave`], Proposition 11),
+/// then the dual ([`dual`], Proposition 12), on a closed triangular portalgon with dense ids.
+///
+/// # Errors
+/// [`VoronoiError`].
+pub fn voronoi_delaunay<S: Scalar>(
+    p: &Portalgon<S>,
+    options: &VoronoiOptions,
+) -> Result<VoronoiDelaunay<S>, VoronoiError> {
+    wave::check_input(p)?;
+    let (sources, class) = match options.sources {
+        Sources::Singular => wave_sources(p, options.angle_tolerance),
+        Sources::All => {
+            let (class, count) = p.vertex_classes();
+            ((0..count as u32).collect(), class)
+        }
+    };
+    let wave = run_wave(p, &sources, &class, &options.wave)?;
+    let mut labels = vec![u32::MAX; class.iter().map(|&c| c as usize + 1).max().unwrap_or(0)];
+    let labelled = p.sides().all(|s| p.vertex_label(s).is_some());
+    for (k, &c) in sources.iter().enumerate() {
+        labels[c as usize] = k as u32;
+    }
+    if options.sources == Sources::All && labelled {
+        for s in p.sides() {
+            labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
+        }
+    }
+    let out = dual::build_dual(p, &wave, &labels, options.wave.point_tolerance)?;
+    Ok(VoronoiDelaunay {
+        tessellation: out.portalgon,
+        diagram: out.diagram,
+        wave,
+        sources,
+    })
+}
