@@ -52,6 +52,7 @@
 mod biface;
 mod convert;
 mod delaunay;
+pub mod dubois;
 mod error;
 mod flat;
 pub mod format;
