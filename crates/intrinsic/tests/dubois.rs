@@ -183,6 +183,13 @@ fn check_reduced(x: &str, max_triangles: usize) {
         r.report
     );
     assert_eq!(r.report.triangles_after_reduction, p.polygon_count());
+    // The geometry is reduced: every side at most as long as D_x's longest side (√5, the
+    // diagonal of the 1 × 2 rectangle), against |(x, 2)| in the input.
+    let longest2 = p
+        .sides()
+        .map(|s| p.side_length2(s))
+        .fold(q("0"), |m, l| if l > m { l } else { m });
+    assert!(longest2 <= q("5"), "x = {x}: longest side² {longest2}");
     assert_eq!(r.report.arithmetic, "exact");
     assert_eq!(
         r.report.inner_passes_total,
@@ -222,6 +229,9 @@ fn a_huge_shear_reduces_to_the_same_lattice() {
     check_flat_torus(&r.portalgon, &area).unwrap();
     same_lattice(&r.portalgon, &basis).unwrap();
     assert!(r.portalgon.polygon_count() <= 8, "{:?}", r.report);
+    // The unit square's sides and diagonals: at most √2.
+    let p = &r.portalgon;
+    assert!(p.sides().all(|s| p.side_length2(s) <= q("2")));
 }
 
 /// Runs ALGORITHM's routines by hand (N outer iterations, `inner` inner ones) and checks the
@@ -379,4 +389,45 @@ fn f64_mode_reduces_t_x() {
     assert!(r.portalgon.check_closed().is_ok());
     assert!((r.portalgon.area() - 2.0).abs() < 1e-9);
     assert!(r.portalgon.polygon_count() <= 8, "{:?}", r.report);
+}
+
+#[test]
+fn inactive_bifaces_and_separating_loops_are_left_alone() {
+    // T_{3000000001/3} ends with R_A empty: two thin good bifaces, each an inactive region,
+    // glued along separating loops.
+    let (t, basis) = t_x("3000000001/3");
+    let mut r = reduce(&t, &ReduceOptions::default()).unwrap();
+    assert!(r.active_polygons().is_empty(), "{:?}", r.report);
+    assert_eq!(r.report.bifaces_inactive, 2);
+    r.check_invariants().unwrap();
+    let separating = r
+        .portalgon
+        .sides()
+        .filter(|&s| r.regions.is_separating(&r.portalgon, s))
+        .count();
+    assert!(separating > 0);
+    // INSERTVERTICES splits nothing outside R_A; the other routines change nothing either.
+    let before = r.clone();
+    assert_eq!(r.insert_vertices().unwrap(), 0);
+    assert_eq!(r.insert_edges().unwrap(), 0);
+    assert_eq!(r.gardening().unwrap(), 0);
+    assert_eq!(r.simplify_tubes().unwrap(), (0, 0));
+    assert_eq!(r.delete_vertices().unwrap(), 0);
+    assert_eq!(r.portalgon, before.portalgon);
+    assert_eq!(r.regions, before.regions);
+    same_lattice(&r.portalgon, &basis).unwrap();
+}
+
+#[test]
+fn the_lattice_verifier_tells_lattices_apart() {
+    // Index 2: ⟨(1, 0), (10, 4)⟩ inside ⟨(1, 0), (10, 2)⟩ ... and the other way round.
+    let (t10, basis10) = t_x("10");
+    same_lattice(&t10, &basis10).unwrap();
+    let doubled = lattice_torus(&[q("1"), q("0")], &[q("10"), q("4")]);
+    assert!(same_lattice(&doubled, &basis10).is_err());
+    let coarse = [[q("1"), q("0")], [q("10"), q("4")]];
+    assert!(same_lattice(&t10, &coarse).is_err());
+    // A different basis of the same lattice passes.
+    let other = [[q("1"), q("0")], [q("-3"), q("2")]];
+    same_lattice(&t10, &other).unwrap();
 }
