@@ -12,8 +12,9 @@
 //! (weak and strong vertices, Section 4.2), [`Portalgon::components`] and [`Portalgon::splice`].
 //! Section 3 and Appendix B: [`Biface`] with the good-biface kernel [`Biface::make_good`] (Lemma 25
 //! by DUBOIS.md §2.1's closed forms), and tubes with Proposition 4
-//! ([`Portalgon::good_biface_of_tube`], [`TubeRoute`]). Not here yet: SIMPLIFYTUBES and ALGORITHM
-//! (Section 4), the wave algorithm (Appendix D).
+//! ([`Portalgon::good_biface_of_tube`], [`TubeRoute`]). Section 4: the routines and ALGORITHM
+//! on flat closed surfaces in [`dubois`] ([`dubois::reduce`]). Not here yet: Section 8's caps,
+//! Theorem 1's driver, the wave algorithm (Appendix D).
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh

@@ -44,7 +44,7 @@
 //!   repetitions would change nothing either (DUBOIS.md §2.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
-//! - **[reconstruction]** `s` for a flat torus: the paper's `s = d/(6r)` comes from the caps of
+//! - **\[reconstruction\]** `s` for a flat torus: the paper's `s = d/(6r)` comes from the caps of
 //!   Section 8; with no cone point there are no caps, and `s = d/2` (`d` the smallest height of a
 //!   triangle) is below the systole (DUBOIS.md §2.3). `N` is computed exactly from squared
 //!   lengths in exact mode (the least `N` with `((2^N − 2)·A)² ≥ L²·ℓ²` over the triangles, `A`
@@ -442,7 +442,7 @@ impl<S: Scalar> Reduction<S> {
                     kept.push((s, t));
                 }
             }
-            self.glue_back(&kept)?;
+            // The kept loops stay cut for step 2.
             kept
         };
         self.cut(&j);
@@ -557,7 +557,7 @@ impl<S: Scalar> Reduction<S> {
     }
 }
 
-/// `N = ⌈log₂(2 + L/s)⌉` (Section 4.5) for a flat torus with `s = d/2` **[reconstruction]**
+/// `N = ⌈log₂(2 + L/s)⌉` (Section 4.5) for a flat torus with `s = d/2` **\[reconstruction\]**
 /// (see the module doc): the least `N ≥ 1` with `((2^N − 2)·A_Δ)² ≥ L²·ℓ_Δ²` for every triangle
 /// `Δ` (area `A_Δ`, longest side `ℓ_Δ`; `L` the longest side), i.e. `2^N ≥ 2 + L/(d/2)` with
 /// `d = min 2A_Δ/ℓ_Δ`. Exact in exact mode; in `f64` the right side is enlarged by a relative
@@ -640,13 +640,27 @@ pub fn reduce<S: Scalar>(
     let mut r = Reduction::new(t.clone(), options.route, options.tolerance);
     r.report.outer_iterations = n;
     r.report.inner_passes_bound = u64::from(INNER_REPETITIONS) * u64::from(n);
-    // Vertices, genus and boundary components of the input, for Proposition 5's bound.
+    // Vertices and genus of the input, for Lemma 3's and Proposition 5's bounds (debug builds).
     let m = t.vertex_info().count();
+    let genus = {
+        let chi: i64 = t
+            .components(&t.polygons().collect::<Vec<_>>())?
+            .iter()
+            .map(|c| c.euler_characteristic)
+            .sum();
+        usize::try_from((2 - chi).max(0) / 2).unwrap_or(0)
+    };
     for _ in 0..n {
         if r.active_polygons().is_empty() && !options.faithful {
             break;
         }
+        let active_before = r.active_vertex_count();
         r.insert_vertices()?;
+        // Lemma 3: INSERTVERTICES leaves fewer than 7(g + m_A) vertices (g ≥ the genus of S(R_A)).
+        debug_assert!(
+            active_before == 0 || r.active_vertex_count() < 7 * (genus + active_before),
+            "Lemma 3"
+        );
         r.insert_edges()?;
         let mut passes = 0;
         for _ in 0..INNER_REPETITIONS {
@@ -664,14 +678,11 @@ pub fn reduce<S: Scalar>(
         r.report.inner_passes.push(passes);
         r.report.inner_passes_total += u64::from(passes);
         // Proposition 5 (Section 5.5): after the inner loop R_A has at most 3000(g + b + m)
-        // vertices; for a closed flat surface of genus g, χ = 2 − 2g.
-        debug_assert!({
-            let chi = t
-                .components(&t.polygons().collect::<Vec<_>>())
-                .map_or(0, |c| c.iter().map(|x| x.euler_characteristic).sum::<i64>());
-            let genus = usize::try_from((2 - chi).max(0) / 2).unwrap_or(0);
-            r.active_vertex_count() <= 3000 * (genus + m)
-        });
+        // vertices (b = 0: the surface is closed).
+        debug_assert!(
+            r.active_vertex_count() <= 3000 * (genus + m),
+            "Proposition 5"
+        );
     }
     r.report.triangles_after_reduction = r.portalgon.polygon_count();
     Ok(r)
