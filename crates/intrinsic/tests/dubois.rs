@@ -431,3 +431,76 @@ fn the_lattice_verifier_tells_lattices_apart() {
     let other = [[q("1"), q("0")], [q("-3"), q("2")]];
     same_lattice(&t10, &other).unwrap();
 }
+
+/// `R²/⟨u, v⟩` cut into the `m × m` grid of parallelograms spanned by `u/m` and `v/m`, each split
+/// along its `u/m → v/m` diagonal (as `generators::flat_torus`), in exact coordinates: `m²`
+/// vertices, all flat.
+fn refined_lattice_torus(u: &P, v: &P, m: i64) -> Portalgon<Rational> {
+    let mq = Rational::from_i64(m);
+    let point = |i: i64, j: i64| -> P {
+        let (a, b) = (
+            Rational::from_i64(i) / mq.clone(),
+            Rational::from_i64(j) / mq.clone(),
+        );
+        [
+            a.clone() * u[0].clone() + b.clone() * v[0].clone(),
+            a * u[1].clone() + b * v[1].clone(),
+        ]
+    };
+    let mut p = Portalgon::<Rational>::empty();
+    let mut tri = Vec::new();
+    for j in 0..m {
+        for i in 0..m {
+            let a = p
+                .add_polygon(&[point(i, j), point(i + 1, j), point(i, j + 1)])
+                .unwrap();
+            let b = p
+                .add_polygon(&[point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)])
+                .unwrap();
+            tri.push((a, b));
+        }
+    }
+    let cell = |i: i64, j: i64| (j.rem_euclid(m) * m + i.rem_euclid(m)) as usize;
+    for j in 0..m {
+        for i in 0..m {
+            let (a, b) = tri[cell(i, j)];
+            p.glue(p.side(a, 1), p.side(b, 2), 0.0).unwrap();
+            p.glue(p.side(a, 0), p.side(tri[cell(i, j - 1)].1, 1), 0.0)
+                .unwrap();
+            p.glue(p.side(a, 2), p.side(tri[cell(i - 1, j)].1, 0), 0.0)
+                .unwrap();
+        }
+    }
+    p
+}
+
+#[test]
+fn refined_tori_lose_their_extra_vertices() {
+    let cases = [
+        ([[q("1"), q("0")], [q("1000"), q("2")]], 3),
+        ([[q("1"), q("0")], [q("1000000"), q("1")]], 4),
+        ([[q("1"), q("0")], [q("1001/3"), q("2")]], 3),
+    ];
+    for (basis, m) in cases {
+        let t = refined_lattice_torus(&basis[0], &basis[1], m);
+        let area = t.area();
+        check_flat_torus(&t, &area).unwrap();
+        same_lattice(&t, &basis).unwrap();
+        for route in [TubeRoute::Direct, TubeRoute::Paper] {
+            let r = reduce(
+                &t,
+                &ReduceOptions {
+                    route,
+                    ..ReduceOptions::default()
+                },
+            )
+            .unwrap();
+            let p = &r.portalgon;
+            check_flat_torus(p, &area).unwrap();
+            same_lattice(p, &basis).unwrap();
+            r.check_invariants().unwrap();
+            assert!(r.report.vertices_deleted > 0);
+            assert!(p.polygon_count() <= 8, "m = {m}: {:?}", r.report);
+        }
+    }
+}

@@ -332,3 +332,36 @@ fn splice_refuses_a_wrong_boundary() {
         assert_eq!(p, before, "a refused splice changes nothing");
     }
 }
+
+#[test]
+fn vertex_info_within_a_subset_treats_sides_matched_outside_as_boundary() {
+    let p = t_x(10);
+    let all: Vec<_> = p.polygons().collect();
+    assert_eq!(p.vertex_info_within(&all).unwrap(), p.vertex_info());
+    // One triangle of T_10: its sides are all matched to the other one, so its surface is a
+    // triangle: three boundary vertices of degree 2, no loop; the other triangle's sides have no
+    // class.
+    let info = p.vertex_info_within(&all[..1]).unwrap();
+    assert_eq!(info.count(), 3);
+    assert_eq!(info.degree, vec![2, 2, 2]);
+    assert!(info.interior.iter().all(|&i| !i));
+    assert!(info.on_loop.iter().all(|&l| !l));
+    for &s in p.polygon_sides(all[1]) {
+        assert_eq!(info.class[s.idx()], u32::MAX);
+    }
+    // The whole T_10: one vertex, interior, on loops, degree 6.
+    let whole = p.vertex_info();
+    assert_eq!(
+        (
+            whole.count(),
+            whole.degree[0],
+            whole.interior[0],
+            whole.on_loop[0]
+        ),
+        (1, 6, true, true)
+    );
+    assert!(matches!(
+        p.vertex_info_within(&[all[0], all[0]]),
+        Err(EditError::NoSuchPolygon(_))
+    ));
+}

@@ -279,7 +279,7 @@ impl<S: Scalar> Reduction<S> {
     }
 
     /// Bookkeeping after each routine: the peak of active vertices, and the invariants in debug
-    /// builds.
+    /// builds (a failure there is a bug of the routines, reported by a panic naming the routine).
     fn after_routine(&mut self, routine: &str) {
         let v = self.active_vertex_count();
         self.report.peak_active_vertices = self.report.peak_active_vertices.max(v);
@@ -562,7 +562,8 @@ impl<S: Scalar> Reduction<S> {
 /// `Δ` (area `A_Δ`, longest side `ℓ_Δ`; `L` the longest side), i.e. `2^N ≥ 2 + L/(d/2)` with
 /// `d = min 2A_Δ/ℓ_Δ`. Exact in exact mode; in `f64` the right side is enlarged by a relative
 /// 1e-9 so that `N` is not underestimated. Polygons that are not triangles are measured the
-/// same way (their smallest height bounded by `2A/ℓ`).
+/// same way (their smallest height bounded by `2A/ℓ`). Capped at 4096 (`L/s` below `2^4096`
+/// for any input whose coordinates fit in memory many times over).
 pub fn outer_iterations<S: Scalar>(portalgon: &Portalgon<S>) -> u32 {
     let lengths2 = |q: PolygonId| {
         portalgon
