@@ -5,7 +5,11 @@
 //! every holonomy an integer combination of the input basis, and the 2×2 minors of the
 //! holonomies' coordinates with gcd 1 — and the reduced triangulation is small.
 
+mod common_tubes;
+
 use std::collections::VecDeque;
+
+use common_tubes::{RandomTube, random_tube};
 
 use surftopo_intrinsic::dubois::{DuboisError, ReduceOptions, Reduction, outer_iterations, reduce};
 use surftopo_intrinsic::geometry::{Rational, Scalar, cross, dot, sub};
@@ -502,5 +506,69 @@ fn refined_tori_lose_their_extra_vertices() {
             assert!(r.report.vertices_deleted > 0);
             assert!(p.polygon_count() <= 8, "m = {m}: {:?}", r.report);
         }
+    }
+}
+
+#[test]
+fn simplify_tubes_case_b_merges_a_concatenation_of_tubes_into_one_biface() {
+    for seed in 0..4 {
+        // Two copies of a random translation tube, the first's DB glued to the second's CA: an
+        // annulus (not a torus: case (b)) whose middle loop joins two tubes, so J′ keeps it and J
+        // drops it, and the whole annulus becomes one good biface.
+        let tube: RandomTube<Rational> = random_tube(seed, false, 2, 4);
+        let one = &tube.portalgon;
+        let mut p = Portalgon::<Rational>::empty();
+        let mut maps = Vec::new();
+        for _ in 0..2 {
+            let mut map = vec![surftopo_intrinsic::SideId::INVALID; one.side_slots()];
+            for t in one.polygons() {
+                let np = p.add_polygon(&one.corners(t)).unwrap();
+                for (i, &s) in one.polygon_sides(t).iter().enumerate() {
+                    map[s.idx()] = p.side(np, i);
+                }
+            }
+            for s in one.sides() {
+                if let Some(t) = one.mate(s).filter(|&t| s < t) {
+                    p.glue(map[s.idx()], map[t.idx()], 0.0).unwrap();
+                }
+            }
+            maps.push(map);
+        }
+        let [ca, db] = tube.boundary;
+        p.glue(maps[0][db.idx()], maps[1][ca.idx()], 0.0).unwrap();
+        let outer = [maps[0][ca.idx()], maps[1][db.idx()]];
+        let area = p.area();
+        let all: Vec<_> = p.polygons().collect();
+        let (expected, _) = p.good_biface_of_tube(&all, TubeRoute::Direct, 0.0).unwrap();
+        // GARDENING: the annulus is one tube component, always marked inactive.
+        let mut garden = Reduction::new(p.clone(), TubeRoute::Direct, 0.0);
+        assert_eq!(garden.gardening().unwrap(), 1);
+        assert!(garden.active_polygons().is_empty());
+        assert_eq!(garden.portalgon.polygon_count(), 2);
+        assert_eq!(garden.portalgon.area(), area);
+        garden.check_invariants().unwrap();
+        let mut r = Reduction::new(p, TubeRoute::Direct, 0.0);
+        let (thin, thick) = r.simplify_tubes().unwrap();
+        assert_eq!(thin + thick, 1, "seed {seed}");
+        let q = &r.portalgon;
+        assert_eq!(q.polygon_count(), 2, "seed {seed}");
+        assert_eq!(q.area(), area);
+        for s in outer {
+            assert!(q.is_side_live(s) && q.mate(s).is_none(), "seed {seed}");
+        }
+        let mut got: Vec<Rational> = q
+            .sides()
+            .filter(|&s| q.mate(s).is_some())
+            .map(|s| q.side_length2(s))
+            .collect();
+        got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        got.dedup();
+        let mut want = expected.biface.interior_lengths2().to_vec();
+        want.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        want.dedup();
+        assert_eq!(got, want, "seed {seed}");
+        r.check_invariants().unwrap();
+        // Thin bifaces become inactive, thick ones stay active.
+        assert_eq!(r.active_polygons().len(), if thin == 1 { 0 } else { 2 });
     }
 }
