@@ -9,7 +9,7 @@ mod common_tubes;
 
 use std::collections::VecDeque;
 
-use common_tubes::{RandomTube, random_tube};
+use common_tubes::two_tubes;
 
 use surftopo_intrinsic::dubois::{DuboisError, ReduceOptions, Reduction, outer_iterations, reduce};
 use surftopo_intrinsic::geometry::{Rational, Scalar, cross, dot, sub};
@@ -515,28 +515,7 @@ fn simplify_tubes_case_b_merges_a_concatenation_of_tubes_into_one_biface() {
         // Two copies of a random translation tube, the first's DB glued to the second's CA: an
         // annulus (not a torus: case (b)) whose middle loop joins two tubes, so J′ keeps it and J
         // drops it, and the whole annulus becomes one good biface.
-        let tube: RandomTube<Rational> = random_tube(seed, false, 2, 4);
-        let one = &tube.portalgon;
-        let mut p = Portalgon::<Rational>::empty();
-        let mut maps = Vec::new();
-        for _ in 0..2 {
-            let mut map = vec![surftopo_intrinsic::SideId::INVALID; one.side_slots()];
-            for t in one.polygons() {
-                let np = p.add_polygon(&one.corners(t)).unwrap();
-                for (i, &s) in one.polygon_sides(t).iter().enumerate() {
-                    map[s.idx()] = p.side(np, i);
-                }
-            }
-            for s in one.sides() {
-                if let Some(t) = one.mate(s).filter(|&t| s < t) {
-                    p.glue(map[s.idx()], map[t.idx()], 0.0).unwrap();
-                }
-            }
-            maps.push(map);
-        }
-        let [ca, db] = tube.boundary;
-        p.glue(maps[0][db.idx()], maps[1][ca.idx()], 0.0).unwrap();
-        let outer = [maps[0][ca.idx()], maps[1][db.idx()]];
+        let (p, _, outer, _) = two_tubes::<Rational>(seed);
         let area = p.area();
         let all: Vec<_> = p.polygons().collect();
         let (expected, _) = p.good_biface_of_tube(&all, TubeRoute::Direct, 0.0).unwrap();
