@@ -14,7 +14,8 @@
 //! by closed forms), and tubes with Proposition 4 ([`Portalgon::good_biface_of_tube`],
 //! [`TubeRoute`]). [`voronoi`] is Proposition 3's second route to the Delaunay tessellation, the
 //! multi-source wave of Appendix D and the dual of its Voronoi diagram, in `f64` or exactly over the
-//! rationals ([`geometry`]). Not here yet: SIMPLIFYTUBES and ALGORITHM (Section 4).
+//! rationals ([`geometry`]). Section 4: the routines and ALGORITHM on flat closed surfaces in [`dubois`]
+//! ([`dubois::reduce`]). Not here yet: Section 8's caps and Theorem 1's driver.
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
@@ -54,6 +55,7 @@
 mod biface;
 mod convert;
 mod delaunay;
+pub mod dubois;
 mod error;
 mod flat;
 pub mod flat_torus_lattice;

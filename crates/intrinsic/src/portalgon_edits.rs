@@ -219,7 +219,22 @@ impl<S: Scalar> Portalgon<S> {
     /// degree, interior, on a loop edge, hence weak or strong ([`VertexInfo::is_weak`]). O(n α(n)).
     pub fn vertex_info(&self) -> VertexInfo {
         let in_set = vec![true; self.polygon_slots()];
-        let (class, count) = self.classes_within(&in_set);
+        self.vertex_info_of_set(&in_set)
+    }
+
+    /// Section 4.2's classification on the surface of the sub-portalgon of `polygons` (Section
+    /// 2.1: sides matched to polygons outside the set are boundary), e.g. the active region `R_A`
+    /// of Section 4.4. Sides outside the set get class `u32::MAX`. O(n α(n)).
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchPolygon`] for a removed or repeated polygon.
+    pub fn vertex_info_within(&self, polygons: &[PolygonId]) -> Result<VertexInfo, EditError> {
+        let in_set = self.polygon_set(polygons)?;
+        Ok(self.vertex_info_of_set(&in_set))
+    }
+
+    fn vertex_info_of_set(&self, in_set: &[bool]) -> VertexInfo {
+        let (class, count) = self.classes_within(in_set);
         let mut info = VertexInfo {
             degree: vec![0; count],
             interior: vec![true; count],
@@ -227,7 +242,8 @@ impl<S: Scalar> Portalgon<S> {
             side: vec![SideId::INVALID; count],
             class,
         };
-        for s in self.sides() {
+        let inside = |s: SideId| in_set[self.owner(s).idx()];
+        for s in self.sides().filter(|&s| inside(s)) {
             let (v, w) = (
                 info.class[s.idx()] as usize,
                 info.class[self.next_side(s).idx()] as usize,
@@ -236,7 +252,7 @@ impl<S: Scalar> Portalgon<S> {
             if !info.side[v].is_valid() {
                 info.side[v] = s;
             }
-            if self.mate(s).is_none() {
+            if !self.mate(s).is_some_and(inside) {
                 info.degree[w] += 1;
                 info.interior[v] = false;
                 info.interior[w] = false;

@@ -202,7 +202,7 @@ impl<S: Scalar> Portalgon<S> {
     /// their sum as a double. Exact
     /// mode: the product of the corners' complex ratios is a positive real after exactly one turn
     /// (DUBOIS.md §2.5); f64: the `atan2` sum within `tolerance · 2π`.
-    fn is_full_turn(&self, sides: &[SideId], tolerance: f64) -> (bool, f64) {
+    pub(crate) fn is_full_turn(&self, sides: &[SideId], tolerance: f64) -> (bool, f64) {
         let mut z: Point<S> = [S::one(), S::zero()];
         let (mut turns, mut angle) = (0u32, 0.0);
         // Arguments in [0, 2π): class 0 = 0, 1 = (0, π), 2 = π, 3 = (π, 2π).
@@ -534,11 +534,14 @@ fn lemma_28<S: Scalar>(
     }
 }
 
-/// The sides starting at each vertex.
-fn sides_by_vertex<S: Scalar>(p: &Portalgon<S>, info: &VertexInfo) -> Vec<Vec<SideId>> {
+/// The sides starting at each vertex (of the set `info` classifies).
+pub(crate) fn sides_by_vertex<S: Scalar>(p: &Portalgon<S>, info: &VertexInfo) -> Vec<Vec<SideId>> {
     let mut at = vec![Vec::new(); info.count()];
     for s in p.sides() {
-        at[info.class[s.idx()] as usize].push(s);
+        // Sides outside the classified set (`vertex_info_within`) have no class.
+        if let Some(v) = at.get_mut(info.class[s.idx()] as usize) {
+            v.push(s);
+        }
     }
     at
 }

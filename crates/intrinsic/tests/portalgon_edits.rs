@@ -5,7 +5,7 @@
 
 mod common_tubes;
 
-use common_tubes::{RandomTube, random_tube};
+use common_tubes::{RandomTube, random_tube, two_tubes};
 use surftopo_intrinsic::geometry::{Rational, Scalar, cross, dot, sub};
 use surftopo_intrinsic::{EditError, Portalgon, SideId, TubeRoute};
 
@@ -232,48 +232,10 @@ fn components_euler_characteristic_and_vertex_kinds() {
     }
 }
 
-/// Two copies of a translation tube, the first's `DB` glued to the second's `CA`: a longer tube.
-fn two_tubes(
-    seed: u64,
-) -> (
-    Portalgon<Rational>,
-    Vec<surftopo_intrinsic::PolygonId>,
-    [SideId; 2],
-    SideId,
-) {
-    let tube: RandomTube<Rational> = random_tube(seed, false, 2, 4);
-    let one = &tube.portalgon;
-    let mut p = Portalgon::<Rational>::empty();
-    let mut first = Vec::new();
-    let mut maps = Vec::new();
-    for copy in 0..2 {
-        let mut map = vec![SideId::INVALID; one.side_slots()];
-        for q in one.polygons() {
-            let np = p.add_polygon(&one.corners(q)).unwrap();
-            if copy == 0 {
-                first.push(np);
-            }
-            for (i, &s) in one.polygon_sides(q).iter().enumerate() {
-                map[s.idx()] = p.side(np, i);
-            }
-        }
-        for s in one.sides() {
-            if let Some(t) = one.mate(s).filter(|&t| s < t) {
-                p.glue(map[s.idx()], map[t.idx()], 0.0).unwrap();
-            }
-        }
-        maps.push(map);
-    }
-    let [ca, db] = tube.boundary;
-    let (db1, ca2) = (maps[0][db.idx()], maps[1][ca.idx()]);
-    p.glue(db1, ca2, 0.0).unwrap();
-    (p, first, [maps[0][ca.idx()], maps[1][db.idx()]], db1)
-}
-
 #[test]
 fn splicing_a_good_biface_keeps_the_surface_and_the_boundary_ids() {
     for seed in 0..6 {
-        let (mut p, first, ends, joint) = two_tubes(seed);
+        let (mut p, first, ends, joint) = two_tubes::<Rational>(seed);
         p.check_invariants().unwrap();
         let (area, angles, boundary) = (p.area(), cone_angles(&p), boundary_lengths2(&p));
         let all: Vec<_> = p.polygons().collect();
@@ -312,7 +274,7 @@ fn splicing_a_good_biface_keeps_the_surface_and_the_boundary_ids() {
 
 #[test]
 fn splice_refuses_a_wrong_boundary() {
-    let (mut p, first, ends, joint) = two_tubes(1);
+    let (mut p, first, ends, joint) = two_tubes::<Rational>(1);
     let tube = p.tube(&first, 0.0).unwrap();
     let (good, _) = p
         .good_biface_of_tube(&first, TubeRoute::Direct, 0.0)
@@ -331,4 +293,37 @@ fn splice_refuses_a_wrong_boundary() {
         ));
         assert_eq!(p, before, "a refused splice changes nothing");
     }
+}
+
+#[test]
+fn vertex_info_within_a_subset_treats_sides_matched_outside_as_boundary() {
+    let p = t_x(10);
+    let all: Vec<_> = p.polygons().collect();
+    assert_eq!(p.vertex_info_within(&all).unwrap(), p.vertex_info());
+    // One triangle of T_10: its sides are all matched to the other one, so its surface is a
+    // triangle: three boundary vertices of degree 2, no loop; the other triangle's sides have no
+    // class.
+    let info = p.vertex_info_within(&all[..1]).unwrap();
+    assert_eq!(info.count(), 3);
+    assert_eq!(info.degree, vec![2, 2, 2]);
+    assert!(info.interior.iter().all(|&i| !i));
+    assert!(info.on_loop.iter().all(|&l| !l));
+    for &s in p.polygon_sides(all[1]) {
+        assert_eq!(info.class[s.idx()], u32::MAX);
+    }
+    // The whole T_10: one vertex, interior, on loops, degree 6.
+    let whole = p.vertex_info();
+    assert_eq!(
+        (
+            whole.count(),
+            whole.degree[0],
+            whole.interior[0],
+            whole.on_loop[0]
+        ),
+        (1, 6, true, true)
+    );
+    assert!(matches!(
+        p.vertex_info_within(&[all[0], all[0]]),
+        Err(EditError::NoSuchPolygon(_))
+    ));
 }

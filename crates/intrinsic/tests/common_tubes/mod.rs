@@ -214,3 +214,37 @@ pub fn random_tube_skewed<S: Scalar>(
         };
     }
 }
+
+/// Two copies of `random_tube(seed, false, 2, 4)` (a translation tube), the first's `DB` glued to
+/// the second's `CA`: an annulus made of two tubes. Returns it, the first copy's polygons, the
+/// outer boundary sides `[CA of the first, DB of the second]` and the middle loop's side (the
+/// first copy's `DB`).
+pub fn two_tubes<S: Scalar>(seed: u64) -> (Portalgon<S>, Vec<PolygonId>, [SideId; 2], SideId) {
+    let tube: RandomTube<S> = random_tube(seed, false, 2, 4);
+    let one = &tube.portalgon;
+    let mut p = Portalgon::<S>::empty();
+    let mut first = Vec::new();
+    let mut maps = Vec::new();
+    for copy in 0..2 {
+        let mut map = vec![SideId::INVALID; one.side_slots()];
+        for q in one.polygons() {
+            let np = p.add_polygon(&one.corners(q)).unwrap();
+            if copy == 0 {
+                first.push(np);
+            }
+            for (i, &s) in one.polygon_sides(q).iter().enumerate() {
+                map[s.idx()] = p.side(np, i);
+            }
+        }
+        for s in one.sides() {
+            if let Some(t) = one.mate(s).filter(|&t| s < t) {
+                p.glue(map[s.idx()], map[t.idx()], 0.0).unwrap();
+            }
+        }
+        maps.push(map);
+    }
+    let [ca, db] = tube.boundary;
+    let (db1, ca2) = (maps[0][db.idx()], maps[1][ca.idx()]);
+    p.glue(db1, ca2, 0.0).unwrap();
+    (p, first, [maps[0][ca.idx()], maps[1][db.idx()]], db1)
+}
