@@ -52,12 +52,7 @@ fn canonical_by_wave(path: &Path, weld: bool, exact: bool) -> anyhow::Result<Por
 /// The verdict of `--method voronoi`. In exact mode the tessellations are exact and the
 /// comparison decides. In f64 a correspondence proves isometry up to the tolerance, but its
 /// absence proves nothing: the flip route's three-way decision ([`decide_isometry`]) settles it.
-fn decide_by_wave(
-    a: &Path,
-    b: &Path,
-    weld: bool,
-    exact: bool,
-) -> anyhow::Result<IsometryDecision> {
+fn decide_by_wave(a: &Path, b: &Path, weld: bool, exact: bool) -> anyhow::Result<IsometryDecision> {
     let ta = canonical_by_wave(a, weld, exact)?;
     let tb = canonical_by_wave(b, weld, exact)?;
     let options = IsometryOptions::default();
