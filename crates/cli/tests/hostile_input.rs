@@ -529,7 +529,7 @@ fn item8_exit_codes_and_messages() {
         ),
         (
             &["generate", "flat-torus", "--x", "nan", "-o", s(&torus)],
-            "parameter x = NaN",
+            "invalid value 'nan' for '--x <X>'",
         ),
         (
             &["generate", "genus", "--size", "0", "-o", s(&g)],
