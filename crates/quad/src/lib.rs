@@ -16,10 +16,12 @@
 mod error;
 pub mod lrs;
 mod quadrangulate;
+pub mod quality;
 
 pub use error::QuadError;
 pub use lrs::{Expansion, ExpansionCases, expand};
 pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
 };
+pub use quality::{QualityReport, pair_costs, quality_report};
 pub use surftopo_matching::{AugmentStats, AugmentStrategy, KarpSipserOptions};
