@@ -1,50 +1,56 @@
 //! Edmonds' primal–dual blossom algorithm for a minimum-cost perfect matching (Edmonds 1965),
-//! in the single-tree form of Kolmogorov's Blossom V (2009, Sections 3–4): exact, with the dual
-//! solution as certificate ([`Certificate`]).
+//! with the initialisations of Kolmogorov's Blossom V (2009): exact, with the dual solution as
+//! certificate ([`Certificate`]).
 //!
 //! # Formulation
 //! The dual of the module [`super::certificate`]: one `y` per node and one `z ≥ 0` per blossom
 //! (an odd set), the reduced cost of `e = uv` being `c_e − Σ_{S : |S ∩ {u,v}| = 1} y_S`, where the
 //! sum runs over the node duals and the blossoms containing exactly one end (Blossom V's
-//! "δ(S)" formulation). The solver keeps, per node `v`, `π(v) = Σ_{S ∋ v} y_S` (its own dual and
-//! those of the blossoms around it), so that the reduced cost of an edge between two different
-//! outermost blossoms is `c_e − π(u) − π(v)`.
+//! "δ(S)" formulation, Section 2). The solver keeps, per vertex `v`, `π(v) = Σ_{S ∋ v} y_S`
+//! (its own dual and those of the blossoms around it), so that the reduced cost of an edge
+//! between two different outermost blossoms is `c_e − π(u) − π(v)`.
 //!
 //! # Algorithm
-//! 1. *Greedy initialisation* (Blossom V, Section 5.1 "greedy"): `y_v = min_e c_e / 2`, then for
-//!    every node in order, `y_v` is raised by its smallest reduced cost and `v` is matched along a
-//!    tight edge to a still exposed neighbour, if any.
-//! 2. For each exposed node `r` in increasing order: one *alternating tree* rooted at `r` grows
-//!    until an augmenting path is found (Edmonds' primal steps: GROW, SHRINK, EXPAND, AUGMENT).
-//!    The dual change `δ` of the tree is the time of a Dijkstra-like event queue: each `+` tree
-//!    node gains `δ − δ_join`, each `−` node loses it, lazily (a node stores the time at which it
-//!    joined; its duals and its nodes' `π` are brought up to date when it leaves the tree, is
-//!    shrunk into a blossom or expanded). Events, keyed by the time at which they become possible:
-//!    an edge from a `+` node to a free node becomes tight (GROW, or AUGMENT when the free node is
-//!    exposed), an edge between two `+` nodes becomes tight (SHRINK: both are in the one tree),
-//!    a `−` blossom's dual reaches 0 (EXPAND). Stale events are dropped or re-queued on pop.
-//!    Blossoms outlive the search that made them (Blossom V keeps them too) and are expanded only
-//!    as `−` nodes whose dual reaches 0.
+//! 1. *Greedy initialisation* (Blossom V, Section 5.1): `y_v = min_e c_e / 2`; then for every
+//!    node in order, `y_v` is raised by its smallest reduced cost and `v` is matched along a
+//!    tight edge to a still exposed neighbour, if any; then augmenting paths of three tight edges
+//!    are taken where they exist.
+//! 2. *Fractional initialisation* (Blossom V, Section 5.1, "fractional"): the primal–dual
+//!    growth below without blossoms, solving the matching LP without odd-set constraints (its
+//!    optimum is half-integral): a tight edge closing an odd cycle in a tree matches the root
+//!    and leaves the cycle covered by half-edges; a tree that reaches such a cycle augments into
+//!    it. Each cycle left at the end keeps one node exposed. On mesh duals this leaves well under
+//!    1% of the nodes exposed.
+//! 3. *Blossom phase*: every exposed node roots a `+` tree, and all trees grow together under
+//!    one dual change `δ` (the multiple-tree, single-`δ` scheme of Galil's survey, Section 4,
+//!    which LEMON also uses), `δ` being the clock of a monotone event queue (a radix heap):
+//!    each `+` tree node gains `δ − δ_join`, each `−` node loses it, lazily (a node stores the
+//!    time it joined; its dual is brought up to date when it leaves its tree, is shrunk into a
+//!    blossom or is expanded; a blossom's vertices receive its dual change only when it is
+//!    shrunk into a larger one or expanded). Events, keyed by the time they become possible: an
+//!    edge from a `+` node to a free node becomes tight (GROW), an edge between two `+` nodes
+//!    becomes tight (SHRINK in one tree, AUGMENT between two: both trees dissolve), a `−`
+//!    blossom's dual reaches 0 (EXPAND). Stale events are dropped or re-queued when popped.
+//!    Blossoms outlive their trees (Blossom V keeps them too) and are expanded only as `−` nodes
+//!    whose dual reaches 0.
 //!
-//! Decision: one tree at a time with a single `δ` (Blossom V's "single" variant), so that all
-//! duals stay integers: with every cost doubled (`2c`), all nodes of one tree have `π` of one
-//! parity (tight edges join nodes of equal parity, since `2c` is even), so an edge between two
-//! `+` nodes has even reduced cost and `δ` = half of it is an integer; GROW and EXPAND times are
-//! integers anyway. The certificate is therefore exact.
+//! Decision: one `δ` for all trees (not Blossom V's per-tree `δ`), so that all duals stay
+//! integers: every cost is doubled (`2c`), so a tight edge joins vertices of equal `π` parity;
+//! the roots of a phase are all given even `π` (lowering an exposed node's dual keeps the dual
+//! feasible), and they all change by the same `δ`, so every `+` vertex of every tree has the
+//! same parity and an edge between two `+` nodes has even reduced cost: `δ` = half of it is an
+//! integer. GROW and EXPAND times are integers anyway. The certificate is therefore exact.
 //!
-//! Complexity: O(n m log n) in the worst case (n searches, each O(m log n) with blossom work
-//! O(n) per shrink or expand); after the greedy initialisation the searches reach only the
-//! neighbourhoods of the few exposed nodes on a mesh dual.
+//! Complexity: O(n m log C) in the worst case (n/2 augmentations, each growth touching O(m)
+//! events, blossom work O(n) per shrink or expand); on mesh duals the phases after the greedy
+//! reach only neighbourhoods of the exposed nodes.
 //!
 //! Augmenting through blossoms follows the standard rotation of the blossom's cycle (Galil 1986,
 //! Section 4), done with an explicit stack so that deeply nested blossoms cannot overflow the
 //! call stack.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-use std::time::Instant;
-
 use super::certificate::{BlossomDual, Certificate};
+use super::radix_heap::RadixHeap;
 use super::{MAX_COST, WeightedError};
 use crate::dual_graph::{DualGraph, NONE};
 
@@ -60,8 +66,10 @@ const EXPAND_EVENT: u8 = 1;
 /// Figures of one [`min_cost_perfect_matching`] run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BlossomStats {
-    /// Nodes left exposed by the greedy initialisation (= searches run).
+    /// Nodes left exposed by the greedy initialisation (the roots of the fractional phase).
     pub exposed_after_greedy: usize,
+    /// Nodes left exposed by the fractional phase (the roots of the blossom phase).
+    pub exposed_after_fractional: usize,
     /// Blossoms formed.
     pub shrinks: u64,
     /// Blossoms expanded.
@@ -111,10 +119,14 @@ struct Solver {
     ends: Vec<[u32; 2]>,
     /// Doubled costs per edge slot.
     cost: Vec<i64>,
-    /// Per vertex: outermost blossom (or itself), `π`, mate edge.
+    /// Per vertex: liveness, outermost blossom (or itself), `π`, mate edge.
+    is_live: Vec<bool>,
     outer: Vec<u32>,
     pi: Vec<i64>,
     mate: Vec<u32>,
+    /// Per outermost node: the dual change of its own blossom not yet added to its vertices'
+    /// `pi` (their `π` is `pi + acc[outer] + the running tree offset`).
+    acc: Vec<i64>,
     /// Per node (vertex or blossom).
     parent: Vec<u32>,
     y: Vec<i64>,
@@ -131,14 +143,21 @@ struct Solver {
     children: Vec<Vec<u32>>,
     cycle: Vec<Vec<(u32, u32, u32)>>,
     live_blossom: Vec<bool>,
-    free_slots: Vec<u32>,
-    freed_this_search: Vec<u32>,
+    /// Per outermost tree node: its tree (an index into `trees`).
+    tree: Vec<u32>,
+    /// Fractional phase: per vertex its half-edge cycle (`NONE` if none), and per cycle its
+    /// vertices in order with the edge to the next.
+    half_cycle_of: Vec<u32>,
+    half_cycles: Vec<Vec<(u32, u32)>>,
+    /// Per tree: the nodes that joined it (some since nested or expanded), and whether it is
+    /// still growing.
+    trees: Vec<Vec<u32>>,
+    active_trees: usize,
     /// Search state.
     time: i64,
     stamp: u32,
     mark_stamp: u32,
-    heap: BinaryHeap<Reverse<Event>>,
-    touched: Vec<u32>,
+    heap: RadixHeap<Event>,
     scratch: Vec<u32>,
     stats: BlossomStats,
 }
@@ -177,12 +196,12 @@ pub fn min_cost_perfect_matching<G: DualGraph + ?Sized>(
     solver.greedy_init();
     solver.stats.greedy_seconds = start.elapsed().as_secs_f64();
     let start = Instant::now();
-    for r in 0..solver.n as u32 {
-        if graph.is_node(r) && solver.mate[r as usize] == NONE {
-            solver.stats.exposed_after_greedy += 1;
-            solver.search(r)?;
-        }
-    }
+    solver.grow_forest(true)?;
+    solver.round_half_cycles();
+    solver.stats.exposed_after_fractional = (0..solver.n)
+        .filter(|&v| solver.is_live[v] && solver.mate[v] == NONE)
+        .count();
+    solver.grow_forest(false)?;
     solver.stats.search_seconds = start.elapsed().as_secs_f64();
     let mut edges: Vec<u32> = (0..solver.n)
         .filter(|&v| graph.is_node(v as u32))
@@ -220,9 +239,11 @@ impl Solver {
             adjacency,
             ends,
             cost,
+            is_live: (0..n as u32).map(|v| graph.is_node(v)).collect(),
             outer: (0..n as u32).collect(),
             pi: vec![0; n],
             mate: vec![NONE; n],
+            acc: vec![0; n],
             parent: vec![NONE; n],
             y: vec![0; n],
             label: vec![FREE; n],
@@ -235,13 +256,15 @@ impl Solver {
             children: Vec::new(),
             cycle: Vec::new(),
             live_blossom: Vec::new(),
-            free_slots: Vec::new(),
-            freed_this_search: Vec::new(),
+            tree: vec![NONE; n],
+            half_cycle_of: vec![NONE; n],
+            half_cycles: Vec::new(),
+            trees: Vec::new(),
+            active_trees: 0,
             time: 0,
             stamp: 0,
             mark_stamp: 0,
-            heap: BinaryHeap::new(),
-            touched: Vec::new(),
+            heap: RadixHeap::new(),
             scratch: Vec::new(),
             stats: BlossomStats::default(),
         }
@@ -290,6 +313,31 @@ impl Solver {
                 self.mate[w as usize] = e;
             }
         }
+        // Augmenting paths of three tight edges: exposed v, w = x matched, z exposed.
+        for v in 0..self.n as u32 {
+            if self.mate[v as usize] != NONE {
+                continue;
+            }
+            let tight = |s: &Self, e: u32, a: u32, b: u32| {
+                s.cost[e as usize] == s.y[a as usize] + s.y[b as usize]
+            };
+            'paths: for (e, w) in self.edges_of(v) {
+                let m = self.mate[w as usize];
+                if m == NONE || !tight(self, e, v, w) {
+                    continue;
+                }
+                let x = self.other_end(m, w);
+                for (f, z) in self.edges_of(x) {
+                    if z != w && z != v && self.mate[z as usize] == NONE && tight(self, f, x, z) {
+                        self.mate[v as usize] = e;
+                        self.mate[w as usize] = e;
+                        self.mate[x as usize] = f;
+                        self.mate[z as usize] = f;
+                        break 'paths;
+                    }
+                }
+            }
+        }
         self.pi.copy_from_slice(&self.y[..self.n]);
     }
 
@@ -325,7 +373,8 @@ impl Solver {
 
     #[inline]
     fn pi_now(&self, v: u32) -> i64 {
-        self.pi[v as usize] + self.offset(self.outer[v as usize])
+        let o = self.outer[v as usize];
+        self.pi[v as usize] + self.acc[o as usize] + self.offset(o)
     }
 
     /// Reduced cost of edge `e` between two different outermost nodes, now.
@@ -335,47 +384,47 @@ impl Solver {
         self.cost[e as usize] - self.pi_now(u) - self.pi_now(v)
     }
 
-    /// Applies the lazy dual change of outermost node `x` to its dual and its vertices' `π`, and
-    /// restarts its clock at the current time.
+    /// Applies the lazy dual change of outermost node `x` to its dual and to its `acc` (the
+    /// change its vertices' `π` owe it), and restarts its clock at the current time. O(1).
     fn settle(&mut self, x: u32) {
         let d = self.offset(x);
-        if d != 0 {
-            self.y[x as usize] += d;
-            let mut vertices = std::mem::take(&mut self.scratch);
-            self.collect_vertices(x, &mut vertices);
-            for &v in &vertices {
-                self.pi[v as usize] += d;
-            }
-            self.scratch = vertices;
-        }
+        self.y[x as usize] += d;
+        self.acc[x as usize] += d;
         self.join_time[x as usize] = self.time;
     }
 
     fn push_edge(&mut self, e: u32, delay: i64) {
-        self.heap.push(Reverse(Event {
-            time: self.time + delay,
-            kind: EDGE_EVENT,
-            id: e,
-            stamp: 0,
-        }));
+        self.heap.push(
+            (self.time + delay) as u64,
+            Event {
+                time: self.time + delay,
+                kind: EDGE_EVENT,
+                id: e,
+                stamp: 0,
+            },
+        );
     }
 
-    /// Labels outermost node `x` and records it for the cleanup.
-    fn join(&mut self, x: u32, label: u8) {
+    /// Labels outermost node `x` as a node of `tree`.
+    fn join(&mut self, x: u32, label: u8, tree: u32) {
         self.label[x as usize] = label;
         self.join_time[x as usize] = self.time;
         self.stamp = self.stamp.wrapping_add(1);
         self.join_stamp[x as usize] = self.stamp;
-        self.touched.push(x);
+        self.tree[x as usize] = tree;
+        self.trees[tree as usize].push(x);
         self.stats.tree_nodes += 1;
         if label == MINUS && self.is_blossom(x) {
             let y = self.y[x as usize];
-            self.heap.push(Reverse(Event {
-                time: self.time + y,
-                kind: EXPAND_EVENT,
-                id: x,
-                stamp: self.stamp,
-            }));
+            self.heap.push(
+                (self.time + y) as u64,
+                Event {
+                    time: self.time + y,
+                    kind: EXPAND_EVENT,
+                    id: x,
+                    stamp: self.stamp,
+                },
+            );
         }
     }
 
@@ -421,15 +470,45 @@ impl Solver {
         self.scratch = vertices;
     }
 
-    /// One alternating tree from exposed vertex `root`, until it augments.
-    fn search(&mut self, root: u32) -> Result<(), WeightedError> {
+    /// Every exposed vertex roots a `+` tree; all trees grow under one clock until every tree
+    /// has augmented.
+    ///
+    /// With `fractional` (Blossom V's fractional initialisation, Kolmogorov 2009, Section 5.1),
+    /// no blossom is made: a tight edge closing an odd cycle in a tree augments the tree's root
+    /// path up to the cycle, whose nodes are then covered by half-edges (the fractional optimum
+    /// without odd-set constraints is half-integral); a tree reaching such a cycle augments into
+    /// it (the rest of the cycle is then matched along it). At the end one node per remaining
+    /// cycle is left exposed, the others matched along it: the duals are still feasible and every
+    /// matched edge tight, and few nodes are exposed.
+    fn grow_forest(&mut self, fractional: bool) -> Result<(), WeightedError> {
         self.time = 0;
-        let r = self.outer[root as usize];
-        self.join(r, PLUS);
-        self.scan_plus(r);
-        loop {
-            let Some(Reverse(event)) = self.heap.pop() else {
-                return Err(WeightedError::NoPerfectMatching { node: root });
+        self.heap.clear();
+        let roots: Vec<u32> = (0..self.n as u32)
+            .filter(|&v| self.is_live[v as usize] && self.mate[v as usize] == NONE)
+            .collect();
+        if fractional {
+            self.stats.exposed_after_greedy = roots.len();
+        }
+        for &r in &roots {
+            // All roots of one parity (see the module doc): lowering a dual keeps feasibility.
+            if (self.pi[r as usize] + self.acc[r as usize]) % 2 != 0 {
+                self.pi[r as usize] -= 1;
+                self.y[r as usize] -= 1;
+            }
+            let tree = self.trees.len() as u32;
+            self.trees.push(Vec::new());
+            self.join(r, PLUS, tree);
+        }
+        self.active_trees = roots.len();
+        for &r in &roots {
+            self.scan_plus(r);
+        }
+        while self.active_trees > 0 {
+            let Some((_, event)) = self.heap.pop() else {
+                let node = (0..self.n as u32)
+                    .find(|&v| self.is_live[v as usize] && self.mate[v as usize] == NONE)
+                    .unwrap_or(0);
+                return Err(WeightedError::NoPerfectMatching { node });
             };
             self.stats.events += 1;
             debug_assert!(event.time >= self.time, "events go forward in time");
@@ -459,8 +538,14 @@ impl Solver {
                 (PLUS, PLUS) => {
                     if s > 0 {
                         self.push_edge(e, s / 2);
+                    } else if self.tree[ou as usize] == self.tree[ov as usize] {
+                        if fractional {
+                            self.half_cycle(e);
+                        } else {
+                            self.shrink(e);
+                        }
                     } else {
-                        self.shrink(e);
+                        self.augment(e);
                     }
                 }
                 (PLUS, FREE) | (FREE, PLUS) => {
@@ -469,31 +554,32 @@ impl Solver {
                         continue;
                     }
                     let (inner, outside) = if lu == PLUS { (u, v) } else { (v, u) };
-                    let w_outer = self.outer[outside as usize];
-                    if self.mate[self.base[w_outer as usize] as usize] == NONE {
-                        self.augment(e, inner, outside);
-                        self.cleanup();
-                        return Ok(());
+                    if self.half_cycle_of[outside as usize] != NONE {
+                        self.augment_into_half_cycle(e, inner, outside);
+                    } else {
+                        self.grow(e, inner, outside);
                     }
-                    self.grow(e, outside);
                 }
                 _ => {}
             }
         }
+        Ok(())
     }
 
-    /// GROW: free matched node of vertex `w` joins as `−` through tight edge `e`, its mate as `+`.
-    fn grow(&mut self, e: u32, w: u32) {
+    /// GROW: the free (matched) node of vertex `w` joins the tree of vertex `inner` as `−`
+    /// through tight edge `e`, its mate as `+`.
+    fn grow(&mut self, e: u32, inner: u32, w: u32) {
         self.stats.grows += 1;
+        let tree = self.tree[self.outer[inner as usize] as usize];
         let x = self.outer[w as usize];
         self.tree_edge[x as usize] = e;
         self.tree_vertex[x as usize] = w;
-        self.join(x, MINUS);
+        self.join(x, MINUS, tree);
         let b = self.base[x as usize];
         let m = self.mate[b as usize];
         let partner = self.outer[self.other_end(m, b) as usize];
         debug_assert_eq!(self.label[partner as usize], FREE);
-        self.join(partner, PLUS);
+        self.join(partner, PLUS, tree);
         self.scan_plus(partner);
     }
 
@@ -524,8 +610,11 @@ impl Solver {
 
     /// SHRINK: tight edge `e` joins two `+` nodes of the tree; the cycle through their lowest
     /// common ancestor becomes a `+` blossom with dual 0.
-    fn shrink(&mut self, e: u32) {
-        self.stats.shrinks += 1;
+    /// The odd cycle closed by tight edge `e` between two `+` nodes of one tree: its lowest
+    /// common ancestor, the cycle's nodes from the LCA (the cycle order of a blossom's children)
+    /// and its edges as `(edge, vertex in node i, vertex in node i + 1)`.
+    #[allow(clippy::type_complexity)]
+    fn odd_cycle(&mut self, e: u32) -> (u32, Vec<u32>, Vec<(u32, u32, u32)>) {
         let [u, v] = self.ends[e as usize];
         let (ou, ov) = (self.outer[u as usize], self.outer[v as usize]);
         // Lowest common ancestor, stepping up alternately from both sides.
@@ -576,6 +665,12 @@ impl Solver {
             let (edge, here, up) = self.parent_link(x);
             cycle.push((edge, here, up));
         }
+        (lca, children, cycle)
+    }
+
+    fn shrink(&mut self, e: u32) {
+        self.stats.shrinks += 1;
+        let (lca, children, cycle) = self.odd_cycle(e);
         let blossom = self.new_blossom();
         for &c in &children {
             self.settle(c);
@@ -590,26 +685,28 @@ impl Solver {
             .copied()
             .filter(|&c| self.label[c as usize] == MINUS)
             .collect();
-        self.children[bi - self.n] = children;
-        self.cycle[bi - self.n] = cycle;
         let mut vertices = std::mem::take(&mut self.scratch);
-        self.collect_vertices(blossom, &mut vertices);
-        for &w in &vertices {
-            self.outer[w as usize] = blossom;
+        for &c in &children {
+            let owed = std::mem::take(&mut self.acc[c as usize]);
+            self.collect_vertices(c, &mut vertices);
+            for &w in &vertices {
+                self.pi[w as usize] += owed;
+                self.outer[w as usize] = blossom;
+            }
         }
         self.scratch = vertices;
-        self.join(blossom, PLUS);
+        self.acc[bi] = 0;
+        self.children[bi - self.n] = children;
+        self.cycle[bi - self.n] = cycle;
+        let tree = self.tree[lca as usize];
+        self.join(blossom, PLUS, tree);
         for c in minus_children {
             self.scan_plus(c);
         }
     }
 
-    /// A blossom slot, reused or new.
+    /// A new blossom slot (slots are never reused, so that the trees' node lists stay valid).
     fn new_blossom(&mut self) -> u32 {
-        if let Some(b) = self.free_slots.pop() {
-            self.live_blossom[b as usize - self.n] = true;
-            return b;
-        }
         let b = self.parent.len() as u32;
         self.parent.push(NONE);
         self.y.push(0);
@@ -623,6 +720,8 @@ impl Solver {
         self.children.push(Vec::new());
         self.cycle.push(Vec::new());
         self.live_blossom.push(true);
+        self.tree.push(NONE);
+        self.acc.push(0);
         b
     }
 
@@ -647,19 +746,21 @@ impl Solver {
             .iter()
             .position(|&c| c == child)
             .expect("the entry vertex lies in a child");
+        let owed = std::mem::take(&mut self.acc[b as usize]);
         let mut vertices = std::mem::take(&mut self.scratch);
         for &c in &children {
             self.parent[c as usize] = NONE;
             self.label[c as usize] = FREE;
             self.collect_vertices(c, &mut vertices);
             for &w in &vertices {
+                self.pi[w as usize] += owed;
                 self.outer[w as usize] = c;
             }
         }
         self.scratch = vertices;
         self.live_blossom[bi] = false;
         self.label[b as usize] = FREE;
-        self.freed_this_search.push(b);
+        let tree = self.tree[b as usize];
         // The even path j -> 0 along the cycle: backward if j is even, forward otherwise.
         let mut on_path = vec![false; k];
         let mut path = Vec::with_capacity(k);
@@ -682,9 +783,9 @@ impl Solver {
             if pos % 2 == 0 {
                 self.tree_edge[c as usize] = edge;
                 self.tree_vertex[c as usize] = vertex;
-                self.join(c, MINUS);
+                self.join(c, MINUS, tree);
             } else {
-                self.join(c, PLUS);
+                self.join(c, PLUS, tree);
             }
         }
         for (pos, &(c, _, _)) in path.iter().enumerate() {
@@ -699,13 +800,108 @@ impl Solver {
         }
     }
 
-    /// AUGMENT along tight edge `e` from `inner` (in the tree) to `outside` (in an exposed free
-    /// node): the path to the root alternates, every blossom on it rotated to its new base.
-    fn augment(&mut self, e: u32, inner: u32, outside: u32) {
-        let w = self.outer[outside as usize];
-        self.rotate(w, outside);
-        self.mate[outside as usize] = e;
-        let (mut x, mut entry, mut edge) = (self.outer[inner as usize], inner, e);
+    /// AUGMENT along tight edge `e` between the `+` nodes of two trees: the paths from its ends
+    /// to the two roots alternate (every blossom on them rotated to its new base), and both trees
+    /// dissolve.
+    fn augment(&mut self, e: u32) {
+        let [u, v] = self.ends[e as usize];
+        let trees = [
+            self.tree[self.outer[u as usize] as usize],
+            self.tree[self.outer[v as usize] as usize],
+        ];
+        for end in [u, v] {
+            self.augment_to_root(end, e);
+        }
+        self.dissolve(&trees);
+    }
+
+    /// Fractional phase: tight edge `e` closes an odd cycle in its tree. The path from the
+    /// cycle's top node to the root alternates (the root is matched, the top node exposed), the
+    /// cycle's nodes become a half-edge cycle, and the tree dissolves.
+    fn half_cycle(&mut self, e: u32) {
+        let tree = self.tree[self.outer[self.ends[e as usize][0] as usize] as usize];
+        let (lca, nodes, edges) = self.odd_cycle(e);
+        let old_mate = self.mate[lca as usize];
+        if old_mate != NONE {
+            let z = self.other_end(old_mate, lca);
+            let p = self.tree_edge[z as usize];
+            let entry = self.other_end(p, z);
+            self.augment_to_root(entry, p);
+            self.mate[z as usize] = p;
+        }
+        let id = self.half_cycles.len() as u32;
+        for &c in &nodes {
+            self.mate[c as usize] = NONE;
+            self.half_cycle_of[c as usize] = id;
+        }
+        self.half_cycles.push(
+            nodes
+                .iter()
+                .zip(&edges)
+                .map(|(&c, &(f, _, _))| (c, f))
+                .collect(),
+        );
+        self.dissolve(&[tree]);
+    }
+
+    /// Fractional phase: tight edge `e` from `inner` (in a tree) reaches `w` on a half-edge
+    /// cycle. The tree path augments, `w` is matched along `e`, the rest of the cycle along it.
+    fn augment_into_half_cycle(&mut self, e: u32, inner: u32, w: u32) {
+        let tree = self.tree[self.outer[inner as usize] as usize];
+        self.augment_to_root(inner, e);
+        self.mate[w as usize] = e;
+        let id = self.half_cycle_of[w as usize];
+        self.match_half_cycle(id, w);
+        self.dissolve(&[tree]);
+    }
+
+    /// Matches half-edge cycle `id` along itself, all but vertex `exposed` (left as it is).
+    fn match_half_cycle(&mut self, id: u32, exposed: u32) {
+        let cycle = std::mem::take(&mut self.half_cycles[id as usize]);
+        let k = cycle.len();
+        let i = cycle
+            .iter()
+            .position(|&(c, _)| c == exposed)
+            .expect("on the cycle");
+        for j in 0..k / 2 {
+            let (a, edge) = cycle[(i + 1 + 2 * j) % k];
+            let (b, _) = cycle[(i + 2 + 2 * j) % k];
+            self.mate[a as usize] = edge;
+            self.mate[b as usize] = edge;
+        }
+        for &(c, _) in &cycle {
+            self.half_cycle_of[c as usize] = NONE;
+        }
+    }
+
+    /// Ends the growth of `trees`: their nodes' duals settled and labels cleared; the edges from
+    /// the other trees' `+` nodes to the freed nodes now shrink at rate 1.
+    fn dissolve(&mut self, trees: &[u32]) {
+        let mut freed = Vec::new();
+        for &tree in trees {
+            for x in std::mem::take(&mut self.trees[tree as usize]) {
+                let live = !self.is_blossom(x) || self.live_blossom[x as usize - self.n];
+                if live
+                    && self.parent[x as usize] == NONE
+                    && self.label[x as usize] != FREE
+                    && self.tree[x as usize] == tree
+                {
+                    self.settle(x);
+                    self.label[x as usize] = FREE;
+                    self.tree[x as usize] = NONE;
+                    freed.push(x);
+                }
+            }
+        }
+        self.active_trees -= trees.len();
+        for x in freed {
+            self.scan_free(x);
+        }
+    }
+
+    /// Flips the tree path from vertex `entry` (matched along `edge` from now on) up to its root.
+    fn augment_to_root(&mut self, mut entry: u32, mut edge: u32) {
+        let mut x = self.outer[entry as usize];
         loop {
             let old_base = self.base[x as usize];
             let old_mate = self.mate[old_base as usize];
@@ -779,21 +975,14 @@ impl Solver {
         }
     }
 
-    /// After an augmentation: every tree node's duals brought up to date and its label cleared.
-    fn cleanup(&mut self) {
-        let touched = std::mem::take(&mut self.touched);
-        for &x in &touched {
-            if self.parent[x as usize] == NONE && self.label[x as usize] != FREE {
-                self.settle(x);
+    /// After the fractional phase: each remaining half-edge cycle matched along itself but for its
+    /// first node, left exposed.
+    fn round_half_cycles(&mut self) {
+        for id in 0..self.half_cycles.len() as u32 {
+            if let Some(&(first, _)) = self.half_cycles[id as usize].first() {
+                self.match_half_cycle(id, first);
             }
         }
-        for &x in &touched {
-            self.label[x as usize] = FREE;
-        }
-        self.touched = touched;
-        self.touched.clear();
-        self.heap.clear();
-        self.free_slots.append(&mut self.freed_this_search);
     }
 
     /// The duals and the laminar family of live blossoms.

@@ -2,10 +2,10 @@
 //! with its optimality certificate, an independent verifier of that certificate, and a fast
 //! heuristic.
 //!
-//! * [`blossom`] — Edmonds' weighted blossom algorithm (Edmonds 1965), one alternating tree at a
-//!   time grown Dijkstra-fashion with a priority queue of events and lazy dual updates (the
-//!   single-tree variant of Kolmogorov's Blossom V, 2009), after a greedy dual initialisation.
-//!   Returns the matched edges and the dual solution ([`Certificate`]).
+//! * [`blossom`] — Edmonds' weighted blossom algorithm (Edmonds 1965) after Blossom V's greedy
+//!   and fractional initialisations (Kolmogorov 2009), all alternating trees grown together
+//!   under one dual change with a monotone event queue (Galil 1986). Returns the matched edges
+//!   and the dual solution ([`Certificate`]).
 //! * [`certificate`] — the dual solution and [`verify_min_cost_perfect_matching`], which checks a
 //!   matching and a certificate without any of the solver's code: primal perfection, dual
 //!   feasibility and complementary slackness, hence optimality.
@@ -35,6 +35,7 @@
 pub mod blossom;
 pub mod certificate;
 pub mod fast;
+mod radix_heap;
 
 use thiserror::Error;
 
