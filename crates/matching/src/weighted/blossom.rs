@@ -49,6 +49,8 @@
 //! Section 4), done with an explicit stack so that deeply nested blossoms cannot overflow the
 //! call stack.
 
+use std::time::Instant;
+
 use super::certificate::{BlossomDual, Certificate};
 use super::radix_heap::RadixHeap;
 use super::{MAX_COST, WeightedError};

@@ -10,14 +10,17 @@
 //! 3. *Improvement*: an alternating cycle `C` (matched and unmatched edges in turn) whose unmatched
 //!    edges cost less than its matched ones is exchanged (`M ← M △ C`), which keeps the matching
 //!    perfect and lowers its cost. Cycles with at most [`MAX_CYCLE_PAIRS`] matched edges are
-//!    enumerated by a depth-first search from every matched edge, in edge id order, taking the
-//!    first negative cycle found; sweeps repeat until one finds none (or [`MAX_SWEEPS`]).
+//!    enumerated by a depth-first search from a matched edge, the first negative cycle found
+//!    being exchanged; the matched edges are examined from a worklist (all in id order, then
+//!    those near each exchange) until it is empty.
 //!    A perfect matching is optimal iff no negative alternating cycle exists (of any length), so
 //!    the result is optimal only with respect to these short exchanges.
 //!
 //! Complexity: O(m log m) for the sort, the completion as in [`crate::augment`], and
-//! O(m · 2^K) per sweep for K = [`MAX_CYCLE_PAIRS`] on a cubic graph.
+//! O(2^K) per examined edge for K = [`MAX_CYCLE_PAIRS`] on a cubic graph (each exchange adds O(K)
+//! edges to the worklist).
 
+use std::collections::VecDeque;
 use std::time::Instant;
 
 use super::{MAX_COST, WeightedError};
@@ -26,9 +29,6 @@ use crate::dual_graph::{DualGraph, NONE, Pairing};
 
 /// Largest number of matched edges on an exchanged cycle (cycles of up to 8 edges).
 pub const MAX_CYCLE_PAIRS: usize = 4;
-
-/// Largest number of improvement sweeps.
-pub const MAX_SWEEPS: usize = 64;
 
 /// Figures of one [`fast_min_cost_perfect_matching`] run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -39,8 +39,8 @@ pub struct FastStats {
     pub cost_before_improvement: i64,
     /// Cycles exchanged.
     pub exchanges: u64,
-    /// Sweeps run (the last one found no cycle, unless [`MAX_SWEEPS`] was reached).
-    pub sweeps: usize,
+    /// Matched edges examined as a cycle's start.
+    pub examined: u64,
     /// Seconds of the greedy, of the completion and of the improvement.
     pub greedy_seconds: f64,
     /// See `greedy_seconds`.
@@ -134,61 +134,72 @@ fn total_cost<G: DualGraph + ?Sized>(graph: &G, mate: &[u32], costs: &[i64]) -> 
         .sum()
 }
 
-/// Sweeps of negative alternating cycle exchanges (step 3 of the module doc).
+/// Negative alternating cycle exchanges (step 3 of the module doc), from a first-in first-out
+/// worklist of matched edges: all of them in id order at first, then, after each exchange, the
+/// matched edges at and next to the exchanged cycle's nodes. Ends when the worklist is empty:
+/// every matched edge was examined since the last exchange near it. Each exchange lowers the
+/// integer cost, so it ends.
 fn improve<G: DualGraph + ?Sized>(
     graph: &G,
     costs: &[i64],
     mate: &mut [u32],
     stats: &mut FastStats,
 ) {
-    let mut cycle: Vec<u32> = Vec::with_capacity(2 * MAX_CYCLE_PAIRS);
-    while stats.sweeps < MAX_SWEEPS {
-        stats.sweeps += 1;
-        let mut exchanged = false;
-        for e in 0..graph.edge_slots() as u32 {
-            if !graph.is_edge(e) {
-                continue;
-            }
-            let [a, b] = graph.endpoints(e);
-            if a == b || mate[a as usize] != e {
-                continue;
-            }
-            cycle.clear();
-            let mut path = [NONE; 2 * MAX_CYCLE_PAIRS];
-            path[0] = a;
-            path[1] = b;
-            if find_cycle(
-                graph,
-                costs,
-                mate,
-                &mut path,
-                2,
-                costs[e as usize],
-                &mut cycle,
-            ) {
-                // `cycle` holds the unmatched edges of the cycle; its matched ones are the
-                // mates of their ends.
-                let matched: Vec<u32> = cycle
-                    .iter()
-                    .flat_map(|&f| graph.endpoints(f))
-                    .map(|v| mate[v as usize])
-                    .collect();
-                for &f in &matched {
-                    let [x, y] = graph.endpoints(f);
-                    mate[x as usize] = NONE;
-                    mate[y as usize] = NONE;
-                }
-                for &f in &cycle {
-                    let [x, y] = graph.endpoints(f);
-                    mate[x as usize] = f;
-                    mate[y as usize] = f;
-                }
-                stats.exchanges += 1;
-                exchanged = true;
-            }
+    let mut queue: VecDeque<u32> = VecDeque::new();
+    let mut queued = vec![false; graph.edge_slots()];
+    for v in 0..mate.len() as u32 {
+        let e = mate[v as usize];
+        if e != NONE && graph.endpoints(e)[0] == v {
+            queued[e as usize] = true;
+            queue.push_back(e);
         }
-        if !exchanged {
-            break;
+    }
+    let mut cycle: Vec<u32> = Vec::with_capacity(2 * MAX_CYCLE_PAIRS);
+    while let Some(e) = queue.pop_front() {
+        queued[e as usize] = false;
+        let [a, b] = graph.endpoints(e);
+        if mate[a as usize] != e {
+            continue;
+        }
+        stats.examined += 1;
+        cycle.clear();
+        let mut path = [NONE; 2 * MAX_CYCLE_PAIRS];
+        path[0] = a;
+        path[1] = b;
+        if !find_cycle(
+            graph,
+            costs,
+            mate,
+            &mut path,
+            2,
+            costs[e as usize],
+            &mut cycle,
+        ) {
+            continue;
+        }
+        // `cycle` holds the unmatched edges of the cycle; its matched ones are the mates of
+        // their ends.
+        let nodes: Vec<u32> = cycle.iter().flat_map(|&f| graph.endpoints(f)).collect();
+        for &x in &nodes {
+            mate[x as usize] = NONE;
+        }
+        for &f in &cycle {
+            let [x, y] = graph.endpoints(f);
+            mate[x as usize] = f;
+            mate[y as usize] = f;
+        }
+        stats.exchanges += 1;
+        for &x in &nodes {
+            for (_, w) in graph.adjacent(x) {
+                if w == NONE {
+                    continue;
+                }
+                let f = mate[w as usize];
+                if f != NONE && !queued[f as usize] {
+                    queued[f as usize] = true;
+                    queue.push_back(f);
+                }
+            }
         }
     }
 }
