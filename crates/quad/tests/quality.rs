@@ -145,28 +145,40 @@ fn check_surface(name: &str, surface: &Surface, deterministic: bool) -> (i64, i6
     (exact.cost, fast.cost)
 }
 
+/// A named generator of a test surface.
+type Maker = fn() -> Surface;
+
 fn small_families() -> Vec<(String, Surface)> {
-    let mut out: Vec<(String, Surface)> = vec![
-        ("tetrahedron".into(), tetrahedron()),
-        ("icosphere0".into(), icosphere(0)),
-        ("icosphere4".into(), icosphere(4)),
-        ("torus3x3".into(), torus(3, 3)),
-        ("torus40x11".into(), torus(40, 11)),
-        (
-            "cavities".into(),
-            CavityBox::new(6, 3, 1, 1, 1, 1).generate(),
-        ),
-        ("genus45".into(), genus_surface(45, 1)),
+    let makers: [(&str, Maker); 7] = [
+        ("tetrahedron", tetrahedron),
+        ("icosphere0", || icosphere(0)),
+        ("icosphere4", || icosphere(4)),
+        ("torus3x3", || torus(3, 3)),
+        ("torus40x11", || torus(40, 11)),
+        ("cavities", || CavityBox::new(6, 3, 1, 1, 1, 1).generate()),
+        ("genus45", || genus_surface(45, 1)),
     ];
-    let base = out.clone();
-    for (name, s) in &base {
-        let e = s.mesh.edge_count();
-        out.push((format!("{name}+flips"), random_flips(s, e, 7)));
-        out.push((
-            format!("{name}+splits"),
-            random_vertex_splits(s, s.mesh.vertex_count(), 9),
-        ));
-    }
+    let mut out: Vec<(String, Surface)> = makers
+        .iter()
+        .map(|(name, make)| (name.to_string(), make()))
+        .collect();
+    // Irregular connectivity: each one with random flips, and with random vertex splits.
+    let irregular: Vec<(String, Surface)> = out
+        .iter()
+        .flat_map(|(name, s)| {
+            [
+                (
+                    format!("{name}+flips"),
+                    random_flips(s, s.mesh.edge_count(), 7),
+                ),
+                (
+                    format!("{name}+splits"),
+                    random_vertex_splits(s, s.mesh.vertex_count(), 9),
+                ),
+            ]
+        })
+        .collect();
+    out.extend(irregular);
     out.push((
         "genus7+flips+subdivided".into(),
         subdivide_midpoint(&random_flips(&genus_surface(7, 1), 500, 3), 1),

@@ -53,7 +53,7 @@ use std::time::Instant;
 
 use super::certificate::{BlossomDual, Certificate};
 use super::radix_heap::RadixHeap;
-use super::{MAX_COST, WeightedError};
+use super::{WeightedError, check_costs};
 use crate::dual_graph::{DualGraph, NONE};
 
 /// Labels of outermost nodes (vertices and blossoms).
@@ -177,18 +177,7 @@ pub fn min_cost_perfect_matching<G: DualGraph + ?Sized>(
     graph: &G,
     costs: &[i64],
 ) -> Result<MinCostMatching, WeightedError> {
-    if costs.len() != graph.edge_slots() {
-        return Err(WeightedError::CostCount {
-            costs: costs.len(),
-            edge_slots: graph.edge_slots(),
-        });
-    }
-    for e in 0..graph.edge_slots() as u32 {
-        let c = costs[e as usize];
-        if graph.is_edge(e) && !(0..=MAX_COST).contains(&c) {
-            return Err(WeightedError::CostOutOfRange { edge: e, cost: c });
-        }
-    }
+    check_costs(graph, costs)?;
     let nodes = graph.node_count();
     if !nodes.is_multiple_of(2) {
         return Err(WeightedError::OddNodeCount { nodes });
@@ -395,16 +384,20 @@ impl Solver {
         self.join_time[x as usize] = self.time;
     }
 
+    /// Queues an event `delay` after now.
+    fn push_event(&mut self, delay: i64, kind: u8, id: u32, stamp: u32) {
+        let time = self.time + delay;
+        let event = Event {
+            time,
+            kind,
+            id,
+            stamp,
+        };
+        self.heap.push(time as u64, event);
+    }
+
     fn push_edge(&mut self, e: u32, delay: i64) {
-        self.heap.push(
-            (self.time + delay) as u64,
-            Event {
-                time: self.time + delay,
-                kind: EDGE_EVENT,
-                id: e,
-                stamp: 0,
-            },
-        );
+        self.push_event(delay, EDGE_EVENT, e, 0);
     }
 
     /// Labels outermost node `x` as a node of `tree`.
@@ -417,16 +410,7 @@ impl Solver {
         self.trees[tree as usize].push(x);
         self.stats.tree_nodes += 1;
         if label == MINUS && self.is_blossom(x) {
-            let y = self.y[x as usize];
-            self.heap.push(
-                (self.time + y) as u64,
-                Event {
-                    time: self.time + y,
-                    kind: EXPAND_EVENT,
-                    id: x,
-                    stamp: self.stamp,
-                },
-            );
+            self.push_event(self.y[x as usize], EXPAND_EVENT, x, self.stamp);
         }
     }
 

@@ -23,7 +23,7 @@
 use std::collections::VecDeque;
 use std::time::Instant;
 
-use super::{MAX_COST, WeightedError};
+use super::{WeightedError, check_costs};
 use crate::augment::{AugmentStrategy, augment_to_perfect};
 use crate::dual_graph::{DualGraph, NONE, Pairing};
 
@@ -70,20 +70,11 @@ pub fn fast_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     graph: &G,
     costs: &[i64],
 ) -> Result<FastMatching, WeightedError> {
-    if costs.len() != graph.edge_slots() {
-        return Err(WeightedError::CostCount {
-            costs: costs.len(),
-            edge_slots: graph.edge_slots(),
-        });
-    }
+    check_costs(graph, costs)?;
     let mut order: Vec<u32> = Vec::with_capacity(graph.edge_slots());
     for e in 0..graph.edge_slots() as u32 {
         if !graph.is_edge(e) {
             continue;
-        }
-        let c = costs[e as usize];
-        if !(0..=MAX_COST).contains(&c) {
-            return Err(WeightedError::CostOutOfRange { edge: e, cost: c });
         }
         let [a, b] = graph.endpoints(e);
         if a != b {

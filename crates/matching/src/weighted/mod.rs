@@ -40,6 +40,7 @@ mod radix_heap;
 use thiserror::Error;
 
 use crate::augment::AugmentError;
+use crate::dual_graph::DualGraph;
 
 pub use blossom::{BlossomStats, MinCostMatching, min_cost_perfect_matching};
 pub use certificate::{
@@ -50,6 +51,25 @@ pub use fast::{FastMatching, FastStats, fast_min_cost_perfect_matching};
 /// Largest cost accepted (2³¹ − 1): with doubled costs and at most 2³² nodes every dual and every
 /// sum the solver forms stays far inside `i64`.
 pub const MAX_COST: i64 = (1 << 31) - 1;
+
+/// Checks one cost per edge slot, each live edge's in `0..=MAX_COST`.
+fn check_costs<G: DualGraph + ?Sized>(graph: &G, costs: &[i64]) -> Result<(), WeightedError> {
+    if costs.len() != graph.edge_slots() {
+        return Err(WeightedError::CostCount {
+            costs: costs.len(),
+            edge_slots: graph.edge_slots(),
+        });
+    }
+    match (0..graph.edge_slots() as u32)
+        .find(|&e| graph.is_edge(e) && !(0..=MAX_COST).contains(&costs[e as usize]))
+    {
+        Some(edge) => Err(WeightedError::CostOutOfRange {
+            edge,
+            cost: costs[edge as usize],
+        }),
+        None => Ok(()),
+    }
+}
 
 /// Why a minimum-cost perfect matching could not be computed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
