@@ -23,5 +23,8 @@ pub use lrs::{Expansion, ExpansionCases, expand};
 pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
 };
-pub use quality::{QualityReport, pair_costs, quality_report};
+pub use quality::{
+    QualityObjective, QualityQuads, QualityReport, pair_costs, quadrangulate_by_quality,
+    quality_report,
+};
 pub use surftopo_matching::{AugmentStats, AugmentStrategy, KarpSipserOptions};

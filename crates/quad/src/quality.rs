@@ -183,3 +183,119 @@ pub fn quality_report(
         median_max_angle_deviation_degrees: nearest_rank(&deviations, 0.5),
     }
 }
+
+/// What a quality-aware pairing minimises the total cost `Σ (1 − η)` by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum QualityObjective {
+    /// The optimum: `surftopo_matching::weighted::min_cost_perfect_matching`, its certificate
+    /// checked by the independent verifier before the quads are built.
+    Exact,
+    /// The fast mode: `surftopo_matching::weighted::fast_min_cost_perfect_matching`.
+    Fast,
+}
+
+impl QualityObjective {
+    /// `quality` or `quality-fast` (the CLI's `--objective` values).
+    pub fn name(&self) -> &'static str {
+        match self {
+            QualityObjective::Exact => "quality",
+            QualityObjective::Fast => "quality-fast",
+        }
+    }
+}
+
+/// A quality-aware quadrangulation: the quads, the pairing's total cost and its quality report.
+#[derive(Clone, Debug)]
+pub struct QualityQuads {
+    /// The quads and their diagonals, as [`crate::quadrangulate`] returns them; `stats.algorithm`
+    /// is the objective's name, `initial_pairing_seconds` the pairing's time, no augmentation.
+    pub result: crate::QuadResult,
+    /// Total cost `Σ (1 − η)` over the quads, from the integer costs (`units / COST_RESOLUTION`).
+    pub cost: f64,
+    /// The same in integer units.
+    pub cost_units: i64,
+    /// `(cost − optimum) / optimum`: 0 for the exact objective; `None` for the fast one (the
+    /// optimum is not computed).
+    pub optimality_gap: Option<f64>,
+    /// The quads' quality.
+    pub report: QualityReport,
+}
+
+/// Pairs the triangles of a closed mesh into quads minimising (exactly, or by the fast mode) the
+/// total cost `1 − η` of [`pair_costs`], and reports the result's quality.
+///
+/// # Errors
+/// [`crate::QuadError::Empty`] for no faces; [`crate::QuadError::NoPerfectPairing`] when the dual
+/// has no perfect matching (a non-simplicial mesh); [`crate::QuadError::Internal`] if the exact
+/// result's certificate is rejected (a bug).
+pub fn quadrangulate_by_quality(
+    mesh: &SurfaceMesh,
+    positions: &[Point3],
+    objective: QualityObjective,
+) -> Result<QualityQuads, crate::QuadError> {
+    use surftopo_matching::weighted::{
+        WeightedError, fast_min_cost_perfect_matching, min_cost_perfect_matching,
+        verify_min_cost_perfect_matching,
+    };
+    let start = std::time::Instant::now();
+    if mesh.face_count() == 0 {
+        return Err(crate::QuadError::Empty);
+    }
+    let costs = pair_costs(mesh, positions);
+    // Without a perfect pairing, the count pipeline's search names the obstruction.
+    let no_pairing = |err: WeightedError| match err {
+        WeightedError::NoPerfectMatching { .. }
+        | WeightedError::OddNodeCount { .. }
+        | WeightedError::Augment(_) => {
+            match crate::quadrangulate(mesh, crate::QuadAlgorithm::KarpSipser) {
+                Err(count) => count,
+                Ok(_) => crate::QuadError::Internal(format!(
+                    "quality pairing failed where a perfect pairing exists: {err}"
+                )),
+            }
+        }
+        other => crate::QuadError::Internal(format!("quality pairing: {other}")),
+    };
+    let (edges, cost_units, optimality_gap) = match objective {
+        QualityObjective::Exact => {
+            let exact = min_cost_perfect_matching(mesh, &costs).map_err(no_pairing)?;
+            verify_min_cost_perfect_matching(mesh, &costs, &exact.edges, &exact.certificate)
+                .map_err(|err| {
+                    crate::QuadError::Internal(format!("optimality certificate rejected: {err}"))
+                })?;
+            (exact.edges, exact.cost, Some(0.0))
+        }
+        QualityObjective::Fast => {
+            let fast = fast_min_cost_perfect_matching(mesh, &costs).map_err(no_pairing)?;
+            (fast.edges, fast.cost, None)
+        }
+    };
+    let pairing_seconds = start.elapsed().as_secs_f64();
+    let pairing = surftopo_matching::Pairing::from_edges(mesh, edges.iter().copied())
+        .map_err(|err| crate::QuadError::Internal(format!("quality pairing: {err}")))?;
+    let (quads, diagonals) = crate::quadrangulate::quads_of(mesh, &pairing)?;
+    let report = quality_report(mesh, positions, &diagonals);
+    let stats = crate::QuadStats {
+        algorithm: objective.name().to_string(),
+        faces: mesh.face_count(),
+        initial_pairing_seconds: pairing_seconds,
+        paired_percent: 100.0,
+        total_seconds: start.elapsed().as_secs_f64(),
+        ..crate::QuadStats::default()
+    };
+    Ok(QualityQuads {
+        result: crate::QuadResult {
+            quads,
+            diagonals,
+            triangulation: None,
+            stats,
+            augmentation: surftopo_matching::AugmentStats::default(),
+            expansion: None,
+            karp_sipser: None,
+        },
+        cost: cost_units as f64 / COST_RESOLUTION,
+        cost_units,
+        optimality_gap,
+        report,
+    })
+}
