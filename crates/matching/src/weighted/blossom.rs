@@ -123,12 +123,24 @@ struct Solver {
     cost: Vec<i64>,
     /// Per vertex: liveness, outermost blossom (or itself), `π`, mate edge.
     is_live: Vec<bool>,
-    outer: Vec<u32>,
+    /// Per vertex: its vertex set (see `set_*`) and the next vertex of that set's list.
+    set_of: Vec<u32>,
+    set_next: Vec<u32>,
     pi: Vec<i64>,
     mate: Vec<u32>,
-    /// Per outermost node: the dual change of its own blossom not yet added to its vertices'
-    /// `pi` (their `π` is `pi + acc[outer] + the running tree offset`).
-    acc: Vec<i64>,
+    /// Vertex sets, one per outermost node, ids in the node range: the vertices of an outermost
+    /// node form one set (`node_set`), a list (`set_head` … `set_tail` through `set_next`,
+    /// `set_size` long) whose node is `set_outer`. A vertex's `π` is `pi + set_acc[its set] +
+    /// the running tree offset of its node`: `set_acc` gathers the dual changes of the
+    /// outermost nodes the set has stood for. A shrink merges the children's sets into the
+    /// largest (relabelling only the others' vertices, so a vertex is relabelled O(log n) times
+    /// between expansions); an expansion rebuilds its children's sets.
+    node_set: Vec<u32>,
+    set_head: Vec<u32>,
+    set_tail: Vec<u32>,
+    set_size: Vec<u32>,
+    set_outer: Vec<u32>,
+    set_acc: Vec<i64>,
     /// Per node (vertex or blossom).
     parent: Vec<u32>,
     y: Vec<i64>,
@@ -231,10 +243,16 @@ impl Solver {
             ends,
             cost,
             is_live: (0..n as u32).map(|v| graph.is_node(v)).collect(),
-            outer: (0..n as u32).collect(),
+            set_of: (0..n as u32).collect(),
+            set_next: vec![NONE; n],
+            node_set: (0..n as u32).collect(),
+            set_head: (0..n as u32).collect(),
+            set_tail: (0..n as u32).collect(),
+            set_size: vec![1; n],
+            set_outer: (0..n as u32).collect(),
+            set_acc: vec![0; n],
             pi: vec![0; n],
             mate: vec![NONE; n],
-            acc: vec![0; n],
             parent: vec![NONE; n],
             y: vec![0; n],
             label: vec![FREE; n],
@@ -332,8 +350,25 @@ impl Solver {
         self.pi.copy_from_slice(&self.y[..self.n]);
     }
 
-    /// The vertices of node `x` (itself for a vertex), into `out` (cleared first).
+    /// The vertices of outermost node `x`, from its set's list, into `out` (cleared first).
     fn collect_vertices(&self, x: u32, out: &mut Vec<u32>) {
+        out.clear();
+        let mut v = self.set_head[self.node_set[x as usize] as usize];
+        while v != NONE {
+            out.push(v);
+            v = self.set_next[v as usize];
+        }
+    }
+
+    /// The outermost node holding vertex `v`.
+    #[inline]
+    fn outer_of(&self, v: u32) -> u32 {
+        self.set_outer[self.set_of[v as usize] as usize]
+    }
+
+    /// The vertices of any node `x` (itself for a vertex), from the blossom tree, into `out`
+    /// (cleared first).
+    fn collect_vertices_nested(&self, x: u32, out: &mut Vec<u32>) {
         out.clear();
         if !self.is_blossom(x) {
             out.push(x);
@@ -364,8 +399,8 @@ impl Solver {
 
     #[inline]
     fn pi_now(&self, v: u32) -> i64 {
-        let o = self.outer[v as usize];
-        self.pi[v as usize] + self.acc[o as usize] + self.offset(o)
+        let set = self.set_of[v as usize] as usize;
+        self.pi[v as usize] + self.set_acc[set] + self.offset(self.set_outer[set])
     }
 
     /// Reduced cost of edge `e` between two different outermost nodes, now.
@@ -380,7 +415,7 @@ impl Solver {
     fn settle(&mut self, x: u32) {
         let d = self.offset(x);
         self.y[x as usize] += d;
-        self.acc[x as usize] += d;
+        self.set_acc[self.node_set[x as usize] as usize] += d;
         self.join_time[x as usize] = self.time;
     }
 
@@ -420,10 +455,16 @@ impl Solver {
     fn scan_plus(&mut self, x: u32) {
         let mut vertices = std::mem::take(&mut self.scratch);
         self.collect_vertices(x, &mut vertices);
-        for &v in &vertices {
-            let own = self.outer[v as usize];
+        self.scan_plus_vertices(&vertices);
+        self.scratch = vertices;
+    }
+
+    /// [`Solver::scan_plus`] for the given vertices (of `+` nodes).
+    fn scan_plus_vertices(&mut self, vertices: &[u32]) {
+        for &v in vertices {
+            let own = self.outer_of(v);
             for (e, w) in self.edges_of(v) {
-                let other = self.outer[w as usize];
+                let other = self.outer_of(w);
                 if other == own {
                     continue;
                 }
@@ -438,7 +479,6 @@ impl Solver {
                 }
             }
         }
-        self.scratch = vertices;
     }
 
     /// Queues GROW events for the edges from `x`'s vertices (`x` free) to `+` nodes.
@@ -447,7 +487,7 @@ impl Solver {
         self.collect_vertices(x, &mut vertices);
         for &v in &vertices {
             for (e, w) in self.edges_of(v) {
-                let other = self.outer[w as usize];
+                let other = self.outer_of(w);
                 if other != x && self.label[other as usize] == PLUS {
                     self.push_edge(e, self.slack(e));
                 }
@@ -477,7 +517,7 @@ impl Solver {
         }
         for &r in &roots {
             // All roots of one parity (see the module doc): lowering a dual keeps feasibility.
-            if (self.pi[r as usize] + self.acc[r as usize]) % 2 != 0 {
+            if (self.pi[r as usize] + self.set_acc[self.set_of[r as usize] as usize]) % 2 != 0 {
                 self.pi[r as usize] -= 1;
                 self.y[r as usize] -= 1;
             }
@@ -513,7 +553,7 @@ impl Solver {
             }
             let e = event.id;
             let [u, v] = self.ends[e as usize];
-            let (ou, ov) = (self.outer[u as usize], self.outer[v as usize]);
+            let (ou, ov) = (self.outer_of(u), self.outer_of(v));
             if ou == ov {
                 continue;
             }
@@ -556,14 +596,14 @@ impl Solver {
     /// through tight edge `e`, its mate as `+`.
     fn grow(&mut self, e: u32, inner: u32, w: u32) {
         self.stats.grows += 1;
-        let tree = self.tree[self.outer[inner as usize] as usize];
-        let x = self.outer[w as usize];
+        let tree = self.tree[self.outer_of(inner) as usize];
+        let x = self.outer_of(w);
         self.tree_edge[x as usize] = e;
         self.tree_vertex[x as usize] = w;
         self.join(x, MINUS, tree);
         let b = self.base[x as usize];
         let m = self.mate[b as usize];
-        let partner = self.outer[self.other_end(m, b) as usize];
+        let partner = self.outer_of(self.other_end(m, b));
         debug_assert_eq!(self.label[partner as usize], FREE);
         self.join(partner, PLUS, tree);
         self.scan_plus(partner);
@@ -576,9 +616,9 @@ impl Solver {
         if m == NONE {
             return NONE;
         }
-        let minus = self.outer[self.other_end(m, b) as usize];
+        let minus = self.outer_of(self.other_end(m, b));
         let tv = self.tree_vertex[minus as usize];
-        self.outer[self.other_end(self.tree_edge[minus as usize], tv) as usize]
+        self.outer_of(self.other_end(self.tree_edge[minus as usize], tv))
     }
 
     /// The edge from node `x` to its tree parent, as `(edge, vertex in x, vertex in parent)`.
@@ -602,7 +642,7 @@ impl Solver {
     #[allow(clippy::type_complexity)]
     fn odd_cycle(&mut self, e: u32) -> (u32, Vec<u32>, Vec<(u32, u32, u32)>) {
         let [u, v] = self.ends[e as usize];
-        let (ou, ov) = (self.outer[u as usize], self.outer[v as usize]);
+        let (ou, ov) = (self.outer_of(u), self.outer_of(v));
         // Lowest common ancestor, stepping up alternately from both sides.
         self.mark_stamp = self.mark_stamp.wrapping_add(2);
         let (tag_u, tag_v) = (self.mark_stamp, self.mark_stamp + 1);
@@ -629,7 +669,7 @@ impl Solver {
             let mut x = from;
             while x != lca {
                 let (_, _, up) = s.parent_link(x);
-                x = s.outer[up as usize];
+                x = s.outer_of(up);
                 path.push(x);
             }
             path
@@ -666,29 +706,46 @@ impl Solver {
         self.base[bi] = self.base[lca as usize];
         self.y[bi] = 0;
         self.parent[bi] = NONE;
-        let minus_children: Vec<u32> = children
-            .iter()
-            .copied()
-            .filter(|&c| self.label[c as usize] == MINUS)
-            .collect();
+        // The `−` children's vertices, to scan as `+` once merged.
+        let mut minus_vertices = Vec::new();
         let mut vertices = std::mem::take(&mut self.scratch);
         for &c in &children {
-            let owed = std::mem::take(&mut self.acc[c as usize]);
-            self.collect_vertices(c, &mut vertices);
-            for &w in &vertices {
-                self.pi[w as usize] += owed;
-                self.outer[w as usize] = blossom;
+            if self.label[c as usize] == MINUS {
+                self.collect_vertices(c, &mut vertices);
+                minus_vertices.extend_from_slice(&vertices);
             }
         }
         self.scratch = vertices;
-        self.acc[bi] = 0;
+        // Merge the children's sets into the largest one.
+        let big = children
+            .iter()
+            .map(|&c| self.node_set[c as usize])
+            .max_by_key(|&set| (self.set_size[set as usize], std::cmp::Reverse(set)))
+            .expect("a blossom has children");
+        for &c in &children {
+            let set = self.node_set[c as usize];
+            if set == big {
+                continue;
+            }
+            let delta = self.set_acc[set as usize] - self.set_acc[big as usize];
+            let mut w = self.set_head[set as usize];
+            while w != NONE {
+                self.pi[w as usize] += delta;
+                self.set_of[w as usize] = big;
+                w = self.set_next[w as usize];
+            }
+            let tail = self.set_tail[big as usize];
+            self.set_next[tail as usize] = self.set_head[set as usize];
+            self.set_tail[big as usize] = self.set_tail[set as usize];
+            self.set_size[big as usize] += self.set_size[set as usize];
+        }
+        self.node_set[bi] = big;
+        self.set_outer[big as usize] = blossom;
         self.children[bi - self.n] = children;
         self.cycle[bi - self.n] = cycle;
         let tree = self.tree[lca as usize];
         self.join(blossom, PLUS, tree);
-        for c in minus_children {
-            self.scan_plus(c);
-        }
+        self.scan_plus_vertices(&minus_vertices);
     }
 
     /// A new blossom slot (slots are never reused, so that the trees' node lists stay valid).
@@ -707,7 +764,12 @@ impl Solver {
         self.cycle.push(Vec::new());
         self.live_blossom.push(true);
         self.tree.push(NONE);
-        self.acc.push(0);
+        self.node_set.push(NONE);
+        self.set_head.push(NONE);
+        self.set_tail.push(NONE);
+        self.set_size.push(0);
+        self.set_outer.push(NONE);
+        self.set_acc.push(0);
         b
     }
 
@@ -732,15 +794,25 @@ impl Solver {
             .iter()
             .position(|&c| c == child)
             .expect("the entry vertex lies in a child");
-        let owed = std::mem::take(&mut self.acc[b as usize]);
+        // Each child gets a set of its own (id: its node id), taking over the blossom's share
+        // of its vertices' `π`.
+        let owed = self.set_acc[self.node_set[b as usize] as usize];
         let mut vertices = std::mem::take(&mut self.scratch);
         for &c in &children {
             self.parent[c as usize] = NONE;
             self.label[c as usize] = FREE;
-            self.collect_vertices(c, &mut vertices);
-            for &w in &vertices {
+            self.collect_vertices_nested(c, &mut vertices);
+            let ci = c as usize;
+            self.node_set[ci] = c;
+            self.set_outer[ci] = c;
+            self.set_acc[ci] = 0;
+            self.set_size[ci] = vertices.len() as u32;
+            self.set_head[ci] = vertices[0];
+            self.set_tail[ci] = *vertices.last().expect("a child has vertices");
+            for (i, &w) in vertices.iter().enumerate() {
                 self.pi[w as usize] += owed;
-                self.outer[w as usize] = c;
+                self.set_of[w as usize] = c;
+                self.set_next[w as usize] = vertices.get(i + 1).copied().unwrap_or(NONE);
             }
         }
         self.scratch = vertices;
@@ -792,8 +864,8 @@ impl Solver {
     fn augment(&mut self, e: u32) {
         let [u, v] = self.ends[e as usize];
         let trees = [
-            self.tree[self.outer[u as usize] as usize],
-            self.tree[self.outer[v as usize] as usize],
+            self.tree[self.outer_of(u) as usize],
+            self.tree[self.outer_of(v) as usize],
         ];
         for end in [u, v] {
             self.augment_to_root(end, e);
@@ -805,7 +877,7 @@ impl Solver {
     /// cycle's top node to the root alternates (the root is matched, the top node exposed), the
     /// cycle's nodes become a half-edge cycle, and the tree dissolves.
     fn half_cycle(&mut self, e: u32) {
-        let tree = self.tree[self.outer[self.ends[e as usize][0] as usize] as usize];
+        let tree = self.tree[self.outer_of(self.ends[e as usize][0]) as usize];
         let (lca, nodes, edges) = self.odd_cycle(e);
         let old_mate = self.mate[lca as usize];
         if old_mate != NONE {
@@ -833,7 +905,7 @@ impl Solver {
     /// Fractional phase: tight edge `e` from `inner` (in a tree) reaches `w` on a half-edge
     /// cycle. The tree path augments, `w` is matched along `e`, the rest of the cycle along it.
     fn augment_into_half_cycle(&mut self, e: u32, inner: u32, w: u32) {
-        let tree = self.tree[self.outer[inner as usize] as usize];
+        let tree = self.tree[self.outer_of(inner) as usize];
         self.augment_to_root(inner, e);
         self.mate[w as usize] = e;
         let id = self.half_cycle_of[w as usize];
@@ -887,7 +959,7 @@ impl Solver {
 
     /// Flips the tree path from vertex `entry` (matched along `edge` from now on) up to its root.
     fn augment_to_root(&mut self, mut entry: u32, mut edge: u32) {
-        let mut x = self.outer[entry as usize];
+        let mut x = self.outer_of(entry);
         loop {
             let old_base = self.base[x as usize];
             let old_mate = self.mate[old_base as usize];
@@ -896,13 +968,13 @@ impl Solver {
             if old_mate == NONE {
                 break;
             }
-            let minus = self.outer[self.other_end(old_mate, old_base) as usize];
+            let minus = self.outer_of(self.other_end(old_mate, old_base));
             let p = self.tree_edge[minus as usize];
             let pv = self.tree_vertex[minus as usize];
             self.rotate(minus, pv);
             self.mate[pv as usize] = p;
             entry = self.other_end(p, pv);
-            x = self.outer[entry as usize];
+            x = self.outer_of(entry);
             edge = p;
         }
     }
