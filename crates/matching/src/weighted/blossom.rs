@@ -26,8 +26,10 @@
 //!    which LEMON also uses), `δ` being the clock of a monotone event queue (a radix heap):
 //!    each `+` tree node gains `δ − δ_join`, each `−` node loses it, lazily (a node stores the
 //!    time it joined; its dual is brought up to date when it leaves its tree, is shrunk into a
-//!    blossom or is expanded; a blossom's vertices receive its dual change only when it is
-//!    shrunk into a larger one or expanded). Events, keyed by the time they become possible: an
+//!    blossom or is expanded). The vertices of each outermost node form a set sharing one
+//!    accumulated dual change; a shrink merges the children's sets into the largest (union by
+//!    size: only the other children's vertices are relabelled), an expansion rebuilds its
+//!    children's sets. Events, keyed by the time they become possible: an
 //!    edge from a `+` node to a free node becomes tight (GROW), an edge between two `+` nodes
 //!    becomes tight (SHRINK in one tree, AUGMENT between two: both trees dissolve), a `−`
 //!    blossom's dual reaches 0 (EXPAND). Stale events are dropped or re-queued when popped.
