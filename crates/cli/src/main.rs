@@ -88,9 +88,12 @@ enum Command {
     Quad {
         #[command(flatten)]
         job: input::MeshJob,
-        /// The initial pairing.
+        /// The initial pairing (for `--objective count`).
         #[arg(long, value_enum, default_value_t)]
         algorithm: commands::quad::AlgorithmName,
+        /// What the pairing optimises.
+        #[arg(long, value_enum, default_value_t)]
+        objective: commands::quad::Objective,
     },
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
@@ -136,7 +139,11 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Irreducible { job, algorithm } => {
             done(commands::irreducible::run(&job, algorithm))
         }
-        Command::Quad { job, algorithm } => done(commands::quad::run(&job, algorithm)),
+        Command::Quad {
+            job,
+            algorithm,
+            objective,
+        } => done(commands::quad::run(&job, algorithm, objective)),
         Command::Delaunay(options) => done(commands::delaunay::run(&options)),
         Command::Isometric { a, b, weld, method } => {
             commands::isometric::run(&a, &b, weld, &method).map(|v| ExitCode::from(v.exit_code()))

@@ -20,6 +20,7 @@ pub mod diks_stanczyk;
 pub mod dynamic_connectivity;
 pub mod generators;
 pub mod verify;
+pub mod weighted;
 
 pub use cubic_graph::{CubicGraph, GraphError};
 pub use diks_stanczyk::DsStats;
@@ -48,3 +49,7 @@ pub use karp_sipser::{
     KarpSipserOptions, KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with,
 };
 pub use pulli_segal::pulli_segal;
+pub use weighted::{
+    Certificate, MinCostMatching, WeightedError, fast_min_cost_perfect_matching,
+    min_cost_perfect_matching, verify_min_cost_perfect_matching,
+};

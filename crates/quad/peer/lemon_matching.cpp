@@ -1,13 +1,17 @@
 // Peer benchmark: LEMON's MaxMatching (Edmonds' blossom algorithm, LEMON 1.3) on a dual graph
-// exported by `cargo run --release -p surftopo-quad --example quad_tables -- --lemon ...`.
+// exported by `cargo run --release -p surftopo-quad --example quad_tables -- --lemon ...`, or
+// (`--weighted`) LEMON's MaxWeightedPerfectMatching on a dual graph with integer edge weights
+// exported by `... --example quality_tables -- --lemon ...`.
 //
-// Usage: lemon_matching DUAL_GRAPH.bin [REPEAT]
+// Usage: lemon_matching [--weighted] DUAL_GRAPH.bin [REPEAT]
 // Input (binary, little-endian): u32 node_count, u32 edge_count, then edge_count pairs of u32
-// node ids. MaxMatching::run() (greedy initialisation + augmentations) is timed REPEAT times
-// (default 1) on fresh MaxMatching objects. Output: one JSON line with the matching size, the
-// seconds to build the SmartGraph, the minimum and median wall seconds of run(), the figure
-// compared with surftopo's pairing time, and the mean thread CPU seconds of run() (robust to a
-// loaded machine). Not part of CI.
+// node ids; with --weighted, then edge_count i64 weights. MaxMatching::run() (greedy
+// initialisation + augmentations), or MaxWeightedPerfectMatching::run() (fractional
+// initialisation + Edmonds' primal-dual steps, exact integer duals for an integer weight type),
+// is timed REPEAT times (default 1) on fresh objects. Output: one JSON line with the matching
+// size (and, weighted, whether it is perfect and its weight), the seconds to build the
+// SmartGraph, the minimum and median wall seconds of run(), the figure compared with surftopo's
+// time, and the mean thread CPU seconds of run() (robust to a loaded machine). Not part of CI.
 #include <lemon/matching.h>
 #include <lemon/smart_graph.h>
 
@@ -17,11 +21,17 @@
 #include <ctime>
 #include <cstdint>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 int main(int argc, char** argv) {
+  const bool weighted = argc >= 2 && std::string(argv[1]) == "--weighted";
+  if (weighted) {
+    --argc;
+    ++argv;
+  }
   if (argc != 2 && argc != 3) {
-    std::fprintf(stderr, "usage: %s DUAL_GRAPH.bin [REPEAT]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--weighted] DUAL_GRAPH.bin [REPEAT]\n", argv[0]);
     return 2;
   }
   const int repeat = argc == 3 ? std::max(1, std::atoi(argv[2])) : 1;
@@ -39,6 +49,12 @@ int main(int argc, char** argv) {
   std::vector<std::uint32_t> ends(2 * static_cast<std::size_t>(m));
   if (std::fread(ends.data(), sizeof(std::uint32_t), ends.size(), file) != ends.size()) {
     std::fprintf(stderr, "%s: truncated edge list\n", argv[1]);
+    return 1;
+  }
+  std::vector<long long> weights(weighted ? m : 0);
+  static_assert(sizeof(long long) == 8, "i64 weights");
+  if (weighted && std::fread(weights.data(), 8, m, file) != m) {
+    std::fprintf(stderr, "%s: truncated weights\n", argv[1]);
     return 1;
   }
   std::fclose(file);
@@ -67,6 +83,33 @@ int main(int argc, char** argv) {
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
   };
+  if (weighted) {
+    lemon::SmartGraph::EdgeMap<long long> weight(graph);
+    for (std::uint32_t e = 0; e < m; ++e) weight[graph.edgeFromId(e)] = weights[e];
+    bool perfect = false;
+    long long total = 0;
+    for (int r = 0; r < repeat; ++r) {
+      const double c0 = thread_cpu();
+      const auto s0 = Clock::now();
+      lemon::MaxWeightedPerfectMatching<lemon::SmartGraph, lemon::SmartGraph::EdgeMap<long long>>
+          matching(graph, weight);
+      perfect = matching.run();
+      const auto s1 = Clock::now();
+      cpu += thread_cpu() - c0;
+      runs.push_back(std::chrono::duration<double>(s1 - s0).count());
+      total = perfect ? matching.matchingWeight() : 0;
+      size = 0;
+      if (perfect)
+        for (std::uint32_t e = 0; e < m; ++e) size += matching.matching(graph.edgeFromId(e));
+    }
+    std::sort(runs.begin(), runs.end());
+    std::printf("{\"nodes\":%u,\"edges\":%u,\"perfect\":%s,\"matching_size\":%d,"
+                "\"matching_weight\":%lld,\"build_seconds\":%.6f,\"run_seconds\":%.6f,"
+                "\"median_run_seconds\":%.6f,\"cpu_run_seconds\":%.6f,\"repeat\":%d}\n",
+                n, m, perfect ? "true" : "false", size, total, build, runs.front(),
+                runs[runs.size() / 2], cpu / repeat, repeat);
+    return 0;
+  }
   for (int r = 0; r < repeat; ++r) {
     const double c0 = thread_cpu();
     const auto s0 = Clock::now();

@@ -16,10 +16,15 @@
 mod error;
 pub mod lrs;
 mod quadrangulate;
+pub mod quality;
 
 pub use error::QuadError;
 pub use lrs::{Expansion, ExpansionCases, expand};
 pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
+};
+pub use quality::{
+    QualityObjective, QualityQuads, QualityReport, pair_costs, quadrangulate_by_quality,
+    quality_report,
 };
 pub use surftopo_matching::{AugmentStats, AugmentStrategy, KarpSipserOptions};

@@ -322,7 +322,7 @@ fn diks_stanczyk_pairing(mesh: &SurfaceMesh) -> Result<Pairing, QuadError> {
 
 /// One counter-clockwise quad per matched edge, in increasing edge id order (one sequential pass
 /// over the edges).
-fn quads_of(
+pub(crate) fn quads_of(
     mesh: &SurfaceMesh,
     pairing: &Pairing,
 ) -> Result<(Vec<[VertexId; 4]>, Vec<EdgeId>), QuadError> {

@@ -80,6 +80,24 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         )?;
     }
 
+    let quality = surftopo_quad::quadrangulate_by_quality(
+        &surface.mesh,
+        &surface.positions,
+        surftopo_quad::QualityObjective::Exact,
+    )?;
+    let path = out_dir.join("quads-quality.obj");
+    crate::output::write_soup(&path, &quad_soup(&surface, &quality.result))?;
+    writeln!(
+        summary,
+        "  quad (quality) {}: {} quads of least total cost 1 - quality ({:.3}, optimum certified); quality median {:.3}, {:.2}% bad quads, {:.4} s",
+        path.display(),
+        quality.result.quads.len(),
+        quality.cost,
+        quality.report.median,
+        quality.report.bad_quads_percent,
+        quality.result.stats.total_seconds
+    )?;
+
     let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;
     let stats = delaunay_with_stats(&mut tri, &DelaunayOptions::default())?;
     let delaunay = out_dir.join("delaunay.json");

@@ -3,7 +3,57 @@
 use crate::failure::invalid;
 use surftopo_io::PolygonSoup;
 use surftopo_mesh::generators::Surface;
-use surftopo_quad::{QuadAlgorithm, QuadError, QuadResult, quadrangulate};
+use surftopo_quad::quality::{COST_RESOLUTION, QualityObjective};
+use surftopo_quad::{
+    QuadAlgorithm, QuadError, QuadResult, QuadStats, QualityReport, pair_costs, quadrangulate,
+    quadrangulate_by_quality, quality_report,
+};
+
+/// The `--objective` values.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Objective {
+    /// Any perfect pairing, by `--algorithm` (the fastest).
+    #[default]
+    Count,
+    /// The pairing of least total cost 1 − η (η: Remacle et al.'s quad quality), exact, its
+    /// optimality certificate verified; `--algorithm` is not used.
+    Quality,
+    /// A low-cost pairing by the fast mode (greedy, completion, short exchanges); `--algorithm`
+    /// is not used.
+    QualityFast,
+}
+
+impl Objective {
+    fn name(self) -> &'static str {
+        match self {
+            Objective::Count => "count",
+            Objective::Quality => "quality",
+            Objective::QualityFast => "quality-fast",
+        }
+    }
+}
+
+/// η's summary in `--json`.
+#[derive(serde::Serialize)]
+struct QualitySummary {
+    min: f64,
+    p5: f64,
+    median: f64,
+    mean: f64,
+}
+
+/// `quad --json`: the run's figures, the objective, the pairing's cost and quality.
+#[derive(serde::Serialize)]
+struct QuadJson<'a> {
+    #[serde(flatten)]
+    stats: &'a QuadStats,
+    objective: &'static str,
+    cost: f64,
+    optimality_gap: Option<f64>,
+    quality: QualitySummary,
+    bad_quads_percent: f64,
+    median_max_angle_deviation: f64,
+}
 
 /// The `--algorithm` values.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
@@ -17,7 +67,7 @@ pub enum AlgorithmName {
     /// Diks–Stanczyk: a perfect matching directly, by Frink reductions.
     Ds,
     /// Karp–Sipser greedy with immediate local repairs (not from the paper), then augmenting
-    /// paths: the fastest on every input we measured (README).
+    /// paths; deterministic, and the default.
     #[default]
     Ks,
 }
@@ -51,8 +101,41 @@ pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
     soup
 }
 
+/// The quads of `objective`, with their total cost, optimality gap (when known) and quality.
+fn pair(
+    surface: &Surface,
+    name: AlgorithmName,
+    seed: u64,
+    objective: Objective,
+) -> anyhow::Result<(QuadResult, f64, Option<f64>, QualityReport)> {
+    let quality = match objective {
+        Objective::Count => {
+            let result = quadrangulate_surface(surface, name, seed)?;
+            let paired = result.triangulation.as_ref().unwrap_or(&surface.mesh);
+            let costs = pair_costs(paired, &surface.positions);
+            let units: i64 = result.diagonals.iter().map(|e| costs[e.idx()]).sum();
+            let report = quality_report(paired, &surface.positions, &result.diagonals);
+            return Ok((result, units as f64 / COST_RESOLUTION, None, report));
+        }
+        Objective::Quality => QualityObjective::Exact,
+        Objective::QualityFast => QualityObjective::Fast,
+    };
+    let q =
+        quadrangulate_by_quality(&surface.mesh, &surface.positions, quality).map_err(
+            |e| match e {
+                QuadError::Internal(_) => anyhow::Error::new(e),
+                other => invalid(other.to_string()),
+            },
+        )?;
+    Ok((q.result, q.cost, q.optimality_gap, q.report))
+}
+
 /// Runs `quad`.
-pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<()> {
+pub fn run(
+    job: &crate::input::MeshJob,
+    name: AlgorithmName,
+    objective: Objective,
+) -> anyhow::Result<()> {
     let (input, output, seed) = (job.mesh.as_path(), job.output.as_path(), job.seed);
     let loaded = crate::input::read_surface(input, job.weld)?;
     if !loaded.report.dropped_vertices.is_empty() {
@@ -60,14 +143,27 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
-    let result = crate::progress::step("pairing triangles", || {
-        quadrangulate_surface(&loaded.surface, name, seed)
+    let (result, cost, optimality_gap, report) = crate::progress::step("pairing triangles", || {
+        pair(&loaded.surface, name, seed, objective)
     })
     .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
     let stats = &result.stats;
     if job.json {
-        crate::output::print_json(stats)?;
+        crate::output::print_json(&QuadJson {
+            stats,
+            objective: objective.name(),
+            cost,
+            optimality_gap,
+            quality: QualitySummary {
+                min: report.min,
+                p5: report.p5,
+                median: report.median,
+                mean: report.mean,
+            },
+            bad_quads_percent: report.bad_quads_percent,
+            median_max_angle_deviation: report.median_max_angle_deviation_degrees,
+        })?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {
@@ -81,7 +177,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
             String::new()
         };
         crate::output::emit(&format!(
-            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges\n",
+            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
             crate::failure::shown(output),
             result.quads.len(),
             stats.faces,
@@ -91,7 +187,9 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
             stats.unpaired,
             stats.augmentation_seconds,
             stats.total_seconds,
-            stats.flipped_edges
+            stats.flipped_edges,
+            report.median,
+            report.bad_quads_percent
         ))?;
     }
     Ok(())

@@ -1,0 +1,372 @@
+//! The optimality certificate of a minimum-cost perfect matching, and its independent verifier.
+//!
+//! # The linear program (Edmonds 1965)
+//! For a graph with edge costs `c`, the perfect matching polytope is described by `x ≥ 0`,
+//! `x(δ(v)) = 1` for every node and `x(δ(S)) ≥ 1` for every odd set `S` of at least three nodes.
+//! Its dual: maximise `Σ_v y_v + Σ_S z_S` subject to `z_S ≥ 0` and, for every non-loop edge
+//! `e = uv`, the reduced cost `c_e − y_u − y_v − Σ_{S : |S ∩ {u,v}| = 1} z_S ≥ 0`. A perfect
+//! matching `M` and a feasible dual are both optimal iff complementary slackness holds: every
+//! matched edge has reduced cost 0, and every set with `z_S > 0` has exactly one matched edge
+//! leaving it, i.e. `(|S| − 1) / 2` matched edges inside it (Kolmogorov 2009, Section 2).
+//!
+//! # The certificate
+//! [`Certificate`] holds the duals for the doubled costs `2c` (the solver's integer scale): one
+//! `y` per node slot and one `z` per set of a laminar family given as a forest (each set's parent
+//! set, each node's innermost set). Sets are the blossoms of the solver; sets not listed have
+//! `z = 0`.
+//!
+//! # The verifier
+//! [`verify_min_cost_perfect_matching`] reads only the graph, the costs, the matched edges and the
+//! certificate (no code of the solver), in `i128` arithmetic so that no certificate, however
+//! corrupted, can overflow it. It checks: the edges form a perfect matching; the family is a
+//! forest (no cycle of parents) whose sets have odd size ≥ 3 and `z ≥ 0`; every non-loop edge has
+//! reduced cost ≥ 0 and every matched edge 0; every set with `z > 0` has `(|S| − 1) / 2` matched
+//! edges inside. Then the matching's cost equals half the dual objective (checked too), and is
+//! the minimum. O(n + m · d) for sets nested d deep.
+
+use thiserror::Error;
+
+use crate::dual_graph::DualGraph;
+
+/// "No set" (a top-level set's parent, a node in no set).
+const NO_SET: u32 = u32::MAX;
+
+/// One odd set of the certificate's laminar family (a blossom).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BlossomDual {
+    /// The smallest set strictly containing this one (an index into [`Certificate::blossoms`]),
+    /// or `u32::MAX` for a top-level set.
+    pub parent: u32,
+    /// Its dual `z ≥ 0`, for the doubled costs.
+    pub dual: i64,
+}
+
+/// A dual solution for the doubled costs `2c` (see the module doc).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Certificate {
+    /// `y_v` per node slot (0 for removed nodes).
+    pub node_duals: Vec<i64>,
+    /// The innermost set of each node slot (an index into [`Certificate::blossoms`]), or
+    /// `u32::MAX` for a node in no set.
+    pub node_blossom: Vec<u32>,
+    /// The laminar family of odd sets with their duals.
+    pub blossoms: Vec<BlossomDual>,
+}
+
+/// Why a matching and certificate do not prove a minimum-cost perfect matching. Each variant
+/// names the node, edge or set at fault.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum CertificateError {
+    /// The cost or certificate arrays do not fit the graph.
+    #[error("size mismatch: {0}")]
+    Size(String),
+    /// A matched edge is not a live non-loop edge.
+    #[error("matched edge {edge} is not a live non-loop edge")]
+    BadEdge {
+        /// The edge.
+        edge: u32,
+    },
+    /// A node is covered by two matched edges.
+    #[error("node {node} is covered by matched edges {first} and {second}")]
+    CoveredTwice {
+        /// The node.
+        node: u32,
+        /// First edge.
+        first: u32,
+        /// Second edge.
+        second: u32,
+    },
+    /// A live node is covered by no matched edge.
+    #[error("node {node} is not covered by the matching")]
+    Uncovered {
+        /// The node.
+        node: u32,
+    },
+    /// A set's parent or a node's set is out of range, or a removed node is in a set.
+    #[error("set index out of range or misplaced at {0}")]
+    BadSetIndex(String),
+    /// The parents of the sets form a cycle.
+    #[error("set {set} is its own ancestor")]
+    CyclicFamily {
+        /// A set on the cycle.
+        set: u32,
+    },
+    /// A set does not have an odd number ≥ 3 of nodes.
+    #[error("set {set} has {size} nodes (needs an odd number >= 3)")]
+    SetSize {
+        /// The set.
+        set: u32,
+        /// Its node count.
+        size: u64,
+    },
+    /// A set has a negative dual.
+    #[error("set {set} has negative dual {dual}")]
+    NegativeSetDual {
+        /// The set.
+        set: u32,
+        /// Its dual.
+        dual: i64,
+    },
+    /// An edge has negative reduced cost.
+    #[error("edge {edge} has negative reduced cost {reduced} (doubled units)")]
+    Infeasible {
+        /// The edge.
+        edge: u32,
+        /// Its reduced cost.
+        reduced: i128,
+    },
+    /// A matched edge has positive reduced cost.
+    #[error("matched edge {edge} has reduced cost {reduced}, not 0 (doubled units)")]
+    MatchedNotTight {
+        /// The edge.
+        edge: u32,
+        /// Its reduced cost.
+        reduced: i128,
+    },
+    /// A set with positive dual does not have (|S| − 1) / 2 matched edges inside.
+    #[error("set {set} of {size} nodes has dual {dual} > 0 but {inside} matched edges inside")]
+    SetNotFull {
+        /// The set.
+        set: u32,
+        /// Its node count.
+        size: u64,
+        /// Its dual.
+        dual: i64,
+        /// Matched edges with both ends inside.
+        inside: u64,
+    },
+    /// Primal and dual objectives differ (cannot happen when the other checks pass; kept as
+    /// an arithmetic cross-check).
+    #[error("primal cost {primal} (doubled) differs from dual objective {dual}")]
+    ObjectiveGap {
+        /// Twice the matching's cost.
+        primal: i128,
+        /// The dual objective.
+        dual: i128,
+    },
+}
+
+/// Checks that `matched` is a minimum-cost perfect matching of `graph` for `costs` (one per edge
+/// slot), with `certificate` as the proof (see the module doc). Returns the matching's cost.
+///
+/// # Errors
+/// The first failed check, as a [`CertificateError`] naming the node, edge or set.
+pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+    matched: &[u32],
+    certificate: &Certificate,
+) -> Result<i64, CertificateError> {
+    let node_slots = graph.node_slots();
+    let edge_slots = graph.edge_slots();
+    if costs.len() != edge_slots {
+        return Err(CertificateError::Size(format!(
+            "{} costs for {edge_slots} edge slots",
+            costs.len()
+        )));
+    }
+    if certificate.node_duals.len() != node_slots || certificate.node_blossom.len() != node_slots {
+        return Err(CertificateError::Size(format!(
+            "{} node duals and {} node sets for {node_slots} node slots",
+            certificate.node_duals.len(),
+            certificate.node_blossom.len()
+        )));
+    }
+
+    // Primal: a perfect matching.
+    let mut cover = vec![NO_SET; node_slots];
+    for &e in matched {
+        if (e as usize) >= edge_slots || !graph.is_edge(e) {
+            return Err(CertificateError::BadEdge { edge: e });
+        }
+        let [a, b] = graph.endpoints(e);
+        if a == b {
+            return Err(CertificateError::BadEdge { edge: e });
+        }
+        for v in [a, b] {
+            if cover[v as usize] != NO_SET {
+                return Err(CertificateError::CoveredTwice {
+                    node: v,
+                    first: cover[v as usize],
+                    second: e,
+                });
+            }
+            cover[v as usize] = e;
+        }
+    }
+    for v in 0..node_slots as u32 {
+        if graph.is_node(v) && cover[v as usize] == NO_SET {
+            return Err(CertificateError::Uncovered { node: v });
+        }
+    }
+
+    // The laminar family: a forest of sets.
+    let sets = &certificate.blossoms;
+    let set_count = sets.len();
+    for (s, set) in sets.iter().enumerate() {
+        if set.parent != NO_SET && set.parent as usize >= set_count {
+            return Err(CertificateError::BadSetIndex(format!("set {s}")));
+        }
+        if set.dual < 0 {
+            return Err(CertificateError::NegativeSetDual {
+                set: s as u32,
+                dual: set.dual,
+            });
+        }
+    }
+    for v in 0..node_slots {
+        let s = certificate.node_blossom[v];
+        if s != NO_SET && (s as usize >= set_count || !graph.is_node(v as u32)) {
+            return Err(CertificateError::BadSetIndex(format!("node {v}")));
+        }
+    }
+    let depth = set_depths(sets)?;
+    // Sets ordered deepest first, so that children come before parents.
+    let mut order: Vec<u32> = (0..set_count as u32).collect();
+    order.sort_by_key(|&s| std::cmp::Reverse(depth[s as usize]));
+    // Sum of the duals of a set and all its ancestors (parents before children).
+    let mut above = vec![0i128; set_count];
+    for &s in order.iter().rev() {
+        let parent = sets[s as usize].parent;
+        let up = if parent == NO_SET {
+            0
+        } else {
+            above[parent as usize]
+        };
+        above[s as usize] = up + i128::from(sets[s as usize].dual);
+    }
+    // Set sizes.
+    let mut size = vec![0u64; set_count];
+    for v in 0..node_slots {
+        let s = certificate.node_blossom[v];
+        if s != NO_SET {
+            size[s as usize] += 1;
+        }
+    }
+    for &s in &order {
+        let parent = sets[s as usize].parent;
+        if parent != NO_SET {
+            size[parent as usize] += size[s as usize];
+        }
+    }
+    if let Some(s) = size.iter().position(|&k| k < 3 || k.is_multiple_of(2)) {
+        return Err(CertificateError::SetSize {
+            set: s as u32,
+            size: size[s],
+        });
+    }
+
+    // Dual feasibility and tightness of matched edges; matched edges per smallest common set.
+    let set_sum = |s: u32| if s == NO_SET { 0 } else { above[s as usize] };
+    let mut inside_here = vec![0u64; set_count];
+    let mut primal: i128 = 0;
+    for e in 0..edge_slots as u32 {
+        if !graph.is_edge(e) {
+            continue;
+        }
+        let [u, v] = graph.endpoints(e);
+        if u == v {
+            continue;
+        }
+        let (su, sv) = (
+            certificate.node_blossom[u as usize],
+            certificate.node_blossom[v as usize],
+        );
+        let common = smallest_common_set(sets, &depth, su, sv);
+        let crossing = set_sum(su) + set_sum(sv) - 2 * set_sum(common);
+        let reduced = 2 * i128::from(costs[e as usize])
+            - i128::from(certificate.node_duals[u as usize])
+            - i128::from(certificate.node_duals[v as usize])
+            - crossing;
+        if reduced < 0 {
+            return Err(CertificateError::Infeasible { edge: e, reduced });
+        }
+        if cover[u as usize] == e {
+            if reduced != 0 {
+                return Err(CertificateError::MatchedNotTight { edge: e, reduced });
+            }
+            primal += 2 * i128::from(costs[e as usize]);
+            if common != NO_SET {
+                inside_here[common as usize] += 1;
+            }
+        }
+    }
+
+    // Complementary slackness of the sets.
+    let mut inside = inside_here;
+    for &s in &order {
+        let parent = sets[s as usize].parent;
+        if parent != NO_SET {
+            inside[parent as usize] += inside[s as usize];
+        }
+    }
+    for s in 0..set_count {
+        if sets[s].dual > 0 && 2 * inside[s] + 1 != size[s] {
+            return Err(CertificateError::SetNotFull {
+                set: s as u32,
+                size: size[s],
+                dual: sets[s].dual,
+                inside: inside[s],
+            });
+        }
+    }
+
+    let dual: i128 = (0..node_slots)
+        .filter(|&v| graph.is_node(v as u32))
+        .map(|v| i128::from(certificate.node_duals[v]))
+        .sum::<i128>()
+        + sets.iter().map(|s| i128::from(s.dual)).sum::<i128>();
+    if primal != dual {
+        return Err(CertificateError::ObjectiveGap { primal, dual });
+    }
+    Ok((primal / 2) as i64)
+}
+
+/// Depth of every set in the parent forest (0 for top-level sets), rejecting cycles: each set's
+/// chain of parents is walked once, and memoised depths stop the walk.
+fn set_depths(sets: &[BlossomDual]) -> Result<Vec<u32>, CertificateError> {
+    const UNKNOWN: u32 = u32::MAX;
+    const ON_CHAIN: u32 = u32::MAX - 1;
+    let mut depth = vec![UNKNOWN; sets.len()];
+    let mut chain = Vec::new();
+    for start in 0..sets.len() {
+        let mut s = start as u32;
+        while s != NO_SET && depth[s as usize] == UNKNOWN {
+            depth[s as usize] = ON_CHAIN;
+            chain.push(s);
+            s = sets[s as usize].parent;
+        }
+        if s != NO_SET && depth[s as usize] == ON_CHAIN {
+            return Err(CertificateError::CyclicFamily { set: s });
+        }
+        let mut d = if s == NO_SET {
+            0
+        } else {
+            depth[s as usize] + 1
+        };
+        while let Some(t) = chain.pop() {
+            depth[t as usize] = d;
+            d += 1;
+        }
+    }
+    Ok(depth)
+}
+
+/// The smallest set containing both `a` and `b` (sets or `NO_SET`), by walking up from the deeper.
+fn smallest_common_set(sets: &[BlossomDual], depth: &[u32], mut a: u32, mut b: u32) -> u32 {
+    let level = |s: u32| {
+        if s == NO_SET {
+            -1
+        } else {
+            depth[s as usize] as i64
+        }
+    };
+    while a != b {
+        if level(a) >= level(b) {
+            a = sets[a as usize].parent;
+        } else {
+            b = sets[b as usize].parent;
+        }
+    }
+    a
+}
