@@ -45,8 +45,8 @@
 //! # Reconstruction decisions (what Appendix A leaves open)
 //! * The H1/H2 test above (connectivity, then tree-path intersection) is our reconstruction of
 //!   Diks and Stanczyk's "dynamic connectivity plus dynamic trees with evert and LCA".
-//! * The initial avoided edge `f` is edge 0 ([`perfect_matching`]) or the caller's
-//!   ([`perfect_matching_avoiding`]). The reduction edge is the first of the two other edges at
+//! * The initial avoided edge `f` is edge 0 ([`diks_stanczyk`]) or the caller's
+//!   ([`diks_stanczyk_avoiding`]). The reduction edge is the first of the two other edges at
 //!   `f`'s first endpoint, in incidence order, that is simple; then the same at its second
 //!   endpoint.
 //! * When both endpoints of `f = a b` have their two other edges forming a digon (`a = c`,
@@ -69,7 +69,7 @@
 //!   to 2.75 (the search work itself is dominated by HDT's level promotions either way).
 //! * The dynamic structure is built in O(n) from a depth-first spanning forest instead of by `m`
 //!   insertions.
-//! * The result is checked by the independent verifier ([`PerfectMatching::new`], O(n)) before it
+//! * The result is checked by the independent verifier ([`verify_perfect_pairing`], O(n)) before it
 //!   is returned; a failure there is an internal bug and panics.
 //!
 //! # Complexity
@@ -89,8 +89,9 @@
 use std::time::Instant;
 
 use crate::cubic_graph::{CubicGraph, GraphError};
+use crate::dual_graph::Pairing;
 use crate::dynamic_connectivity::{DynamicConnectivity, DynamicStats};
-use crate::verify::PerfectMatching;
+use crate::verify::{PerfectPairing, verify_perfect_pairing};
 
 /// Figures of one run of the Diks–Stanczyk algorithm.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -121,24 +122,24 @@ pub struct DsStats {
 /// verified perfect matching that avoids edge 0. Deterministic. O(n log² n) amortized time, O(n)
 /// memory. No errors: the input type guarantees that a perfect matching exists (Petersen); a
 /// panic would mean an internal bug.
-pub fn perfect_matching(graph: &CubicGraph) -> PerfectMatching {
-    perfect_matching_with_stats(graph).0
+pub fn diks_stanczyk(graph: &CubicGraph) -> PerfectPairing {
+    diks_stanczyk_with_stats(graph).0
 }
 
-/// [`perfect_matching`] with its [`DsStats`].
-pub fn perfect_matching_with_stats(graph: &CubicGraph) -> (PerfectMatching, DsStats) {
+/// [`diks_stanczyk`] with its [`DsStats`].
+pub fn diks_stanczyk_with_stats(graph: &CubicGraph) -> (PerfectPairing, DsStats) {
     run(graph, 0)
 }
 
 /// A perfect matching of `graph` that does not contain edge `avoid` (Biedl et al.: one always
-/// exists), with its [`DsStats`]. Same algorithm and bounds as [`perfect_matching`].
+/// exists), with its [`DsStats`]. Same algorithm and bounds as [`diks_stanczyk`].
 ///
 /// # Errors
 /// [`GraphError::EdgeOutOfRange`] if `avoid` is not an edge of `graph`.
-pub fn perfect_matching_avoiding(
+pub fn diks_stanczyk_avoiding(
     graph: &CubicGraph,
     avoid: u32,
-) -> Result<(PerfectMatching, DsStats), GraphError> {
+) -> Result<(PerfectPairing, DsStats), GraphError> {
     if avoid >= graph.edge_count() {
         return Err(GraphError::EdgeOutOfRange {
             edge: avoid,
@@ -272,7 +273,7 @@ impl Reducer {
     }
 }
 
-fn run(graph: &CubicGraph, avoid: u32) -> (PerfectMatching, DsStats) {
+fn run(graph: &CubicGraph, avoid: u32) -> (PerfectPairing, DsStats) {
     let t0 = Instant::now();
     let n = graph.node_count() as usize;
     let m = graph.edge_count() as usize;
@@ -323,7 +324,9 @@ fn run(graph: &CubicGraph, avoid: u32) -> (PerfectMatching, DsStats) {
     debug_assert!(matched[m..].iter().all(|&x| !x));
     matched.truncate(m);
     debug_assert!(!matched[avoid as usize]);
-    let matching = PerfectMatching::new(graph, matched)
+    let matching = Pairing::from_edge_flags(graph, &matched)
+        .map_err(|err| err.to_string())
+        .and_then(|pairing| verify_perfect_pairing(graph, pairing).map_err(|err| err.to_string()))
         .expect("Diks–Stanczyk produced an invalid matching (internal bug)");
     r.stats.lift_seconds = t2.elapsed().as_secs_f64();
     r.stats.dynamic = r.dc.stats();

@@ -24,13 +24,13 @@
 
 use std::borrow::Cow;
 
-use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, SurfaceMesh};
+use surftopo_mesh::{EdgeId, FaceId, SurfaceMesh};
 use thiserror::Error;
 
 use crate::cubic_graph::CubicGraph;
 
 /// "No node" / "no edge" / "unmatched".
-pub const NONE: u32 = u32::MAX;
+pub(crate) const NONE: u32 = u32::MAX;
 
 /// A multigraph in which every live node has exactly three incident edge slots (a loop fills two
 /// slots of its node). Implemented for the implicit dual of a [`SurfaceMesh`] and for
@@ -55,6 +55,19 @@ pub trait DualGraph {
     fn opposite(&self, e: u32, v: u32) -> u32 {
         let [a, b] = self.endpoints(e);
         if a == v { b } else { a }
+    }
+    /// The two nodes of every edge slot, indexed by edge id (`[u32::MAX; 2]` for removed edges):
+    /// the edge list that verifiers and materialised graphs ([`mesh_dual_graph`]) read.
+    fn edge_list(&self) -> Vec<[u32; 2]> {
+        (0..self.edge_slots() as u32)
+            .map(|e| {
+                if self.is_edge(e) {
+                    self.endpoints(e)
+                } else {
+                    [NONE, NONE]
+                }
+            })
+            .collect()
     }
     /// The array [`DualGraph::adjacent`] reads, when it is one ([`CompactDual`]), so that the
     /// searches may load it ahead of need; `None` by default (a mesh computes adjacency from
@@ -407,6 +420,13 @@ impl Pairing {
         }
     }
 
+    /// Whether edge `e` of `graph` is matched (false for removed or out-of-range edges).
+    pub fn contains_edge<G: DualGraph + ?Sized>(&self, graph: &G, e: u32) -> bool {
+        (e as usize) < graph.edge_slots()
+            && graph.is_edge(e)
+            && self.mate_edge(graph.endpoints(e)[0]) == Some(e)
+    }
+
     /// The mate edge per node slot (`u32::MAX` for unmatched or removed nodes).
     pub fn mates(&self) -> &[u32] {
         &self.mate
@@ -467,11 +487,6 @@ pub fn mesh_dual_graph(mesh: &SurfaceMesh) -> Result<CubicGraph, crate::GraphErr
     if mesh.face_slots() != mesh.face_count() || mesh.edge_slots() != mesh.edge_count() {
         return Err(crate::GraphError::Empty);
     }
-    let edges = (0..mesh.edge_slots())
-        .map(|e| {
-            let h = HalfedgeId(2 * e as u32);
-            [mesh.face(h).0, mesh.face(h.twin()).0]
-        })
-        .collect();
+    let edges = mesh.edge_list();
     CubicGraph::new(mesh.face_count() as u32, edges)
 }
