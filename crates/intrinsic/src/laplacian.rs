@@ -106,7 +106,7 @@ impl SparseMatrix {
 
 /// Dense index of each live vertex (increasing id order), `u32::MAX` for removed ids, and the
 /// number of live vertices.
-pub fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
+pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
     let mesh = tri.mesh();
     let mut index = vec![u32::MAX; mesh.vertex_slots()];
     let mut n = 0usize;

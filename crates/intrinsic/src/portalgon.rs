@@ -28,6 +28,7 @@
 //! around a vertex whose angle exceeds 2π overlaps itself in the plane), nor does it need to.
 
 use crate::error::PortalgonError;
+use surftopo_mesh::UnionFind;
 
 /// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
 pub const DEFAULT_LENGTH_TOLERANCE: f64 = 1e-9;
@@ -427,30 +428,18 @@ impl Portalgon {
     /// number of classes. O(n α(n)).
     pub fn vertex_classes(&self) -> (Vec<u32>, usize) {
         let n = self.start.len();
-        let mut parent: Vec<u32> = (0..n as u32).collect();
-        fn find(parent: &mut [u32], mut x: u32) -> u32 {
-            while parent[x as usize] != x {
-                let g = parent[parent[x as usize] as usize];
-                parent[x as usize] = g;
-                x = g;
-            }
-            x
-        }
+        let mut sets = UnionFind::new(n);
         for s in self.sides() {
             if let Some(t) = self.mate(s) {
                 // start(s) ~ end(t) = start(next(t)).
-                let (a, b) = (
-                    find(&mut parent, s.0),
-                    find(&mut parent, self.next_side(t).0),
-                );
-                parent[a.max(b) as usize] = a.min(b);
+                sets.union(s.0, self.next_side(t).0);
             }
         }
         let mut class = vec![u32::MAX; n];
         let mut root_class = vec![u32::MAX; n];
         let mut count = 0u32;
         for s in self.sides() {
-            let r = find(&mut parent, s.0) as usize;
+            let r = sets.find(s.0) as usize;
             if root_class[r] == u32::MAX {
                 root_class[r] = count;
                 count += 1;
