@@ -65,26 +65,22 @@
 //! * The five edges are deleted non-forest edges first (O(1) each, and they can then never be
 //!   picked as replacements only to be deleted next), then the forest edges in the order
 //!   `u x1, u x2, v x3, v x4, e`, so that the last deletions isolate `u` and `v` with trivial
-//!   searches. Measured on random graphs this cut forest-edge deletions per reduction from 4.3
-//!   to 2.75 (the search work itself is dominated by HDT's level promotions either way).
+//!   searches: fewer forest-edge deletions per reduction (the search work itself is dominated by
+//!   HDT's level promotions either way).
 //! * The dynamic structure is built in O(n) from a depth-first spanning forest instead of by `m`
 //!   insertions.
-//! * The result is checked by the independent verifier ([`verify_perfect_pairing`], O(n)) before it
-//!   is returned; a failure there is an internal bug and panics.
+//! * The result is checked by the independent verifier ([`verify_perfect_pairing`], O(n)) before
+//!   it is returned; a failure there is an internal bug and panics.
 //!
 //! # Complexity
 //! `n/2 - 1` reductions, each with O(1) updates (amortized O(log² n), HDT) and O(1) queries
 //! (amortized O(log n)), then O(n) lifting: **O(n log² n) amortized total**, deterministic,
 //! O(n) memory (plus O(1) per level reached by an edge). This is the bound of Diks and Stanczyk;
 //! Biedl et al.'s version with fully dynamic 2-edge-connectivity is O(n log⁴ n).
-//!
-//! Measured (`examples/ds_doubling.rs`, release, CPU seconds on a shared 2-core machine): random
-//! graphs with shuffled ids take 0.48 s at 32k nodes, 54 s at 1M and 285 s at 4.1M; the CPU time
-//! divided by `n log² n` creeps from 7e-8 to 1.4e-7 over that range (cache misses of the splay
-//! trees), while divided by `n²` it halves at every doubling. Per reduction: 2.7 spanning-forest
-//! deletions (cut from ~20 forests in all) and 12–20 HDT level promotions. Peak memory about
-//! 0.9 KB per node (3.6 GB at 4.1M nodes). Torus duals in mesh order run 2–50x faster, depending
-//! on how the avoided edge travels.
+//! `examples/ds_doubling.rs` measures the growth on doubling sizes (time over `n log² n` and over
+//! `n²`, forest deletions and level promotions per reduction); the constant is large (splay-tree
+//! cache misses, about a kilobyte per node), which is why the quad pipeline runs DS on the smaller
+//! inputs only in its tables.
 
 use std::time::Instant;
 
