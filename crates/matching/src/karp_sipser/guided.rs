@@ -22,7 +22,7 @@ use prefetch_index::prefetch_index;
 
 use super::repair::{DFS_BUDGET, DepthFirst};
 use super::{PAIRED, Pairs};
-use crate::augment::{OnPath, Outcome, PREFETCH_AHEAD};
+use crate::augment::{Outcome, PREFETCH_AHEAD};
 use crate::dual_graph::{DualGraph, NONE};
 
 /// Width of the band around a shortest path between two deferred nodes in which the guided
@@ -359,26 +359,8 @@ fn edmonds_in_band<G: DualGraph + ?Sized>(
     band: &Band,
     root: u32,
 ) -> Option<u32> {
-    pairs.search();
-    let Pairs {
-        graph,
-        mates,
-        search,
-        stats,
-        ..
-    } = pairs;
-    let search = search.as_mut().expect("made above");
-    let outcome = search.run(
-        *graph,
-        mates,
-        &[root],
-        usize::MAX,
-        OnPath::Stop,
-        &mut stats.augment,
-        |w| band.contains(w),
-    );
-    stats.augment.reached += search.reached as u64;
-    (outcome == Outcome::Augmented).then_some(search.last_end)
+    let (outcome, end) = pairs.edmonds(root, usize::MAX, |w| band.contains(w));
+    (outcome == Outcome::Augmented).then_some(end)
 }
 
 #[cfg(test)]

@@ -36,7 +36,7 @@ mod subdivision;
 
 use std::time::Instant;
 
-use crate::augment::{AugmentError, AugmentStats, Search, complete};
+use crate::augment::{AugmentError, AugmentStats, OnPath, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 use file_order::file_order_pairing;
 use greedy::Greedy;
@@ -253,10 +253,28 @@ impl<'g, G: DualGraph + ?Sized> Pairs<'g, G> {
         self.free[v as usize] != PAIRED
     }
 
-    /// The Edmonds search state, made on first use.
-    fn search(&mut self) -> &mut Search {
+    /// One Edmonds search from free `root` ([`Search::run`], made on first use), stopped at the
+    /// first augmenting path, which it applies; at most `budget` nodes reached, none outside
+    /// `allowed`. Returns how it ended and, when it augmented, the path's other end.
+    fn edmonds(
+        &mut self,
+        root: u32,
+        budget: usize,
+        allowed: impl Fn(u32) -> bool,
+    ) -> (Outcome, u32) {
         let slots = self.graph.node_slots();
-        self.search.get_or_insert_with(|| Search::new(slots))
+        let search = self.search.get_or_insert_with(|| Search::new(slots));
+        let outcome = search.run(
+            self.graph,
+            &mut self.mates,
+            &[root],
+            budget,
+            OnPath::Stop,
+            &mut self.stats.augment,
+            allowed,
+        );
+        self.stats.augment.reached += search.reached as u64;
+        (outcome, search.last_end)
     }
 
     /// Whether the mates are a matching that [`Pairs::free`] and [`Pairs::unpaired`] agree with:

@@ -14,7 +14,7 @@
 
 use super::Pairs;
 use super::guided::Band;
-use crate::augment::{OnPath, Outcome};
+use crate::augment::Outcome;
 use crate::dual_graph::{DualGraph, NONE};
 
 /// Nodes the depth-first first try of a repair may visit before the Edmonds search takes over
@@ -71,33 +71,14 @@ impl Repairs {
         }
         pairs.stats.augment.unmatched_before += 1;
         pairs.stats.augment.searches += 1;
-        pairs.search();
-        let Pairs {
-            graph,
-            mates,
-            search,
-            stats,
-            ..
-        } = pairs;
-        let search = search.as_mut().expect("made above");
-        let outcome = search.run(
-            *graph,
-            mates,
-            &[u],
-            self.budget,
-            OnPath::Stop,
-            &mut stats.augment,
-            |_| true,
-        );
-        stats.augment.reached += search.reached as u64;
-        match outcome {
-            Outcome::Augmented => {
-                stats.repaired += 1;
-                return Some(search.last_end);
+        match pairs.edmonds(u, self.budget, |_| true) {
+            (Outcome::Augmented, other) => {
+                pairs.stats.repaired += 1;
+                return Some(other);
             }
-            Outcome::OverBudget => stats.augment.abandoned += 1,
+            (Outcome::OverBudget, _) => pairs.stats.augment.abandoned += 1,
             // No augmenting path from u at all: the completion reports it.
-            Outcome::Exhausted => {}
+            (Outcome::Exhausted, _) => {}
         }
         None
     }
