@@ -245,8 +245,8 @@ pub(crate) fn non_loop_degrees<G: DualGraph + ?Sized>(graph: &G) -> Vec<u8> {
 /// dependent cache misses when a search jumps around a large mesh). Building it is one sequential
 /// pass (over the edges, for a mesh); a graph that already is such an array
 /// ([`DualGraph::flat_adjacency`]) is borrowed, not copied. Everything else (liveness, edge
-/// endpoints) is read from the wrapped graph. The searches of [`crate::augment`] use it when
-/// they expect to reach many nodes.
+/// endpoints) is read from the wrapped graph. The augmenting searches ([`crate::augment_to_perfect`],
+/// [`crate::karp_sipser_perfect`]) use it when they expect to reach many nodes.
 #[derive(Clone, Debug)]
 pub struct CompactDual<'g, G: ?Sized> {
     graph: &'g G,
