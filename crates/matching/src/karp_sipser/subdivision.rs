@@ -3,8 +3,8 @@
 //! and Loop subdivision make them, in any order within the four), a perfect pairing of the
 //! coarser mesh lifts to one of the finer mesh in O(n), with no search. Not from the
 //! quadrangulation paper (which pairs any triangulation, Section 3): a shortcut for inputs that
-//! carry their own hierarchy. KS ([`crate::karp_sipser`]) tries it after the file's quads
-//! ([`crate::file_order`]) and before its greedy, level after level down to the coarsest mesh.
+//! carry their own hierarchy. Phase 1 of KS ([`super`]): after the file's quads
+//! ([`super::file_order`]) and before the greedy, level after level down to the coarsest mesh.
 //!
 //! # The lift
 //! Let coarse triangles `p` and `q` be paired, across their shared edge `ab`. Two children of
