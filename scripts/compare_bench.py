@@ -4,10 +4,11 @@
     scripts/compare_bench.py BASE_QUAD_TABLES NEW_QUAD_TABLES [--rounds R] [--runs N] NAME...
 
 Each NAME is passed as `--only NAME` (shared meshes whose name contains it; `SURFTOPO_MESHES`
-must be set). The two binaries run in alternate rounds, so that a slow spell of the shared machine
-hits both; per input, algorithm and augmenting strategy the script prints the minimum over the
-rounds of `total_seconds` (itself the minimum over `--runs` calls of `quadrangulate_with`) for each
-build and their ratio new / base. Nothing is written into the repository.
+must be set, as an absolute path: a relative one is taken from each build's own checkout). The two binaries run in alternate rounds, so that a slow spell of the shared machine
+hits both; per input, algorithm and augmenting strategy the script prints, for each build, the
+minimum over the rounds of `total_seconds` (itself the minimum over `--runs` calls of
+`quadrangulate_with`, wall clock) and of `cpu_seconds` (the thread's CPU time per call, averaged
+over the runs), and the ratios new / base. Nothing is written into the repository.
 """
 import argparse
 import json
@@ -25,7 +26,7 @@ def run(binary, names, runs, out):
     records = {}
     for line in Path(str(out) + ".jsonl").read_text().splitlines():
         r = json.loads(line)
-        records[(r["input"], r["algorithm"], r["augment"])] = r["total_seconds"]
+        records[(r["input"], r["algorithm"], r["augment"])] = (r["total_seconds"], r["cpu_seconds"])
     return records
 
 
@@ -42,14 +43,19 @@ def main():
         for k in range(a.rounds):
             for side in ("base", "new"):
                 got = run(getattr(a, side), a.names, a.runs, Path(work) / f"{side}{k}")
-                for key, t in got.items():
-                    best[side][key] = min(t, best[side].get(key, float("inf")))
-    print(f"{'input':<24} {'algorithm':<10} {'augment':<24} {'base s':>10} {'new s':>10} {'new/base':>8}")
+                for key, (wall, cpu) in got.items():
+                    w, c = best[side].get(key, (float("inf"), float("inf")))
+                    best[side][key] = (min(w, wall), min(c, cpu))
+    print(f"{'input':<20} {'algorithm':<10} {'augment':<12} {'base wall':>10} {'new wall':>10} "
+          f"{'ratio':>6} {'base cpu':>10} {'new cpu':>10} {'ratio':>6}")
     for key in sorted(best["base"]):
-        b, n = best["base"][key], best["new"].get(key)
-        if n is None:
+        (bw, bc), new = best["base"][key], best["new"].get(key)
+        if new is None:
             continue
-        print(f"{key[0]:<24} {key[1]:<10} {key[2]:<24} {b:>10.5f} {n:>10.5f} {n / b:>8.3f}")
+        nw, nc = new
+        cpu_ratio = nc / bc if bc > 0 else float("nan")
+        print(f"{key[0]:<20} {key[1]:<10} {key[2]:<12} {bw:>10.5f} {nw:>10.5f} {nw / bw:>6.3f} "
+              f"{bc:>10.5f} {nc:>10.5f} {cpu_ratio:>6.3f}")
 
 
 if __name__ == "__main__":

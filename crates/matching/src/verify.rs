@@ -179,15 +179,22 @@ fn verify_edge_list(
     }
 }
 
-/// Checks that `pairing` is a perfect matching of `graph` and wraps it: one mate entry per node
-/// slot; every live node has a mate edge that is a live non-loop edge ending at it, and that edge
-/// is the mate edge of its other end too; removed node slots have none. Then every live node is
-/// covered by exactly one edge of the set of mate edges (a second one would be the mate edge of
-/// another node ending at it, hence its own). Works on any [`DualGraph`], tombstones included.
-/// O(n): one endpoint lookup per node.
+/// Checks that `pairing` is a perfect matching of `graph` and wraps it, with its matched edges as
+/// per-edge flags ([`PerfectPairing::matched_flags`]). Works on any [`DualGraph`], tombstones
+/// included. O(n) time, one flag per edge slot of memory.
+///
+/// The check, in two sequential passes: every live node has a mate edge (removed node slots have
+/// none), whose flag is set; then every flagged edge is live, not a loop, and the mate edge of
+/// both its ends; and the flagged edges are half as many as the live nodes. Then every live node
+/// is covered by exactly one flagged edge: the flagged edges have disjoint ends (each end's mate
+/// edge is that edge), so they cover twice their number of nodes, all of them; and a node whose
+/// mate edge did not end at it would make that edge the mate edge of three nodes, one too many
+/// for the count. The edges are read in increasing id order, one endpoint lookup per matched
+/// edge: for a mesh, a sequential pass over its half-edges.
 ///
 /// # Errors
-/// The first violation, in node order, as a [`MatchingError`] naming the node and the edge.
+/// The first violation in node order (found by a second, node-by-node pass once the check has
+/// failed), as a [`MatchingError`] naming the node and the edge.
 pub fn verify_perfect_pairing<G: DualGraph + ?Sized>(
     graph: &G,
     pairing: Pairing,
@@ -199,46 +206,94 @@ pub fn verify_perfect_pairing<G: DualGraph + ?Sized>(
             got: mates.len(),
         });
     }
-    let mut matched = 0;
+    let edge_slots = graph.edge_slots();
+    let mut flags = vec![false; edge_slots];
+    let mut live = 0usize;
+    let mut fits = true;
+    for (v, &e) in mates.iter().enumerate() {
+        if graph.is_node(v as u32) {
+            live += 1;
+            match flags.get_mut(e as usize) {
+                Some(flag) => *flag = true,
+                None => fits = false,
+            }
+        } else {
+            fits &= e == NONE;
+        }
+    }
+    let mut matched = 0usize;
+    if fits {
+        for (e, _) in flags.iter().enumerate().filter(|&(_, &m)| m) {
+            let e = e as u32;
+            let [a, b] = if graph.is_edge(e) {
+                graph.endpoints(e)
+            } else {
+                [NONE, NONE]
+            };
+            if a == b || mates[a as usize] != e || mates[b as usize] != e {
+                fits = false;
+                break;
+            }
+            matched += 1;
+        }
+    }
+    if !fits || 2 * matched != live {
+        if let Some(violation) = first_violation(graph, mates) {
+            return Err(violation);
+        }
+        // Never reached (both passes characterise a perfect matching), but then the node-by-node
+        // pass has proved the matching perfect.
+        flags = pairing.edge_flags(edge_slots);
+        matched = live / 2;
+    }
+    Ok(PerfectPairing {
+        pairing,
+        flags,
+        len: matched,
+    })
+}
+
+/// The first node, in node order, whose mate edge shows that `mates` is not a perfect matching of
+/// `graph`: a live node without a mate edge, or whose mate edge is not a live non-loop edge ending
+/// at it and matched at its other end too, or a removed node slot with a mate edge. These conditions
+/// hold at every node exactly when the mates are a perfect matching (a second edge covering a node
+/// would be the mate edge of another node ending at it, hence its own): `None` then.
+fn first_violation<G: DualGraph + ?Sized>(graph: &G, mates: &[u32]) -> Option<MatchingError> {
     for (v, &e) in mates.iter().enumerate() {
         let v = v as u32;
         if !graph.is_node(v) {
             if e != NONE {
-                return Err(MatchingError::RemovedNode { node: v, edge: e });
+                return Some(MatchingError::RemovedNode { node: v, edge: e });
             }
             continue;
         }
         if e == NONE {
-            return Err(MatchingError::Uncovered { node: v });
+            return Some(MatchingError::Uncovered { node: v });
         }
         if e as usize >= graph.edge_slots() || !graph.is_edge(e) {
-            return Err(MatchingError::EdgeOutOfRange {
+            return Some(MatchingError::EdgeOutOfRange {
                 edge: e,
                 edge_count: graph.edge_slots(),
             });
         }
         let [a, b] = graph.endpoints(e);
         if a == b {
-            return Err(MatchingError::MatchedLoop { edge: e });
+            return Some(MatchingError::MatchedLoop { edge: e });
         }
         let other = match v {
             _ if v == a => b,
             _ if v == b => a,
-            _ => return Err(MatchingError::NotAtNode { node: v, edge: e }),
+            _ => return Some(MatchingError::NotAtNode { node: v, edge: e }),
         };
         if mates[other as usize] != e {
-            return Err(MatchingError::OneSided {
+            return Some(MatchingError::OneSided {
                 node: v,
                 edge: e,
                 other,
             });
         }
-        matched += 1;
     }
-    Ok(PerfectPairing {
-        pairing,
-        len: matched / 2,
-    })
+    None
 }
 
 /// A verified perfect matching of a [`DualGraph`] (a pairing of every triangle): built only by
@@ -248,6 +303,8 @@ pub fn verify_perfect_pairing<G: DualGraph + ?Sized>(
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PerfectPairing {
     pairing: Pairing,
+    /// Per edge slot: whether the edge is matched.
+    flags: Vec<bool>,
     len: usize,
 }
 
@@ -260,6 +317,11 @@ impl PerfectPairing {
     /// The pairing, unwrapped (for an algorithm that changes it, which then verifies it again).
     pub fn into_pairing(self) -> Pairing {
         self.pairing
+    }
+
+    /// Per edge slot of the graph it was verified on: whether the edge is matched.
+    pub fn matched_flags(&self) -> &[bool] {
+        &self.flags
     }
 
     /// Number of matched edges (half the live nodes).
@@ -330,6 +392,7 @@ mod tests {
         let ok = verify_perfect_pairing(&g, pairing(vec![2, 2])).unwrap();
         assert_eq!((ok.len(), ok.edge_flags(3)), (1, vec![false, false, true]));
         assert_eq!(ok.pairing().mates(), &[2, 2]);
+        assert_eq!(ok.matched_flags(), &[false, false, true]);
         let check = |mate: Vec<u32>| verify_perfect_pairing(&g, pairing(mate)).unwrap_err();
         assert_eq!(
             check(vec![0]),
@@ -361,6 +424,11 @@ mod tests {
             CubicGraph::new(4, vec![[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]).unwrap();
         assert_eq!(
             verify_perfect_pairing(&four, pairing(vec![0, 0, 0, 5])).unwrap_err(),
+            MatchingError::NotAtNode { node: 2, edge: 0 }
+        );
+        // Every edge consistent at its ends, but too few of them: the count finds it.
+        assert_eq!(
+            verify_perfect_pairing(&four, pairing(vec![0, 0, 0, 0])).unwrap_err(),
             MatchingError::NotAtNode { node: 2, edge: 0 }
         );
         // A mesh with removed faces: their slots must stay unmatched.

@@ -40,7 +40,7 @@ pub enum QuadAlgorithm {
     /// materialised as a [`surftopo_matching::CubicGraph`]. Deterministic, always perfect.
     DiksStanczyk,
     /// KS: the Karp–Sipser greedy with immediate local repairs (not from the paper; see
-    /// `surftopo_matching::karp_sipser`). Deterministic. Its repairs count as augmentation.
+    /// [`surftopo_matching::karp_sipser_perfect`]). Deterministic. Its repairs count as augmentation.
     KarpSipser,
 }
 
@@ -150,9 +150,9 @@ pub fn quadrangulate(
 /// unpaired is checked against the paper's bound `max(4, 56g − 12)`.
 ///
 /// KS reads only `options.karp_sipser` (its repairs and completion are its own, see
-/// `surftopo_matching::karp_sipser`); the other algorithms only `options.augment`.
+/// [`surftopo_matching::karp_sipser_perfect`]); the other algorithms only `options.augment`.
 ///
-/// Complexity: SG, PS and KS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
+/// Complexity: SG, PS and KS O(n) plus the augmentation (see [`surftopo_matching::augment_to_perfect`]); LRS
 /// O(g n + g²) (Theorem 3.2) plus the augmentation; DS O(n log² n) amortized.
 ///
 /// # Errors
@@ -335,7 +335,7 @@ fn diks_stanczyk_pairing(mesh: &SurfaceMesh) -> Result<Pairing, QuadError> {
 /// One counter-clockwise quad per matched edge, in increasing edge id order (one sequential pass
 /// over the edges); a perfect pairing makes one quad of every two triangles.
 fn quads_of(mesh: &SurfaceMesh, pairing: &PerfectPairing) -> (Vec<[VertexId; 4]>, Vec<EdgeId>) {
-    let flags = pairing.edge_flags(SurfaceMesh::edge_slots(mesh));
+    let flags = pairing.matched_flags();
     let mut quads = Vec::with_capacity(mesh.face_count() / 2);
     let mut diagonals = Vec::with_capacity(mesh.face_count() / 2);
     for (e, _) in flags.iter().enumerate().filter(|&(_, &m)| m) {
