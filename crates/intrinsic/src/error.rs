@@ -268,6 +268,9 @@ pub enum PortalgonError {
         /// Distance between the two corners that should coincide.
         gap: f64,
     },
+    /// The portalgon's internal structure is inconsistent ([`crate::Portalgon::check_invariants`]).
+    #[error("portalgon invariant broken: {0}")]
+    Invariant(String),
     /// The side gluing does not make a closed connected surface.
     #[error("gluing: {0}")]
     Gluing(#[from] surftopo_mesh::BuildError),

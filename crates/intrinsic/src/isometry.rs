@@ -25,6 +25,7 @@
 use crate::delaunay::{DelaunayOptions, flip_to_delaunay};
 use crate::error::{IsometryError, PortalgonError};
 use crate::flat::remove_flat_vertices;
+use crate::geometry::Motion;
 use crate::portalgon::{Point2, Portalgon, SideId};
 use crate::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::tessellation::delaunay_tessellation;
@@ -334,24 +335,6 @@ pub fn compare_tessellations(
     Ok(Outcome::NoCorrespondence { candidates: tried })
 }
 
-/// Rigid motion of the plane taking segment (p0, p1) onto (q0, q1) (directions; p0 to q0).
-fn motion(p0: Point2, p1: Point2, q0: Point2, q1: Point2) -> impl Fn(Point2) -> Point2 {
-    let (u, w) = (
-        [p1[0] - p0[0], p1[1] - p0[1]],
-        [q1[0] - q0[0], q1[1] - q0[1]],
-    );
-    let norm = u[0].hypot(u[1]) * w[0].hypot(w[1]);
-    let cos = (u[0] * w[0] + u[1] * w[1]) / norm;
-    let sin = (u[0] * w[1] - u[1] * w[0]) / norm;
-    move |x: Point2| {
-        let d = [x[0] - p0[0], x[1] - p0[1]];
-        [
-            q0[0] + cos * d[0] - sin * d[1],
-            q0[1] + sin * d[0] + cos * d[1],
-        ]
-    }
-}
-
 /// Tries to build the side correspondence from `seed_a ↦ seed_b` by propagation through polygons
 /// and the matching; checks each polygon is congruent to its image (corners within `eps`).
 fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, eps: f64) -> bool {
@@ -372,7 +355,13 @@ fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, 
         if sides_b.len() != k || (a.side_length(sa) - b.side_length(sb)).abs() > eps {
             return false;
         }
-        let moved = motion(a.start(sa), a.end(sa), b.start(sb), b.end(sb));
+        let motion = Motion::rigid_taking(
+            a.start_ref(sa),
+            a.end_ref(sa),
+            b.start_ref(sb),
+            b.end_ref(sb),
+        );
+        let moved = |x: Point2| motion.apply(&x);
         let (ia, ib) = (a.side_index(sa), b.side_index(sb));
         for m in 0..k {
             let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);

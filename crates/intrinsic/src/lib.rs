@@ -8,8 +8,12 @@
 //! edits: [`Portalgon::cut`] and [`Portalgon::shortcut`] (INSERTEDGES),
 //! [`Portalgon::delete_vertex`] (DELETEVERTICES), [`Portalgon::merge`], [`Portalgon::glue`] /
 //! [`Portalgon::unglue`], [`Portalgon::sub_portalgon`] and [`Regions`] (Section 4.4's active and
-//! inactive regions). Not here yet: tubes, bifaces and SIMPLIFYTUBES (Section 3, Appendix B), the
-//! wave algorithm (Appendix D).
+//! inactive regions), [`Portalgon::split_side`] (INSERTVERTICES), [`Portalgon::vertex_info`]
+//! (weak and strong vertices, Section 4.2), [`Portalgon::components`] and [`Portalgon::splice`].
+//! Section 3 and Appendix B: [`Biface`] with the good-biface kernel [`Biface::make_good`] (Lemma 25
+//! by DUBOIS.md §2.1's closed forms), and tubes with Proposition 4
+//! ([`Portalgon::good_biface_of_tube`], [`TubeRoute`]). Not here yet: SIMPLIFYTUBES and ALGORITHM
+//! (Section 4), the wave algorithm (Appendix D).
 //!
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
@@ -45,23 +49,28 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
+mod biface;
 mod convert;
 mod delaunay;
 mod error;
 mod flat;
 mod format;
 pub mod generators;
+pub mod geometry;
 mod isometry;
 mod laplacian;
 mod matrix_market;
 mod mollify;
 mod portalgon;
+mod portalgon_edits;
 mod quality;
 mod stats;
 mod tessellation;
 mod triangulation;
 mod trig;
+mod tube;
 
+pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
 pub use delaunay::{
     DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
 };
@@ -83,9 +92,11 @@ pub use portalgon::{
     DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
     signed_area,
 };
+pub use portalgon_edits::{Component, EditError, VertexInfo};
 pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
 pub use stats::{DelaunayStats, delaunay_with_stats};
 pub use tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };
 pub use triangulation::IntrinsicTriangulation;
+pub use tube::{LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon};

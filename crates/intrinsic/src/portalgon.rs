@@ -21,13 +21,26 @@
 //! - [`Portalgon::sub_portalgon`]: the sub-portalgon of a set of polygons, and [`Regions`], the
 //!   partition into regions with one active region of Section 4.4.
 //!
+//! The corners are in a [`Scalar`] `S` (`Portalgon<S = f64>`): `f64`, or exact rationals
+//! ([`crate::geometry::Rational`]), where every edit is exact — [`Portalgon::merge`] displaces by
+//! footnote 2's motion ([`Motion::taking`], no square root) and lengths are compared squared
+//! ([`Portalgon::side_length2`]). The plane geometry is [`crate::geometry`]'s; its predicates have
+//! exact signs in both modes.
+//!
 //! What is checked: [`Portalgon::add_polygon`] validates a polygon (at least three finite corners,
-//! no zero side, counter-clockwise, simple); [`Portalgon::glue`] requires equal lengths up to a
-//! relative tolerance (`|a - b| <= tolerance · max(a, b)`, [`DEFAULT_LENGTH_TOLERANCE`]).
+//! no zero side, counter-clockwise, simple); [`Portalgon::glue`] requires equal lengths, exactly
+//! in exact mode and up to a relative tolerance in `f64` (`|a - b| <= tolerance · max(a, b)`,
+//! [`DEFAULT_LENGTH_TOLERANCE`]). [`Portalgon::check_invariants`] checks the whole structure (tests
+//! call it after every edit).
 //! [`Portalgon::merge`] does not check that the merged polygon is simple (merging all polygons
 //! around a vertex whose angle exceeds 2π overlaps itself in the plane), nor does it need to.
 
+use std::cmp::Ordering;
+
 use crate::error::PortalgonError;
+use crate::geometry::{
+    Motion, Point, Scalar, dist_f64, dist2, dot, orient, segments_intersect, sub, twice_signed_area,
+};
 use surftopo_mesh::UnionFind;
 
 /// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
@@ -44,71 +57,30 @@ surftopo_mesh::id_type!(
     "p"
 );
 
-/// A 2D point.
+/// A 2D point in double precision (`Point<f64>`).
 pub type Point2 = [f64; 2];
 
-#[inline]
-fn sub(a: Point2, b: Point2) -> Point2 {
-    [a[0] - b[0], a[1] - b[1]]
-}
-#[inline]
-fn cross(a: Point2, b: Point2) -> f64 {
-    a[0] * b[1] - a[1] * b[0]
-}
-#[inline]
-fn dot(a: Point2, b: Point2) -> f64 {
-    a[0] * b[0] + a[1] * b[1]
-}
-#[inline]
-fn dist(a: Point2, b: Point2) -> f64 {
-    let d = sub(a, b);
-    d[0].hypot(d[1])
-}
-/// Orientation of c relative to the line a -> b: > 0 left, < 0 right.
-#[inline]
-fn orient(a: Point2, b: Point2, c: Point2) -> f64 {
-    cross(sub(b, a), sub(c, a))
+/// Signed area of a closed polygon (positive when counter-clockwise; exact in exact mode).
+pub fn signed_area<S: Scalar>(corners: &[Point<S>]) -> S {
+    twice_signed_area(corners).half()
 }
 
-/// Whether the closed segments pq and rs intersect.
-fn segments_intersect(p: Point2, q: Point2, r: Point2, s: Point2) -> bool {
-    let (d1, d2) = (orient(r, s, p), orient(r, s, q));
-    let (d3, d4) = (orient(p, q, r), orient(p, q, s));
-    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
-        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
-    {
-        return true;
-    }
-    let on = |a: Point2, b: Point2, c: Point2, o: f64| {
-        o == 0.0
-            && c[0] >= a[0].min(b[0])
-            && c[0] <= a[0].max(b[0])
-            && c[1] >= a[1].min(b[1])
-            && c[1] <= a[1].max(b[1])
-    };
-    on(r, s, p, d1) || on(r, s, q, d2) || on(p, q, r, d3) || on(p, q, s, d4)
-}
-
-/// Signed area of a closed polygon (positive when counter-clockwise).
-pub fn signed_area(corners: &[Point2]) -> f64 {
-    let k = corners.len();
-    let o = corners[0];
-    (1..k.saturating_sub(1))
-        .map(|i| cross(sub(corners[i], o), sub(corners[i + 1], o)))
-        .sum::<f64>()
-        / 2.0
-}
-
-/// Whether direction `d` from corner `cur` points strictly into the interior angle of a
-/// counter-clockwise polygon at `cur` (neighbours `prev` and `next`).
-fn points_inside(prev: Point2, cur: Point2, next: Point2, d: Point2) -> bool {
-    let (e1, e2) = (sub(next, cur), sub(prev, cur));
-    if cross(e1, e2) >= 0.0 {
-        // Convex (or straight) corner: strictly between e1 and e2 counter-clockwise.
-        cross(e1, d) > 0.0 && cross(d, e2) > 0.0
+/// Whether the direction from corner `cur` towards `target` points strictly into the interior
+/// angle of a counter-clockwise polygon at `cur` (neighbours `prev` and `next`). Exact signs
+/// ([`orient`]).
+pub(crate) fn points_inside<S: Scalar>(
+    prev: &Point<S>,
+    cur: &Point<S>,
+    next: &Point<S>,
+    target: &Point<S>,
+) -> bool {
+    let (less, greater) = (Ordering::Less, Ordering::Greater);
+    if orient(cur, next, prev) != less {
+        // Convex (or straight) corner: strictly between the two sides counter-clockwise.
+        orient(cur, next, target) == greater && orient(cur, target, prev) == greater
     } else {
-        // Reflex corner: anywhere but the closed exterior wedge from e2 to e1.
-        !(cross(e2, d) >= 0.0 && cross(d, e1) >= 0.0)
+        // Reflex corner: anywhere but the closed exterior wedge from `prev` to `next`.
+        !(orient(cur, prev, target) != less && orient(cur, target, next) != less)
     }
 }
 
@@ -117,7 +89,10 @@ fn points_inside(prev: Point2, cur: Point2, next: Point2, d: Point2) -> bool {
 ///
 /// # Errors
 /// The first problem, naming `polygon` and the corner or side.
-pub fn check_polygon(polygon: usize, corners: &[Point2]) -> Result<(), PortalgonError> {
+pub fn check_polygon<S: Scalar>(
+    polygon: usize,
+    corners: &[Point<S>],
+) -> Result<(), PortalgonError> {
     let k = corners.len();
     if k < 3 {
         return Err(PortalgonError::TooFewCorners {
@@ -136,15 +111,20 @@ pub fn check_polygon(polygon: usize, corners: &[Point2]) -> Result<(), Portalgon
             return Err(PortalgonError::ZeroSide { polygon, side: i });
         }
     }
-    let area = signed_area(corners);
-    if area.is_nan() || area <= 0.0 {
-        return Err(PortalgonError::NotCounterClockwise { polygon, area });
+    let area = twice_signed_area(corners);
+    if area.sign() != Ordering::Greater {
+        return Err(PortalgonError::NotCounterClockwise {
+            polygon,
+            area: area.half().to_f64(),
+        });
     }
     for a in 0..k {
-        let (p, q) = (corners[a], corners[(a + 1) % k]);
+        let (p, q) = (&corners[a], &corners[(a + 1) % k]);
         // Consecutive sides must not fold back onto each other.
-        let r = corners[(a + 2) % k];
-        if orient(p, q, r) == 0.0 && dot(sub(q, p), sub(r, q)) < 0.0 {
+        let r = &corners[(a + 2) % k];
+        if orient(p, q, r) == Ordering::Equal
+            && dot(&sub(q, p), &sub(r, q)).sign() == Ordering::Less
+        {
             return Err(PortalgonError::NotSimple {
                 polygon,
                 a,
@@ -155,7 +135,7 @@ pub fn check_polygon(polygon: usize, corners: &[Point2]) -> Result<(), Portalgon
             if a == 0 && b == k - 1 {
                 continue;
             }
-            if segments_intersect(p, q, corners[b], corners[(b + 1) % k]) {
+            if segments_intersect(p, q, &corners[b], &corners[(b + 1) % k]) {
                 return Err(PortalgonError::NotSimple { polygon, a, b });
             }
         }
@@ -163,30 +143,54 @@ pub fn check_polygon(polygon: usize, corners: &[Point2]) -> Result<(), Portalgon
     Ok(())
 }
 
-/// A portalgon: polygons with a partial matching of their sides (see the module doc).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Portalgon {
+/// A portalgon: polygons with a partial matching of their sides (see the module doc), corners
+/// in the scalar type `S` (`f64` by default; [`crate::geometry::Rational`] for exact mode).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Portalgon<S: Scalar = f64> {
     /// Per side: its start corner, in its polygon's plane.
-    start: Vec<Point2>,
+    pub(crate) start: Vec<Point<S>>,
     /// Per side: its polygon (`INVALID` for a removed side).
-    owner: Vec<PolygonId>,
+    pub(crate) owner: Vec<PolygonId>,
     /// Per side: the matched side (`INVALID` when unmatched).
-    mate: Vec<SideId>,
+    pub(crate) mate: Vec<SideId>,
     /// Per side: the vertex label of its start corner (`u32::MAX` when unknown).
-    label: Vec<u32>,
+    pub(crate) label: Vec<u32>,
     /// Per side: its index in its polygon's side list.
-    slot: Vec<u32>,
+    pub(crate) slot: Vec<u32>,
     /// Per side: the next side of its polygon (cached from the side lists).
-    next: Vec<SideId>,
+    pub(crate) next: Vec<SideId>,
     /// Per polygon: its sides, counter-clockwise (empty for a removed polygon).
-    polygons: Vec<Vec<SideId>>,
-    live_polygons: usize,
-    live_sides: usize,
+    pub(crate) polygons: Vec<Vec<SideId>>,
+    pub(crate) live_polygons: usize,
+    pub(crate) live_sides: usize,
+}
+
+impl<S: Scalar> Default for Portalgon<S> {
+    fn default() -> Self {
+        Portalgon {
+            start: Vec::new(),
+            owner: Vec::new(),
+            mate: Vec::new(),
+            label: Vec::new(),
+            slot: Vec::new(),
+            next: Vec::new(),
+            polygons: Vec::new(),
+            live_polygons: 0,
+            live_sides: 0,
+        }
+    }
 }
 
 impl Portalgon {
-    /// An empty portalgon.
+    /// An empty portalgon in double precision (see [`Portalgon::empty`] for other scalars).
     pub fn new() -> Self {
+        Self::default()
+    }
+}
+
+impl<S: Scalar> Portalgon<S> {
+    /// An empty portalgon over any scalar type.
+    pub fn empty() -> Self {
         Self::default()
     }
 
@@ -253,17 +257,31 @@ impl Portalgon {
         let sides = &self.polygons[self.owner(s).idx()];
         sides[(self.side_index(s) + sides.len() - 1) % sides.len()]
     }
-    /// Start corner of a side.
-    pub fn start(&self, s: SideId) -> Point2 {
-        self.start[s.idx()]
+    /// Start corner of a side (a copy; [`Self::start_ref`] borrows it).
+    pub fn start(&self, s: SideId) -> Point<S> {
+        self.start[s.idx()].clone()
     }
     /// End corner of a side (the start of the next side).
-    pub fn end(&self, s: SideId) -> Point2 {
+    pub fn end(&self, s: SideId) -> Point<S> {
         self.start(self.next_side(s))
     }
-    /// Length of a side.
+    /// Start corner of a side, borrowed.
+    #[inline]
+    pub fn start_ref(&self, s: SideId) -> &Point<S> {
+        &self.start[s.idx()]
+    }
+    /// End corner of a side, borrowed.
+    #[inline]
+    pub fn end_ref(&self, s: SideId) -> &Point<S> {
+        &self.start[self.next_side(s).idx()]
+    }
+    /// Squared length of a side (exact in exact mode).
+    pub fn side_length2(&self, s: SideId) -> S {
+        dist2(self.start_ref(s), self.end_ref(s))
+    }
+    /// Length of a side, as a double (a square root in exact mode).
     pub fn side_length(&self, s: SideId) -> f64 {
-        dist(self.start(s), self.end(s))
+        dist_f64(self.start_ref(s), self.end_ref(s))
     }
     /// The side matched with `s`, if any.
     pub fn mate(&self, s: SideId) -> Option<SideId> {
@@ -276,37 +294,42 @@ impl Portalgon {
         (l != u32::MAX).then_some(l)
     }
     /// The corners of a polygon, counter-clockwise.
-    pub fn corners(&self, p: PolygonId) -> Vec<Point2> {
+    pub fn corners(&self, p: PolygonId) -> Vec<Point<S>> {
         self.polygons[p.idx()]
             .iter()
             .map(|&s| self.start(s))
             .collect()
     }
     /// Signed area of a polygon.
-    pub fn polygon_area(&self, p: PolygonId) -> f64 {
+    pub fn polygon_area(&self, p: PolygonId) -> S {
         signed_area(&self.corners(p))
     }
     /// Total area of the live polygons.
-    pub fn area(&self) -> f64 {
-        self.polygons().map(|p| self.polygon_area(p)).sum()
+    pub fn area(&self) -> S {
+        self.polygons()
+            .fold(S::zero(), |sum, p| sum + self.polygon_area(p))
     }
 
     /// Adds a validated polygon ([`check_polygon`]) with unmatched sides and no vertex labels.
     ///
     /// # Errors
     /// As [`check_polygon`], naming the new polygon's id.
-    pub fn add_polygon(&mut self, corners: &[Point2]) -> Result<PolygonId, PortalgonError> {
+    pub fn add_polygon(&mut self, corners: &[Point<S>]) -> Result<PolygonId, PortalgonError> {
         check_polygon(self.polygons.len(), corners)?;
         Ok(self.push_polygon(corners, None))
     }
 
     /// Adds a polygon without validation (crate-internal: shapes known to be valid).
-    pub(crate) fn push_polygon(&mut self, corners: &[Point2], labels: Option<&[u32]>) -> PolygonId {
+    pub(crate) fn push_polygon(
+        &mut self,
+        corners: &[Point<S>],
+        labels: Option<&[u32]>,
+    ) -> PolygonId {
         let p = PolygonId(self.polygons.len() as u32);
         let mut sides = Vec::with_capacity(corners.len());
-        for (i, &c) in corners.iter().enumerate() {
+        for (i, c) in corners.iter().enumerate() {
             let s = SideId(self.start.len() as u32);
-            self.start.push(c);
+            self.start.push(c.clone());
             self.owner.push(p);
             self.mate.push(SideId::INVALID);
             self.label.push(labels.map_or(u32::MAX, |l| l[i]));
@@ -356,7 +379,9 @@ impl Portalgon {
     }
 
     /// Matches sides `s` and `t` (of the same or different polygons); their lengths must agree up to
-    /// `tolerance` relative to the longer one.
+    /// `tolerance` relative to the longer one (exactly in exact mode, [`Scalar::lengths_match`]).
+    /// The squared lengths are compared: `|a − b| ≤ tol · max(a, b)` iff
+    /// `|a² − b²| ≤ tol(2 − tol) · max(a, b)²`, so the tolerance means what it meant on lengths.
     ///
     /// # Errors
     /// [`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`] (already matched, or
@@ -374,8 +399,9 @@ impl Portalgon {
                 return Err(PortalgonError::MatchedTwice { polygon, side });
             }
         }
-        let (la, lb) = (self.side_length(s), self.side_length(t));
-        if (la - lb).abs() > tolerance * la.max(lb) {
+        let (la, lb) = (self.side_length2(s), self.side_length2(t));
+        if !S::lengths_match(&la, &lb, tolerance * (2.0 - tolerance)) {
+            let (la, lb) = (self.side_length(s), self.side_length(t));
             let (polygon_a, side_a) = self.side_ref(s);
             let (polygon_b, side_b) = self.side_ref(t);
             return Err(PortalgonError::UnequalSides {
@@ -399,6 +425,93 @@ impl Portalgon {
         self.mate[s.idx()] = SideId::INVALID;
         self.mate[m.idx()] = SideId::INVALID;
         Some(m)
+    }
+
+    /// Checks the invariants every edit keeps: the per-side arrays have one entry per side id;
+    /// every live polygon has at least three sides, each owned by it, at its index, its cached
+    /// next side the following one; no side is in two polygons, and every side in no polygon is
+    /// a tombstone (no owner, no mate, no next); mates are live and symmetric, never the side
+    /// itself; the live counts are right; every polygon is valid ([`check_polygon`]: finite, no
+    /// zero side, counter-clockwise, simple). O(Σ k²). Merging the polygons around a vertex whose
+    /// angle exceeds 2π makes a polygon that overlaps itself in the plane ([`Self::merge`]):
+    /// this check reports it as not simple.
+    ///
+    /// # Errors
+    /// [`PortalgonError::Invariant`] saying what is wrong where, or the polygon's
+    /// [`check_polygon`] error.
+    pub fn check_invariants(&self) -> Result<(), PortalgonError> {
+        let fail = |what: String| Err(PortalgonError::Invariant(what));
+        let n = self.start.len();
+        if [
+            self.owner.len(),
+            self.mate.len(),
+            self.label.len(),
+            self.slot.len(),
+            self.next.len(),
+        ]
+        .iter()
+        .any(|&l| l != n)
+        {
+            return fail(format!("per-side arrays differ in length ({n} corners)"));
+        }
+        let mut seen = vec![false; n];
+        let (mut live_polygons, mut live_sides) = (0usize, 0usize);
+        for (pi, sides) in self.polygons.iter().enumerate() {
+            if sides.is_empty() {
+                continue;
+            }
+            live_polygons += 1;
+            live_sides += sides.len();
+            let k = sides.len();
+            if k < 3 {
+                return fail(format!("polygon {pi} has {k} sides"));
+            }
+            for (i, &s) in sides.iter().enumerate() {
+                if s.idx() >= n || std::mem::replace(&mut seen[s.idx()], true) {
+                    return fail(format!(
+                        "side {} of polygon {pi} is out of range or shared",
+                        s.0
+                    ));
+                }
+                if self.owner[s.idx()] != PolygonId(pi as u32)
+                    || self.slot[s.idx()] as usize != i
+                    || self.next[s.idx()] != sides[(i + 1) % k]
+                {
+                    return fail(format!(
+                        "side {} (index {i} of polygon {pi}): cached owner {:?}, index {}, next {:?}",
+                        s.0,
+                        self.owner[s.idx()],
+                        self.slot[s.idx()],
+                        self.next[s.idx()]
+                    ));
+                }
+            }
+            check_polygon(pi, &self.corners(PolygonId(pi as u32)))?;
+        }
+        for s in 0..n {
+            let m = self.mate[s];
+            if !seen[s] {
+                if self.owner[s].is_valid() || m.is_valid() || self.next[s].is_valid() {
+                    return fail(format!("side {s} is in no polygon but not a tombstone"));
+                }
+                continue;
+            }
+            if m.is_valid()
+                && (m.idx() >= n || !seen[m.idx()] || self.mate[m.idx()].idx() != s || m.idx() == s)
+            {
+                return fail(format!(
+                    "side {s} is matched to {} which is not matched back",
+                    m.0
+                ));
+            }
+        }
+        if (live_polygons, live_sides) != (self.live_polygons, self.live_sides) {
+            return fail(format!(
+                "live counts {} polygons, {} sides cached; {live_polygons} and {live_sides} found",
+                self.live_polygons, self.live_sides
+            ));
+        }
+        Ok(())
     }
 
     /// The unmatched live sides (the boundary of the surface).
@@ -458,12 +571,12 @@ impl Portalgon {
         if i >= k || j >= k || i == j || (i + 1) % k == j || (j + 1) % k == i {
             return false;
         }
-        let (a, b) = (c[i], c[j]);
+        let (a, b) = (&c[i], &c[j]);
         if a == b {
             return false;
         }
-        if !points_inside(c[(i + k - 1) % k], a, c[(i + 1) % k], sub(b, a))
-            || !points_inside(c[(j + k - 1) % k], b, c[(j + 1) % k], sub(a, b))
+        if !points_inside(&c[(i + k - 1) % k], a, &c[(i + 1) % k], b)
+            || !points_inside(&c[(j + k - 1) % k], b, &c[(j + 1) % k], a)
         {
             return false;
         }
@@ -472,7 +585,7 @@ impl Portalgon {
             if s == i || e == i || s == j || e == j {
                 continue;
             }
-            if segments_intersect(a, b, c[s], c[e]) {
+            if segments_intersect(a, b, &c[s], &c[e]) {
                 return false;
             }
         }
@@ -482,19 +595,24 @@ impl Portalgon {
     }
 
     /// A shortcut of polygon `p` (Section 4.1): a shortest vertex-to-vertex arc, as its two corner
-    /// indices `(i, j)` with `i < j`; `None` for triangles. Ties go to the smallest `(i, j)`. O(k³).
+    /// indices `(i, j)` with `i < j`; `None` for triangles. Ties (of the squared lengths) go to the
+    /// smallest `(i, j)`. O(k³).
     pub fn shortcut(&self, p: PolygonId) -> Option<(usize, usize)> {
         let c = self.corners(p);
         let k = c.len();
-        let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+        let mut pairs: Vec<(S, usize, usize)> = Vec::new();
         for i in 0..k {
             for j in i + 2..k {
                 if !(i == 0 && j == k - 1) {
-                    pairs.push((dist(c[i], c[j]), i, j));
+                    pairs.push((dist2(&c[i], &c[j]), i, j));
                 }
             }
         }
-        pairs.sort_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
+        pairs.sort_by(|x, y| {
+            x.0.partial_cmp(&y.0)
+                .unwrap_or(Ordering::Equal)
+                .then((x.1, x.2).cmp(&(y.1, y.2)))
+        });
         pairs
             .into_iter()
             .find(|&(_, i, j)| self.is_arc(p, i, j))
@@ -530,7 +648,7 @@ impl Portalgon {
         self.polygons.push(Vec::new());
         let (corner_i, corner_j) = (self.start(sides[i]), self.start(sides[j]));
         let (label_i, label_j) = (self.label[sides[i].idx()], self.label[sides[j].idx()]);
-        let new_side = |me: &mut Self, start: Point2, label: u32, owner: PolygonId| {
+        let new_side = |me: &mut Self, start: Point<S>, label: u32, owner: PolygonId| {
             let s = SideId(me.start.len() as u32);
             me.start.push(start);
             me.owner.push(owner);
@@ -557,7 +675,7 @@ impl Portalgon {
         Ok((in_p, in_q))
     }
 
-    fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
+    pub(crate) fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
         let k = sides.len();
         for (n, &s) in sides.iter().enumerate() {
             self.owner[s.idx()] = p;
@@ -599,19 +717,16 @@ impl Portalgon {
             }
         };
         let q = self.owner(t);
-        // Rigid motion taking start(t) to end(s) and end(t) to start(s).
-        let (t0, t1) = (self.start(t), self.end(t));
-        let (s0, s1) = (self.start(s), self.end(s));
-        let (u, w) = (sub(t1, t0), sub(s0, s1));
-        let norm = dist(t1, t0) * dist(s0, s1);
-        let (cos, sin) = (dot(u, w) / norm, cross(u, w) / norm);
+        // Footnote 2's rigid motion taking start(t) to end(s) and end(t) to start(s).
+        let motion = Motion::taking(
+            self.start_ref(t),
+            self.end_ref(t),
+            self.end_ref(s),
+            self.start_ref(s),
+        );
         let q_sides = std::mem::take(&mut self.polygons[q.idx()]);
         for &x in &q_sides {
-            let d = sub(self.start[x.idx()], t0);
-            self.start[x.idx()] = [
-                s1[0] + cos * d[0] - sin * d[1],
-                s1[1] + sin * d[0] + cos * d[1],
-            ];
+            self.start[x.idx()] = motion.apply(&self.start[x.idx()]);
         }
         let p_sides = std::mem::take(&mut self.polygons[p.idx()]);
         let (kp, kq) = (p_sides.len(), q_sides.len());
@@ -637,8 +752,8 @@ impl Portalgon {
     /// ([`Self::merge`]) until the last two sides at it are matched to each other; those two are
     /// removed, and the vertex with them. The vertex must be weak (interior, not on a loop: every
     /// side at it matched, to a side of another polygon until the end) and flat (angle 2π, so the
-    /// two corners beside the slit coincide within `tolerance` relative to the polygon's longest
-    /// side). Returns the polygon that replaces the star (it is usually not a triangle:
+    /// two corners beside the slit coincide: exactly in exact mode, within `tolerance` relative to
+    /// the polygon's longest side in `f64`). Returns the polygon that replaces the star (it is usually not a triangle:
     /// [`Self::triangulate_by_shortcuts`] is INSERTEDGES). O(size of the star).
     ///
     /// # Errors
@@ -686,8 +801,13 @@ impl Portalgon {
             .iter()
             .map(|&x| self.side_length(x))
             .fold(0.0, f64::max);
-        let gap = dist(a, b);
-        if gap > tolerance * longest || self.polygons[p.idx()].len() < 5 {
+        let gap = dist_f64(&a, &b);
+        let apart = if S::EXACT {
+            a != b
+        } else {
+            gap > tolerance * longest
+        };
+        if apart || self.polygons[p.idx()].len() < 5 {
             return Err(PortalgonError::NotFlat {
                 polygon: p.idx(),
                 gap,
@@ -749,8 +869,8 @@ impl Portalgon {
     /// two sides matched iff they are matched here and both belong to the subset (so sides matched
     /// across the subset's border become boundary). Returns it and the old-to-new side map
     /// (`INVALID` for sides not copied). Polygon `k` of the copy is `polygons[k]`.
-    pub fn sub_portalgon(&self, polygons: &[PolygonId]) -> (Portalgon, Vec<SideId>) {
-        let mut sub_p = Portalgon::new();
+    pub fn sub_portalgon(&self, polygons: &[PolygonId]) -> (Portalgon<S>, Vec<SideId>) {
+        let mut sub_p = Portalgon::empty();
         let mut map = vec![SideId::INVALID; self.start.len()];
         for &p in polygons {
             if !self.is_polygon_live(p) {
@@ -778,7 +898,7 @@ impl Portalgon {
     }
 
     /// A copy with dense ids (live polygons and sides in id order), and the old-to-new side map.
-    pub fn compacted(&self) -> (Portalgon, Vec<SideId>) {
+    pub fn compacted(&self) -> (Portalgon<S>, Vec<SideId>) {
         let live: Vec<PolygonId> = self.polygons().collect();
         self.sub_portalgon(&live)
     }
@@ -786,17 +906,17 @@ impl Portalgon {
     /// The mirror image (every polygon reflected across the x axis, orientations kept
     /// counter-clockwise by reversing the corner order; the matching carried over): the surface
     /// with the opposite orientation. Side `i` of a `k`-gon becomes side `k - 1 - i`.
-    pub fn mirrored(&self) -> Portalgon {
+    pub fn mirrored(&self) -> Portalgon<S> {
         let (dense, _) = self.compacted();
-        let mut out = Portalgon::new();
+        let mut out = Portalgon::empty();
         for p in dense.polygons() {
             let sides = dense.polygon_sides(p);
             let k = sides.len();
             // New side m is old side k-1-m reversed; it starts at the old end corner.
-            let corners: Vec<Point2> = (0..k)
+            let corners: Vec<Point<S>> = (0..k)
                 .map(|m| {
-                    let c = dense.end(sides[k - 1 - m]);
-                    [c[0], -c[1]]
+                    let [x, y] = dense.end(sides[k - 1 - m]);
+                    [x, -y]
                 })
                 .collect();
             let labels: Vec<u32> = (0..k)
@@ -834,7 +954,7 @@ pub struct Regions {
 
 impl Regions {
     /// Every polygon of `portalgon` in region 0, which is active.
-    pub fn new(portalgon: &Portalgon) -> Self {
+    pub fn new<S: Scalar>(portalgon: &Portalgon<S>) -> Self {
         Self {
             region: vec![0; portalgon.polygon_slots()],
             active: 0,
@@ -869,20 +989,61 @@ impl Regions {
         self.count = self.count.max(r + 1);
     }
     /// The live polygons of region `r`, increasing ids.
-    pub fn polygons_in(&self, portalgon: &Portalgon, r: u32) -> Vec<PolygonId> {
+    pub fn polygons_in<S: Scalar>(&self, portalgon: &Portalgon<S>, r: u32) -> Vec<PolygonId> {
         portalgon
             .polygons()
             .filter(|&p| self.region(p) == r)
             .collect()
     }
     /// Whether side `s` is matched to a side of a polygon in another region.
-    pub fn is_separating(&self, portalgon: &Portalgon, s: SideId) -> bool {
+    pub fn is_separating<S: Scalar>(&self, portalgon: &Portalgon<S>, s: SideId) -> bool {
         portalgon
             .mate(s)
             .is_some_and(|t| self.region(portalgon.owner(s)) != self.region(portalgon.owner(t)))
     }
     /// The sub-portalgon of region `r` (see [`Portalgon::sub_portalgon`]).
-    pub fn sub_portalgon(&self, portalgon: &Portalgon, r: u32) -> (Portalgon, Vec<SideId>) {
+    pub fn sub_portalgon<S: Scalar>(
+        &self,
+        portalgon: &Portalgon<S>,
+        r: u32,
+    ) -> (Portalgon<S>, Vec<SideId>) {
         portalgon.sub_portalgon(&self.polygons_in(portalgon, r))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square_cut() -> Portalgon {
+        let mut p = Portalgon::new();
+        let q = p
+            .add_polygon(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+            .unwrap();
+        p.cut(q, 0, 2).unwrap();
+        p.check_invariants().unwrap();
+        p
+    }
+
+    #[test]
+    fn check_invariants_finds_each_broken_cache() {
+        let broken = |edit: &dyn Fn(&mut Portalgon)| {
+            let mut p = square_cut();
+            edit(&mut p);
+            p.check_invariants().is_err()
+        };
+        assert!(broken(&|p| p.mate[0] = SideId(1)));
+        assert!(broken(&|p| p.mate[4] = SideId::INVALID));
+        assert!(broken(&|p| p.slot[1] = 0));
+        assert!(broken(&|p| p.next[0] = SideId(2)));
+        assert!(broken(&|p| p.owner[0] = PolygonId(1)));
+        assert!(broken(&|p| p.live_sides += 1));
+        assert!(broken(&|p| p.live_polygons -= 1));
+        assert!(broken(&|p| p.start[1] = [3.0, 3.0]));
+        assert!(broken(&|p| p.start[2] = [-2.0, -2.0]));
+        assert!(broken(&|p| {
+            p.label.pop();
+        }));
+        assert!(!broken(&|_| ()));
     }
 }

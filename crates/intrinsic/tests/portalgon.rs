@@ -4,9 +4,11 @@
 mod common;
 
 use surftopo_intrinsic::generators::flat_torus;
+use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::{
     DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, IntrinsicTriangulation, PolygonId, Portalgon,
     PortalgonDoc, PortalgonError, Regions, TriangleStyle, check_polygon, flip_to_delaunay,
+    signed_area,
 };
 use surftopo_mesh::generators::icosphere;
 
@@ -282,11 +284,13 @@ fn cut_and_merge_are_inverse() {
     let square = p
         .add_polygon(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
         .unwrap();
+    p.check_invariants().unwrap();
     let before = p.corners(square);
     // 0-1 is a side, not an arc; 0-2 is a diagonal.
     assert!(!p.is_arc(square, 0, 1));
     assert!(p.is_arc(square, 0, 2) && p.is_arc(square, 3, 1));
     let (in_p, in_q) = p.cut(square, 0, 2).unwrap();
+    p.check_invariants().unwrap();
     assert_eq!(p.mate(in_p), Some(in_q));
     assert_eq!((p.polygon_count(), p.side_count()), (2, 6));
     let q = p.owner(in_q);
@@ -296,6 +300,7 @@ fn cut_and_merge_are_inverse() {
     assert!((p.side_length(in_p) - 8f64.sqrt()).abs() < 1e-15);
     // Displace q (another representation of the same portalgon), then merge back.
     let merged = p.merge(in_p).unwrap();
+    p.check_invariants().unwrap();
     assert_eq!(merged, square);
     assert_eq!((p.polygon_count(), p.side_count()), (1, 4));
     let after = p.corners(square);
@@ -308,6 +313,7 @@ fn cut_and_merge_are_inverse() {
         p.merge(s0),
         Err(PortalgonError::CannotMerge { .. })
     ));
+    p.check_invariants().unwrap();
 }
 
 #[test]
@@ -320,9 +326,12 @@ fn merge_displaces_the_other_polygon_rigidly() {
     let b = p
         .add_polygon(&[[10.0, 10.0], [10.0, 9.0], [11.0, 10.0]])
         .unwrap();
+    p.check_invariants().unwrap();
     // a: side 1 from (1,0) to (0,1); b: side 1 from (10,9) to (11,10), also √2 long.
     p.glue(p.side(a, 1), p.side(b, 1), 1e-12).unwrap();
+    p.check_invariants().unwrap();
     let merged = p.merge(p.side(a, 1)).unwrap();
+    p.check_invariants().unwrap();
     let c = p.corners(merged);
     assert_eq!(c.len(), 4);
     // A unit square: sides 1, diagonals √2.
@@ -345,6 +354,7 @@ fn shortcuts_and_insert_edges() {
     let arrow = p
         .add_polygon(&[[0.0, 0.0], [2.0, -1.0], [0.5, 0.0], [2.0, 1.0]])
         .unwrap();
+    p.check_invariants().unwrap();
     assert!(!p.is_arc(arrow, 1, 3));
     assert!(p.is_arc(arrow, 0, 2));
     assert_eq!(p.shortcut(arrow), Some((0, 2)));
@@ -356,8 +366,10 @@ fn shortcuts_and_insert_edges() {
         })
         .collect();
     let h = p.add_polygon(&hex).unwrap();
+    p.check_invariants().unwrap();
     let area = p.polygon_area(h);
     let tris = p.triangulate_by_shortcuts(h).unwrap();
+    p.check_invariants().unwrap();
     assert_eq!(tris.len(), 4);
     let total: f64 = tris.iter().map(|&t| p.polygon_area(t)).sum();
     assert!((total - area).abs() < 1e-14);
@@ -371,6 +383,7 @@ fn shortcuts_and_insert_edges() {
     // greedy sequence may then be left with a rectangle whose diagonals are both long.
     let mut q = Portalgon::new();
     let h = q.add_polygon(&hex).unwrap();
+    q.check_invariants().unwrap();
     let (i, j) = q.shortcut(h).unwrap();
     assert!((dist(hex[i], hex[j]) - 3f64.sqrt()).abs() < 1e-12);
     for &t in &tris {
@@ -401,6 +414,7 @@ fn sub_portalgons_regions_and_vertex_classes() {
         regions.assign(q, r);
     }
     let (sub, map) = regions.sub_portalgon(&p, r);
+    sub.check_invariants().unwrap();
     assert_eq!(sub.polygon_count(), 9);
     // A side of the sub-portalgon is boundary iff it was matched across the region border.
     for s in p.sides() {
@@ -417,8 +431,10 @@ fn sub_portalgons_regions_and_vertex_classes() {
     let mut q = p.clone();
     let s = q.sides().next().unwrap();
     let t = q.unglue(s).unwrap();
+    q.check_invariants().unwrap();
     assert!(q.check_closed().is_err());
     q.glue(s, t, 1e-12).unwrap();
+    q.check_invariants().unwrap();
     assert_eq!(q, p);
 }
 
@@ -427,9 +443,97 @@ fn the_mirror_image_of_the_mirror_image_is_the_original() {
     let s = icosphere(1);
     let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
     let (p, _) = tri.to_portalgon();
+    p.check_invariants().unwrap();
     let m = p.mirrored();
+    m.check_invariants().unwrap();
     assert_eq!(m.vertex_classes().1, p.vertex_classes().1);
     assert!((m.area() - p.area()).abs() < 1e-12);
     assert_ne!(m, p);
     assert_eq!(m.mirrored(), p);
+}
+
+/// The edits in exact arithmetic: footnote 2's motion keeps rational corners exact, so cutting,
+/// merging and deleting a flat vertex give back exactly the corners expected.
+#[test]
+fn exact_edits_stay_exact() {
+    let r = |x: &str| x.parse::<Rational>().unwrap();
+    let pt = |x: &str, y: &str| [r(x), r(y)];
+    // Four triangles around the centre (1/3, 1/3) of a kite-shaped quadrilateral, each in its own
+    // displaced copy of the plane (translated by rational vectors).
+    let quad = [
+        pt("0", "0"),
+        pt("1", "0"),
+        pt("5/3", "7/5"),
+        pt("-1/2", "1"),
+    ];
+    let centre = pt("1/3", "1/3");
+    let mut p: Portalgon<Rational> = Portalgon::empty();
+    let mut tris = Vec::new();
+    for i in 0..4 {
+        let shift = [Rational::from_i64(10 * i), r("1/7")];
+        let moved = |c: &[Rational; 2]| {
+            [
+                c[0].clone() + shift[0].clone(),
+                c[1].clone() + shift[1].clone(),
+            ]
+        };
+        let t = p
+            .add_polygon(&[
+                moved(&centre),
+                moved(&quad[i as usize]),
+                moved(&quad[(i as usize + 1) % 4]),
+            ])
+            .unwrap();
+        p.check_invariants().unwrap();
+        tris.push(t);
+    }
+    // Side 2 of triangle i (from quad[i+1] to the centre) is glued to side 0 of triangle i+1.
+    for i in 0..4 {
+        p.glue(p.side(tris[i], 2), p.side(tris[(i + 1) % 4], 0), 0.0)
+            .unwrap();
+        p.check_invariants().unwrap();
+    }
+    assert_eq!(p.area(), signed_area(&quad));
+    let merged = p.merge(p.side(tris[0], 2)).unwrap();
+    p.check_invariants().unwrap();
+    assert_eq!(p.polygon_sides(merged).len(), 4);
+    let square = p.delete_vertex(p.side(merged, 0), 0.0).unwrap();
+    p.check_invariants().unwrap();
+    let corners = p.corners(square);
+    assert_eq!(corners.len(), 4);
+    // The quadrilateral, exactly, translated as triangle 0 was.
+    let shift = [Rational::zero(), r("1/7")];
+    let expected: Vec<[Rational; 2]> = quad
+        .iter()
+        .map(|c| {
+            [
+                c[0].clone() + shift[0].clone(),
+                c[1].clone() + shift[1].clone(),
+            ]
+        })
+        .collect();
+    let start = expected.iter().position(|c| *c == corners[0]).unwrap();
+    for (k, c) in corners.iter().enumerate() {
+        assert_eq!(*c, expected[(start + k) % 4]);
+    }
+    // Lengths are compared exactly: a side one part in 10^30 longer is refused.
+    let mut q: Portalgon<Rational> = Portalgon::empty();
+    let a = q
+        .add_polygon(&[pt("0", "0"), pt("1", "0"), pt("0", "1")])
+        .unwrap();
+    let b = q
+        .add_polygon(&[
+            pt("0", "0"),
+            pt(
+                "1000000000000000000000000000001/1000000000000000000000000000000",
+                "0",
+            ),
+            pt("0", "1"),
+        ])
+        .unwrap();
+    assert!(matches!(
+        q.glue(q.side(a, 0), q.side(b, 0), 1e-9),
+        Err(PortalgonError::UnequalSides { .. })
+    ));
+    q.check_invariants().unwrap();
 }

@@ -63,6 +63,32 @@ impl Inspection {
     pub fn euler_characteristic(&self) -> i64 {
         self.vertices as i64 - self.edges as i64 + self.faces as i64
     }
+    /// Whether no problem was found: the soup is a closed, connected, orientable surface that
+    /// [`build()`] accepts.
+    pub fn is_valid(&self) -> bool {
+        self.problem_count == 0
+    }
+    /// The genus `(2 - χ) / 2` when the soup is valid ([`Self::is_valid`]), `None` otherwise.
+    pub fn genus(&self) -> Option<i64> {
+        self.is_valid()
+            .then(|| (2 - self.euler_characteristic()) / 2)
+    }
+    /// Whether a problem makes the faces a non-simplicial complex: a face repeating a vertex, or
+    /// two faces on the same three vertices.
+    pub fn has_degenerate_faces(&self) -> bool {
+        self.problems.iter().any(|p| {
+            matches!(
+                p,
+                BuildError::RepeatedVertex { .. } | BuildError::DuplicateFace { .. }
+            )
+        })
+    }
+    /// Counts a problem found outside the soup's combinatorics (e.g. a non-finite coordinate)
+    /// and lists it first.
+    pub fn add_problem_first(&mut self, e: BuildError) {
+        self.problem_count += 1;
+        self.problems.insert(0, e);
+    }
     fn push(&mut self, e: BuildError) {
         self.problem_count += 1;
         if self.problems.len() < MAX_LISTED_PROBLEMS {

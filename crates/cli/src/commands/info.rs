@@ -68,25 +68,16 @@ pub fn run(path: &Path, json: bool, weld: bool, strict: bool) -> anyhow::Result<
         .collect();
 
     if let Err(e) = surftopo_mesh::geometry::check_finite(&soup.positions) {
-        inspection.problem_count += 1;
-        inspection.problems.insert(0, e);
+        inspection.add_problem_first(e);
     }
-    let simplicial = all_triangles
-        && !inspection.problems.iter().any(|p| {
-            matches!(
-                p,
-                surftopo_mesh::BuildError::RepeatedVertex { .. }
-                    | surftopo_mesh::BuildError::DuplicateFace { .. }
-            )
-        });
-    let valid = inspection.problem_count == 0;
-    let chi = inspection.euler_characteristic();
+    let simplicial = all_triangles && !inspection.has_degenerate_faces();
+    let valid = inspection.is_valid();
     let info = Info {
         vertices: inspection.vertices,
         edges: inspection.edges,
         faces: inspection.faces,
-        genus: valid.then_some((2 - chi) / 2),
-        euler_characteristic: chi,
+        genus: inspection.genus(),
+        euler_characteristic: inspection.euler_characteristic(),
         components: inspection.components,
         closed: inspection.is_closed(),
         orientable: inspection.orientable,

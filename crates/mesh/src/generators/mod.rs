@@ -37,6 +37,7 @@ pub use simplify::simplify;
 pub use subdivide::subdivide_midpoint;
 pub use vertex_splits::random_vertex_splits;
 
+use crate::build::BuildReport;
 use crate::error::BuildError;
 use crate::geometry::Point3;
 use crate::topology::SurfaceMesh;
@@ -59,6 +60,19 @@ impl Surface {
         positions: Vec<Point3>,
         triangles: &[[u32; 3]],
     ) -> Result<Self, BuildError> {
+        Self::from_triangles_with_report(positions, triangles).map(|(surface, _)| surface)
+    }
+
+    /// [`Self::from_triangles`], also returning what building changed: vertex ids are the input
+    /// indices with unreferenced vertices dropped ([`BuildReport::vertex_old_to_new`]), face ids
+    /// the input face indices.
+    ///
+    /// # Errors
+    /// As [`Self::from_triangles`].
+    pub fn from_triangles_with_report(
+        positions: Vec<Point3>,
+        triangles: &[[u32; 3]],
+    ) -> Result<(Self, BuildReport), BuildError> {
         crate::geometry::check_finite(&positions)?;
         let (mesh, report) = crate::build(positions.len(), triangles)?;
         let positions = if report.dropped_vertices.is_empty() {
@@ -72,7 +86,7 @@ impl Surface {
             }
             kept
         };
-        Ok(Self { mesh, positions })
+        Ok((Self { mesh, positions }, report))
     }
 
     /// The triangles of the live faces (in face order) with vertices renumbered densely, and the

@@ -1,0 +1,140 @@
+//! The [`Scalar`] trait: what the plane geometry needs of a number type.
+
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use super::Point;
+
+/// An ordered field for plane geometry: `f64` (rounded constructions, exact-sign predicates) or
+/// [`super::Rational`] (exact). Operators take values; clone where a value is reused.
+pub trait Scalar:
+    Clone
+    + fmt::Debug
+    + fmt::Display
+    + PartialEq
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + Send
+    + Sync
+    + 'static
+{
+    /// Whether arithmetic is exact (`false` for `f64`).
+    const EXACT: bool;
+    /// `"f64"` or `"exact"`, as reports and the CLI's `--json` name the arithmetic.
+    const ARITHMETIC: &'static str;
+
+    /// 0.
+    fn zero() -> Self;
+    /// 1.
+    fn one() -> Self;
+    /// The integer `v` (exact for rationals; rounded beyond 2⁵³ for `f64`).
+    fn from_i64(v: i64) -> Self;
+    /// The exact value of a finite double; `None` for NaN and infinities.
+    fn from_f64(v: f64) -> Option<Self>;
+    /// The nearest double.
+    fn to_f64(&self) -> f64;
+    /// Whether the value is finite (always for exact types; not NaN or infinite for `f64`).
+    fn is_finite(&self) -> bool {
+        true
+    }
+    /// Whether the value is exactly zero.
+    fn is_zero(&self) -> bool;
+    /// The value halved (exact in both modes, barring `f64` underflow).
+    fn half(&self) -> Self;
+    /// The largest integer not above the value.
+    fn floor(&self) -> Self;
+
+    /// The sign of the value, compared with zero.
+    fn sign(&self) -> Ordering {
+        self.partial_cmp(&Self::zero()).unwrap_or(Ordering::Equal)
+    }
+
+    /// The absolute value.
+    fn abs(&self) -> Self {
+        if self.sign() == Ordering::Less {
+            -self.clone()
+        } else {
+            self.clone()
+        }
+    }
+
+    /// Whether two (squared) lengths are equal: exactly in exact mode; in `f64` up to the
+    /// relative tolerance `|a − b| ≤ tolerance · max(|a|, |b|)`.
+    fn lengths_match(a: &Self, b: &Self, tolerance: f64) -> bool;
+
+    /// The sign of the orientation determinant of `a, b, c` (see [`super::orient`]). The default
+    /// evaluates the determinant, which is exact for exact types.
+    fn orient2d(a: &Point<Self>, b: &Point<Self>, c: &Point<Self>) -> Ordering {
+        let ab = super::sub(b, a);
+        let ac = super::sub(c, a);
+        super::cross(&ab, &ac).sign()
+    }
+
+    /// The sign of the in-circle determinant (see [`super::incircle`]). The default evaluates the
+    /// lifted 3×3 determinant, which is exact for exact types.
+    fn incircle(a: &Point<Self>, b: &Point<Self>, c: &Point<Self>, d: &Point<Self>) -> Ordering {
+        let [ad, bd, cd] = [super::sub(a, d), super::sub(b, d), super::sub(c, d)];
+        let [la, lb, lc] = [super::norm2(&ad), super::norm2(&bd), super::norm2(&cd)];
+        let det =
+            la * super::cross(&bd, &cd) + lb * super::cross(&cd, &ad) + lc * super::cross(&ad, &bd);
+        det.sign()
+    }
+}
+
+impl Scalar for f64 {
+    const EXACT: bool = false;
+    const ARITHMETIC: &'static str = "f64";
+
+    fn zero() -> Self {
+        0.0
+    }
+    fn one() -> Self {
+        1.0
+    }
+    fn from_i64(v: i64) -> Self {
+        v as f64
+    }
+    fn from_f64(v: f64) -> Option<Self> {
+        v.is_finite().then_some(v)
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+    fn half(&self) -> Self {
+        self * 0.5
+    }
+    fn floor(&self) -> Self {
+        f64::floor(*self)
+    }
+    fn lengths_match(a: &Self, b: &Self, tolerance: f64) -> bool {
+        (a - b).abs() <= tolerance * a.abs().max(b.abs())
+    }
+
+    /// Shewchuk's adaptive orientation predicate: the exact sign for the given doubles.
+    fn orient2d(a: &Point<f64>, b: &Point<f64>, c: &Point<f64>) -> Ordering {
+        let det = robust::orient2d(coord(a), coord(b), coord(c));
+        det.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    }
+
+    /// Shewchuk's adaptive in-circle predicate: the exact sign for the given doubles.
+    fn incircle(a: &Point<f64>, b: &Point<f64>, c: &Point<f64>, d: &Point<f64>) -> Ordering {
+        let det = robust::incircle(coord(a), coord(b), coord(c), coord(d));
+        det.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    }
+}
+
+#[inline]
+fn coord(p: &Point<f64>) -> robust::Coord<f64> {
+    robust::Coord { x: p[0], y: p[1] }
+}

@@ -1,0 +1,486 @@
+//! Portalgon edits for Dubois' Sections 4.1–4.3 and Appendix B, beside the elementary ones of
+//! [`crate::portalgon`]:
+//! - [`Portalgon::split_side`]: INSERTVERTICES' step (Section 4.1), a new vertex on both copies
+//!   of a matched side;
+//! - [`Portalgon::vertex_info`]: the vertices of the surface with their degree, whether they are
+//!   interior, on a loop edge, and so *weak* or *strong* (Section 4.2);
+//! - [`Portalgon::components`]: the connected components of a sub-portalgon with their Euler
+//!   characteristic, boundary cycles and interior vertices (Section 4.3's tubes, Appendix B);
+//! - [`Portalgon::splice`]: replace a sub-portalgon by another with the same boundary, keeping
+//!   the ids of the boundary sides (DUBOIS.md §2.6: cap boundaries and separating loops survive
+//!   every replacement).
+//!
+//! The edits are exact in exact mode; tests check [`Portalgon::check_invariants`] and that the
+//! surface is unchanged (area, cone angles, boundary) after each one (`tests/portalgon_edits.rs`).
+
+use std::cmp::Ordering;
+use std::collections::{HashMap, HashSet};
+
+use crate::geometry::{Point, Scalar, add, midpoint, scale, sub};
+use crate::portalgon::{PolygonId, Portalgon, SideId};
+
+/// Why an edit was refused.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum EditError {
+    /// The side is removed or out of range.
+    #[error("side {0} does not exist")]
+    NoSuchSide(usize),
+    /// The polygon is removed, out of range or listed twice.
+    #[error("polygon {0} does not exist or is listed twice")]
+    NoSuchPolygon(usize),
+    /// The split parameter is not strictly between 0 and 1.
+    #[error("side {side}: split parameter {value} is not strictly between 0 and 1")]
+    SplitParameter {
+        /// The side.
+        side: usize,
+        /// The parameter, as a double.
+        value: f64,
+    },
+    /// The replacement's boundary does not match the replaced sub-portalgon's.
+    #[error("splice: {0}")]
+    Boundary(String),
+}
+
+/// The vertices of a portalgon's surface (Section 4.2), from [`Portalgon::vertex_info`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VertexInfo {
+    /// Per side id: the vertex of its start corner (`u32::MAX` for removed sides).
+    pub class: Vec<u32>,
+    /// Per vertex: the number of edge ends at it (a loop counts twice).
+    pub degree: Vec<u32>,
+    /// Per vertex: whether it lies in the interior of the surface (no unmatched side at it).
+    pub interior: Vec<bool>,
+    /// Per vertex: whether a loop edge (both ends at it) is incident to it.
+    pub on_loop: Vec<bool>,
+    /// Per vertex: one side starting at it (the lowest id).
+    pub side: Vec<SideId>,
+}
+
+impl VertexInfo {
+    /// The number of vertices.
+    pub fn count(&self) -> usize {
+        self.degree.len()
+    }
+    /// Section 4.2: *weak* when interior and on no loop edge; *strong* otherwise.
+    pub fn is_weak(&self, v: usize) -> bool {
+        self.interior[v] && !self.on_loop[v]
+    }
+}
+
+/// A connected component of a sub-portalgon, from [`Portalgon::components`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Component {
+    /// Its polygons, increasing ids.
+    pub polygons: Vec<PolygonId>,
+    /// Vertices, edges and faces of its tessellation.
+    pub vertices: usize,
+    /// Edges: pairs of sides matched inside the component, plus boundary sides.
+    pub edges: usize,
+    /// `vertices − edges + faces`.
+    pub euler_characteristic: i64,
+    /// The boundary cycles, each the boundary sides in order (the surface on their left), from
+    /// its lowest side id; cycles ordered by that id.
+    pub boundary_cycles: Vec<Vec<SideId>>,
+    /// One side starting at each interior vertex (its lowest id), increasing.
+    pub interior_vertices: Vec<SideId>,
+}
+
+impl Component {
+    /// Whether the component is a topological annulus with exactly one vertex on each boundary
+    /// component, each boundary component a single side (Section 3's tube, up to flatness and
+    /// triangularity, which the tube test checks).
+    pub fn is_annulus_with_single_side_boundaries(&self) -> bool {
+        self.euler_characteristic == 0
+            && self.boundary_cycles.len() == 2
+            && self.boundary_cycles.iter().all(|c| c.len() == 1)
+    }
+}
+
+/// Union–find with path halving, smaller root kept.
+struct Classes(Vec<u32>);
+
+impl Classes {
+    fn new(n: usize) -> Self {
+        Classes((0..n as u32).collect())
+    }
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.0[x as usize] != x {
+            let g = self.0[self.0[x as usize] as usize];
+            self.0[x as usize] = g;
+            x = g;
+        }
+        x
+    }
+    fn union(&mut self, a: u32, b: u32) {
+        let (a, b) = (self.find(a), self.find(b));
+        self.0[a.max(b) as usize] = a.min(b);
+    }
+}
+
+impl<S: Scalar> Portalgon<S> {
+    /// INSERTVERTICES' step (Section 4.1): a new vertex at parameter `λ ∈ (0, 1)` of side `s`
+    /// (the point `start + λ(end − start)`), on both copies when `s` is matched (at `1 − λ` of
+    /// its mate). `s` keeps its first half and its mate `t` its first half; the new sides are the
+    /// second halves, and the halves are cross-matched (`s`'s first half with `t`'s second).
+    /// `λ = ½` uses [`midpoint`], exact in both arithmetic modes. The new corners have no vertex
+    /// label. Returns the new side after `s` and, when matched, the new side after `t`. O(k).
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchSide`], [`EditError::SplitParameter`].
+    pub fn split_side(
+        &mut self,
+        s: SideId,
+        lambda: &S,
+    ) -> Result<(SideId, Option<SideId>), EditError> {
+        if !self.is_side_live(s) {
+            return Err(EditError::NoSuchSide(s.idx()));
+        }
+        let one = S::one();
+        if lambda.sign() != Ordering::Greater || *lambda >= one {
+            return Err(EditError::SplitParameter {
+                side: s.idx(),
+                value: lambda.to_f64(),
+            });
+        }
+        let half = one.half();
+        let point_at = |me: &Self, x: SideId, l: &S| -> Point<S> {
+            let (a, b) = (me.start_ref(x), me.end_ref(x));
+            if *l == half {
+                midpoint(a, b)
+            } else {
+                add(a, &scale(l, &sub(b, a)))
+            }
+        };
+        let mate = self.mate(s);
+        let x = point_at(self, s, lambda);
+        let y = mate.map(|t| point_at(self, t, &(S::one() - lambda.clone())));
+        let s2 = self.insert_side_after(s, x);
+        let Some(t) = mate else {
+            return Ok((s2, None));
+        };
+        let t2 = self.insert_side_after(t, y.expect("mate point"));
+        self.mate[s.idx()] = t2;
+        self.mate[t2.idx()] = s;
+        self.mate[s2.idx()] = t;
+        self.mate[t.idx()] = s2;
+        Ok((s2, Some(t2)))
+    }
+
+    /// A fresh unmatched side starting at `start`, inserted after `s` in its polygon.
+    fn insert_side_after(&mut self, s: SideId, start: Point<S>) -> SideId {
+        let p = self.owner(s);
+        let new = self.fresh_side(start, u32::MAX);
+        let mut sides = std::mem::take(&mut self.polygons[p.idx()]);
+        sides.insert(self.side_index(s) + 1, new);
+        self.set_polygon(p, sides);
+        self.live_sides += 1;
+        new
+    }
+
+    /// A new side id (not yet in a polygon, unmatched).
+    fn fresh_side(&mut self, start: Point<S>, label: u32) -> SideId {
+        let s = SideId(self.start.len() as u32);
+        self.start.push(start);
+        self.owner.push(PolygonId::INVALID);
+        self.mate.push(SideId::INVALID);
+        self.label.push(label);
+        self.slot.push(0);
+        self.next.push(SideId::INVALID);
+        s
+    }
+
+    /// Vertex classes of the surface of the polygons with `in_set[p]`: start corners identified
+    /// through sides matched inside the set. Returns the class per side id (`u32::MAX` outside)
+    /// and the count; classes are numbered by their lowest side id.
+    fn classes_within(&self, in_set: &[bool]) -> (Vec<u32>, usize) {
+        let n = self.side_slots();
+        let mut uf = Classes::new(n);
+        let inside = |s: SideId| in_set[self.owner(s).idx()];
+        for s in self.sides().filter(|&s| inside(s)) {
+            if let Some(t) = self.mate(s).filter(|&t| inside(t)) {
+                uf.union(s.0, self.next_side(t).0);
+            }
+        }
+        let mut class = vec![u32::MAX; n];
+        let mut root_class = vec![u32::MAX; n];
+        let mut count = 0u32;
+        for s in self.sides().filter(|&s| inside(s)) {
+            let r = uf.find(s.0) as usize;
+            if root_class[r] == u32::MAX {
+                root_class[r] = count;
+                count += 1;
+            }
+            class[s.idx()] = root_class[r];
+        }
+        (class, count as usize)
+    }
+
+    /// Section 4.2's vertex classification of the whole surface (boundary = unmatched sides):
+    /// degree, interior, on a loop edge, hence weak or strong ([`VertexInfo::is_weak`]). O(n α(n)).
+    pub fn vertex_info(&self) -> VertexInfo {
+        let in_set = vec![true; self.polygon_slots()];
+        let (class, count) = self.classes_within(&in_set);
+        let mut info = VertexInfo {
+            degree: vec![0; count],
+            interior: vec![true; count],
+            on_loop: vec![false; count],
+            side: vec![SideId::INVALID; count],
+            class,
+        };
+        for s in self.sides() {
+            let (v, w) = (
+                info.class[s.idx()] as usize,
+                info.class[self.next_side(s).idx()] as usize,
+            );
+            info.degree[v] += 1;
+            if !info.side[v].is_valid() {
+                info.side[v] = s;
+            }
+            if self.mate(s).is_none() {
+                info.degree[w] += 1;
+                info.interior[v] = false;
+                info.interior[w] = false;
+            }
+            if v == w {
+                info.on_loop[v] = true;
+            }
+        }
+        info
+    }
+
+    /// The connected components of the sub-portalgon of `polygons` (Section 2.1: sides matched
+    /// to polygons outside the set are boundary), each with its Euler characteristic, boundary
+    /// cycles and interior vertices, ordered by lowest polygon id. O(n α(n)).
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchPolygon`] for a removed or repeated polygon.
+    pub fn components(&self, polygons: &[PolygonId]) -> Result<Vec<Component>, EditError> {
+        let in_set = self.polygon_set(polygons)?;
+        let inside = |s: SideId| in_set[self.owner(s).idx()];
+        let internal = |s: SideId| self.mate(s).is_some_and(inside);
+        // Components of polygons through internal sides.
+        let mut uf = Classes::new(self.polygon_slots());
+        for &p in polygons {
+            for &s in self.polygon_sides(p) {
+                if let Some(t) = self.mate(s).filter(|&t| inside(t)) {
+                    uf.union(p.0, self.owner(t).0);
+                }
+            }
+        }
+        let (class, _) = self.classes_within(&in_set);
+        let mut sorted = polygons.to_vec();
+        sorted.sort();
+        let mut component_of_root: HashMap<u32, usize> = HashMap::new();
+        let mut out: Vec<Component> = Vec::new();
+        for &p in &sorted {
+            let r = uf.find(p.0);
+            let k = *component_of_root.entry(r).or_insert_with(|| {
+                out.push(Component {
+                    polygons: Vec::new(),
+                    vertices: 0,
+                    edges: 0,
+                    euler_characteristic: 0,
+                    boundary_cycles: Vec::new(),
+                    interior_vertices: Vec::new(),
+                });
+                out.len() - 1
+            });
+            out[k].polygons.push(p);
+        }
+        for c in &mut out {
+            let sides: Vec<SideId> = c
+                .polygons
+                .iter()
+                .flat_map(|&p| self.polygon_sides(p).iter().copied())
+                .collect();
+            let mut vertex_side: Vec<(u32, SideId)> =
+                sides.iter().map(|&s| (class[s.idx()], s)).collect();
+            vertex_side.sort();
+            vertex_side.dedup_by_key(|x| x.0);
+            let boundary: Vec<SideId> = sides.iter().copied().filter(|&s| !internal(s)).collect();
+            let on_boundary: HashSet<u32> = boundary.iter().map(|&s| class[s.idx()]).collect();
+            c.vertices = vertex_side.len();
+            c.edges = (sides.len() - boundary.len()) / 2 + boundary.len();
+            c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.polygons.len() as i64;
+            // Sorted by (vertex, side): each vertex's first entry is its lowest side.
+            let mut interior: Vec<SideId> = vertex_side
+                .iter()
+                .filter(|(v, _)| !on_boundary.contains(v))
+                .map(|&(_, s)| s)
+                .collect();
+            interior.sort();
+            c.interior_vertices = interior;
+            let mut sorted_boundary = boundary.clone();
+            sorted_boundary.sort();
+            let mut seen: HashSet<SideId> = HashSet::new();
+            for &b in &sorted_boundary {
+                if seen.contains(&b) {
+                    continue;
+                }
+                let mut cycle = vec![b];
+                let mut x = self.next_boundary_side(b, &internal);
+                while x != b {
+                    cycle.push(x);
+                    x = self.next_boundary_side(x, &internal);
+                }
+                seen.extend(&cycle);
+                c.boundary_cycles.push(cycle);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The boundary side after boundary side `b` along its boundary cycle: around the vertex at
+    /// the end of `b`, across internal sides until a boundary side leaves it.
+    fn next_boundary_side(&self, b: SideId, internal: &impl Fn(SideId) -> bool) -> SideId {
+        let mut x = self.next_side(b);
+        while internal(x) {
+            x = self.next_side(self.mate(x).expect("internal sides are matched"));
+        }
+        x
+    }
+
+    /// Per polygon slot: whether it is in `polygons` (all live, none twice).
+    fn polygon_set(&self, polygons: &[PolygonId]) -> Result<Vec<bool>, EditError> {
+        let mut in_set = vec![false; self.polygon_slots()];
+        for &p in polygons {
+            if !self.is_polygon_live(p) || std::mem::replace(&mut in_set[p.idx()], true) {
+                return Err(EditError::NoSuchPolygon(p.idx()));
+            }
+        }
+        Ok(in_set)
+    }
+
+    /// Replaces the sub-portalgon of `old` by the portalgon `new` (DUBOIS.md §2.6; Section 4.3's
+    /// "replace X by a good biface"), keeping the ids of the boundary sides. `boundary` pairs each
+    /// unmatched side of `new` with a boundary side of the sub-portalgon (a side of `old` not
+    /// matched inside it), one to one, with equal lengths (exactly in exact mode, up to the relative
+    /// `tolerance` on lengths in f64) and the same cyclic order along the boundary cycles. Each
+    /// boundary side id then lives on in the new polygon, with its mate outside and its vertex
+    /// label; the other sides of `old` and the polygons of `old` are removed (tombstones), the
+    /// polygons of `new` get fresh ids (returned, in `new`'s order) and its internal sides fresh
+    /// ids. The caller vouches for the geometry (the same surface); the combinatorics are checked.
+    /// O(size of old + new).
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchPolygon`], [`EditError::NoSuchSide`] (a side of `new` out of range),
+    /// [`EditError::Boundary`] saying which pair or side breaks the correspondence.
+    pub fn splice(
+        &mut self,
+        old: &[PolygonId],
+        new: &Portalgon<S>,
+        boundary: &[(SideId, SideId)],
+        tolerance: f64,
+    ) -> Result<Vec<PolygonId>, EditError> {
+        // Hash sets, not per-id arrays: a splice costs the size of `old` and `new`, not of `self`.
+        let mut in_set: HashSet<PolygonId> = HashSet::with_capacity(old.len());
+        for &p in old {
+            if !self.is_polygon_live(p) || !in_set.insert(p) {
+                return Err(EditError::NoSuchPolygon(p.idx()));
+            }
+        }
+        let inside = |me: &Self, s: SideId| me.is_side_live(s) && in_set.contains(&me.owner(s));
+        let internal_old = |s: SideId| self.mate(s).is_some_and(|t| inside(self, t));
+        let old_boundary: Vec<SideId> = old
+            .iter()
+            .flat_map(|&p| self.polygon_sides(p).iter().copied())
+            .filter(|&s| !internal_old(s))
+            .collect();
+        let new_boundary: Vec<SideId> = new.unmatched_sides().collect();
+        if boundary.len() != old_boundary.len() || boundary.len() != new_boundary.len() {
+            return Err(EditError::Boundary(format!(
+                "{} pairs for {} boundary sides replaced by {}",
+                boundary.len(),
+                old_boundary.len(),
+                new_boundary.len()
+            )));
+        }
+        let mut to_old = vec![SideId::INVALID; new.side_slots()];
+        let mut used: HashSet<SideId> = HashSet::with_capacity(boundary.len());
+        for &(n, o) in boundary {
+            if !new.is_side_live(n) {
+                return Err(EditError::NoSuchSide(n.idx()));
+            }
+            if new.mate(n).is_some() || to_old[n.idx()].is_valid() {
+                return Err(EditError::Boundary(format!(
+                    "side {} of the replacement is matched or paired twice",
+                    n.0
+                )));
+            }
+            if !inside(self, o) || internal_old(o) || !used.insert(o) {
+                return Err(EditError::Boundary(format!(
+                    "side {} is not a boundary side of the replaced polygons, or paired twice",
+                    o.0
+                )));
+            }
+            let (ln, lo) = (new.side_length2(n), self.side_length2(o));
+            if !S::lengths_match(&ln, &lo, tolerance * (2.0 - tolerance)) {
+                return Err(EditError::Boundary(format!(
+                    "side {} (length {}) paired with side {} (length {})",
+                    n.0,
+                    new.side_length(n),
+                    o.0,
+                    self.side_length(o)
+                )));
+            }
+            to_old[n.idx()] = o;
+        }
+        let internal_new = |s: SideId| new.mate(s).is_some();
+        for &(n, o) in boundary {
+            let (n2, o2) = (
+                new.next_boundary_side(n, &internal_new),
+                self.next_boundary_side(o, &internal_old),
+            );
+            if to_old[n2.idx()] != o2 {
+                return Err(EditError::Boundary(format!(
+                    "after side {} comes {} in the replacement, but after side {} comes {}",
+                    n.0, n2.0, o.0, o2.0
+                )));
+            }
+        }
+        // Remove the old polygons; their boundary sides wait for their new polygons.
+        for &p in old {
+            let sides = std::mem::take(&mut self.polygons[p.idx()]);
+            self.live_polygons -= 1;
+            self.live_sides -= sides.len();
+            for s in sides {
+                self.owner[s.idx()] = PolygonId::INVALID;
+                self.next[s.idx()] = SideId::INVALID;
+                if !used.contains(&s) {
+                    self.mate[s.idx()] = SideId::INVALID;
+                }
+            }
+        }
+        let mut image = vec![SideId::INVALID; new.side_slots()];
+        let mut created = Vec::new();
+        for q in new.polygons() {
+            let p = PolygonId(self.polygons.len() as u32);
+            self.polygons.push(Vec::new());
+            let sides: Vec<SideId> = new
+                .polygon_sides(q)
+                .iter()
+                .map(|&n| {
+                    let s = if to_old[n.idx()].is_valid() {
+                        let o = to_old[n.idx()];
+                        self.start[o.idx()] = new.start(n);
+                        o
+                    } else {
+                        self.fresh_side(new.start(n), new.label[n.idx()])
+                    };
+                    image[n.idx()] = s;
+                    s
+                })
+                .collect();
+            self.live_sides += sides.len();
+            self.live_polygons += 1;
+            self.set_polygon(p, sides);
+            created.push(p);
+        }
+        for n in new.sides() {
+            if let Some(m) = new.mate(n) {
+                self.mate[image[n.idx()].idx()] = image[m.idx()];
+            }
+        }
+        Ok(created)
+    }
+}

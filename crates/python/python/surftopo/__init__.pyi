@@ -1,0 +1,341 @@
+"""surftopo: triangulations of closed surfaces, numpy in, numpy and scipy.sparse out.
+
+Surfaces come as ``(V, F)``: float64 vertex positions of shape ``(n, 3)`` and integer triangles of
+shape ``(m, 3)`` (int32 or int64, C or Fortran order; other integer dtypes and nested lists are
+converted first). The surface must be closed, connected and orientable; faces are reoriented to a
+consistent orientation, unreferenced vertices are ignored (and get empty rows in matrices). Every
+vertex index returned is an index into ``V``. The GIL is released while the libraries compute.
+
+Invalid input raises a subclass of :class:`InvalidInputError` (a :class:`ValueError`) whose
+message is the one the ``surftopo`` CLI prints and whose attributes name the element
+(``face``, ``edge``, ``vertex``, ``polygon``, ``side``).
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Sequence, Tuple, Union, final
+
+import numpy as np
+import numpy.typing as npt
+import scipy.sparse
+
+from ._errors import (
+    FlipLimitError as FlipLimitError,
+    InternalError as InternalError,
+    InvalidGeometryError as InvalidGeometryError,
+    InvalidInputError as InvalidInputError,
+    InvalidMeshError as InvalidMeshError,
+    MeshFileError as MeshFileError,
+    NotSimplicialError as NotSimplicialError,
+    NumericalBreakdownError as NumericalBreakdownError,
+    PortalgonError as PortalgonError,
+    SurftopoError as SurftopoError,
+)
+
+__all__ = [
+    "FlipLimitError",
+    "InternalError",
+    "IntrinsicTriangulation",
+    "InvalidGeometryError",
+    "InvalidInputError",
+    "InvalidMeshError",
+    "MeshFileError",
+    "NotSimplicialError",
+    "NumericalBreakdownError",
+    "Portalgon",
+    "PortalgonError",
+    "SurftopoError",
+    "cavity_box",
+    "flat_torus",
+    "genus_surface",
+    "icosphere",
+    "info",
+    "intrinsic_delaunay",
+    "irreducible",
+    "isometric",
+    "laplacian",
+    "quadrangulate",
+    "read_mesh",
+    "tetrahedron",
+    "torus",
+    "write_mesh",
+]
+
+_Vertices = Union[npt.NDArray[np.float64], Sequence[Sequence[float]]]
+"""Vertex positions, ``(n, 3)``; float64 arrays are read in place when C-contiguous."""
+_Faces = Union[npt.NDArray[np.int32], npt.NDArray[np.int64], Sequence[Sequence[int]]]
+"""Vertex indices, ``(m, 3)`` triangles (``(m, k)`` polygons for :func:`write_mesh`)."""
+_Surface = Union[Tuple[_Vertices, _Faces], "Portalgon", "IntrinsicTriangulation"]
+"""A closed polyhedral surface: ``(V, F)``, a :class:`Portalgon` or an intrinsic triangulation."""
+
+def read_mesh(
+    path: Union[str, os.PathLike[str]], weld: bool = False
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """Read a mesh file: OBJ, OFF, PLY or STL, optionally gzipped (``.gz``).
+
+    Returns ``(V, F)``: float64 positions ``(n, 3)`` and int64 faces ``(m, k)``; every face must
+    have the same number ``k`` of sides (3 for triangles, 4 for quads). STL is always welded (its
+    triangles share no vertices); ``weld=True`` also merges exactly equal positions in the other
+    formats.
+
+    Raises :class:`MeshFileError` naming the file and line (or byte offset), or :class:`OSError`
+    (e.g. :class:`FileNotFoundError`).
+
+    >>> import os, tempfile
+    >>> path = os.path.join(tempfile.mkdtemp(), "sphere.obj")
+    >>> surftopo.write_mesh(path, *surftopo.icosphere(2))
+    >>> V, F = surftopo.read_mesh(path)
+    >>> V.shape, F.shape
+    ((162, 3), (320, 3))
+    """
+
+def write_mesh(path: Union[str, os.PathLike[str]], vertices: _Vertices, faces: _Faces) -> None:
+    """Write ``(V, F)`` to a mesh file, atomically (a failure leaves no half-written file).
+
+    The format follows the extension: ``.obj``, ``.off``, ``.ply`` (binary little-endian),
+    optionally ``.gz``. ``faces`` may be triangles ``(m, 3)``, quads ``(m, 4)`` (the ``Q`` of
+    :func:`quadrangulate`) or any polygons ``(m, k)``. Floats are written so that reading them
+    back gives the same bits.
+    """
+
+def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, Any]:
+    """Counts, topology and every problem found, valid surface or not.
+
+    The keys of ``surftopo info --json``: ``vertices``, ``edges``, ``faces``, ``genus`` (``None``
+    unless valid), ``euler_characteristic``, ``components``, ``closed``, ``orientable``,
+    ``simplicial``, ``valid``, ``boundary_edges``, ``non_manifold_edges``,
+    ``non_manifold_vertices``, ``reoriented_faces``, ``dropped_vertices``, ``welded_vertices``,
+    ``problem_count`` and ``problems`` (at most 100 messages, each naming the face, edge or
+    vertex). ``weld=True`` first merges vertices with exactly equal positions.
+
+    >>> V, F = surftopo.torus(24, 12)
+    >>> d = surftopo.info(V, F)
+    >>> d["genus"], d["valid"], d["faces"]
+    (1, True, 576)
+    >>> surftopo.info(V, F[1:])["problems"][0]
+    'boundary edge (0, 12) of face 22: the surface is not closed'
+    """
+
+def irreducible(
+    vertices: _Vertices, faces: _Faces, algorithm: str = "rs", seed: int = 1
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], dict[str, Any]]:
+    """An irreducible triangulation of the surface by topology-preserving edge contractions.
+
+    Every edge of the result fails the link condition, so none can be contracted without changing
+    the topology: the tetrahedron for genus 0, 7 to 10 vertices for the torus. ``algorithm`` is
+    ``"rs"`` (Ramaswami–Siqueira, O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by
+    ``seed``; the CLI's default seed is also 1).
+
+    Returns ``(V2, F2, stats)``: ``V2`` the surviving vertices with their positions, ``F2`` the
+    triangles as indices into ``V2``, and ``stats`` the keys of ``surftopo irreducible --json``
+    (``algorithm``, ``input`` and ``output`` counts, ``link_tests``,
+    ``edges_tested_more_than_once``, ``contractions``, ``seconds``, ``seed`` for brute force)
+    plus ``vertex_indices``: the index into ``V`` of each row of ``V2``.
+
+    >>> V, F = surftopo.torus(24, 12)
+    >>> V2, F2, stats = surftopo.irreducible(V, F)
+    >>> stats["output"]
+    {'vertices': 7, 'edges': 21, 'faces': 14, 'genus': 1}
+    >>> bool((V2 == V[stats["vertex_indices"]]).all())
+    True
+    """
+
+def quadrangulate(
+    vertices: _Vertices,
+    faces: _Faces,
+    algorithm: str = "ks",
+    objective: str = "count",
+    seed: int = 1,
+) -> tuple[npt.NDArray[np.int64], dict[str, Any]]:
+    """A quad mesh on the same vertices: a perfect pairing of the triangles.
+
+    Each quad is two adjacent triangles glued along their shared edge, counter-clockwise.
+    ``algorithm``: ``"ks"`` (Karp–Sipser with local repairs, the fastest), ``"sg"`` (simple
+    greedy) and ``"ps"`` (Pulli–Segal), both seeded by ``seed``, ``"lrs"`` (contraction and
+    expansion; its quads pair triangles of a flipped triangulation), ``"ds"`` (Diks–Stanczyk).
+    ``objective``: ``"count"`` (every triangle paired; the only objective so far).
+
+    Returns ``(Q, stats)``: ``Q`` an int64 ``(m/2, 4)`` array of indices into ``V``, and the keys
+    of ``surftopo quad --json``.
+
+    >>> V, F = surftopo.torus(24, 12)
+    >>> Q, stats = surftopo.quadrangulate(V, F)
+    >>> Q.shape, stats["paired_percent"]
+    ((288, 4), 100.0)
+    """
+
+def laplacian(
+    vertices: _Vertices,
+    faces: _Faces,
+    mollify: float | None = None,
+    max_flips: int | None = None,
+) -> tuple[scipy.sparse.csr_matrix, scipy.sparse.csr_matrix]:
+    """The cotan Laplacian ``L`` and the lumped mass matrix ``M`` of the intrinsic Delaunay
+    triangulation, as ``robust_laplacian.mesh_laplacian`` returns them.
+
+    Sign convention: ``L`` is **positive semidefinite** (positive diagonal, off-diagonal
+    ``-w_ij`` with ``w_ij >= 0``), symmetric, with rows summing to zero; libigl's ``cotmatrix``
+    is ``-L``. ``M`` is diagonal: a third of the incident triangle areas. Both are
+    ``len(V) x len(V)`` ``scipy.sparse.csr_matrix``. Degenerate input (a zero-length edge, a flat
+    triangle) raises :class:`InvalidGeometryError` unless ``mollify`` (epsilon relative to the
+    mean edge length) asks for intrinsic mollification; ``max_flips`` bounds the flips
+    (:class:`FlipLimitError`).
+
+    >>> V, F = surftopo.icosphere(2)
+    >>> L, M = surftopo.laplacian(V, F)
+    >>> L.shape, bool(abs(L.sum(axis=1)).max() < 1e-12)
+    ((162, 162), True)
+    >>> round(float(M.sum()), 4)  # the area of the polyhedron
+    12.3291
+    """
+
+def intrinsic_delaunay(
+    vertices: Union[_Vertices, Portalgon, IntrinsicTriangulation],
+    faces: _Faces | None = None,
+    method: str = "flip",
+    mollify: float | None = None,
+    max_flips: int | None = None,
+) -> IntrinsicTriangulation:
+    """The intrinsic Delaunay triangulation of a closed polyhedral surface.
+
+    The surface is ``(V, F)``, or a triangular :class:`Portalgon` (``faces`` omitted).
+    ``method``: ``"flip"`` (Bobenko–Springborn edge flipping with robust half-angle formulas;
+    loops and multi-edges may appear). ``mollify`` and ``max_flips`` as in :func:`laplacian`.
+
+    >>> t = surftopo.intrinsic_delaunay(surftopo.flat_torus(10.0))
+    >>> t.flips  # Section 9 of the paper: T_x needs x - 1 flips
+    9
+    >>> t.tessellation()
+    Portalgon(1 polygons, 4 sides)
+    """
+
+def isometric(a: _Surface, b: _Surface, allow_reflection: bool = True) -> bool:
+    """Whether two closed polyhedral surfaces are isometric.
+
+    Compares their canonical Delaunay tessellations (Corollary 2 of the intrinsic-Delaunay paper;
+    flat vertices removed first). Mirror images count as isometric unless
+    ``allow_reflection=False``. Each surface is ``(V, F)``, a :class:`Portalgon` or an
+    :class:`IntrinsicTriangulation`.
+
+    >>> V, F = surftopo.torus(12, 6)
+    >>> surftopo.isometric((V, F), (V + 1.0, F)), surftopo.isometric((V, F), (2 * V, F))
+    (True, False)
+    """
+
+@final
+class IntrinsicTriangulation:
+    """An intrinsic Delaunay triangulation (made by :func:`intrinsic_delaunay`).
+
+    Vertex indices are those of the input ``V`` (the dense vertex order for a portalgon). Loops
+    (an edge from a vertex to itself) and multi-edges are allowed.
+
+    >>> t = surftopo.intrinsic_delaunay(*surftopo.icosphere(1))
+    >>> t.faces.shape, t.edges.shape, t.edge_lengths.shape
+    ((80, 3), (120, 2), (120,))
+    """
+
+    def laplacian(self) -> scipy.sparse.csr_matrix:
+        """The cotan Laplacian, positive semidefinite (see :func:`laplacian`)."""
+    def mass(self) -> scipy.sparse.csr_matrix:
+        """The lumped (barycentric) mass matrix, diagonal."""
+    def tessellation(self, cocircular_tolerance: float | None = None) -> Portalgon:
+        """The Delaunay tessellation: co-circular triangles merged into polygons (unique).
+
+        Two triangles are co-circular when ``|tan(γ/2) tan(δ/2) - 1|`` is at most
+        ``cocircular_tolerance`` (``None``: the library's default, 1e-9).
+        """
+    def to_json(self) -> str:
+        """Portalgon JSON, triangles by side lengths: what ``surftopo delaunay -o`` writes."""
+    def to_portalgon(self) -> Portalgon:
+        """The triangulation as a :class:`Portalgon`."""
+    @property
+    def faces(self) -> npt.NDArray[np.int64]:
+        """``(m, 3)`` vertex indices; side ``i`` runs from corner ``i`` to corner ``i + 1``."""
+    @property
+    def edges(self) -> npt.NDArray[np.int64]:
+        """``(E, 2)`` vertex indices of each edge (both equal for a loop)."""
+    @property
+    def face_edges(self) -> npt.NDArray[np.int64]:
+        """``(m, 3)``: side ``i`` of face ``f`` is edge ``face_edges[f, i]``."""
+    @property
+    def edge_lengths(self) -> npt.NDArray[np.float64]:
+        """``(E,)`` intrinsic length of each edge, in the order of :attr:`edges`."""
+    @property
+    def flips(self) -> int:
+        """The number of flips made."""
+    @property
+    def stats(self) -> dict[str, Any]:
+        """The keys of ``surftopo delaunay --json``: ``vertices``, ``edges``, ``faces``,
+        ``flips``, ``non_delaunay_edges``, ``seconds``, ``mollify_delta``, ``loops``,
+        ``multi_edges``."""
+    @property
+    def vertex_count(self) -> int:
+        """Rows of the matrices: ``len(V)``, or the portalgon's vertex count."""
+
+@final
+class Portalgon:
+    """A closed polyhedral surface as flat polygons glued along their sides.
+
+    The JSON format is ``crates/intrinsic/PORTALGON_FORMAT.md`` of the repository (what
+    ``surftopo generate flat-torus`` and ``surftopo delaunay`` write).
+
+    >>> p = surftopo.flat_torus(3.0)
+    >>> q = surftopo.Portalgon.from_json(p.to_json())
+    >>> q.polygon_count, q.matched_pairs, round(q.area, 12)
+    (2, 3, 2.0)
+    """
+
+    @staticmethod
+    def from_json(text: str) -> Portalgon:
+        """Parse and validate a portalgon JSON text (:class:`PortalgonError` otherwise)."""
+    def to_json(self) -> str:
+        """The JSON text (compact)."""
+    @property
+    def polygon_count(self) -> int:
+        """Number of polygons."""
+    @property
+    def side_count(self) -> int:
+        """Number of polygon sides."""
+    @property
+    def matched_pairs(self) -> int:
+        """Number of glued side pairs."""
+    @property
+    def area(self) -> float:
+        """Total area."""
+
+def tetrahedron() -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The boundary of a tetrahedron (4 vertices, genus 0), as ``(V, F)``."""
+
+def icosphere(subdivisions: int = 3) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """An icosahedron refined ``subdivisions`` times by 1-to-4 splits (``20 * 4**s``
+    triangles), on the unit sphere.
+
+    >>> V, F = surftopo.icosphere(2)
+    >>> V.shape, F.shape
+    ((162, 3), (320, 3))
+    """
+
+def torus(m: int = 24, n: int = 12) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A torus of revolution as an ``m x n`` grid (``2 m n`` triangles, genus 1), ``m, n >= 3``."""
+
+def genus_surface(
+    genus: int = 2, size: int = 2
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A closed surface of genus ``genus``: a slab with square through-holes; ``size`` scales
+    the resolution.
+
+    >>> V, F = surftopo.genus_surface(3, 1)
+    >>> surftopo.info(V, F)["genus"]
+    3
+    """
+
+def cavity_box(
+    cavities: int = 3844, holes: int = 0, triangles: int = 100000
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The papers' brick with ``cavities`` square cavities and ``holes`` through-holes (genus
+    ``holes``), refined to about ``triangles`` triangles."""
+
+def flat_torus(x: float, m: int = 1) -> Portalgon:
+    """The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two
+    triangles (0,0), (1,0), (x,2); refined ``m x m`` when ``m > 1``."""

@@ -1,0 +1,244 @@
+//! numpy arrays in and out.
+//!
+//! Vertices: a float64 `(n, 3)` array is read in place when it is C-contiguous (the libraries take
+//! `&[[f64; 3]]`), gathered once otherwise (Fortran order, strided views); anything else goes
+//! through `numpy.asarray(x, dtype=float64)` first. Faces: int32 or int64 `(m, k)` arrays of any
+//! layout, read once into the `u32` indices the libraries take, checking the range on the way;
+//! other integer dtypes and nested lists go through `numpy.asarray` first. Results are handed to
+//! numpy without a copy (the array owns the `Vec`).
+
+use crate::errors::{Failure, invalid};
+use numpy::ndarray::{Array1, Array2};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use std::borrow::Cow;
+
+/// Converts `x` with `numpy.asarray(x, **kwargs)`.
+fn asarray<'py>(x: &Bound<'py, PyAny>, dtype: Option<&str>) -> PyResult<Bound<'py, PyAny>> {
+    let numpy = x.py().import("numpy")?;
+    match dtype {
+        Some(d) => numpy.call_method1("asarray", (x, d)),
+        None => numpy.call_method1("asarray", (x,)),
+    }
+}
+
+/// A float64 `(n, 3)` array of vertex positions, held for reading.
+pub struct VertexArray<'py>(PyReadonlyArray2<'py, f64>);
+
+impl<'py> VertexArray<'py> {
+    /// Takes `x` as float64 positions of shape `(n, 3)`.
+    pub fn extract(x: &Bound<'py, PyAny>) -> PyResult<Self> {
+        let array: PyReadonlyArray2<'py, f64> = match x.extract() {
+            Ok(a) => a,
+            Err(_) => asarray(x, Some("float64"))?.extract().map_err(|_| {
+                PyTypeError::new_err("vertices: expected a float array of shape (n, 3)")
+            })?,
+        };
+        let shape = array.shape();
+        if shape[1] != 3 {
+            return Err(invalid(format!(
+                "vertices: expected shape (n, 3), got ({}, {})",
+                shape[0], shape[1]
+            ))
+            .into());
+        }
+        Ok(Self(array))
+    }
+
+    /// The positions: the array's memory when C-contiguous, a copy otherwise.
+    pub fn positions(&self) -> Cow<'_, [[f64; 3]]> {
+        if self.0.is_c_contiguous()
+            && let Ok(flat) = self.0.as_slice()
+        {
+            return Cow::Borrowed(flat.as_chunks::<3>().0);
+        }
+        let view = self.0.as_array();
+        Cow::Owned(
+            view.rows()
+                .into_iter()
+                .map(|r| [r[0], r[1], r[2]])
+                .collect(),
+        )
+    }
+
+    /// Number of vertices.
+    pub fn len(&self) -> usize {
+        self.0.shape()[0]
+    }
+}
+
+/// An int32 or int64 `(m, k)` array of vertex indices, held for reading.
+#[derive(FromPyObject)]
+enum IndexArray<'py> {
+    I32(PyReadonlyArray2<'py, i32>),
+    I64(PyReadonlyArray2<'py, i64>),
+}
+
+/// Checks `0 <= value < vertex_count` for the index of face `face`.
+#[inline]
+fn checked(value: i64, face: usize, vertex_count: usize) -> Result<u32, Failure> {
+    if (0..vertex_count as i64).contains(&value) {
+        Ok(value as u32)
+    } else {
+        Err(Failure::Index {
+            face,
+            value,
+            vertex_count,
+        })
+    }
+}
+
+/// One row of indices as `[u32; K]`, checked against `vertex_count`.
+#[inline]
+fn row<T: Into<i64>, const K: usize>(
+    face: usize,
+    values: impl Iterator<Item = T>,
+    vertex_count: usize,
+) -> Result<[u32; K], Failure> {
+    let mut out = [0u32; K];
+    for (slot, value) in out.iter_mut().zip(values) {
+        *slot = checked(value.into(), face, vertex_count)?;
+    }
+    Ok(out)
+}
+
+/// The rows of a `(m, K)` index array as `[u32; K]`, checked against `vertex_count`; a
+/// C-contiguous array is read as one flat slice.
+fn read_rows<T: numpy::Element + Copy + Into<i64>, const K: usize>(
+    array: &PyReadonlyArray2<'_, T>,
+    vertex_count: usize,
+) -> Result<Vec<[u32; K]>, Failure> {
+    if array.is_c_contiguous()
+        && let Ok(flat) = array.as_slice()
+    {
+        // The range by a minimum and maximum (branch-free, vectorised), then a plain conversion;
+        // the checked conversion below finds the offending face otherwise.
+        let (low, high) = flat.iter().fold((i64::MAX, i64::MIN), |(low, high), &v| {
+            let v: i64 = v.into();
+            (low.min(v), high.max(v))
+        });
+        if flat.is_empty() || (low >= 0 && high < vertex_count as i64) {
+            let rows = flat.as_chunks::<K>().0;
+            return Ok(rows
+                .iter()
+                .map(|r| r.map(|v| Into::<i64>::into(v) as u32))
+                .collect());
+        }
+    }
+    array
+        .as_array()
+        .rows()
+        .into_iter()
+        .enumerate()
+        .map(|(face, r)| row(face, r.iter().copied(), vertex_count))
+        .collect()
+}
+
+/// Takes `x` as an int32 or int64 array (other integer dtypes and lists through
+/// `numpy.asarray(x).astype(int64)`), returning it and its shape `(m, k)`.
+fn extract_indices<'py>(x: &Bound<'py, PyAny>) -> PyResult<(IndexArray<'py>, [usize; 2])> {
+    let array: IndexArray<'py> = match x.extract() {
+        Ok(a) => a,
+        Err(_) => {
+            let a = asarray(x, None)?;
+            let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+            if kind != "i" && kind != "u" {
+                return Err(PyTypeError::new_err(format!(
+                    "faces: expected an integer array, got dtype {}",
+                    a.getattr("dtype")?.str()?
+                )));
+            }
+            a.call_method1("astype", ("int64",))?.extract()?
+        }
+    };
+    let shape = match &array {
+        IndexArray::I32(a) => a.shape(),
+        IndexArray::I64(a) => a.shape(),
+    };
+    let shape = [shape[0], shape[1]];
+    Ok((array, shape))
+}
+
+/// The `InvalidInputError` of a faces array of the wrong shape.
+fn wrong_shape(expected: &str, shape: [usize; 2]) -> PyErr {
+    invalid(format!(
+        "faces: expected shape {expected}, got ({}, {})",
+        shape[0], shape[1]
+    ))
+    .into()
+}
+
+/// Takes `x` as faces with `K` sides `(m, K)` into `vertex_count` vertices.
+pub fn faces<const K: usize>(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Vec<[u32; K]>> {
+    let (array, shape) = extract_indices(x)?;
+    if shape[1] != K {
+        return Err(wrong_shape(&format!("(m, {K})"), shape));
+    }
+    Ok(match &array {
+        IndexArray::I32(a) => read_rows::<i32, K>(a, vertex_count),
+        IndexArray::I64(a) => read_rows::<i64, K>(a, vertex_count),
+    }?)
+}
+
+/// Takes `x` as polygons `(m, k)`, `k >= 3`, into `vertex_count` vertices: the row-major
+/// indices and `k`.
+pub fn polygons(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<(Vec<u32>, usize)> {
+    let (array, shape) = extract_indices(x)?;
+    if shape[1] < 3 {
+        return Err(wrong_shape("(m, k) with k >= 3", shape));
+    }
+    let k = shape[1];
+    let check = |(i, value): (usize, i64)| checked(value, i / k, vertex_count);
+    let indices: Result<Vec<u32>, Failure> = match &array {
+        IndexArray::I32(a) => a
+            .as_array()
+            .iter()
+            .map(|&v| i64::from(v))
+            .enumerate()
+            .map(check)
+            .collect(),
+        IndexArray::I64(a) => a
+            .as_array()
+            .iter()
+            .copied()
+            .enumerate()
+            .map(check)
+            .collect(),
+    };
+    Ok((indices?, k))
+}
+
+/// A `(rows, k)` array owning `flat` (row-major).
+pub fn matrix<'py, T: numpy::Element>(
+    py: Python<'py>,
+    flat: Vec<T>,
+    k: usize,
+) -> Bound<'py, PyArray2<T>> {
+    let rows = flat.len().checked_div(k).unwrap_or(0);
+    Array2::from_shape_vec((rows, k), flat)
+        .expect("the length is a multiple of k")
+        .into_pyarray(py)
+}
+
+/// Vertex positions as a float64 `(n, 3)` array.
+pub fn positions_array<'py>(py: Python<'py>, positions: &[[f64; 3]]) -> Bound<'py, PyArray2<f64>> {
+    matrix(py, positions.as_flattened().to_vec(), 3)
+}
+
+/// Index rows (faces, quads, edges) as an int64 `(m, k)` array.
+pub fn index_array<'py, const K: usize>(
+    py: Python<'py>,
+    rows: &[[u32; K]],
+) -> Bound<'py, PyArray2<i64>> {
+    matrix(
+        py,
+        rows.as_flattened().iter().map(|&i| i64::from(i)).collect(),
+        K,
+    )
+}
+
+/// A vector as a 1-D array.
+pub fn vector<'py, T: numpy::Element>(py: Python<'py>, values: Vec<T>) -> Bound<'py, PyArray1<T>> {
+    Array1::from_vec(values).into_pyarray(py)
+}

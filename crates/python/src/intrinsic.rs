@@ -1,0 +1,515 @@
+//! Intrinsic Delaunay triangulations, their Laplacian and mass matrices as `scipy.sparse`
+//! matrices, portalgons, and the isometry test.
+//!
+//! Matrix rows and columns are the input's vertex indices: `len(V)` rows for a mesh (an
+//! unreferenced vertex gets an empty row and column), the dense vertex order for a portalgon.
+
+use crate::arrays::{self, VertexArray, index_array, vector};
+use crate::errors::{Failure, invalid};
+use crate::surface::{choose, input_index, json_to_python};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use std::time::Instant;
+use surftopo_intrinsic::{
+    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, DelaunayStats,
+    IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle,
+    cotan_laplacian, delaunay_tessellation, delaunay_with_stats, intrinsic_delaunay_laplacian,
+    lumped_mass,
+};
+
+/// The ways to compute an intrinsic Delaunay triangulation (`method=`).
+#[derive(Clone, Copy, Debug)]
+enum Method {
+    /// Bobenko–Springborn edge flipping (`surftopo_intrinsic::flip_to_delaunay`).
+    Flip,
+}
+
+/// The `method=` names.
+const METHODS: &[(&str, Method)] = &[("flip", Method::Flip)];
+
+/// An intrinsic triangulation and where its vertices go in the output matrices.
+struct Located {
+    tri: IntrinsicTriangulation,
+    /// Output row of each vertex id (`u32::MAX` for a removed id).
+    row_of: Vec<u32>,
+    /// Number of output rows.
+    rows: usize,
+}
+
+impl Located {
+    /// The intrinsic triangulation of a mesh in space; rows are the input vertex indices.
+    fn from_arrays(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
+        let (tri, report) =
+            IntrinsicTriangulation::from_soup(positions, triangles).map_err(|e| match e {
+                surftopo_intrinsic::SoupError::Build(b) => Failure::Build(b),
+                surftopo_intrinsic::SoupError::Geometry(g) => Failure::Geometry(g),
+            })?;
+        let mut row_of = input_index(&report);
+        row_of.resize(tri.mesh().vertex_slots(), u32::MAX);
+        Ok(Self {
+            tri,
+            row_of,
+            rows: positions.len(),
+        })
+    }
+
+    /// A triangulation without input vertices (a portalgon): rows in vertex id order.
+    fn dense(tri: IntrinsicTriangulation) -> Self {
+        let (row_of, rows) = (tri.matrix_rows(), tri.mesh().vertex_count());
+        Self { tri, row_of, rows }
+    }
+
+    /// Output row of each dense matrix index (the live vertices in id order).
+    fn dense_rows(&self) -> Vec<u32> {
+        self.tri
+            .mesh()
+            .vertices()
+            .map(|v| self.row_of[v.idx()])
+            .collect()
+    }
+}
+
+/// The arrays of a `scipy.sparse.csr_matrix`: index arrays int32 when they fit (as scipy makes
+/// them), else int64.
+enum CsrIndices {
+    /// `indices`, `indptr` as int32.
+    Narrow(Vec<i32>, Vec<i32>),
+    /// `indices`, `indptr` as int64.
+    Wide(Vec<i64>, Vec<i64>),
+}
+
+/// A square CSR matrix ready for scipy (built without the GIL).
+struct Csr {
+    rows: usize,
+    data: Vec<f64>,
+    indices: CsrIndices,
+}
+
+impl Csr {
+    /// `m` with its dense rows and columns moved to `rows_of_dense` (increasing, so rows stay
+    /// sorted) in a `rows x rows` matrix.
+    fn new(m: SparseMatrix, rows_of_dense: &[u32], rows: usize) -> Self {
+        let mut indptr = vec![0usize; rows + 1];
+        for (k, &r) in rows_of_dense.iter().enumerate() {
+            indptr[r as usize + 1] = m.row_start[k + 1] - m.row_start[k];
+        }
+        for i in 0..rows {
+            indptr[i + 1] += indptr[i];
+        }
+        let identity = rows == m.n;
+        let indices = if rows <= i32::MAX as usize && indptr[rows] <= i32::MAX as usize {
+            let cols = if identity {
+                m.cols.iter().map(|&c| c as i32).collect()
+            } else {
+                m.cols
+                    .iter()
+                    .map(|&c| rows_of_dense[c as usize] as i32)
+                    .collect()
+            };
+            CsrIndices::Narrow(cols, indptr.iter().map(|&p| p as i32).collect())
+        } else {
+            let cols = m.cols.iter().map(|&c| i64::from(rows_of_dense[c as usize]));
+            CsrIndices::Wide(cols.collect(), indptr.iter().map(|&p| p as i64).collect())
+        };
+        Self {
+            rows,
+            data: m.values,
+            indices,
+        }
+    }
+
+    /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
+    fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+        let data = vector(py, self.data);
+        let (indices, indptr) = match self.indices {
+            CsrIndices::Narrow(i, p) => (vector(py, i).into_any(), vector(py, p).into_any()),
+            CsrIndices::Wide(i, p) => (vector(py, i).into_any(), vector(py, p).into_any()),
+        };
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("shape", (self.rows, self.rows))?;
+        py.import("scipy.sparse")?
+            .getattr("csr_matrix")?
+            .call(((data, indices, indptr),), Some(&kwargs))
+    }
+}
+
+/// Delaunay options from the Python arguments.
+fn options(mollify: Option<f64>, max_flips: Option<u64>) -> DelaunayOptions {
+    DelaunayOptions {
+        max_flips,
+        mollify,
+        ..DelaunayOptions::default()
+    }
+}
+
+/// A closed polyhedral surface given by flat polygons glued along their sides (a portalgon,
+/// `crates/intrinsic/PORTALGON_FORMAT.md`): its JSON document.
+#[pyclass(frozen, module = "surftopo", name = "Portalgon")]
+pub struct Portalgon {
+    doc: PortalgonDoc,
+}
+
+#[pymethods]
+impl Portalgon {
+    /// Parses and validates a portalgon JSON text.
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
+        let doc = PortalgonDoc::from_json(text)
+            .and_then(|doc| doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map(|_| doc))
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+        Ok(Self { doc })
+    }
+
+    /// The JSON text (compact, one line).
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        self.doc
+            .to_json()
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    /// Number of polygons.
+    #[getter]
+    fn polygon_count(&self) -> usize {
+        self.doc.polygons.len()
+    }
+
+    /// Number of polygon sides (twice the number of glued pairs on a closed surface).
+    #[getter]
+    fn side_count(&self) -> usize {
+        self.doc
+            .polygons
+            .iter()
+            .map(|p| match (&p.corners, &p.lengths) {
+                (Some(c), _) => c.len(),
+                (None, Some(l)) => l.len(),
+                (None, None) => 0,
+            })
+            .sum()
+    }
+
+    /// Number of glued side pairs.
+    #[getter]
+    fn matched_pairs(&self) -> usize {
+        self.doc.matching.len()
+    }
+
+    /// Total area.
+    #[getter]
+    fn area(&self, py: Python<'_>) -> PyResult<f64> {
+        self.doc
+            .to_portalgon(DEFAULT_LENGTH_TOLERANCE)
+            .map(|p| p.area())
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Portalgon({} polygons, {} sides)",
+            self.polygon_count(),
+            self.side_count()
+        )
+    }
+}
+
+impl Portalgon {
+    /// The intrinsic triangulation of a triangular portalgon.
+    fn triangulation(&self) -> Result<IntrinsicTriangulation, Failure> {
+        self.doc
+            .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
+            .map_err(Failure::Portalgon)
+    }
+}
+
+/// An intrinsic Delaunay triangulation: its topology, edge lengths and the matrices.
+#[pyclass(frozen, module = "surftopo", name = "IntrinsicTriangulation")]
+pub struct Intrinsic {
+    located: Located,
+    stats: DelaunayStats,
+}
+
+#[pymethods]
+impl Intrinsic {
+    /// The cotan Laplacian (positive semidefinite), `scipy.sparse.csr_matrix`.
+    fn laplacian<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let located = &self.located;
+        let m = py.detach(|| {
+            Csr::new(
+                cotan_laplacian(&located.tri),
+                &located.dense_rows(),
+                located.rows,
+            )
+        });
+        m.into_scipy(py)
+    }
+
+    /// The lumped (barycentric) mass matrix, diagonal, `scipy.sparse.csr_matrix`.
+    fn mass<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let located = &self.located;
+        Csr::new(
+            lumped_mass(&located.tri),
+            &located.dense_rows(),
+            located.rows,
+        )
+        .into_scipy(py)
+    }
+
+    /// The Delaunay tessellation (co-circular triangles merged) as a [`Portalgon`];
+    /// `cocircular_tolerance` `None` is the library's default.
+    #[pyo3(signature = (cocircular_tolerance = None))]
+    fn tessellation(&self, py: Python<'_>, cocircular_tolerance: Option<f64>) -> Portalgon {
+        let tolerance = cocircular_tolerance.unwrap_or(DEFAULT_COCIRCULAR_TOLERANCE);
+        let doc = py.detach(|| {
+            let t = delaunay_tessellation(&self.located.tri, tolerance);
+            PortalgonDoc::from_portalgon(&t.portalgon)
+        });
+        Portalgon { doc }
+    }
+
+    /// The triangulation as portalgon JSON (triangles by their side lengths), as
+    /// `surftopo delaunay -o OUT.json` writes it.
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths)
+            .to_json()
+            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+    }
+
+    /// The triangulation as a [`Portalgon`].
+    fn to_portalgon(&self) -> Portalgon {
+        Portalgon {
+            doc: PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths),
+        }
+    }
+
+    /// The faces `(m, 3)` as output vertex indices, corner `i` to corner `i + 1` being side `i`.
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        self.vertex_rows(py, mesh.faces().map(|f| mesh.face_vertices(f)))
+    }
+
+    /// The edges `(E, 2)` as output vertex indices (a loop has both ends equal).
+    #[getter]
+    fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        self.vertex_rows(py, mesh.edges().map(|e| mesh.edge_vertices(e)))
+    }
+
+    /// The edge of each face side `(m, 3)`: side `i` of face `f` is edge `face_edges[f, i]`.
+    #[getter]
+    fn face_edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let mesh = self.located.tri.mesh();
+        let (_, dense_edge) = edge_ranks(&self.located.tri);
+        let rows: Vec<[u32; 3]> = mesh
+            .faces()
+            .map(|f| mesh.face_halfedges(f).map(|h| dense_edge[h.edge().idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
+    }
+
+    /// The intrinsic length of each edge `(E,)`, in the order of `edges`.
+    #[getter]
+    fn edge_lengths<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let (live, _) = edge_ranks(&self.located.tri);
+        let lengths = self.located.tri.lengths();
+        vector(py, live.iter().map(|&e| lengths[e]).collect::<Vec<f64>>()).into_any()
+    }
+
+    /// The number of flips made.
+    #[getter]
+    fn flips(&self) -> u64 {
+        self.stats.flips
+    }
+
+    /// The figures `surftopo delaunay --json` prints.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = serde_json::to_string(&self.stats)
+            .map_err(|e| invalid(e.to_string()).into_pyerr(py))?;
+        json_to_python(py, &text)
+    }
+
+    /// Number of rows of the matrices (input vertices, or the portalgon's vertices).
+    #[getter]
+    fn vertex_count(&self) -> usize {
+        self.located.rows
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "IntrinsicTriangulation({} vertices, {} edges, {} faces, {} flips)",
+            self.stats.vertices, self.stats.edges, self.stats.faces, self.stats.flips
+        )
+    }
+}
+
+impl Intrinsic {
+    /// Rows of vertex ids as an int64 array of output vertex indices.
+    fn vertex_rows<'py, const K: usize>(
+        &self,
+        py: Python<'py>,
+        rows: impl Iterator<Item = [surftopo_mesh::VertexId; K]>,
+    ) -> Bound<'py, PyAny> {
+        let rows: Vec<[u32; K]> = rows
+            .map(|r| r.map(|v| self.located.row_of[v.idx()]))
+            .collect();
+        index_array(py, &rows).into_any()
+    }
+}
+
+/// The live edge ids in order, and the rank of each edge id among them.
+fn edge_ranks(tri: &IntrinsicTriangulation) -> (Vec<usize>, Vec<u32>) {
+    let mesh = tri.mesh();
+    let live: Vec<usize> = mesh.edges().map(|e| e.idx()).collect();
+    let mut rank = vec![u32::MAX; mesh.edge_slots()];
+    for (k, &e) in live.iter().enumerate() {
+        rank[e] = k as u32;
+    }
+    (live, rank)
+}
+
+/// A surface argument: `(V, F)` arrays, or a portalgon, or an intrinsic triangulation.
+fn located_surface(
+    py: Python<'_>,
+    surface: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Located> {
+    if let Some(faces) = faces {
+        let vertices = VertexArray::extract(surface)?;
+        let triangles = arrays::faces::<3>(faces, vertices.len())?;
+        let positions = vertices.positions();
+        return py
+            .detach(|| Located::from_arrays(&positions, &triangles))
+            .map_err(|f| f.into_pyerr(py));
+    }
+    if let Ok(p) = surface.cast::<Portalgon>() {
+        let tri = p.get().triangulation().map_err(|f| f.into_pyerr(py))?;
+        return Ok(Located::dense(tri));
+    }
+    if let Ok(t) = surface.cast::<Intrinsic>() {
+        let t = t.get();
+        return Ok(Located {
+            tri: t.located.tri.clone(),
+            row_of: t.located.row_of.clone(),
+            rows: t.located.rows,
+        });
+    }
+    if let Ok(pair) = surface.cast::<PyTuple>()
+        && pair.len() == 2
+    {
+        return located_surface(py, &pair.get_item(0)?, Some(&pair.get_item(1)?));
+    }
+    Err(
+        invalid("a surface is (V, F) arrays, a Portalgon or an IntrinsicTriangulation")
+            .into_pyerr(py),
+    )
+}
+
+/// The intrinsic Delaunay triangulation of a closed polyhedral surface.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces = None, method = "flip", mollify = None, max_flips = None))]
+pub fn intrinsic_delaunay(
+    py: Python<'_>,
+    vertices: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+    method: &str,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<Intrinsic> {
+    let method = choose("method", method, METHODS).map_err(|f| f.into_pyerr(py))?;
+    let mut located = located_surface(py, vertices, faces)?;
+    let options = options(mollify, max_flips);
+    let stats = py
+        .detach(|| match method {
+            Method::Flip => delaunay_with_stats(&mut located.tri, &options),
+        })
+        .map_err(|e| Failure::Delaunay(e).into_pyerr(py))?;
+    Ok(Intrinsic { located, stats })
+}
+
+/// `laplacian` and the seconds of the library calls alone (soup to matrices), for the benchmark.
+fn laplacian_and_seconds<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    let vertices = VertexArray::extract(vertices)?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let positions = vertices.positions();
+    let options = options(mollify, max_flips);
+    let computed = py.detach(|| {
+        let start = Instant::now();
+        let mut located = Located::from_arrays(&positions, &triangles)?;
+        let (_, l) =
+            intrinsic_delaunay_laplacian(&mut located.tri, &options).map_err(Failure::Delaunay)?;
+        let m = lumped_mass(&located.tri);
+        let seconds = start.elapsed().as_secs_f64();
+        let rows = located.dense_rows();
+        let matrices = (
+            Csr::new(l, &rows, located.rows),
+            Csr::new(m, &rows, located.rows),
+        );
+        Ok::<_, Failure>((matrices, seconds))
+    });
+    let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
+    Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
+}
+
+/// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
+/// Delaunay triangulation of `(V, F)`, as `robust_laplacian.mesh_laplacian` returns them.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
+pub fn laplacian<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    laplacian_and_seconds(py, vertices, faces, mollify, max_flips).map(|(l, m, _)| (l, m))
+}
+
+/// [`laplacian`] with the default options, also returning the seconds spent in the library calls
+/// (the benchmark's reference for the Python overhead).
+#[pyfunction]
+pub fn _laplacian_timed<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    laplacian_and_seconds(py, vertices, faces, None, None)
+}
+
+/// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay
+/// paper: equal canonical Delaunay tessellations).
+#[pyfunction]
+#[pyo3(signature = (a, b, allow_reflection = true))]
+pub fn isometric(
+    py: Python<'_>,
+    a: &Bound<'_, PyAny>,
+    b: &Bound<'_, PyAny>,
+    allow_reflection: bool,
+) -> PyResult<bool> {
+    let first = located_surface(py, a, None)?.tri;
+    let second = located_surface(py, b, None)?.tri;
+    let options = IsometryOptions {
+        allow_reflection,
+        ..IsometryOptions::default()
+    };
+    py.detach(|| surftopo_intrinsic::isometric(first, second, &options))
+        .map(|outcome| outcome.is_isometric())
+        .map_err(|e| Failure::Isometry(e).into_pyerr(py))
+}
+
+/// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles
+/// (0,0), (1,0), (x,2); refined `m x m` when `m > 1`. A [`Portalgon`].
+#[pyfunction]
+#[pyo3(signature = (x, m = 1))]
+pub fn flat_torus(py: Python<'_>, x: f64, m: u32) -> PyResult<Portalgon> {
+    let tri = surftopo_intrinsic::generators::flat_torus(x, m)
+        .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+    Ok(Portalgon {
+        doc: PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths),
+    })
+}

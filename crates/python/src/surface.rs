@@ -1,0 +1,400 @@
+//! Meshes as numpy arrays: reading and writing files, `info`, irreducible triangulations,
+//! quadrangulations and the generators.
+//!
+//! Vertex indices in and out are the input's: a surface built from `(V, F)` drops unreferenced
+//! vertices (its vertex ids are the input indices without them, `surftopo_mesh::build`), so every
+//! index the libraries return is mapped back through [`Input::input_index`].
+
+use crate::arrays::{self, VertexArray, index_array, positions_array, vector};
+use crate::errors::{Failure, invalid};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::path::PathBuf;
+use surftopo_io::{PolygonSoup, WriteOptions};
+use surftopo_irreducible::Algorithm;
+use surftopo_mesh::generators::{self, CavityBox, Surface};
+use surftopo_mesh::{BuildReport, SurfaceMesh, geometry};
+use surftopo_quad::QuadAlgorithm;
+
+/// A surface built from arrays, with the input index of each vertex id.
+pub struct Input {
+    /// The validated surface (vertex ids: input indices without the unreferenced vertices).
+    pub surface: Surface,
+    /// Input index of each vertex id.
+    pub input_index: Vec<u32>,
+}
+
+/// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
+pub fn input_index(report: &BuildReport) -> Vec<u32> {
+    let mut index = Vec::with_capacity(report.vertex_old_to_new.len());
+    for (old, new) in report.vertex_old_to_new.iter().enumerate() {
+        if new.is_valid() {
+            debug_assert_eq!(new.idx(), index.len());
+            index.push(old as u32);
+        }
+    }
+    index
+}
+
+impl Input {
+    /// Builds and validates the surface of `positions` and `triangles`.
+    pub fn build(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
+        let (surface, report) = Surface::from_triangles_with_report(positions.to_vec(), triangles)?;
+        Ok(Self {
+            surface,
+            input_index: input_index(&report),
+        })
+    }
+}
+
+/// Reads `(V, F)` arrays into a validated surface, with the GIL released for the build.
+fn input_surface(
+    py: Python<'_>,
+    vertices: &Bound<'_, PyAny>,
+    faces: &Bound<'_, PyAny>,
+) -> PyResult<Input> {
+    let vertices = VertexArray::extract(vertices)?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let positions = vertices.positions();
+    py.detach(|| Input::build(&positions, &triangles))
+        .map_err(|f| f.into_pyerr(py))
+}
+
+/// Picks `name` among `choices` (`(name, value)`), or an `InvalidInputError` naming them.
+pub fn choose<T: Copy>(what: &str, name: &str, choices: &[(&str, T)]) -> Result<T, Failure> {
+    choices
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|&(_, value)| value)
+        .ok_or_else(|| {
+            let names: Vec<String> = choices.iter().map(|(n, _)| format!("{n:?}")).collect();
+            invalid(format!(
+                "{what}: expected one of {}, got {name:?}",
+                names.join(", ")
+            ))
+        })
+}
+
+/// Reads a mesh file (OBJ, OFF, PLY, STL, optionally `.gz`) as `(V, F)`: float64 positions
+/// `(n, 3)` and int64 faces `(m, k)` (every face must have the same number `k` of sides). STL is
+/// always welded (its triangles share no vertices); `weld=True` merges exactly equal positions in
+/// the other formats too.
+#[pyfunction]
+#[pyo3(signature = (path, weld = false))]
+pub fn read_mesh<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    weld: bool,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let read = py.detach(|| -> Result<PolygonSoup, Failure> {
+        let mut soup = surftopo_io::read_path(&path).map_err(Failure::Io)?;
+        let is_stl = surftopo_io::Format::from_path(&path) == Some(surftopo_io::Format::Stl);
+        if weld || is_stl {
+            let (positions, map) = geometry::weld_exact(&soup.positions);
+            soup.face_indices
+                .iter_mut()
+                .for_each(|i| *i = map[*i as usize]);
+            soup.positions = positions;
+        }
+        Ok(soup)
+    });
+    let soup = read.map_err(|f| f.into_pyerr(py))?;
+    let sides = soup.faces().next().map_or(3, <[u32]>::len);
+    if let Some(k) = soup.faces().position(|f| f.len() != sides) {
+        return Err(Failure::Invalid(
+            "MeshFileError",
+            format!(
+                "{}: face 0 has {sides} sides, face {k} has {}: read_mesh returns faces of one size",
+                path.display(),
+                soup.face(k).len()
+            ),
+        )
+        .into_pyerr(py));
+    }
+    let faces: Vec<i64> = soup.face_indices.iter().map(|&i| i64::from(i)).collect();
+    Ok((
+        positions_array(py, &soup.positions).into_any(),
+        crate::arrays::matrix(py, faces, sides).into_any(),
+    ))
+}
+
+/// Writes `(V, F)` to a mesh file (format from the extension: `.obj`, `.off`, `.ply`, optionally
+/// `.gz`), atomically: F may hold triangles `(m, 3)`, quads `(m, 4)` or any polygons `(m, k)`.
+#[pyfunction]
+pub fn write_mesh(
+    py: Python<'_>,
+    path: PathBuf,
+    vertices: &Bound<'_, PyAny>,
+    faces: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let vertices = VertexArray::extract(vertices)?;
+    let (indices, sides) = arrays::polygons(faces, vertices.len())?;
+    let mut soup = PolygonSoup::new();
+    soup.positions = vertices.positions().into_owned();
+    for face in indices.chunks_exact(sides) {
+        soup.push_face(face);
+    }
+    py.detach(|| surftopo_io::write_path(&path, &soup, &WriteOptions::default()))
+        .map_err(|e| Failure::Io(e).into_pyerr(py))
+}
+
+/// What `surftopo info --json` prints, for arrays: counts, topology and every problem found.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, weld = false))]
+pub fn info<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    weld: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let vertices = VertexArray::extract(vertices)?;
+    let mut triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let mut positions = vertices.positions();
+    let mut welded = 0;
+    if weld {
+        let (merged, map) = geometry::weld_exact(&positions);
+        welded = positions.len() - merged.len();
+        triangles
+            .iter_mut()
+            .flatten()
+            .for_each(|i| *i = map[*i as usize]);
+        positions = merged.into();
+    }
+    let inspection = py.detach(|| {
+        let mut inspection = surftopo_mesh::inspect(positions.len(), &triangles);
+        if let Err(e) = geometry::check_finite(&positions) {
+            inspection.add_problem_first(e);
+        }
+        inspection
+    });
+    let d = PyDict::new(py);
+    d.set_item("vertices", inspection.vertices)?;
+    d.set_item("edges", inspection.edges)?;
+    d.set_item("faces", inspection.faces)?;
+    d.set_item("genus", inspection.genus())?;
+    d.set_item("euler_characteristic", inspection.euler_characteristic())?;
+    d.set_item("components", inspection.components)?;
+    d.set_item("closed", inspection.is_closed())?;
+    d.set_item("orientable", inspection.orientable)?;
+    d.set_item("simplicial", !inspection.has_degenerate_faces())?;
+    d.set_item("valid", inspection.is_valid())?;
+    d.set_item("boundary_edges", inspection.boundary_edges)?;
+    d.set_item("non_manifold_edges", inspection.non_manifold_edges)?;
+    d.set_item("non_manifold_vertices", inspection.non_manifold_vertices)?;
+    d.set_item("reoriented_faces", inspection.reoriented_faces)?;
+    d.set_item("dropped_vertices", inspection.dropped_vertices)?;
+    d.set_item("welded_vertices", welded)?;
+    d.set_item("problem_count", inspection.problem_count)?;
+    let problems: Vec<String> = inspection
+        .problems
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    d.set_item("problems", problems)?;
+    Ok(d)
+}
+
+/// `{"vertices", "edges", "faces", "genus"}` of a mesh (the CLI's `input` and `output`).
+fn counts<'py>(py: Python<'py>, mesh: &SurfaceMesh) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("vertices", mesh.vertex_count())?;
+    d.set_item("edges", mesh.edge_count())?;
+    d.set_item("faces", mesh.face_count())?;
+    d.set_item("genus", mesh.genus())?;
+    Ok(d)
+}
+
+/// An irreducible triangulation of the surface `(V, F)` by topology-preserving edge contractions.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, algorithm = "rs", seed = 1))]
+pub fn irreducible<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    algorithm: &str,
+    seed: u64,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyDict>)> {
+    let algorithm = choose(
+        "algorithm",
+        algorithm,
+        &[
+            ("rs", Algorithm::RamaswamiSiqueira),
+            ("schipper", Algorithm::Schipper),
+            ("brute-force", Algorithm::BruteForce { seed }),
+        ],
+    )
+    .map_err(|f| f.into_pyerr(py))?;
+    let input = input_surface(py, vertices, faces)?;
+    let input_counts = counts(py, &input.surface.mesh)?;
+    let Input {
+        surface,
+        input_index,
+    } = input;
+    let reduction = py
+        .detach(|| surftopo_irreducible::reduce(surface.mesh, algorithm))
+        .map_err(|e| Failure::Irreducible(e).into_pyerr(py))?;
+    let kept: Vec<i64> = reduction
+        .mesh
+        .vertices()
+        .map(|v| i64::from(input_index[v.idx()]))
+        .collect();
+    let output_counts = counts(py, &reduction.mesh)?;
+    let counters = reduction.counters;
+    let reduced = Surface {
+        mesh: reduction.mesh,
+        positions: surface.positions,
+    };
+    let (positions, triangles) = reduced.to_triangles();
+    let stats = PyDict::new(py);
+    stats.set_item("algorithm", algorithm.name())?;
+    stats.set_item("input", input_counts)?;
+    stats.set_item("output", output_counts)?;
+    stats.set_item("link_tests", counters.link_tests)?;
+    stats.set_item(
+        "edges_tested_more_than_once",
+        counters.edges_tested_more_than_once,
+    )?;
+    stats.set_item("contractions", counters.contractions)?;
+    stats.set_item("seconds", counters.seconds)?;
+    if matches!(algorithm, Algorithm::BruteForce { .. }) {
+        stats.set_item("seed", seed)?;
+    }
+    stats.set_item("vertex_indices", vector(py, kept))?;
+    Ok((
+        positions_array(py, &positions).into_any(),
+        index_array(py, &triangles).into_any(),
+        stats,
+    ))
+}
+
+/// Parses a JSON text with Python's `json` module (keeps the key order of the Rust struct).
+pub fn json_to_python<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+/// A quadrangulation of the surface `(V, F)` on the same vertices: a perfect pairing of its
+/// triangles.
+#[pyfunction]
+#[pyo3(signature = (vertices, faces, algorithm = "ks", objective = "count", seed = 1))]
+pub fn quadrangulate<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyAny>,
+    faces: &Bound<'py, PyAny>,
+    algorithm: &str,
+    objective: &str,
+    seed: u64,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let algorithm = choose(
+        "algorithm",
+        algorithm,
+        &[
+            ("sg", QuadAlgorithm::SimpleGreedy { seed }),
+            ("ps", QuadAlgorithm::PulliSegal { seed }),
+            ("lrs", QuadAlgorithm::Lrs),
+            ("ds", QuadAlgorithm::DiksStanczyk),
+            ("ks", QuadAlgorithm::KarpSipser),
+        ],
+    )
+    .map_err(|f| f.into_pyerr(py))?;
+    // The objectives the pairings optimise: only the number of quads (every pairing is perfect).
+    choose("objective", objective, &[("count", ())]).map_err(|f| f.into_pyerr(py))?;
+    let input = input_surface(py, vertices, faces)?;
+    let result = py
+        .detach(|| surftopo_quad::quadrangulate(&input.surface.mesh, algorithm))
+        .map_err(|e| Failure::Quad(e).into_pyerr(py))?;
+    let quads: Vec<[u32; 4]> = result
+        .quads
+        .iter()
+        .map(|q| q.map(|v| input.input_index[v.idx()]))
+        .collect();
+    let stats = serde_json::to_string(&result.stats)
+        .map_err(|e| Failure::Quad(surftopo_quad::QuadError::Internal(e.to_string())))
+        .map_err(|f| f.into_pyerr(py))?;
+    Ok((
+        index_array(py, &quads).into_any(),
+        json_to_python(py, &stats)?,
+    ))
+}
+
+/// The most triangles a generator makes (ids are `u32`; memory is the practical bound).
+const MAX_TRIANGLES: u64 = 200_000_000;
+
+/// A generated surface as `(V, F)`, or an `InvalidInputError` when it would have more than
+/// [`MAX_TRIANGLES`] triangles.
+fn generated<'py>(
+    py: Python<'py>,
+    triangles: u64,
+    make: impl FnOnce() -> Surface + Send,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    if triangles > MAX_TRIANGLES {
+        return Err(invalid(format!(
+            "about {triangles} triangles asked for; at most {MAX_TRIANGLES} are supported"
+        ))
+        .into_pyerr(py));
+    }
+    let (positions, triangles) = py.detach(|| make().to_triangles());
+    Ok((
+        positions_array(py, &positions).into_any(),
+        index_array(py, &triangles).into_any(),
+    ))
+}
+
+/// The boundary of a tetrahedron (4 vertices, genus 0).
+#[pyfunction]
+pub fn tetrahedron(py: Python<'_>) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    generated(py, 4, generators::tetrahedron)
+}
+
+/// An icosahedron refined `subdivisions` times by 1-to-4 splits, on the unit sphere.
+#[pyfunction]
+#[pyo3(signature = (subdivisions = 3))]
+pub fn icosphere(
+    py: Python<'_>,
+    subdivisions: u32,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    let triangles = 20u64.saturating_mul(4u64.saturating_pow(subdivisions));
+    generated(py, triangles, move || generators::icosphere(subdivisions))
+}
+
+/// A torus of revolution as an `m x n` grid (`2 m n` triangles, genus 1); `m, n >= 3`.
+#[pyfunction]
+#[pyo3(signature = (m = 24, n = 12))]
+pub fn torus(py: Python<'_>, m: u32, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    if m < 3 || n < 3 {
+        return Err(invalid("torus: m and n must be at least 3").into_pyerr(py));
+    }
+    generated(py, 2 * u64::from(m) * u64::from(n), move || {
+        generators::torus(m, n)
+    })
+}
+
+/// A closed surface of genus `genus`: a slab with `genus` square through-holes, resolution `size`.
+#[pyfunction]
+#[pyo3(signature = (genus = 2, size = 2))]
+pub fn genus_surface(
+    py: Python<'_>,
+    genus: u32,
+    size: u32,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    let s = size.max(1);
+    let triangles = CavityBox::new(0, genus, s, s, s, s).triangle_count();
+    generated(py, triangles, move || {
+        generators::genus_surface(genus, size)
+    })
+}
+
+/// The papers' brick with `cavities` square cavities and `holes` through-holes (genus `holes`),
+/// refined to about `triangles` triangles.
+#[pyfunction]
+#[pyo3(signature = (cavities = 3844, holes = 0, triangles = 100_000))]
+pub fn cavity_box(
+    py: Python<'_>,
+    cavities: u32,
+    holes: u32,
+    triangles: u64,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    let fitted = CavityBox::fit(cavities, holes, triangles.min(MAX_TRIANGLES + 1));
+    generated(py, fitted.triangle_count().max(triangles), move || {
+        fitted.generate()
+    })
+}

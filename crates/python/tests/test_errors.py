@@ -1,0 +1,150 @@
+"""Invalid input raises ValueError subclasses that name the element, with the CLI's message."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import surftopo
+
+
+def test_boundary_raises_invalid_mesh_error_naming_the_edge():
+    V, F = surftopo.icosphere(1)
+    removed = F[7]
+    with pytest.raises(surftopo.InvalidMeshError) as caught:
+        surftopo.laplacian(V, np.delete(F, 7, axis=0))
+    e = caught.value
+    assert isinstance(e, ValueError) and isinstance(e, surftopo.SurftopoError)
+    assert e.kind == "BoundaryEdge"
+    a, b = e.edge
+    # The edge is a side of the removed triangle, and the face named contains it.
+    assert {a, b} <= set(removed.tolist())
+    remaining = np.delete(F, 7, axis=0)
+    original = e.face if e.face < 7 else e.face + 1
+    assert {a, b} <= set(F[original].tolist())
+    assert {a, b} <= set(remaining[e.face].tolist())
+    assert str(e) == f"boundary edge ({a}, {b}) of face {e.face}: the surface is not closed"
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda V, F: surftopo.laplacian(V, F),
+        lambda V, F: surftopo.intrinsic_delaunay(V, F),
+        lambda V, F: surftopo.quadrangulate(V, F),
+        lambda V, F: surftopo.irreducible(V, F),
+    ],
+)
+def test_every_function_names_the_boundary(call):
+    V, F = surftopo.torus(5, 4)
+    with pytest.raises(surftopo.InvalidMeshError, match="boundary edge"):
+        call(V, F[1:])
+
+
+def test_index_out_of_range_names_the_face():
+    V, F = surftopo.tetrahedron()
+    for bad in (4, -1, 2**40):
+        G = F.copy()
+        G[2, 1] = bad
+        with pytest.raises(surftopo.InvalidMeshError) as caught:
+            surftopo.laplacian(V, G)
+        assert (caught.value.face, caught.value.vertex) == (2, bad)
+        assert str(caught.value) == f"face 2: vertex index {bad} out of range (4 vertices)"
+    for layout in (np.ascontiguousarray, np.asfortranarray):
+        G = layout(F.astype(np.int32))
+        G[3, 0] = -7
+        with pytest.raises(surftopo.InvalidMeshError) as caught:
+            surftopo.laplacian(V, G)
+        assert (caught.value.face, caught.value.vertex) == (3, -7)
+
+
+def test_non_manifold_edge_and_disconnected_and_non_finite():
+    V, F = surftopo.tetrahedron()
+    fin = np.vstack([V, [[1.0, 1.0, 1.0]]])
+    with pytest.raises(surftopo.InvalidMeshError, match="non-manifold edge") as caught:
+        surftopo.laplacian(fin, np.vstack([F, [[0, 1, 4]]]))
+    assert caught.value.kind == "NonManifoldEdge" and caught.value.edge == (0, 1)
+    two = np.vstack([V, V + 5.0])
+    with pytest.raises(surftopo.InvalidMeshError, match="connected components") as caught:
+        surftopo.laplacian(two, np.vstack([F, F + 4]))
+    assert caught.value.face == 4
+    W = V.copy()
+    W[3, 2] = np.nan
+    with pytest.raises(surftopo.InvalidMeshError, match="vertex 3: non-finite") as caught:
+        surftopo.laplacian(W, F)
+    assert caught.value.vertex == 3
+
+
+def test_degenerate_geometry_and_mollify():
+    V, F = surftopo.tetrahedron()
+    W = V.copy()
+    W[3] = W[0]
+    with pytest.raises(surftopo.InvalidGeometryError) as caught:
+        surftopo.laplacian(W, F)
+    assert isinstance(caught.value, ValueError) and caught.value.edge is not None
+    assert caught.value.kind == "NonPositiveLength"
+    L, M = surftopo.laplacian(W, F, mollify=1e-3)
+    assert np.isfinite(L.data).all() and M.diagonal().min() > 0
+
+
+def test_flip_limit():
+    with pytest.raises(surftopo.FlipLimitError) as caught:
+        surftopo.intrinsic_delaunay(surftopo.flat_torus(100.0), max_flips=10)
+    assert caught.value.flips == 10 and caught.value.pending > 0
+    assert caught.value.kind == "MaxFlips"
+
+
+def test_two_triangle_sphere_is_refused():
+    # (V, F) arrays cannot make loops or multi-edges; two triangles on the same three vertices
+    # are the only non-simplicial closed soup, and building refuses it for every function.
+    V = np.eye(3)
+    F = np.array([[0, 1, 2], [0, 2, 1]])
+    for call in (surftopo.irreducible, surftopo.quadrangulate, surftopo.laplacian):
+        with pytest.raises(surftopo.InvalidMeshError) as caught:
+            call(V, F)
+        assert caught.value.kind == "DuplicateFace" and caught.value.face == 1
+
+
+def test_bad_names_list_the_allowed_values():
+    V, F = surftopo.tetrahedron()
+    with pytest.raises(ValueError, match=r"objective: expected one of \"count\", got \"quality\""):
+        surftopo.quadrangulate(V, F, objective="quality")
+    with pytest.raises(surftopo.InvalidInputError) as caught:
+        surftopo.quadrangulate(V, F, objective="quality")
+    assert caught.value.kind is None
+    with pytest.raises(ValueError, match=r"method: expected one of \"flip\""):
+        surftopo.intrinsic_delaunay(V, F, method="voronoi")
+    with pytest.raises(ValueError, match=r"\"rs\", \"schipper\", \"brute-force\""):
+        surftopo.irreducible(V, F, algorithm="x")
+    with pytest.raises(ValueError, match=r"\"sg\", \"ps\", \"lrs\", \"ds\", \"ks\""):
+        surftopo.quadrangulate(V, F, algorithm="x")
+
+
+def test_shapes_and_dtypes():
+    V, F = surftopo.tetrahedron()
+    with pytest.raises(ValueError, match=r"vertices: expected shape \(n, 3\), got \(4, 2\)"):
+        surftopo.laplacian(V[:, :2], F)
+    with pytest.raises(ValueError, match=r"faces: expected shape \(m, 3\), got \(4, 2\)"):
+        surftopo.laplacian(V, F[:, :2])
+    with pytest.raises(TypeError, match="integer"):
+        surftopo.laplacian(V, F.astype(float))
+
+
+def test_files(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        surftopo.read_mesh(tmp_path / "missing.obj")
+    bad = tmp_path / "bad.obj"
+    bad.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+    with pytest.raises(surftopo.MeshFileError, match="bad.obj:4"):
+        surftopo.read_mesh(bad)
+    with pytest.raises(surftopo.MeshFileError, match="unsupported file extension"):
+        surftopo.write_mesh(tmp_path / "x.xyz", *surftopo.tetrahedron())
+
+
+def test_portalgon_errors():
+    with pytest.raises(surftopo.PortalgonError, match="portalgon JSON"):
+        surftopo.Portalgon.from_json("{")
+    text = surftopo.flat_torus(3.0).to_json().replace('"matching":[[[0,0],[1,1]],', '"matching":[')
+    with pytest.raises(surftopo.PortalgonError) as caught:
+        surftopo.intrinsic_delaunay(surftopo.Portalgon.from_json(text))
+    assert caught.value.polygon is not None

@@ -1,0 +1,159 @@
+"""Irreducible triangulations, quadrangulations, info, files and generators, each checked from
+the definitions (tests/verify.py)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import surftopo
+from verify import (
+    edges_of,
+    euler_characteristic,
+    is_closed_oriented,
+    is_irreducible,
+    quads_pair_triangles,
+)
+
+SURFACES = {
+    "icosphere(2)": lambda: surftopo.icosphere(2),
+    "torus(10, 6)": lambda: surftopo.torus(10, 6),
+    "genus_surface(3, 1)": lambda: surftopo.genus_surface(3, 1),
+    "cavity_box(4, 2, 3000)": lambda: surftopo.cavity_box(4, 2, 3000),
+}
+
+
+@pytest.mark.parametrize("name", SURFACES)
+@pytest.mark.parametrize("algorithm", ["rs", "schipper", "brute-force"])
+def test_irreducible(name, algorithm):
+    V, F = SURFACES[name]()
+    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=5)
+    chi = euler_characteristic(F)
+    assert euler_characteristic(F2) == chi and is_closed_oriented(F2)
+    assert is_irreducible(F2)
+    assert np.array_equal(np.unique(F2), np.arange(len(V2)))
+    kept = stats["vertex_indices"]
+    assert np.array_equal(V2, V[kept]) and len(set(kept.tolist())) == len(kept)
+    genus = (2 - chi) // 2
+    assert stats["input"] == {
+        "vertices": len(V), "edges": len(edges_of(F)), "faces": len(F), "genus": genus
+    }
+    assert stats["output"]["vertices"] == len(V2) and stats["output"]["faces"] == len(F2)
+    assert stats["contractions"] == len(V) - len(V2)
+    assert stats["algorithm"] == algorithm
+    assert ("seed" in stats) == (algorithm == "brute-force")
+    if algorithm == "rs":
+        assert stats["edges_tested_more_than_once"] == 0
+    if genus == 0:
+        assert len(V2) == 4
+
+
+@pytest.mark.parametrize("name", SURFACES)
+@pytest.mark.parametrize("algorithm", ["sg", "ps", "lrs", "ds", "ks"])
+def test_quadrangulate(name, algorithm):
+    V, F = SURFACES[name]()
+    Q, stats = surftopo.quadrangulate(V, F, algorithm=algorithm, seed=2)
+    assert Q.shape == (len(F) // 2, 4) and Q.dtype == np.int64
+    assert is_closed_oriented(Q)
+    assert euler_characteristic(Q) == euler_characteristic(F)
+    assert np.array_equal(np.unique(Q), np.arange(len(V)))
+    if algorithm != "lrs":  # LRS pairs the triangles of a flipped triangulation K
+        assert quads_pair_triangles(Q, F)
+    assert stats["algorithm"] == algorithm and stats["faces"] == len(F)
+    assert list(stats) == [
+        "algorithm", "faces", "initial_pairing_seconds", "paired_percent", "unpaired",
+        "augmentation_seconds", "total_seconds", "flipped_edges", "file_order",
+        "subdivision_levels",
+    ]
+
+
+def test_seeded_algorithms_are_deterministic():
+    V, F = surftopo.torus(15, 8)
+    for algorithm in ("sg", "ps"):
+        a, _ = surftopo.quadrangulate(V, F, algorithm=algorithm, seed=4)
+        b, _ = surftopo.quadrangulate(V, F, algorithm=algorithm, seed=4)
+        assert np.array_equal(a, b)
+    a = surftopo.irreducible(V, F, algorithm="brute-force", seed=9)
+    b = surftopo.irreducible(V, F, algorithm="brute-force", seed=9)
+    assert np.array_equal(a[1], b[1]) and np.array_equal(a[0], b[0])
+
+
+def test_int32_and_int64_faces_agree():
+    V, F = surftopo.genus_surface(2, 1)
+    for call in (
+        lambda G: surftopo.quadrangulate(V, G, algorithm="sg", seed=1)[0],
+        lambda G: surftopo.irreducible(V, G, algorithm="brute-force", seed=1)[1],
+    ):
+        assert np.array_equal(call(F.astype(np.int32)), call(F.astype(np.int64)))
+        assert np.array_equal(call(np.asfortranarray(F)), call(F))
+
+
+def test_info():
+    V, F = surftopo.torus(6, 4)
+    info = surftopo.info(V, F)
+    assert list(info) == [
+        "vertices", "edges", "faces", "genus", "euler_characteristic", "components", "closed",
+        "orientable", "simplicial", "valid", "boundary_edges", "non_manifold_edges",
+        "non_manifold_vertices", "reoriented_faces", "dropped_vertices", "welded_vertices",
+        "problem_count", "problems",
+    ]
+    assert (info["vertices"], info["edges"], info["faces"], info["genus"]) == (24, 72, 48, 1)
+    assert info["valid"] and info["problems"] == []
+    broken = surftopo.info(V, F[1:])
+    assert not broken["valid"] and broken["genus"] is None and not broken["closed"]
+    assert broken["boundary_edges"] == 3 and broken["problem_count"] >= 1
+    assert broken["problems"][0].startswith("boundary edge")
+    # Welding: the same torus with one vertex duplicated in place.
+    W = np.vstack([V, V[:1]])
+    G = F.copy()
+    G[F == 0] = len(V)
+    G[0] = F[0]
+    assert not surftopo.info(W, G)["valid"]
+    welded = surftopo.info(W, G, weld=True)
+    assert welded["valid"] and welded["welded_vertices"] == 1
+
+
+@pytest.mark.parametrize("extension", ["obj", "off", "ply", "obj.gz"])
+def test_files_round_trip(tmp_path, extension):
+    V, F = surftopo.genus_surface(2, 1)
+    path = tmp_path / f"mesh.{extension}"
+    surftopo.write_mesh(path, V, F)
+    V2, F2 = surftopo.read_mesh(path)
+    assert np.array_equal(V, V2) and np.array_equal(F, F2)
+    Q, _ = surftopo.quadrangulate(V, F)
+    surftopo.write_mesh(path, V, Q)
+    V3, Q3 = surftopo.read_mesh(path)
+    assert np.array_equal(V, V3) and np.array_equal(Q, Q3)
+
+
+def test_generators():
+    for (V, F), chi in [
+        (surftopo.tetrahedron(), 2),
+        (surftopo.icosphere(3), 2),
+        (surftopo.torus(), 0),
+        (surftopo.genus_surface(4, 1), -6),
+        (surftopo.cavity_box(9, 3, 5000), -4),
+    ]:
+        assert V.dtype == np.float64 and V.shape[1] == 3 and F.dtype == np.int64
+        assert is_closed_oriented(F) and euler_characteristic(F) == chi
+    assert len(surftopo.icosphere(3)[1]) == 20 * 4**3
+    with pytest.raises(ValueError, match="at least 3"):
+        surftopo.torus(2, 5)
+    with pytest.raises(ValueError, match="at most 200000000"):
+        surftopo.icosphere(14)
+
+
+def test_unreferenced_vertices_keep_input_indices():
+    V, F = surftopo.torus(8, 5)
+    # An unreferenced vertex inserted at index 3: every index returned must still point into
+    # the new V.
+    W = np.vstack([V[:3], [[7.0, 7.0, 7.0]], V[3:]])
+    G = np.where(F >= 3, F + 1, F)
+    Q, _ = surftopo.quadrangulate(W, G, algorithm="sg", seed=3)
+    Q0, _ = surftopo.quadrangulate(V, F, algorithm="sg", seed=3)
+    assert np.array_equal(Q, np.where(Q0 >= 3, Q0 + 1, Q0))
+    assert quads_pair_triangles(Q, G)
+    V2, F2, stats = surftopo.irreducible(W, G)
+    assert 3 not in stats["vertex_indices"].tolist()
+    assert np.array_equal(V2, W[stats["vertex_indices"]])
+    assert surftopo.info(W, G)["dropped_vertices"] == 1
