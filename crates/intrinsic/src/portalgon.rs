@@ -41,7 +41,6 @@ use crate::error::PortalgonError;
 use crate::geometry::{
     Motion, Point, Scalar, dist_f64, dist2, dot, orient, segments_intersect, sub, twice_signed_area,
 };
-use surftopo_mesh::UnionFind;
 
 /// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
 pub const DEFAULT_LENGTH_TOLERANCE: f64 = 1e-9;
@@ -540,26 +539,7 @@ impl<S: Scalar> Portalgon<S> {
     /// (indexed by side id, `u32::MAX` for removed sides; classes numbered by first side), and the
     /// number of classes. O(n α(n)).
     pub fn vertex_classes(&self) -> (Vec<u32>, usize) {
-        let n = self.start.len();
-        let mut sets = UnionFind::new(n);
-        for s in self.sides() {
-            if let Some(t) = self.mate(s) {
-                // start(s) ~ end(t) = start(next(t)).
-                sets.union(s.0, self.next_side(t).0);
-            }
-        }
-        let mut class = vec![u32::MAX; n];
-        let mut root_class = vec![u32::MAX; n];
-        let mut count = 0u32;
-        for s in self.sides() {
-            let r = sets.find(s.0) as usize;
-            if root_class[r] == u32::MAX {
-                root_class[r] = count;
-                count += 1;
-            }
-            class[s.idx()] = root_class[r];
-        }
-        (class, count as usize)
+        self.classes_within(&vec![true; self.polygon_slots()])
     }
 
     /// Whether the segment between corners `i` and `j` of polygon `p` is a vertex-to-vertex arc
