@@ -104,9 +104,19 @@ impl SparseMatrix {
     }
 }
 
+impl IntrinsicTriangulation {
+    /// Per vertex slot, its row (and column) in the matrices of this crate ([`cotan_laplacian`],
+    /// [`lumped_mass`], [`intrinsic_delaunay_laplacian`]): the live vertices in increasing id
+    /// order, `u32::MAX` for removed ids. There are [`surftopo_mesh::SurfaceMesh::vertex_count`]
+    /// rows.
+    pub fn matrix_rows(&self) -> Vec<u32> {
+        dense_vertex_index(self).0
+    }
+}
+
 /// Dense index of each live vertex (increasing id order), `u32::MAX` for removed ids, and the
 /// number of live vertices.
-pub fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
+pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
     let mesh = tri.mesh();
     let mut index = vec![u32::MAX; mesh.vertex_slots()];
     let mut n = 0usize;

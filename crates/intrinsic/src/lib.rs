@@ -20,9 +20,9 @@
 //! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
 //!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
 //!   and positions ([`IntrinsicTriangulation::from_soup`]), from a [`Portalgon`], or from JSON
-//!   ([`PortalgonDoc`], format in [`mod@format`] and `PORTALGON_FORMAT.md`).
+//!   ([`PortalgonDoc`], format in `PORTALGON_FORMAT.md`).
 //! - [`flip_to_delaunay`]: Bobenko–Springborn edge flipping with robust half-angle formulas
-//!   ([`trig`]), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
+//!   (Kahan's, from side lengths alone), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
 //! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation;
 //!   [`voronoi::voronoi_delaunay`] computes it by the wave instead (exactly with rational corners).
 //! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
@@ -59,7 +59,7 @@ pub mod dubois;
 mod error;
 mod flat;
 pub mod flat_torus_lattice;
-pub mod format;
+mod format;
 pub mod generators;
 pub mod geometry;
 mod isometry;
@@ -73,7 +73,7 @@ mod quality;
 mod stats;
 mod tessellation;
 mod triangulation;
-pub mod trig;
+mod trig;
 mod tube;
 pub mod voronoi;
 
@@ -85,15 +85,14 @@ pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
 };
 pub use flat::{RemovalReport, remove_flat_vertices};
-pub use format::{PolygonDoc, PortalgonDoc, TriangleStyle};
+pub use format::{FORMAT_NAME, FORMAT_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle};
 pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, IsometryOptions, Outcome, canonical_tessellation,
     compare_tessellations, isometric,
 };
 pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use laplacian::{
-    SparseMatrix, cotan_laplacian, cotan_weights, dense_vertex_index, intrinsic_delaunay_laplacian,
-    lumped_mass,
+    SparseMatrix, cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass,
 };
 pub use matrix_market::{read_matrix_market, write_matrix_market};
 pub use mollify::{MAX_MOLLIFY, mollify};

@@ -539,38 +539,7 @@ impl<S: Scalar> Portalgon<S> {
     /// (indexed by side id, `u32::MAX` for removed sides; classes numbered by first side), and the
     /// number of classes. O(n α(n)).
     pub fn vertex_classes(&self) -> (Vec<u32>, usize) {
-        let n = self.start.len();
-        let mut parent: Vec<u32> = (0..n as u32).collect();
-        fn find(parent: &mut [u32], mut x: u32) -> u32 {
-            while parent[x as usize] != x {
-                let g = parent[parent[x as usize] as usize];
-                parent[x as usize] = g;
-                x = g;
-            }
-            x
-        }
-        for s in self.sides() {
-            if let Some(t) = self.mate(s) {
-                // start(s) ~ end(t) = start(next(t)).
-                let (a, b) = (
-                    find(&mut parent, s.0),
-                    find(&mut parent, self.next_side(t).0),
-                );
-                parent[a.max(b) as usize] = a.min(b);
-            }
-        }
-        let mut class = vec![u32::MAX; n];
-        let mut root_class = vec![u32::MAX; n];
-        let mut count = 0u32;
-        for s in self.sides() {
-            let r = find(&mut parent, s.0) as usize;
-            if root_class[r] == u32::MAX {
-                root_class[r] = count;
-                count += 1;
-            }
-            class[s.idx()] = root_class[r];
-        }
-        (class, count as usize)
+        self.classes_within(&vec![true; self.polygon_slots()])
     }
 
     /// Whether the segment between corners `i` and `j` of polygon `p` is a vertex-to-vertex arc

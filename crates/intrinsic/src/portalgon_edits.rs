@@ -18,6 +18,7 @@ use std::collections::{HashMap, HashSet};
 
 use crate::geometry::{Point, Scalar, add, midpoint, scale, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
+use surftopo_mesh::UnionFind;
 
 /// Why an edit was refused.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -96,27 +97,6 @@ impl Component {
     }
 }
 
-/// Union–find with path halving, smaller root kept.
-struct Classes(Vec<u32>);
-
-impl Classes {
-    fn new(n: usize) -> Self {
-        Classes((0..n as u32).collect())
-    }
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let g = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = g;
-            x = g;
-        }
-        x
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (a, b) = (self.find(a), self.find(b));
-        self.0[a.max(b) as usize] = a.min(b);
-    }
-}
-
 impl<S: Scalar> Portalgon<S> {
     /// INSERTVERTICES' step (Section 4.1): a new vertex at parameter `λ ∈ (0, 1)` of side `s`
     /// (the point `start + λ(end − start)`), on both copies when `s` is matched (at `1 − λ` of
@@ -192,9 +172,9 @@ impl<S: Scalar> Portalgon<S> {
     /// Vertex classes of the surface of the polygons with `in_set[p]`: start corners identified
     /// through sides matched inside the set. Returns the class per side id (`u32::MAX` outside)
     /// and the count; classes are numbered by their lowest side id.
-    fn classes_within(&self, in_set: &[bool]) -> (Vec<u32>, usize) {
+    pub(crate) fn classes_within(&self, in_set: &[bool]) -> (Vec<u32>, usize) {
         let n = self.side_slots();
-        let mut uf = Classes::new(n);
+        let mut uf = UnionFind::new(n);
         let inside = |s: SideId| in_set[self.owner(s).idx()];
         for s in self.sides().filter(|&s| inside(s)) {
             if let Some(t) = self.mate(s).filter(|&t| inside(t)) {
@@ -275,7 +255,7 @@ impl<S: Scalar> Portalgon<S> {
         let inside = |s: SideId| in_set[self.owner(s).idx()];
         let internal = |s: SideId| self.mate(s).is_some_and(inside);
         // Components of polygons through internal sides.
-        let mut uf = Classes::new(self.polygon_slots());
+        let mut uf = UnionFind::new(self.polygon_slots());
         for &p in polygons {
             for &s in self.polygon_sides(p) {
                 if let Some(t) = self.mate(s).filter(|&t| inside(t)) {

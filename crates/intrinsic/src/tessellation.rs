@@ -28,7 +28,7 @@ use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::trig;
-use surftopo_mesh::{EdgeId, FaceId, HalfedgeId};
+use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind};
 
 /// Default tolerance for co-circularity: `|tan(γ/2) tan(δ/2) - 1| <= 1e-9`.
 pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = 1e-9;
@@ -79,15 +79,7 @@ fn cocircular_product(product: f64, tolerance: f64) -> bool {
 pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Tessellation {
     let mesh = tri.mesh();
     let nf = mesh.face_slots();
-    let mut parent: Vec<u32> = (0..nf as u32).collect();
-    fn find(parent: &mut [u32], mut x: u32) -> u32 {
-        while parent[x as usize] != x {
-            let g = parent[parent[x as usize] as usize];
-            parent[x as usize] = g;
-            x = g;
-        }
-        x
-    }
+    let mut regions = UnionFind::new(nf);
     let mut merged = vec![false; mesh.edge_slots()];
     let mut merged_edges = Vec::new();
     let mut cycle_edges = 0usize;
@@ -98,15 +90,12 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
         if f == g || !cocircular_product(t2[h.idx()] * t2[h.twin().idx()], tolerance) {
             continue;
         }
-        let (a, b) = (
-            find(&mut parent, mesh.face(h).0),
-            find(&mut parent, mesh.face(h.twin()).0),
-        );
+        let (a, b) = (regions.find(f.0), regions.find(g.0));
         if a == b {
             cycle_edges += 1;
             continue;
         }
-        parent[a.max(b) as usize] = a.min(b);
+        regions.union(a, b);
         merged[e.idx()] = true;
         merged_edges.push(e);
     }

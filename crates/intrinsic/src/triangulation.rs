@@ -114,7 +114,7 @@ impl IntrinsicTriangulation {
 
     /// The five lengths around the edge of `h` (see [`Quad`]), seen from `h = a -> b`.
     #[inline]
-    pub fn quad(&self, h: HalfedgeId) -> Quad {
+    pub(crate) fn quad(&self, h: HalfedgeId) -> Quad {
         let m = &self.mesh;
         let t = h.twin();
         Quad {
@@ -153,7 +153,7 @@ impl IntrinsicTriangulation {
     }
 
     /// `tan²` of the half angle opposite every half-edge (indexed by half-edge id, NaN for
-    /// removed ones), one pass over the faces ([`trig::tan_half_sq_all`]).
+    /// removed ones), one pass over the faces (Kahan's formulas, from the three lengths of each).
     pub fn halfedge_tan_half_sq(&self) -> Vec<f64> {
         let mut t2 = vec![f64::NAN; self.mesh.halfedge_slots()];
         for f in self.mesh.faces() {
@@ -195,7 +195,7 @@ impl IntrinsicTriangulation {
     }
 
     /// The Delaunay product `tan²(γ/2) tan²(δ/2)` of an edge, γ and δ its opposite angles
-    /// (see [`Quad::delaunay_product`]): above 1 iff `γ + δ > π`.
+    /// (from the half-angle tangents, no angle computed): above 1 iff `γ + δ > π`.
     #[inline]
     pub fn delaunay_product(&self, e: EdgeId) -> f64 {
         self.quad(e.halfedge()).delaunay_product()

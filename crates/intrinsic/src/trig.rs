@@ -86,14 +86,16 @@ pub fn tan_half_sq(o: f64, x: f64, y: f64) -> f64 {
     (ex * ey) / (p * eo)
 }
 
-/// The angle opposite side `o` in the triangle with sides `o, x, y`, in `[0, π]`.
-#[inline]
+/// The angle opposite side `o` in the triangle with sides `o, x, y`, in `[0, π]` (the tests
+/// check the half-angle formulas through it; the algorithms never need the angle itself).
+#[cfg(test)]
 pub fn angle(o: f64, x: f64, y: f64) -> f64 {
     2.0 * tan_half_sq(o, x, y).sqrt().atan()
 }
 
-/// The cotangent of the angle opposite side `o`: `(1 - t²) / (2t)` with `t = tan(θ/2)`.
-#[inline]
+/// The cotangent of the angle opposite side `o`: `(1 - t²) / (2t)` with `t = tan(θ/2)` (for the
+/// tests; the Laplacian uses [`cot_from_tan_half_sq`] on the flips' tangents).
+#[cfg(test)]
 pub fn cot(o: f64, x: f64, y: f64) -> f64 {
     let t2 = tan_half_sq(o, x, y);
     (1.0 - t2) / (2.0 * t2.sqrt())

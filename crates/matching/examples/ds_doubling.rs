@@ -13,9 +13,8 @@
 
 use std::time::Instant;
 
-use surftopo_matching::diks_stanczyk::perfect_matching_with_stats;
 use surftopo_matching::generators::{random_bridgeless_cubic, torus_dual};
-use surftopo_matching::{CubicGraph, verify_perfect_matching};
+use surftopo_matching::{CubicGraph, diks_stanczyk_with_stats, verify_perfect_matching};
 
 /// On-CPU nanoseconds of this thread (Linux), if available.
 fn thread_cpu_ns() -> Option<u64> {
@@ -59,12 +58,12 @@ fn main() {
             let gen_s = t.elapsed().as_secs_f64();
             let nn = f64::from(g.node_count());
             let cpu0 = thread_cpu_ns();
-            let (m, stats) = perfect_matching_with_stats(&g);
+            let (m, stats) = diks_stanczyk_with_stats(&g);
             let cpu_s = match (cpu0, thread_cpu_ns()) {
                 (Some(a), Some(b)) => (b - a) as f64 * 1e-9,
                 _ => stats.seconds,
             };
-            verify_perfect_matching(&g, m.flags()).expect("perfect");
+            verify_perfect_matching(&g, &m.edge_flags(g.edge_count() as usize)).expect("perfect");
             let lg = nn.log2();
             println!(
                 "{:<7} {:>9} {:>8.3} {:>8.3} {:>9.3} {:>9.3} {:>9.3} {:>13.4e} {:>13.4e} {:>6} {:>6}",

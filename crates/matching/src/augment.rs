@@ -51,21 +51,16 @@
 //!   it anew, as if unreached (the retired trees are matched among themselves, so the forest
 //!   stays alternating). Its roots are the few triangles the greedy left far apart, whose
 //!   partners often lie beyond other pairs' trees: with walls, the trees shut in by them fill
-//!   their pockets and wait for the next pass. Measured (`quad_profile MESH 1 ks`, nodes
-//!   reached by the completion's passes): icosphere(7) shuffled 46 roots, walls 318k + 79k +
-//!   132k (12, 7 and 4 paths), reopened 167k + 128k + 57k (15, 6 and 2), completion 27.5 to
-//!   16.1 ms; sketched_brunnen shuffled 56.7k to 57.5k (one pass); the other shared meshes of
-//!   100k+ faces and their shuffled versions unchanged. After PS or SG (hundreds to thousands of
-//!   roots, close together) walls pay: feline PS 75.6k nodes with walls, 93.7k reopened, SG
-//!   177k and 201k; so the Forest strategy keeps them. A reopened pass is not bounded by O(n α)
-//!   (a node may be reached again after each retirement of its tree): O(k n α) for k paths.
+//!   their pockets and wait for the next pass, and reopening lets them through. After PS or SG
+//!   (hundreds to thousands of roots, close together) walls pay: a reopened tree is reached
+//!   again by its neighbours; so the Forest strategy keeps them. A reopened pass is not bounded
+//!   by O(n α) (a node may be reached again after each retirement of its tree): O(k n α) for k
+//!   paths.
 //!
-//! Measured (release, 100k–270k-face shared meshes, reached nodes per face and time relative to
-//! Global): after PS, Global reaches 2.3–3.5, Local 3.4–4, Forest 0.5–0.8 in one pass (Forest
-//! 1.3–2x faster than Global, 2–4x faster than Local); after SG (12.5% unmatched) Global is
-//! quadratic (hundreds of times slower), Local reaches 4–6 and Forest 2.2 in three passes (Forest
-//! 1.5–3x faster than Local); after LRS all three reach a few dozen nodes on genus 0. Hence the
-//! default.
+//! Forest is the default: every tree stops at its neighbours, so after PS or LRS one pass
+//! reaches less than the graph, where each Global forest reaches much of it again (quadratic
+//! after SG) and Local's single-root searches overlap; `quad_tables` compares the three
+//! (`results/quad.md`).
 //!
 //! Per-node search state is generation-stamped (never reset), so a search costs only what it
 //! reaches; the label is kept in a separate small array, since testing a neighbour's label is the
@@ -153,11 +148,10 @@ pub enum AugmentError {
 
 /// When at least one node in `MATERIALISE_FRACTION` is unmatched, the search first copies the
 /// adjacency into a [`CompactDual`] (one sequential pass) instead of reading the graph as given
-/// (for a mesh: implicitly, through the half-edges). Measured on 100k–270k-face meshes with the
-/// Forest strategy: with SG's 12.5% unmatched the searches reach about 2.2 nodes per face and the
-/// copy saves 10–20% of the augmentation time on meshes whose face order is not spatially
-/// coherent (none on a coherent one); with PS's or LRS's few unmatched nodes (≤ 0.2%) the copy
-/// costs as much as it saves, so the implicit dual is read directly.
+/// (for a mesh: implicitly, through the half-edges). With many unmatched nodes (SG's) the searches
+/// reach every node about twice and the copy pays for itself on meshes whose face order is not
+/// spatially coherent; with few (PS's or LRS's) the copy costs as much as it saves, so the
+/// implicit dual is read directly.
 const MATERIALISE_FRACTION: usize = 64;
 
 /// Augments `pairing` along augmenting paths until it is perfect.
@@ -642,11 +636,8 @@ impl Search {
     /// mates and states of the neighbours of the node half as far ahead (whose adjacency was
     /// asked for then); only on a flat graph ([`DualGraph::flat_adjacency`]), where reading an
     /// adjacency early costs one load. The queue is known in advance, so the random reads of a
-    /// large graph overlap instead of stalling one after the other. Measured (`quad_profile MESH
-    /// 11 ks`, repairs and completion, minimum of the medians of 8 alternating runs):
-    /// sketched_brunnen shuffled 3.18 to 2.75 ms (cold caches, `COLD=1`: 4.24 to 3.64 ms),
-    /// icosphere(7) shuffled 49 to 31 ms; with 4, 16 or 32 places ahead instead of 8, 3–7% slower
-    /// on brunnen.
+    /// large graph overlap instead of stalling one after the other (`quad_profile` on a shuffled
+    /// mesh shows the difference; `COLD=1` with cold caches).
     #[inline]
     fn prefetch_ahead<G: DualGraph + ?Sized>(&self, graph: &G, mates: &[[u32; 2]], head: usize) {
         let Some(adjacency) = graph.flat_adjacency() else {
@@ -669,10 +660,8 @@ impl Search {
     /// Shrinks the blossom closed by edge `e = (v, w)` between two even nodes of one tree.
     /// The walk up to the nearest common base and [`Search::absorb_path`] read only the records
     /// of the bases (grandparent, mark and odd mate are kept there), and the queue's nodes ahead
-    /// have their mates and states loaded early too. Measured against a separate mark array and
-    /// reading the mates (`quad_profile MESH 11 ks`, minimum of 6 alternating runs, repairs and
-    /// completion): icosphere(7) shuffled (48k blossoms) 32.4 to 24.8 ms, sketched_brunnen
-    /// shuffled 2.71 to 2.38 ms.
+    /// have their mates and states loaded early too: a separate mark array, or reading the mates
+    /// on the walk, would add a random read per base on inputs with many blossoms.
     fn shrink_blossom(&mut self, mates: &[[u32; 2]], v: u32, e: u32, w: u32) {
         // A base's MARK is reset to NONE when it is reached, so a stamp of an earlier walk can
         // only be one of this search's (fewer than n of them): wrapping around is harmless.

@@ -45,8 +45,8 @@
 //! # Reconstruction decisions (what Appendix A leaves open)
 //! * The H1/H2 test above (connectivity, then tree-path intersection) is our reconstruction of
 //!   Diks and Stanczyk's "dynamic connectivity plus dynamic trees with evert and LCA".
-//! * The initial avoided edge `f` is edge 0 ([`perfect_matching`]) or the caller's
-//!   ([`perfect_matching_avoiding`]). The reduction edge is the first of the two other edges at
+//! * The initial avoided edge `f` is edge 0 ([`diks_stanczyk`]) or the caller's
+//!   ([`diks_stanczyk_avoiding`]). The reduction edge is the first of the two other edges at
 //!   `f`'s first endpoint, in incidence order, that is simple; then the same at its second
 //!   endpoint.
 //! * When both endpoints of `f = a b` have their two other edges forming a digon (`a = c`,
@@ -65,32 +65,29 @@
 //! * The five edges are deleted non-forest edges first (O(1) each, and they can then never be
 //!   picked as replacements only to be deleted next), then the forest edges in the order
 //!   `u x1, u x2, v x3, v x4, e`, so that the last deletions isolate `u` and `v` with trivial
-//!   searches. Measured on random graphs this cut forest-edge deletions per reduction from 4.3
-//!   to 2.75 (the search work itself is dominated by HDT's level promotions either way).
+//!   searches: fewer forest-edge deletions per reduction (the search work itself is dominated by
+//!   HDT's level promotions either way).
 //! * The dynamic structure is built in O(n) from a depth-first spanning forest instead of by `m`
 //!   insertions.
-//! * The result is checked by the independent verifier ([`PerfectMatching::new`], O(n)) before it
-//!   is returned; a failure there is an internal bug and panics.
+//! * The result is checked by the independent verifier ([`verify_perfect_pairing`], O(n)) before
+//!   it is returned; a failure there is an internal bug and panics.
 //!
 //! # Complexity
 //! `n/2 - 1` reductions, each with O(1) updates (amortized O(log² n), HDT) and O(1) queries
 //! (amortized O(log n)), then O(n) lifting: **O(n log² n) amortized total**, deterministic,
 //! O(n) memory (plus O(1) per level reached by an edge). This is the bound of Diks and Stanczyk;
 //! Biedl et al.'s version with fully dynamic 2-edge-connectivity is O(n log⁴ n).
-//!
-//! Measured (`examples/ds_doubling.rs`, release, CPU seconds on a shared 2-core machine): random
-//! graphs with shuffled ids take 0.48 s at 32k nodes, 54 s at 1M and 285 s at 4.1M; the CPU time
-//! divided by `n log² n` creeps from 7e-8 to 1.4e-7 over that range (cache misses of the splay
-//! trees), while divided by `n²` it halves at every doubling. Per reduction: 2.7 spanning-forest
-//! deletions (cut from ~20 forests in all) and 12–20 HDT level promotions. Peak memory about
-//! 0.9 KB per node (3.6 GB at 4.1M nodes). Torus duals in mesh order run 2–50x faster, depending
-//! on how the avoided edge travels.
+//! `examples/ds_doubling.rs` measures the growth on doubling sizes (time over `n log² n` and over
+//! `n²`, forest deletions and level promotions per reduction); the constant is large (splay-tree
+//! cache misses, about a kilobyte per node), which is why the quad pipeline runs DS on the smaller
+//! inputs only in its tables.
 
 use std::time::Instant;
 
 use crate::cubic_graph::{CubicGraph, GraphError};
+use crate::dual_graph::Pairing;
 use crate::dynamic_connectivity::{DynamicConnectivity, DynamicStats};
-use crate::verify::PerfectMatching;
+use crate::verify::{PerfectPairing, verify_perfect_pairing};
 
 /// Figures of one run of the Diks–Stanczyk algorithm.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -121,24 +118,24 @@ pub struct DsStats {
 /// verified perfect matching that avoids edge 0. Deterministic. O(n log² n) amortized time, O(n)
 /// memory. No errors: the input type guarantees that a perfect matching exists (Petersen); a
 /// panic would mean an internal bug.
-pub fn perfect_matching(graph: &CubicGraph) -> PerfectMatching {
-    perfect_matching_with_stats(graph).0
+pub fn diks_stanczyk(graph: &CubicGraph) -> PerfectPairing {
+    diks_stanczyk_with_stats(graph).0
 }
 
-/// [`perfect_matching`] with its [`DsStats`].
-pub fn perfect_matching_with_stats(graph: &CubicGraph) -> (PerfectMatching, DsStats) {
+/// [`diks_stanczyk`] with its [`DsStats`].
+pub fn diks_stanczyk_with_stats(graph: &CubicGraph) -> (PerfectPairing, DsStats) {
     run(graph, 0)
 }
 
 /// A perfect matching of `graph` that does not contain edge `avoid` (Biedl et al.: one always
-/// exists), with its [`DsStats`]. Same algorithm and bounds as [`perfect_matching`].
+/// exists), with its [`DsStats`]. Same algorithm and bounds as [`diks_stanczyk`].
 ///
 /// # Errors
 /// [`GraphError::EdgeOutOfRange`] if `avoid` is not an edge of `graph`.
-pub fn perfect_matching_avoiding(
+pub fn diks_stanczyk_avoiding(
     graph: &CubicGraph,
     avoid: u32,
-) -> Result<(PerfectMatching, DsStats), GraphError> {
+) -> Result<(PerfectPairing, DsStats), GraphError> {
     if avoid >= graph.edge_count() {
         return Err(GraphError::EdgeOutOfRange {
             edge: avoid,
@@ -272,7 +269,7 @@ impl Reducer {
     }
 }
 
-fn run(graph: &CubicGraph, avoid: u32) -> (PerfectMatching, DsStats) {
+fn run(graph: &CubicGraph, avoid: u32) -> (PerfectPairing, DsStats) {
     let t0 = Instant::now();
     let n = graph.node_count() as usize;
     let m = graph.edge_count() as usize;
@@ -323,7 +320,9 @@ fn run(graph: &CubicGraph, avoid: u32) -> (PerfectMatching, DsStats) {
     debug_assert!(matched[m..].iter().all(|&x| !x));
     matched.truncate(m);
     debug_assert!(!matched[avoid as usize]);
-    let matching = PerfectMatching::new(graph, matched)
+    let matching = Pairing::from_edge_flags(graph, &matched)
+        .map_err(|err| err.to_string())
+        .and_then(|pairing| verify_perfect_pairing(graph, pairing).map_err(|err| err.to_string()))
         .expect("Diks–Stanczyk produced an invalid matching (internal bug)");
     r.stats.lift_seconds = t2.elapsed().as_secs_f64();
     r.stats.dynamic = r.dc.stats();

@@ -1,54 +1,50 @@
 //! Perfect matchings of the dual graphs of closed triangle meshes: connected, bridgeless, 3-regular
-//! multigraphs ([`CubicGraph`]), paired by the algorithms of the quadrangulation paper
+//! multigraphs, paired by the algorithms of the quadrangulation paper
 //! (`tri-quad-conversion-long.txt`, Section 3), each result checked by an independent verifier
-//! ([`verify`]).
+//! ([`verify_perfect_pairing`], the only way to a [`PerfectPairing`]).
 //!
-//! * [`diks_stanczyk`] — Frink's reductions with Diks and Stanczyk's dynamic connectivity,
-//!   O(n log² n) amortized, always perfect.
-//! * [`dynamic_connectivity`] — the fully dynamic connectivity / spanning-forest structure it uses.
-//! * [`karp_sipser`] — the Karp–Sipser greedy with immediate local repairs: a perfect pairing,
-//!   the fastest on most meshes (not from the paper; see its module doc).
-//! * [`file_order`] — the pairing a triangulated quad mesh is written in (its quads), when the
-//!   file lists them two triangles at a time; KS's first step.
-//! * [`subdivision_order`] — the pairing of a mesh written as a 1-to-4 subdivision, lifted from
-//!   the coarser mesh's; KS's second step.
+//! * Graphs: the [`DualGraph`] interface every pairing algorithm is generic over, implemented by
+//!   the implicit dual of a [`surftopo_mesh::SurfaceMesh`], by [`CubicGraph`] (a validated edge
+//!   list) and by [`CompactDual`] (a flat copy of either); pairings as [`Pairing`] (one mate edge
+//!   per node).
+//! * Initial pairings (Section 3.1): [`simple_greedy`], [`pulli_segal`].
+//! * Completion by augmenting paths (Edmonds' blossoms, Sections 3.1 and 3.3):
+//!   [`augment_to_perfect`], with the strategies of [`AugmentStrategy`].
+//! * [`diks_stanczyk`] — Frink's reductions with Diks and Stanczyk's dynamic connectivity
+//!   ([`DynamicConnectivity`]), O(n log² n) amortized, always perfect (Section 3.2).
+//! * [`karp_sipser_perfect`] — the Karp–Sipser greedy with immediate local repairs and a guided
+//!   completion: a perfect pairing, the fastest on most meshes (not from the paper).
 //! * [`generators`] — seeded random bridgeless cubic multigraphs and mesh duals, for tests and
 //!   benchmarks.
 
-pub mod cubic_graph;
-pub mod diks_stanczyk;
-pub mod dynamic_connectivity;
+mod augment;
+mod cubic_graph;
+mod diks_stanczyk;
+mod dual_graph;
+mod dynamic_connectivity;
 pub mod generators;
-pub mod verify;
+mod greedy;
+mod karp_sipser;
+mod pulli_segal;
+mod verify;
 pub mod weighted;
 
-pub use cubic_graph::{CubicGraph, GraphError};
-pub use diks_stanczyk::DsStats;
-pub use dynamic_connectivity::{DynamicConnectivity, DynamicStats};
-pub use verify::{
-    MatchingError, PerfectMatching, verify_perfect_matching, verify_perfect_matching_edges,
-    verify_perfect_matching_on,
-};
-
-// Pairing on the (implicit) dual graph: greedy, Pulli–Segal, augmenting paths.
-pub mod augment;
-pub mod dual_graph;
-pub mod file_order;
-pub mod greedy;
-pub mod karp_sipser;
-pub mod pulli_segal;
-pub mod subdivision_order;
-
 pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
+pub use cubic_graph::{CubicGraph, GraphError};
+pub use diks_stanczyk::{DsStats, diks_stanczyk, diks_stanczyk_avoiding, diks_stanczyk_with_stats};
 pub use dual_graph::{
     AdjacencyTable, CompactDual, DualGraph, Pairing, PairingError, mesh_dual_graph,
 };
-pub use file_order::file_order_pairing;
+pub use dynamic_connectivity::{DynamicConnectivity, DynamicStats};
 pub use greedy::simple_greedy;
 pub use karp_sipser::{
     KarpSipserOptions, KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with,
 };
 pub use pulli_segal::pulli_segal;
+pub use verify::{
+    MatchingError, PerfectPairing, verify_perfect_matching, verify_perfect_matching_edges,
+    verify_perfect_matching_on, verify_perfect_pairing,
+};
 pub use weighted::{
     Certificate, MinCostMatching, WeightedError, fast_min_cost_perfect_matching,
     min_cost_perfect_matching, verify_min_cost_perfect_matching,

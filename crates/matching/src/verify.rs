@@ -1,23 +1,31 @@
-//! Independent verification of perfect matchings, shared by every pairing algorithm of the crate.
+//! Independent verification of perfect matchings, shared by every pairing algorithm of the crate
+//! and by the quad pipeline.
 //!
-//! Written without sharing code with any algorithm: it only counts, for every node, the matched
-//! edges at it. A [`PerfectMatching`] can only be built through this check.
+//! Written without sharing code with any algorithm: it reads only the graph's endpoints and
+//! liveness, and checks, for every node, the matched edges at it. [`PerfectPairing`], the one
+//! verified pairing type, can only be built through [`verify_perfect_pairing`]; the flag and
+//! edge-list checks ([`verify_perfect_matching_on`], [`verify_perfect_matching`],
+//! [`verify_perfect_matching_edges`]) serve graphs given as edge lists.
+//!
+//! A matcher with an optimality claim (a weighted matching and its dual certificate) returns a
+//! [`Pairing`]; its verifier checks perfection here and the certificate beside it.
 
 use crate::cubic_graph::CubicGraph;
+use crate::dual_graph::{DualGraph, NONE, Pairing};
 use thiserror::Error;
 
 /// Why a set of edges is not a perfect matching.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum MatchingError {
-    /// The flag vector does not have one entry per edge.
-    #[error("{got} edge flags for a graph of {expected} edges")]
+    /// The flag vector does not have one entry per edge (or the pairing one mate per node slot).
+    #[error("{got} entries for a graph of {expected} edges (flags) or node slots (mates)")]
     LengthMismatch {
-        /// Number of edges of the graph.
+        /// Number of edges (node slots) of the graph.
         expected: usize,
-        /// Length of the flag vector.
+        /// Length of the flag vector (of the mates).
         got: usize,
     },
-    /// An edge list names an edge that does not exist.
+    /// An edge list or a pairing names an edge that does not exist (out of range, or removed).
     #[error("edge {edge} out of range ({edge_count} edges)")]
     EdgeOutOfRange {
         /// The offending edge index.
@@ -46,6 +54,32 @@ pub enum MatchingError {
     Uncovered {
         /// The first uncovered node.
         node: u32,
+    },
+    /// A pairing gives a removed node slot a mate edge.
+    #[error("node slot {node} is not a node of the graph but has mate edge {edge}")]
+    RemovedNode {
+        /// The removed node slot.
+        node: u32,
+        /// Its mate edge.
+        edge: u32,
+    },
+    /// A pairing gives a node a mate edge that does not end at it.
+    #[error("mate edge {edge} of node {node} does not end at it")]
+    NotAtNode {
+        /// The node.
+        node: u32,
+        /// Its mate edge.
+        edge: u32,
+    },
+    /// A pairing gives a node a mate edge that is not the mate edge of its other end.
+    #[error("mate edge {edge} of node {node} is not the mate edge of its other end {other}")]
+    OneSided {
+        /// The node.
+        node: u32,
+        /// Its mate edge.
+        edge: u32,
+        /// The edge's other end.
+        other: u32,
     },
     /// Two matched edges (or one edge listed twice) cover the same node.
     #[error("node {node} is covered by edges {first} and {second}")]
@@ -145,73 +179,175 @@ fn verify_edge_list(
     }
 }
 
-/// A verified perfect matching of a [`CubicGraph`]: one flag per edge id, every node covered by
-/// exactly one flagged edge. Built only through [`PerfectMatching::new`], which runs the check.
+/// Checks that `pairing` is a perfect matching of `graph` and wraps it, with its matched edges as
+/// per-edge flags ([`PerfectPairing::matched_flags`]). Works on any [`DualGraph`], tombstones
+/// included. O(n) time, one flag per edge slot of memory.
+///
+/// The check, in two sequential passes: every live node has a mate edge (removed node slots have
+/// none), whose flag is set; then every flagged edge is live, not a loop, and the mate edge of
+/// both its ends; and the flagged edges are half as many as the live nodes. Then every live node
+/// is covered by exactly one flagged edge: the flagged edges have disjoint ends (each end's mate
+/// edge is that edge), so they cover twice their number of nodes, all of them; and a node whose
+/// mate edge did not end at it would make that edge the mate edge of three nodes, one too many
+/// for the count. The edges are read in increasing id order, one endpoint lookup per matched
+/// edge: for a mesh, a sequential pass over its half-edges.
+///
+/// # Errors
+/// The first violation in node order (found by a second, node-by-node pass once the check has
+/// failed), as a [`MatchingError`] naming the node and the edge.
+pub fn verify_perfect_pairing<G: DualGraph + ?Sized>(
+    graph: &G,
+    pairing: Pairing,
+) -> Result<PerfectPairing, MatchingError> {
+    let mates = pairing.mates();
+    if mates.len() != graph.node_slots() {
+        return Err(MatchingError::LengthMismatch {
+            expected: graph.node_slots(),
+            got: mates.len(),
+        });
+    }
+    let edge_slots = graph.edge_slots();
+    let mut flags = vec![false; edge_slots];
+    let mut live = 0usize;
+    let mut fits = true;
+    for (v, &e) in mates.iter().enumerate() {
+        if graph.is_node(v as u32) {
+            live += 1;
+            match flags.get_mut(e as usize) {
+                Some(flag) => *flag = true,
+                None => fits = false,
+            }
+        } else {
+            fits &= e == NONE;
+        }
+    }
+    let mut matched = 0usize;
+    if fits {
+        for (e, _) in flags.iter().enumerate().filter(|&(_, &m)| m) {
+            let e = e as u32;
+            let [a, b] = if graph.is_edge(e) {
+                graph.endpoints(e)
+            } else {
+                [NONE, NONE]
+            };
+            if a == b || mates[a as usize] != e || mates[b as usize] != e {
+                fits = false;
+                break;
+            }
+            matched += 1;
+        }
+    }
+    if !fits || 2 * matched != live {
+        if let Some(violation) = first_violation(graph, mates) {
+            return Err(violation);
+        }
+        // Never reached (both passes characterise a perfect matching), but then the node-by-node
+        // pass has proved the matching perfect.
+        flags = pairing.edge_flags(edge_slots);
+        matched = live / 2;
+    }
+    Ok(PerfectPairing {
+        pairing,
+        flags,
+        len: matched,
+    })
+}
+
+/// The first node, in node order, whose mate edge shows that `mates` is not a perfect matching of
+/// `graph`: a live node without a mate edge, or whose mate edge is not a live non-loop edge ending
+/// at it and matched at its other end too, or a removed node slot with a mate edge. These conditions
+/// hold at every node exactly when the mates are a perfect matching (a second edge covering a node
+/// would be the mate edge of another node ending at it, hence its own): `None` then.
+fn first_violation<G: DualGraph + ?Sized>(graph: &G, mates: &[u32]) -> Option<MatchingError> {
+    for (v, &e) in mates.iter().enumerate() {
+        let v = v as u32;
+        if !graph.is_node(v) {
+            if e != NONE {
+                return Some(MatchingError::RemovedNode { node: v, edge: e });
+            }
+            continue;
+        }
+        if e == NONE {
+            return Some(MatchingError::Uncovered { node: v });
+        }
+        if e as usize >= graph.edge_slots() || !graph.is_edge(e) {
+            return Some(MatchingError::EdgeOutOfRange {
+                edge: e,
+                edge_count: graph.edge_slots(),
+            });
+        }
+        let [a, b] = graph.endpoints(e);
+        if a == b {
+            return Some(MatchingError::MatchedLoop { edge: e });
+        }
+        let other = match v {
+            _ if v == a => b,
+            _ if v == b => a,
+            _ => return Some(MatchingError::NotAtNode { node: v, edge: e }),
+        };
+        if mates[other as usize] != e {
+            return Some(MatchingError::OneSided {
+                node: v,
+                edge: e,
+                other,
+            });
+        }
+    }
+    None
+}
+
+/// A verified perfect matching of a [`DualGraph`] (a pairing of every triangle): built only by
+/// [`verify_perfect_pairing`], so holding one is the proof that every live node is matched
+/// exactly once. It reads as the [`Pairing`] it wraps (`Deref`, read-only: nothing can unmatch a
+/// node of it).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct PerfectMatching {
-    matched: Vec<bool>,
+pub struct PerfectPairing {
+    pairing: Pairing,
+    /// Per edge slot: whether the edge is matched.
+    flags: Vec<bool>,
     len: usize,
 }
 
-impl PerfectMatching {
-    /// Verifies `matched` (indexed by edge id) against `graph` and wraps it.
-    ///
-    /// # Errors
-    /// The [`MatchingError`] of [`verify_perfect_matching`].
-    pub fn new(graph: &CubicGraph, matched: Vec<bool>) -> Result<Self, MatchingError> {
-        verify_perfect_matching(graph, &matched)?;
-        let len = matched.iter().filter(|&&m| m).count();
-        Ok(PerfectMatching { matched, len })
+impl PerfectPairing {
+    /// The pairing (one mate edge per node slot).
+    pub fn pairing(&self) -> &Pairing {
+        &self.pairing
     }
 
-    /// Whether edge `e` is in the matching (false for out-of-range ids).
-    pub fn contains(&self, e: u32) -> bool {
-        self.matched.get(e as usize).copied().unwrap_or(false)
+    /// The pairing, unwrapped (for an algorithm that changes it, which then verifies it again).
+    pub fn into_pairing(self) -> Pairing {
+        self.pairing
     }
 
-    /// The flags, indexed by edge id.
-    pub fn flags(&self) -> &[bool] {
-        &self.matched
+    /// Per edge slot of the graph it was verified on: whether the edge is matched.
+    pub fn matched_flags(&self) -> &[bool] {
+        &self.flags
     }
 
-    /// The matched edge ids in increasing order.
-    pub fn edges(&self) -> Vec<u32> {
-        self.matched
-            .iter()
-            .enumerate()
-            .filter(|&(_, &m)| m)
-            .map(|(e, _)| e as u32)
-            .collect()
-    }
-
-    /// Number of matched edges (half the node count).
+    /// Number of matched edges (half the live nodes).
     pub fn len(&self) -> usize {
         self.len
     }
 
-    /// Whether the matching is empty (never, for a valid graph).
+    /// Whether the matching is empty (only for a graph without nodes).
     pub fn is_empty(&self) -> bool {
         self.len == 0
     }
+}
 
-    /// The flags, indexed by edge id.
-    pub fn into_flags(self) -> Vec<bool> {
-        self.matched
+impl std::ops::Deref for PerfectPairing {
+    type Target = Pairing;
+
+    fn deref(&self) -> &Pairing {
+        &self.pairing
     }
 }
 
-/// Panics unless `pairing` is a perfect matching of `graph`, checked by
-/// [`verify_perfect_matching_on`] on the graph's edge list (for the crate's unit tests).
+/// Panics unless `pairing` is a perfect matching of `graph` ([`verify_perfect_pairing`]), for the
+/// crate's unit tests.
 #[cfg(test)]
-pub(crate) fn assert_perfect_pairing<G: crate::DualGraph + ?Sized>(
-    graph: &G,
-    pairing: &crate::Pairing,
-) {
-    let edges: Vec<[u32; 2]> = (0..graph.edge_slots() as u32)
-        .map(|e| graph.endpoints(e))
-        .collect();
-    let matched = pairing.edge_flags(graph.edge_slots());
-    verify_perfect_matching_on(graph.node_slots() as u32, &edges, &matched).unwrap();
+pub(crate) fn assert_perfect_pairing<G: DualGraph + ?Sized>(graph: &G, pairing: &Pairing) {
+    verify_perfect_pairing(graph, pairing.clone()).unwrap();
 }
 
 #[cfg(test)]
@@ -245,5 +381,74 @@ mod tests {
             verify_perfect_matching_edges(&g, &[2, 2]),
             Err(MatchingError::CoveredTwice { .. })
         ));
+    }
+
+    /// Every violation of a perfect pairing is named, and only a perfect one is wrapped.
+    #[test]
+    fn pairings_are_verified_node_by_node() {
+        // The theta graph: nodes 0 and 1 joined by edges 0, 1 and 2.
+        let g = CubicGraph::new(2, vec![[0, 1], [0, 1], [1, 0]]).unwrap();
+        let pairing = |mate: Vec<u32>| Pairing { mate };
+        let ok = verify_perfect_pairing(&g, pairing(vec![2, 2])).unwrap();
+        assert_eq!((ok.len(), ok.edge_flags(3)), (1, vec![false, false, true]));
+        assert_eq!(ok.pairing().mates(), &[2, 2]);
+        assert_eq!(ok.matched_flags(), &[false, false, true]);
+        let check = |mate: Vec<u32>| verify_perfect_pairing(&g, pairing(mate)).unwrap_err();
+        assert_eq!(
+            check(vec![0]),
+            MatchingError::LengthMismatch {
+                expected: 2,
+                got: 1
+            }
+        );
+        assert_eq!(
+            check(vec![NONE, NONE]),
+            MatchingError::Uncovered { node: 0 }
+        );
+        assert_eq!(
+            check(vec![7, 7]),
+            MatchingError::EdgeOutOfRange {
+                edge: 7,
+                edge_count: 3
+            }
+        );
+        assert_eq!(
+            check(vec![0, 1]),
+            MatchingError::OneSided {
+                node: 0,
+                edge: 0,
+                other: 1
+            }
+        );
+        let four =
+            CubicGraph::new(4, vec![[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]).unwrap();
+        assert_eq!(
+            verify_perfect_pairing(&four, pairing(vec![0, 0, 0, 5])).unwrap_err(),
+            MatchingError::NotAtNode { node: 2, edge: 0 }
+        );
+        // Every edge consistent at its ends, but too few of them: the count finds it.
+        assert_eq!(
+            verify_perfect_pairing(&four, pairing(vec![0, 0, 0, 0])).unwrap_err(),
+            MatchingError::NotAtNode { node: 2, edge: 0 }
+        );
+        // A mesh with removed faces: their slots must stay unmatched.
+        let mut mesh = surftopo_mesh::generators::torus(6, 4).mesh;
+        let mut scratch = surftopo_mesh::LinkScratch::default();
+        mesh.contract(surftopo_mesh::EdgeId(10).halfedge(), &mut scratch)
+            .unwrap();
+        let removed = (0..mesh.face_slots() as u32)
+            .find(|&f| !mesh.is_node(f))
+            .unwrap();
+        let (perfect, _) = crate::karp_sipser_perfect(&mesh).unwrap();
+        verify_perfect_pairing(&mesh, perfect.clone()).unwrap();
+        let mut mate = perfect.mate;
+        mate[removed as usize] = 0;
+        assert_eq!(
+            verify_perfect_pairing(&mesh, pairing(mate)).unwrap_err(),
+            MatchingError::RemovedNode {
+                node: removed,
+                edge: 0
+            }
+        );
     }
 }

@@ -6,25 +6,31 @@ mod common;
 use common::*;
 use petgraph::graph::UnGraph;
 use proptest::prelude::*;
-use surftopo_matching::diks_stanczyk::{
-    perfect_matching, perfect_matching_avoiding, perfect_matching_with_stats,
+use surftopo_matching::{
+    CubicGraph, GraphError, PerfectPairing, diks_stanczyk as perfect_matching,
+    diks_stanczyk_avoiding as perfect_matching_avoiding,
+    diks_stanczyk_with_stats as perfect_matching_with_stats, verify_perfect_matching,
 };
-use surftopo_matching::{CubicGraph, GraphError, verify_perfect_matching};
+
+/// The matched flags of `m`, indexed by edge id of `g`.
+fn flags(g: &CubicGraph, m: &PerfectPairing) -> Vec<bool> {
+    m.edge_flags(g.edge_count() as usize)
+}
 
 /// Runs DS (plain and avoiding `avoid`) and checks both results twice.
 fn check(n: u32, edges: Vec<[u32; 2]>, avoid: Option<u32>) {
     let g = CubicGraph::new(n, edges.clone()).expect("test graph must be valid");
     let (m, stats) = perfect_matching_with_stats(&g);
     assert_eq!(stats.reductions as u32, n / 2 - 1);
-    verify_perfect_matching(&g, m.flags()).unwrap();
-    assert_perfect(n, &edges, m.flags());
+    verify_perfect_matching(&g, &flags(&g, &m)).unwrap();
+    assert_perfect(n, &edges, &flags(&g, &m));
     assert_eq!(m.len() as u32, n / 2);
-    assert!(!m.contains(0), "default run avoids edge 0");
+    assert!(!m.contains_edge(&g, 0), "default run avoids edge 0");
     if let Some(f) = avoid {
         let (m2, _) = perfect_matching_avoiding(&g, f).unwrap();
-        verify_perfect_matching(&g, m2.flags()).unwrap();
-        assert_perfect(n, &edges, m2.flags());
-        assert!(!m2.contains(f), "edge {f} must be avoided");
+        verify_perfect_matching(&g, &flags(&g, &m2)).unwrap();
+        assert_perfect(n, &edges, &flags(&g, &m2));
+        assert!(!m2.contains_edge(&g, f), "edge {f} must be avoided");
     }
 }
 
@@ -116,8 +122,8 @@ fn necklace_needs_the_digon_fallback() {
         let g = CubicGraph::new(2 * k, edges.clone()).unwrap();
         let (m, stats) = perfect_matching_avoiding(&g, 2).unwrap();
         assert!(stats.digon_reductions > 0);
-        assert!(!m.contains(2));
-        assert_perfect(2 * k, &edges, m.flags());
+        assert!(!m.contains_edge(&g, 2));
+        assert_perfect(2 * k, &edges, &flags(&g, &m));
     }
 }
 
@@ -129,8 +135,8 @@ fn every_avoided_edge_on_small_random_graphs() {
             let g = CubicGraph::new(n, edges.clone()).unwrap();
             for f in 0..g.edge_count() {
                 let (m, _) = perfect_matching_avoiding(&g, f).unwrap();
-                assert_perfect(n, &edges, m.flags());
-                assert!(!m.contains(f));
+                assert_perfect(n, &edges, &flags(&g, &m));
+                assert!(!m.contains_edge(&g, f));
             }
         }
     }
@@ -180,8 +186,8 @@ fn hundred_thousand_nodes() {
     let edges = ear_graph(n, 2024);
     let g = CubicGraph::new(n, edges.clone()).unwrap();
     let (m, stats) = perfect_matching_with_stats(&g);
-    assert_perfect(n, &edges, m.flags());
-    verify_perfect_matching(&g, m.flags()).unwrap();
+    assert_perfect(n, &edges, &flags(&g, &m));
+    verify_perfect_matching(&g, &flags(&g, &m)).unwrap();
     assert_eq!(stats.reductions, u64::from(n / 2 - 1));
 }
 
@@ -204,7 +210,7 @@ fn matches_petgraph_maximum_matching_on_small_graphs() {
             "petgraph: a bridgeless cubic graph has a perfect matching"
         );
         assert_eq!(ours.len(), theirs.len());
-        assert_perfect(n, &edges, ours.flags());
+        assert_perfect(n, &edges, &flags(&g, &ours));
     }
 }
 

@@ -45,13 +45,6 @@ fn check_matching(node_count: usize, edges: &[[u32; 2]], mates: &[u32]) -> usize
     unmatched
 }
 
-/// The dual edges of `mesh` as node pairs, by edge id.
-fn dual_edges(mesh: &surftopo_mesh::SurfaceMesh) -> Vec<[u32; 2]> {
-    (0..DualGraph::edge_slots(mesh) as u32)
-        .map(|e| DualGraph::endpoints(mesh, e))
-        .collect()
-}
-
 /// No edge joins two unmatched nodes.
 fn check_maximal(edges: &[[u32; 2]], mates: &[u32]) {
     for (e, &[a, b]) in edges.iter().enumerate() {
@@ -378,7 +371,7 @@ fn karp_sipser_gives_perfect_matchings() {
     for graph in graphs() {
         let n = graph.node_count() as usize;
         // 0: every isolated node goes to the completion; 6: a few repairs fit; default.
-        for options in ks_options([0, 6, surftopo_matching::karp_sipser::REPAIR_BUDGET]) {
+        for options in ks_options([0, 6, KarpSipserOptions::default().repair_budget]) {
             let (pairing, stats) = karp_sipser_perfect_with(&graph, &options).unwrap();
             assert_eq!(check_matching(n, graph.edges(), pairing.mates()), 0);
             verify_perfect_matching(&graph, &pairing.edge_flags(graph.edge_count() as usize))
@@ -464,7 +457,7 @@ fn karp_sipser_repairs_and_defers_on_meshes_in_both_start_orders() {
             completed += stats.completed;
             reversals += stats.reversals;
             skipped += stats.skipped;
-            let edges = dual_edges(mesh);
+            let edges = mesh.edge_list();
             assert_eq!(
                 check_matching(mesh.face_count(), &edges, pairing.mates()),
                 0
@@ -506,7 +499,7 @@ fn karp_sipser_pairs_a_file_written_quad_by_quad_as_written() {
     let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
     assert!(stats.file_order);
     check_ks_stats(&stats, &options);
-    let edges = dual_edges(mesh);
+    let edges = mesh.edge_list();
     assert_eq!(
         check_matching(mesh.face_count(), &edges, pairing.mates()),
         0
@@ -540,7 +533,7 @@ fn karp_sipser_lifts_the_pairing_of_a_mesh_written_as_a_subdivision() {
         let (pairing, stats) = karp_sipser_perfect_with(mesh, &options).unwrap();
         check_ks_stats(&stats, &options);
         assert_eq!(stats.subdivision_levels, levels);
-        let edges = dual_edges(mesh);
+        let edges = mesh.edge_list();
         assert_eq!(
             check_matching(mesh.face_count(), &edges, pairing.mates()),
             0
@@ -653,7 +646,7 @@ fn completions_from_many_roots_end_perfect_or_maximum() {
         let mesh = &sphere.mesh;
         let (pairing, stats) = karp_sipser_perfect_with(mesh, &deferring).unwrap();
         assert!(stats.completed >= 2, "seed {seed}: nothing to complete");
-        let edges = dual_edges(mesh);
+        let edges = mesh.edge_list();
         assert_eq!(
             check_matching(mesh.face_count(), &edges, pairing.mates()),
             0
@@ -699,7 +692,7 @@ fn completions_from_many_roots_end_perfect_or_maximum() {
 
 /// On a face-shuffled icosphere (the dual bipartite but for 12 pentagons) the holes left by the
 /// greedy are of one colour: their guided waves meet only by even paths, so the guided completion
-/// gives up early ([`surftopo_matching::karp_sipser::GUIDED_EVEN_CONTACTS`]) and the Forest
+/// gives up early (after 32 meetings by even paths) and the Forest
 /// completion pairs them with few nodes (without the rule the waves swept the whole graph: 20,876
 /// nodes on these 20,480).
 #[test]
@@ -708,7 +701,7 @@ fn karp_sipser_guided_waves_give_up_on_a_bipartite_region() {
     let mesh = &sphere.mesh;
     let (pairing, stats) = karp_sipser_perfect(mesh).unwrap();
     assert_eq!(
-        check_matching(mesh.face_count(), &dual_edges(mesh), pairing.mates()),
+        check_matching(mesh.face_count(), &mesh.edge_list(), pairing.mates()),
         0
     );
     assert!(stats.completed >= 2 && stats.guided == 0, "{stats:?}");
@@ -734,7 +727,7 @@ fn karp_sipser_breadth_first_ties_follow_the_front() {
         let mesh = &shuffled.mesh;
         let (pairing, stats) = karp_sipser_perfect_with(mesh, &greedy_only).unwrap();
         check_ks_stats(&stats, &greedy_only);
-        let edges = dual_edges(mesh);
+        let edges = mesh.edge_list();
         assert_eq!(
             check_matching(mesh.face_count(), &edges, pairing.mates()),
             0

@@ -8,6 +8,7 @@
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::topology::SurfaceMesh;
+use crate::union_find::UnionFind;
 use std::borrow::Cow;
 
 /// At most this many problems are listed by [`inspect`] (counts are always complete).
@@ -98,7 +99,7 @@ impl Inspection {
 
 /// Inspects a triangle soup without building anything: counts and every problem found.
 pub fn inspect(vertex_count: usize, triangles: &[[u32; 3]]) -> Inspection {
-    Pairing::run(vertex_count, triangles).inspection
+    CornerPairing::run(vertex_count, triangles).inspection
 }
 
 /// Builds a closed, connected, orientable surface from a triangle soup.
@@ -112,7 +113,7 @@ pub fn build(
     vertex_count: usize,
     triangles: &[[u32; 3]],
 ) -> Result<(SurfaceMesh, BuildReport), BuildError> {
-    let mut p = Pairing::run(vertex_count, triangles);
+    let mut p = CornerPairing::run(vertex_count, triangles);
     if let Some(e) = p.inspection.problems.first() {
         return Err(e.clone());
     }
@@ -128,7 +129,7 @@ pub fn build(
                 t.swap(1, 2);
             }
         }
-        let again = Pairing::run(p.inspection.vertices, &oriented);
+        let again = CornerPairing::run(p.inspection.vertices, &oriented);
         debug_assert_eq!(again.inspection.reoriented_faces, 0);
         if let Some(e) = again.inspection.problems.first() {
             return Err(e.clone());
@@ -142,26 +143,28 @@ pub fn build(
 }
 
 /// Builds the topology of a soup that is known to be valid and consistently oriented, with no
-/// unreferenced vertices (used by generators).
+/// unreferenced vertices, so that vertex and face ids are the soup's as given.
 ///
 /// # Errors
-/// As [`build`]; additionally fails if faces would need reorienting or vertices dropping.
+/// As [`build`]; [`BuildError::NotAsGiven`] if faces would need reorienting or vertices
+/// dropping.
 pub fn build_topology(
     vertex_count: usize,
     triangles: &[[u32; 3]],
 ) -> Result<SurfaceMesh, BuildError> {
     let (mesh, report) = build(vertex_count, triangles)?;
     if report.reoriented_faces > 0 || !report.dropped_vertices.is_empty() {
-        return Err(BuildError::NonOrientable {
-            edge: [0, 0],
-            face: 0,
+        return Err(BuildError::NotAsGiven {
+            reoriented_faces: report.reoriented_faces,
+            dropped_vertices: report.dropped_vertices.len(),
         });
     }
     Ok(mesh)
 }
 
-/// Internal state of the pairing pass.
-struct Pairing<'a> {
+/// The pass that pairs the corners of a soup's triangles (each a directed edge) into the
+/// half-edges of a mesh, with what it found on the way.
+struct CornerPairing<'a> {
     inspection: Inspection,
     /// Triangles in new vertex ids (faces with bad indices are kept with `u32::MAX`); the input
     /// itself when nothing needed renumbering.
@@ -177,14 +180,67 @@ struct Pairing<'a> {
     flip: Vec<bool>,
 }
 
-impl<'a> Pairing<'a> {
+/// Step 1: the triangles in the ids of the referenced vertices, the faces whose indices are valid
+/// (in range, no vertex repeated), and the vertex renumbering.
+struct Indexed<'a> {
+    /// Per face: whether its indices are valid.
+    valid: Vec<bool>,
+    /// Triangles in new vertex ids (`u32::MAX` for invalid faces), or the input as it is.
+    remapped: Cow<'a, [[u32; 3]]>,
+    old_to_new: Vec<VertexId>,
+    new_to_old: Vec<u32>,
+    /// The unreferenced input vertices.
+    dropped: Vec<u32>,
+}
+
+impl Indexed<'_> {
+    /// The valid faces with their index.
+    fn live(&self) -> impl Iterator<Item = (usize, &[u32; 3])> {
+        self.remapped
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t[0] != u32::MAX)
+    }
+
+    fn vertex_count(&self) -> usize {
+        self.new_to_old.len()
+    }
+}
+
+/// Step 2: every corner as `(larger endpoint, corner << 1 | forward, opposite vertex)`, bucketed
+/// by its smaller endpoint and sorted within buckets by larger endpoint then corner.
+struct SortedCorners {
+    /// Per vertex `v`, where its bucket starts in `sorted` (`nv + 1` entries).
+    bucket_start: Vec<u32>,
+    sorted: Vec<(u32, u32, u32)>,
+}
+
+/// Step 3: the corners grouped by edge, the pairs of an edge in two faces made half-edges.
+struct EdgePairs {
+    /// Half-edge id of each corner (`INVALID` for the corners of edges not in two faces).
+    corner_halfedge: Vec<HalfedgeId>,
+    /// Corner of each half-edge.
+    halfedge_corner: Vec<u32>,
+    /// Per edge in two faces: whether its two corners run the same way (an orientation conflict
+    /// between the faces).
+    same_direction: Vec<bool>,
+    /// `around[c]`: the corner after `c` around its vertex when the orientation is consistent
+    /// (the next corner, in its face, after the twin of corner `c`'s half-edge).
+    around: Vec<u32>,
+    /// The vertices joined along the edges.
+    vertex_sets: UnionFind,
+    /// Consecutive corners of the edges in more than two faces (their faces are joined too).
+    other_joins: Vec<(u32, u32)>,
+}
+
+impl<'a> CornerPairing<'a> {
     fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
         let mut ins = Inspection {
             faces: triangles.len(),
             orientable: true,
             ..Inspection::default()
         };
-        let mut p = Pairing {
+        let mut p = CornerPairing {
             inspection: Inspection::default(),
             remapped: Cow::Borrowed(&[]),
             old_to_new: Vec::new(),
@@ -208,341 +264,25 @@ impl<'a> Pairing<'a> {
             p.inspection = ins;
             return p;
         }
-        // 1. Indices in range, no repeated vertex; referenced vertices.
-        let mut valid = vec![true; triangles.len()];
-        let mut used = vec![false; vertex_count];
-        for (f, t) in triangles.iter().enumerate() {
-            if let Some(&index) = t.iter().find(|&&i| i as usize >= vertex_count) {
-                ins.push(BuildError::IndexOutOfRange {
-                    face: f,
-                    index,
-                    vertex_count,
-                });
-                valid[f] = false;
-                continue;
-            }
-            if t[0] == t[1] || t[0] == t[2] || t[1] == t[2] {
-                let vertex = if t[0] == t[1] || t[0] == t[2] {
-                    t[0]
-                } else {
-                    t[1]
-                };
-                ins.push(BuildError::RepeatedVertex { face: f, vertex });
-                valid[f] = false;
-                continue;
-            }
-            for &i in t {
-                used[i as usize] = true;
-            }
-        }
-        let mut old_to_new = vec![VertexId::INVALID; vertex_count];
-        let mut new_to_old = Vec::with_capacity(vertex_count);
-        for (i, &u) in used.iter().enumerate() {
-            if u {
-                old_to_new[i] = VertexId::new(new_to_old.len());
-                new_to_old.push(i as u32);
-            } else {
-                p.dropped.push(i as u32);
-            }
-        }
-        drop(used);
-        let nv = new_to_old.len();
-        ins.vertices = nv;
-        ins.dropped_vertices = p.dropped.len();
-        let identity = p.dropped.is_empty() && valid.iter().all(|&ok| ok);
-        let remapped: Cow<'a, [[u32; 3]]> = if identity {
-            Cow::Borrowed(triangles)
-        } else {
-            triangles
-                .iter()
-                .zip(&valid)
-                .map(|(t, &ok)| {
-                    if ok {
-                        t.map(|i| old_to_new[i as usize].0)
-                    } else {
-                        [u32::MAX; 3]
-                    }
-                })
-                .collect()
-        };
-
-        // 2. Corners sorted by (smaller endpoint, larger endpoint, corner) without comparisons: a
-        //    counting sort by the larger endpoint, then a stable one by the smaller endpoint.
-        let nf = triangles.len();
-        let live = || {
-            remapped
-                .iter()
-                .enumerate()
-                .filter(|(_, t)| t[0] != u32::MAX)
-        };
-        let mut bucket_start = vec![0u32; nv + 1];
-        let mut by_hi_start = vec![0u32; nv + 1];
-        for (_, t) in live() {
-            for i in 0..3 {
-                let (a, b) = (t[i], t[(i + 1) % 3]);
-                bucket_start[a.min(b) as usize + 1] += 1;
-                by_hi_start[a.max(b) as usize + 1] += 1;
-            }
-        }
-        for v in 0..nv {
-            bucket_start[v + 1] += bucket_start[v];
-            by_hi_start[v + 1] += by_hi_start[v];
-        }
-        // (smaller endpoint, corner << 1 | forward, opposite vertex), by larger endpoint.
-        let mut by_hi = vec![(0u32, 0u32, 0u32); by_hi_start[nv] as usize];
-        let mut fill = by_hi_start.clone();
-        for (f, t) in live() {
-            for i in 0..3 {
-                let (a, b, opposite) = (t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
-                let hi = a.max(b) as usize;
-                let corner = ((3 * f + i) as u32) << 1 | u32::from(a < b);
-                by_hi[fill[hi] as usize] = (a.min(b), corner, opposite);
-                fill[hi] += 1;
-            }
-        }
-        // (larger endpoint, corner << 1 | forward, opposite vertex), bucketed by the smaller
-        // endpoint and sorted within buckets: grouping then reads nothing at random.
-        let mut sorted = vec![(0u32, 0u32, 0u32); bucket_start[nv] as usize];
-        fill.copy_from_slice(&bucket_start);
-        for hi in 0..nv {
-            let range = by_hi_start[hi] as usize..by_hi_start[hi + 1] as usize;
-            for &(lo, corner, opposite) in &by_hi[range] {
-                sorted[fill[lo as usize] as usize] = (hi as u32, corner, opposite);
-                fill[lo as usize] += 1;
-            }
-        }
-        drop((fill, by_hi, by_hi_start));
-        // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
-        // the smallest edge of the face.
-        let is_smallest_edge = |c: u32, lo: u32, hi: u32| {
-            let t = &remapped[(c / 3) as usize];
-            let smallest = (0..3)
-                .map(|i| (t[i].min(t[(i + 1) % 3]), t[i].max(t[(i + 1) % 3])))
-                .min();
-            smallest == Some((lo, hi))
-        };
-
-        // 3. Group corners by edge; assign half-edge pairs to edges in two faces. A bucket holds
-        //    a few corners (about twice the vertex degree): sorted by (larger endpoint, corner),
-        //    which numbers the edges in (smaller, larger) order.
-        let mut corner_halfedge = vec![HalfedgeId::INVALID; 3 * nf];
-        let mut halfedge_corner: Vec<u32> = Vec::with_capacity(3 * nf);
-        let mut same_direction: Vec<bool> = Vec::with_capacity(3 * nf / 2);
-        // around[c]: the corner after c around its vertex when the orientation is consistent (the
-        // next corner, in its face, after the twin of corner c's half-edge).
-        let mut around = vec![u32::MAX; 3 * nf];
-        // Vertices joined along the edges, and the faces joined by the edges in more than two
-        // faces (those in two are the half-edge pairs), for the components (step 5).
-        let mut vertex_uf = UnionFind::new(nv);
-        let mut other_joins: Vec<(u32, u32)> = Vec::new();
-        for v in 0..nv {
-            let bucket = &sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
-            let mut v_root = vertex_uf.find(v as u32);
-            let mut i = 0;
-            while i < bucket.len() {
-                let hi = bucket[i].0;
-                let mut j = i + 1;
-                while j < bucket.len() && bucket[j].0 == hi {
-                    j += 1;
-                }
-                // (larger endpoint, corner << 1 | forward, opposite vertex) of each face on this edge.
-                let group = &bucket[i..j];
-                let corner = |k: usize| group[k].1 >> 1;
-                ins.edges += 1;
-                v_root = vertex_uf.join(v_root, hi);
-                if group.len() > 2 {
-                    other_joins.extend((1..group.len()).map(|k| (corner(k - 1), corner(k))));
-                }
-                // A repeated face shares this edge and its opposite vertex with an earlier one.
-                for k in 1..group.len() {
-                    let first = group[..k].iter().find(|g| g.2 == group[k].2);
-                    if let Some(&(_, c1, _)) =
-                        first.filter(|_| is_smallest_edge(corner(k), v as u32, hi))
-                    {
-                        ins.push(BuildError::DuplicateFace {
-                            face: (corner(k) / 3) as usize,
-                            duplicate_of: (c1 >> 1) as usize / 3,
-                        });
-                    }
-                }
-                let edge = || [new_to_old[v], new_to_old[hi as usize]];
-                let face = (corner(0) / 3) as usize;
-                match group.len() {
-                    1 => {
-                        ins.boundary_edges += 1;
-                        ins.push(BuildError::BoundaryEdge { edge: edge(), face });
-                    }
-                    2 => {
-                        let (c1, c2) = (corner(0), corner(1));
-                        let h = halfedge_corner.len();
-                        corner_halfedge[c1 as usize] = HalfedgeId::new(h);
-                        corner_halfedge[c2 as usize] = HalfedgeId::new(h + 1);
-                        around[c1 as usize] = next_corner(c2);
-                        around[c2 as usize] = next_corner(c1);
-                        halfedge_corner.push(c1);
-                        halfedge_corner.push(c2);
-                        same_direction.push(group[0].1 & 1 == group[1].1 & 1);
-                    }
-                    _ => {
-                        ins.non_manifold_edges += 1;
-                        ins.push(BuildError::NonManifoldEdge {
-                            edge: edge(),
-                            face_count: group.len(),
-                            face,
-                        });
-                    }
-                }
-                i = j;
-            }
-        }
-        drop(sorted);
-        drop(bucket_start);
-
-        // 4. Vertex manifoldness: the fan around each vertex must hold all its corners (checked
-        //    when every edge has two faces; the walk ignores orientation).
-        let all_paired =
-            valid.iter().all(|&ok| ok) && ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
-        let consistent = !same_direction.iter().any(|&same| same);
+        let indexed = check_indices(vertex_count, triangles, &mut ins);
+        let sorted = sort_corners(&indexed);
+        let mut edges = pair_edges(&indexed, sorted, &mut ins);
+        let all_paired = indexed.valid.iter().all(|&ok| ok)
+            && ins.boundary_edges == 0
+            && ins.non_manifold_edges == 0;
+        let consistent = !edges.same_direction.iter().any(|&same| same);
         if all_paired {
-            // Corner count and one corner of each vertex.
-            let mut corners = vec![0u32; nv];
-            let mut start_corner = vec![u32::MAX; nv];
-            for (c, &v) in remapped.iter().flatten().enumerate() {
-                corners[v as usize] += 1;
-                start_corner[v as usize] = c as u32;
-            }
-            // The corner after `leave` around vertex v. In general the two corners of a face that
-            // touch v are `leave` itself (leaving v) and the previous corner (entering v): the walk
-            // enters a face through one and leaves through the other, whatever the faces'
-            // orientations; with a consistent orientation that is `around`.
-            let step = |leave: u32, v: u32| {
-                if consistent {
-                    return around[leave as usize];
-                }
-                let h = corner_halfedge[leave as usize];
-                let entered = halfedge_corner[h.twin().idx()];
-                // `entered` is one of the two corners at v in the next face; leave by the other.
-                if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
-                    prev_corner(entered)
-                } else {
-                    next_corner(entered)
-                }
-            };
-            for v in 0..nv {
-                let start = start_corner[v];
-                let (mut leave, mut steps) = (start, 0u32);
-                loop {
-                    steps += 1;
-                    leave = step(leave, v as u32);
-                    if leave / 3 == start / 3 || steps > corners[v] {
-                        break;
-                    }
-                }
-                if steps != corners[v] {
-                    ins.non_manifold_vertices += 1;
-                    ins.push(BuildError::NonManifoldVertex {
-                        vertex: new_to_old[v],
-                        faces: corners[v] as usize,
-                        first_fan: steps as usize,
-                    });
-                }
-            }
+            check_fans(&indexed, &edges, consistent, &mut ins);
         }
-
-        // 5. Components: faces joined through shared edges. On a clean surface (every edge in two
-        //    faces, every vertex one fan) two faces are joined iff their vertices are joined along
-        //    edges, so the (smaller) vertex union-find answers; otherwise one over the faces.
-        let first_valid = valid.iter().position(|&ok| ok);
-        if let Some(f0) = first_valid {
-            let by_vertex = all_paired && ins.non_manifold_vertices == 0;
-            let mut uf = if by_vertex {
-                vertex_uf
-            } else {
-                let mut face_uf = UnionFind::new(nf);
-                let pairs = halfedge_corner.chunks_exact(2).map(|p| (p[0], p[1]));
-                for (c1, c2) in pairs.chain(other_joins.iter().copied()) {
-                    face_uf.union(c1 / 3, c2 / 3);
-                }
-                face_uf
-            };
-            // The union-find node of a face, and the nodes.
-            let node = |f: usize| if by_vertex { remapped[f][0] } else { f as u32 };
-            let nodes = if by_vertex { nv } else { nf };
-            let roots = (0..nodes as u32)
-                .filter(|&x| (by_vertex || valid[x as usize]) && uf.find(x) == x)
-                .count();
-            let root0 = uf.find(node(f0));
-            let outside = (f0..nf).find(|&f| valid[f] && uf.find(node(f)) != root0);
-            ins.components = roots;
-            if let Some(face) = outside {
-                ins.push(BuildError::Disconnected {
-                    components: roots,
-                    face,
-                });
-            }
-        }
-
-        // 6. Orientation by breadth-first search across manifold edges.
-        // Skipped when every edge already joins opposite directions (the usual case).
-        let mut flip = vec![false; nf];
-        let mut seen = vec![consistent; nf];
-        let mut queue: Vec<u32> = Vec::new();
-        for start in 0..nf {
-            if seen[start] || !valid[start] {
-                continue;
-            }
-            seen[start] = true;
-            queue.clear();
-            queue.push(start as u32);
-            let mut head = 0;
-            let mut component_faces = Vec::new();
-            while head < queue.len() {
-                let f = queue[head] as usize;
-                head += 1;
-                component_faces.push(f);
-                for i in 0..3 {
-                    let h = corner_halfedge[3 * f + i];
-                    if !h.is_valid() {
-                        continue;
-                    }
-                    let other_corner = halfedge_corner[h.twin().idx()];
-                    let g = (other_corner / 3) as usize;
-                    let want = flip[f] ^ same_direction[h.edge().idx()];
-                    if !seen[g] {
-                        seen[g] = true;
-                        flip[g] = want;
-                        queue.push(g as u32);
-                    } else if flip[g] != want && ins.orientable {
-                        ins.orientable = false;
-                        let t = &remapped[f];
-                        ins.push(BuildError::NonOrientable {
-                            edge: [
-                                new_to_old[t[i] as usize],
-                                new_to_old[t[(i + 1) % 3] as usize],
-                            ],
-                            face: g,
-                        });
-                    }
-                }
-            }
-            // Keep the majority orientation of each component.
-            let flipped = component_faces.iter().filter(|&&f| flip[f]).count();
-            if 2 * flipped > component_faces.len() {
-                for &f in &component_faces {
-                    flip[f] = !flip[f];
-                }
-            }
-        }
-        if ins.orientable {
-            ins.reoriented_faces = flip.iter().filter(|&&b| b).count();
-        }
-
+        count_components(&indexed, &mut edges, all_paired, &mut ins);
+        let flip = orient(&indexed, &edges, consistent, &mut ins);
         p.inspection = ins;
-        p.remapped = remapped;
-        p.old_to_new = old_to_new;
-        p.new_to_old = new_to_old;
-        p.corner_halfedge = corner_halfedge;
-        p.halfedge_corner = halfedge_corner;
+        p.remapped = indexed.remapped;
+        p.old_to_new = indexed.old_to_new;
+        p.new_to_old = indexed.new_to_old;
+        p.dropped = indexed.dropped;
+        p.corner_halfedge = edges.corner_halfedge;
+        p.halfedge_corner = edges.halfedge_corner;
         p.flip = flip;
         p
     }
@@ -580,6 +320,376 @@ impl<'a> Pairing<'a> {
     }
 }
 
+/// Step 1: indices in range and no repeated vertex (else the face is invalid and reported); the
+/// referenced vertices, renumbered densely in input order.
+fn check_indices<'a>(
+    vertex_count: usize,
+    triangles: &'a [[u32; 3]],
+    ins: &mut Inspection,
+) -> Indexed<'a> {
+    let mut valid = vec![true; triangles.len()];
+    let mut used = vec![false; vertex_count];
+    for (f, t) in triangles.iter().enumerate() {
+        if let Some(&index) = t.iter().find(|&&i| i as usize >= vertex_count) {
+            ins.push(BuildError::IndexOutOfRange {
+                face: f,
+                index,
+                vertex_count,
+            });
+            valid[f] = false;
+            continue;
+        }
+        if t[0] == t[1] || t[0] == t[2] || t[1] == t[2] {
+            let vertex = if t[0] == t[1] || t[0] == t[2] {
+                t[0]
+            } else {
+                t[1]
+            };
+            ins.push(BuildError::RepeatedVertex { face: f, vertex });
+            valid[f] = false;
+            continue;
+        }
+        for &i in t {
+            used[i as usize] = true;
+        }
+    }
+    let mut old_to_new = vec![VertexId::INVALID; vertex_count];
+    let mut new_to_old = Vec::with_capacity(vertex_count);
+    let mut dropped = Vec::new();
+    for (i, &u) in used.iter().enumerate() {
+        if u {
+            old_to_new[i] = VertexId::new(new_to_old.len());
+            new_to_old.push(i as u32);
+        } else {
+            dropped.push(i as u32);
+        }
+    }
+    drop(used);
+    ins.vertices = new_to_old.len();
+    ins.dropped_vertices = dropped.len();
+    let identity = dropped.is_empty() && valid.iter().all(|&ok| ok);
+    let remapped: Cow<'a, [[u32; 3]]> = if identity {
+        Cow::Borrowed(triangles)
+    } else {
+        triangles
+            .iter()
+            .zip(&valid)
+            .map(|(t, &ok)| {
+                if ok {
+                    t.map(|i| old_to_new[i as usize].0)
+                } else {
+                    [u32::MAX; 3]
+                }
+            })
+            .collect()
+    };
+    Indexed {
+        valid,
+        remapped,
+        old_to_new,
+        new_to_old,
+        dropped,
+    }
+}
+
+/// Step 2: the corners sorted by (smaller endpoint, larger endpoint, corner) without
+/// comparisons: a counting sort by the larger endpoint, then a stable one by the smaller.
+fn sort_corners(indexed: &Indexed) -> SortedCorners {
+    let nv = indexed.vertex_count();
+    let mut bucket_start = vec![0u32; nv + 1];
+    let mut by_hi_start = vec![0u32; nv + 1];
+    for (_, t) in indexed.live() {
+        for i in 0..3 {
+            let (a, b) = (t[i], t[(i + 1) % 3]);
+            bucket_start[a.min(b) as usize + 1] += 1;
+            by_hi_start[a.max(b) as usize + 1] += 1;
+        }
+    }
+    for v in 0..nv {
+        bucket_start[v + 1] += bucket_start[v];
+        by_hi_start[v + 1] += by_hi_start[v];
+    }
+    // (smaller endpoint, corner << 1 | forward, opposite vertex), by larger endpoint.
+    let mut by_hi = vec![(0u32, 0u32, 0u32); by_hi_start[nv] as usize];
+    let mut fill = by_hi_start.clone();
+    for (f, t) in indexed.live() {
+        for i in 0..3 {
+            let (a, b, opposite) = (t[i], t[(i + 1) % 3], t[(i + 2) % 3]);
+            let hi = a.max(b) as usize;
+            let corner = ((3 * f + i) as u32) << 1 | u32::from(a < b);
+            by_hi[fill[hi] as usize] = (a.min(b), corner, opposite);
+            fill[hi] += 1;
+        }
+    }
+    // (larger endpoint, corner << 1 | forward, opposite vertex), bucketed by the smaller
+    // endpoint and sorted within buckets: grouping then reads nothing at random.
+    let mut sorted = vec![(0u32, 0u32, 0u32); bucket_start[nv] as usize];
+    fill.copy_from_slice(&bucket_start);
+    for hi in 0..nv {
+        let range = by_hi_start[hi] as usize..by_hi_start[hi + 1] as usize;
+        for &(lo, corner, opposite) in &by_hi[range] {
+            sorted[fill[lo as usize] as usize] = (hi as u32, corner, opposite);
+            fill[lo as usize] += 1;
+        }
+    }
+    SortedCorners {
+        bucket_start,
+        sorted,
+    }
+}
+
+/// Step 3: groups the corners by edge and makes the two corners of an edge in two faces a
+/// half-edge pair; reports boundary and non-manifold edges and repeated faces. A bucket holds a
+/// few corners (about twice the vertex degree): sorted by (larger endpoint, corner), which
+/// numbers the edges in (smaller, larger) order.
+fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -> EdgePairs {
+    let (remapped, new_to_old) = (&indexed.remapped, &indexed.new_to_old);
+    let (nv, nf) = (indexed.vertex_count(), remapped.len());
+    let SortedCorners {
+        bucket_start,
+        sorted,
+    } = corners;
+    // Two faces sharing an edge and its opposite vertex are the same face; reported once, at
+    // the smallest edge of the face.
+    let is_smallest_edge = |c: u32, lo: u32, hi: u32| {
+        let t = &remapped[(c / 3) as usize];
+        let smallest = (0..3)
+            .map(|i| (t[i].min(t[(i + 1) % 3]), t[i].max(t[(i + 1) % 3])))
+            .min();
+        smallest == Some((lo, hi))
+    };
+    let mut pairs = EdgePairs {
+        corner_halfedge: vec![HalfedgeId::INVALID; 3 * nf],
+        halfedge_corner: Vec::with_capacity(3 * nf),
+        same_direction: Vec::with_capacity(3 * nf / 2),
+        around: vec![u32::MAX; 3 * nf],
+        vertex_sets: UnionFind::new(nv),
+        other_joins: Vec::new(),
+    };
+    for v in 0..nv {
+        let bucket = &sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
+        let mut v_root = pairs.vertex_sets.find(v as u32);
+        let mut i = 0;
+        while i < bucket.len() {
+            let hi = bucket[i].0;
+            let mut j = i + 1;
+            while j < bucket.len() && bucket[j].0 == hi {
+                j += 1;
+            }
+            // (larger endpoint, corner << 1 | forward, opposite vertex) of each face on this edge.
+            let group = &bucket[i..j];
+            let corner = |k: usize| group[k].1 >> 1;
+            ins.edges += 1;
+            v_root = pairs.vertex_sets.union(v_root, hi);
+            if group.len() > 2 {
+                pairs
+                    .other_joins
+                    .extend((1..group.len()).map(|k| (corner(k - 1), corner(k))));
+            }
+            // A repeated face shares this edge and its opposite vertex with an earlier one.
+            for k in 1..group.len() {
+                let first = group[..k].iter().find(|g| g.2 == group[k].2);
+                if let Some(&(_, c1, _)) =
+                    first.filter(|_| is_smallest_edge(corner(k), v as u32, hi))
+                {
+                    ins.push(BuildError::DuplicateFace {
+                        face: (corner(k) / 3) as usize,
+                        duplicate_of: (c1 >> 1) as usize / 3,
+                    });
+                }
+            }
+            let edge = || [new_to_old[v], new_to_old[hi as usize]];
+            let face = (corner(0) / 3) as usize;
+            match group.len() {
+                1 => {
+                    ins.boundary_edges += 1;
+                    ins.push(BuildError::BoundaryEdge { edge: edge(), face });
+                }
+                2 => {
+                    let (c1, c2) = (corner(0), corner(1));
+                    let h = pairs.halfedge_corner.len();
+                    pairs.corner_halfedge[c1 as usize] = HalfedgeId::new(h);
+                    pairs.corner_halfedge[c2 as usize] = HalfedgeId::new(h + 1);
+                    pairs.around[c1 as usize] = next_corner(c2);
+                    pairs.around[c2 as usize] = next_corner(c1);
+                    pairs.halfedge_corner.push(c1);
+                    pairs.halfedge_corner.push(c2);
+                    pairs.same_direction.push(group[0].1 & 1 == group[1].1 & 1);
+                }
+                _ => {
+                    ins.non_manifold_edges += 1;
+                    ins.push(BuildError::NonManifoldEdge {
+                        edge: edge(),
+                        face_count: group.len(),
+                        face,
+                    });
+                }
+            }
+            i = j;
+        }
+    }
+    pairs
+}
+
+/// Step 4, when every edge is in two faces: the fan around each vertex must hold all its corners
+/// (the walk ignores orientation).
+fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut Inspection) {
+    let (remapped, nv) = (&indexed.remapped, indexed.vertex_count());
+    // Corner count and one corner of each vertex.
+    let mut corners = vec![0u32; nv];
+    let mut start_corner = vec![u32::MAX; nv];
+    for (c, &v) in remapped.iter().flatten().enumerate() {
+        corners[v as usize] += 1;
+        start_corner[v as usize] = c as u32;
+    }
+    // The corner after `leave` around vertex v. In general the two corners of a face that
+    // touch v are `leave` itself (leaving v) and the previous corner (entering v): the walk
+    // enters a face through one and leaves through the other, whatever the faces'
+    // orientations; with a consistent orientation that is `around`.
+    let step = |leave: u32, v: u32| {
+        if consistent {
+            return edges.around[leave as usize];
+        }
+        let h = edges.corner_halfedge[leave as usize];
+        let entered = edges.halfedge_corner[h.twin().idx()];
+        // `entered` is one of the two corners at v in the next face; leave by the other.
+        if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
+            prev_corner(entered)
+        } else {
+            next_corner(entered)
+        }
+    };
+    for v in 0..nv {
+        let start = start_corner[v];
+        let (mut leave, mut steps) = (start, 0u32);
+        loop {
+            steps += 1;
+            leave = step(leave, v as u32);
+            if leave / 3 == start / 3 || steps > corners[v] {
+                break;
+            }
+        }
+        if steps != corners[v] {
+            ins.non_manifold_vertices += 1;
+            ins.push(BuildError::NonManifoldVertex {
+                vertex: indexed.new_to_old[v],
+                faces: corners[v] as usize,
+                first_fan: steps as usize,
+            });
+        }
+    }
+}
+
+/// Step 5: components, faces joined through shared edges. On a clean surface (every edge in two
+/// faces, every vertex one fan) two faces are joined iff their vertices are joined along edges,
+/// so the (smaller) vertex sets answer; otherwise sets over the faces, joined by the half-edge
+/// pairs and by the edges in more than two faces.
+fn count_components(
+    indexed: &Indexed,
+    edges: &mut EdgePairs,
+    all_paired: bool,
+    ins: &mut Inspection,
+) {
+    let (remapped, valid) = (&indexed.remapped, &indexed.valid);
+    let (nv, nf) = (indexed.vertex_count(), remapped.len());
+    let Some(f0) = valid.iter().position(|&ok| ok) else {
+        return;
+    };
+    let by_vertex = all_paired && ins.non_manifold_vertices == 0;
+    let mut face_sets;
+    let sets = if by_vertex {
+        &mut edges.vertex_sets
+    } else {
+        face_sets = UnionFind::new(nf);
+        let pairs = edges.halfedge_corner.chunks_exact(2).map(|p| (p[0], p[1]));
+        for (c1, c2) in pairs.chain(edges.other_joins.iter().copied()) {
+            face_sets.union(c1 / 3, c2 / 3);
+        }
+        &mut face_sets
+    };
+    // The set element of a face, and the elements.
+    let node = |f: usize| if by_vertex { remapped[f][0] } else { f as u32 };
+    let nodes = if by_vertex { nv } else { nf };
+    let roots = (0..nodes as u32)
+        .filter(|&x| (by_vertex || valid[x as usize]) && sets.find(x) == x)
+        .count();
+    let root0 = sets.find(node(f0));
+    let outside = (f0..nf).find(|&f| valid[f] && sets.find(node(f)) != root0);
+    ins.components = roots;
+    if let Some(face) = outside {
+        ins.push(BuildError::Disconnected {
+            components: roots,
+            face,
+        });
+    }
+}
+
+/// Step 6: the orientation, by breadth-first search across the half-edge pairs, keeping the
+/// majority orientation of each component; skipped when every edge already joins opposite
+/// directions (the usual case). Returns per face whether it is reversed.
+fn orient(
+    indexed: &Indexed,
+    edges: &EdgePairs,
+    consistent: bool,
+    ins: &mut Inspection,
+) -> Vec<bool> {
+    let (remapped, valid, new_to_old) = (&indexed.remapped, &indexed.valid, &indexed.new_to_old);
+    let nf = remapped.len();
+    let mut flip = vec![false; nf];
+    let mut seen = vec![consistent; nf];
+    let mut queue: Vec<u32> = Vec::new();
+    for start in 0..nf {
+        if seen[start] || !valid[start] {
+            continue;
+        }
+        seen[start] = true;
+        queue.clear();
+        queue.push(start as u32);
+        let mut head = 0;
+        let mut component_faces = Vec::new();
+        while head < queue.len() {
+            let f = queue[head] as usize;
+            head += 1;
+            component_faces.push(f);
+            for i in 0..3 {
+                let h = edges.corner_halfedge[3 * f + i];
+                if !h.is_valid() {
+                    continue;
+                }
+                let other_corner = edges.halfedge_corner[h.twin().idx()];
+                let g = (other_corner / 3) as usize;
+                let want = flip[f] ^ edges.same_direction[h.edge().idx()];
+                if !seen[g] {
+                    seen[g] = true;
+                    flip[g] = want;
+                    queue.push(g as u32);
+                } else if flip[g] != want && ins.orientable {
+                    ins.orientable = false;
+                    let t = &remapped[f];
+                    ins.push(BuildError::NonOrientable {
+                        edge: [
+                            new_to_old[t[i] as usize],
+                            new_to_old[t[(i + 1) % 3] as usize],
+                        ],
+                        face: g,
+                    });
+                }
+            }
+        }
+        // Keep the majority orientation of each component.
+        let flipped = component_faces.iter().filter(|&&f| flip[f]).count();
+        if 2 * flipped > component_faces.len() {
+            for &f in &component_faces {
+                flip[f] = !flip[f];
+            }
+        }
+    }
+    if ins.orientable {
+        ins.reoriented_faces = flip.iter().filter(|&&b| b).count();
+    }
+    flip
+}
+
 /// The next corner in the same face (corner `3f + i` is at vertex `t[i]`).
 #[inline]
 fn next_corner(c: u32) -> u32 {
@@ -590,40 +700,4 @@ fn next_corner(c: u32) -> u32 {
 #[inline]
 fn prev_corner(c: u32) -> u32 {
     c - c % 3 + (c % 3 + 2) % 3
-}
-
-/// Union-find with path halving.
-struct UnionFind {
-    parent: Vec<u32>,
-}
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        Self {
-            parent: (0..n as u32).collect(),
-        }
-    }
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.parent[x as usize] != x {
-            let gp = self.parent[self.parent[x as usize] as usize];
-            self.parent[x as usize] = gp;
-            x = gp;
-        }
-        x
-    }
-    /// Joins the set of `x` to the set whose root is `root`; returns the root of the union (the
-    /// smaller of the two roots, as [`Self::union`]).
-    fn join(&mut self, root: u32, x: u32) -> u32 {
-        let rx = self.find(x);
-        let (lo, hi) = (root.min(rx), root.max(rx));
-        self.parent[hi as usize] = lo;
-        lo
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            let (lo, hi) = (ra.min(rb), ra.max(rb));
-            self.parent[hi as usize] = lo;
-        }
-    }
 }

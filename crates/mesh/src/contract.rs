@@ -128,6 +128,14 @@ impl SurfaceMesh {
 
     /// Contracts the edge of `h = u -> v` into u without testing the link condition; the caller
     /// guarantees it (algorithms that decide contractibility themselves, such as RS). O(deg v).
+    ///
+    /// What breaks when the link condition fails: if u and v have a common neighbour besides x and
+    /// y (a separating triangle), or both have degree 3, the result is still a closed mesh of the
+    /// same surface that passes [`Self::check_invariants`], but it has a multi-edge and is no
+    /// longer simplicial; if the two faces of the edge share another edge (possible only on a
+    /// mesh that is not simplicial), the half-edge structure is corrupted: `check_invariants`
+    /// fails and later queries and edits may panic. `h` must be live (a removed half-edge
+    /// panics or corrupts the mesh likewise).
     pub fn contract_unchecked(&mut self, h: HalfedgeId) -> Contraction {
         let t = h.twin();
         let (a, c) = (self.next(h), self.next(t));

@@ -113,6 +113,18 @@ pub enum BuildError {
         /// Side 0, 1 or 2.
         side: usize,
     },
+    /// [`crate::build_topology`] takes a soup only as it is, and this one needs faces reoriented
+    /// or unreferenced vertices dropped ([`crate::build`] does both).
+    #[error(
+        "the soup is not usable as given: {reoriented_faces} faces would be reoriented and \
+         {dropped_vertices} unreferenced vertices dropped"
+    )]
+    NotAsGiven {
+        /// Faces whose orientation disagrees with the majority of their component.
+        reoriented_faces: usize,
+        /// Vertices that no face uses.
+        dropped_vertices: usize,
+    },
     /// A face is not a triangle.
     #[error("face {face}: has {sides} sides, a triangle is needed")]
     NotTriangle {

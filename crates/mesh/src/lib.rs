@@ -3,7 +3,7 @@
 //! - [`SurfaceMesh`]: the topology (struct of arrays, `twin(h) = h ^ 1`, tombstones).
 //! - [`build()`] / [`inspect`]: from a triangle soup, with typed validation errors ([`BuildError`]).
 //! - Edits with their checks: [`SurfaceMesh::flip`], [`SurfaceMesh::contract`] /
-//!   [`SurfaceMesh::split_vertex`], [`SurfaceMesh::compact`], [`reorder_morton`].
+//!   [`SurfaceMesh::split_vertex`], [`SurfaceMesh::compact`], [`geometry::reorder_morton`].
 //! - [`geometry`]: positions and edge lengths beside the topology.
 //! - [`generators`]: deterministic test and benchmark surfaces.
 //!
@@ -20,13 +20,14 @@ mod ids;
 mod invariants;
 mod printable;
 mod topology;
+mod union_find;
 
 pub use build::{BuildReport, Inspection, MAX_LISTED_PROBLEMS, build, build_topology, inspect};
 pub use compact::Renumbering;
 pub use contract::{Contraction, LinkScratch};
 pub use error::{BuildError, EditError, InvariantError};
-pub use geometry::{Point3, reorder_morton};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
 pub use printable::printable;
 pub use topology::{Outgoing, SurfaceMesh};
+pub use union_find::UnionFind;

@@ -110,7 +110,10 @@ impl SurfaceMesh {
         self.face[h.idx()]
     }
     /// The face of every half-edge slot, by half-edge id (a half-edge and its twin are
-    /// `2e` and `2e + 1`, edge `e`'s); removed half-edges hold an invalid id.
+    /// `2e` and `2e + 1`, edge `e`'s), as stored: a read-only view for sequential passes over
+    /// the edges. Removed half-edges hold [`FaceId::INVALID`] or the stale face of their last
+    /// use, so a caller must skip them (by [`Self::is_edge_live`]) whenever the mesh has
+    /// tombstones; the view is the mesh's own and changes with the next edit.
     #[inline]
     pub fn halfedge_faces(&self) -> &[FaceId] {
         &self.face

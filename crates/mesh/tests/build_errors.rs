@@ -4,8 +4,8 @@
 
 use std::collections::HashMap;
 use surftopo_mesh::generators::Surface;
-use surftopo_mesh::geometry::weld_exact;
-use surftopo_mesh::{BuildError, FaceId, Point3, VertexId, build, inspect};
+use surftopo_mesh::geometry::{Point3, weld_exact};
+use surftopo_mesh::{BuildError, FaceId, VertexId, build, build_topology, inspect};
 
 /// The tetrahedron, consistently oriented.
 const TETRA: [[u32; 3]; 4] = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
@@ -540,4 +540,28 @@ fn inspect_counts_on_a_broken_soup() {
     );
     assert!(ok.problems.is_empty() && ok.is_closed() && ok.orientable);
     assert_eq!(ok.euler_characteristic(), 2);
+}
+
+/// `build_topology` takes a soup only as given: a face to reorient or a vertex to drop is its own
+/// error, naming how many, where `build` fixes both.
+#[test]
+fn build_topology_refuses_what_build_would_fix() {
+    assert!(build_topology(4, &TETRA).is_ok());
+    let mut reversed = TETRA;
+    reversed[2].swap(1, 2);
+    assert_eq!(
+        build_topology(4, &reversed).unwrap_err(),
+        BuildError::NotAsGiven {
+            reoriented_faces: 1,
+            dropped_vertices: 0
+        }
+    );
+    assert_eq!(
+        build_topology(6, &TETRA).unwrap_err(),
+        BuildError::NotAsGiven {
+            reoriented_faces: 0,
+            dropped_vertices: 2
+        }
+    );
+    assert!(build(6, &reversed).is_ok());
 }

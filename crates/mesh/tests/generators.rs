@@ -2,11 +2,12 @@
 //! plus structural checks, closedness recomputed from the triangle soup, and determinism.
 
 use std::collections::{HashMap, HashSet};
+use surftopo_mesh::LinkScratch;
 use surftopo_mesh::generators::{
     CavityBox, Surface, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
     shuffle_faces, subdivide_midpoint, tetrahedron, torus,
 };
-use surftopo_mesh::{LinkScratch, Point3};
+use surftopo_mesh::geometry::Point3;
 
 /// V, E, F and genus recomputed from the soup alone; asserts that every undirected edge lies in
 /// exactly two triangles and every directed edge in exactly one (closed, consistently oriented).

@@ -13,8 +13,8 @@ use std::time::Instant;
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, DelaunayStats,
     IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle,
-    cotan_laplacian, delaunay_tessellation, delaunay_with_stats, dense_vertex_index,
-    intrinsic_delaunay_laplacian, lumped_mass,
+    cotan_laplacian, delaunay_tessellation, delaunay_with_stats, intrinsic_delaunay_laplacian,
+    lumped_mass,
 };
 
 /// The ways to compute an intrinsic Delaunay triangulation (`method=`).
@@ -55,7 +55,7 @@ impl Located {
 
     /// A triangulation without input vertices (a portalgon): rows in vertex id order.
     fn dense(tri: IntrinsicTriangulation) -> Self {
-        let (row_of, rows) = dense_vertex_index(&tri);
+        let (row_of, rows) = (tri.matrix_rows(), tri.mesh().vertex_count());
         Self { tri, row_of, rows }
     }
 

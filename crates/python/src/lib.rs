@@ -1,8 +1,8 @@
 //! The native module `surftopo._native` of the surftopo Python package (pyo3, built by maturin).
 //!
-//! A thin layer over the libraries: numpy arrays in ([`arrays`]), the library call with the GIL
+//! A thin layer over the libraries: numpy arrays in (`arrays.rs`), the library call with the GIL
 //! released, numpy arrays and `scipy.sparse.csr_matrix` out, typed errors as the exceptions of
-//! `surftopo._errors` ([`errors`]). The public Python API, its docstrings and its type stubs are
+//! `surftopo._errors` (`errors.rs`). The public Python API, its docstrings and its type stubs are
 //! in `python/surftopo/`.
 
 mod arrays;

@@ -21,7 +21,7 @@ use std::time::Instant;
 
 use surftopo_matching::{
     AugmentStrategy, DualGraph, KarpSipserOptions, augment_to_perfect, karp_sipser_perfect_with,
-    pulli_segal, simple_greedy,
+    pulli_segal, simple_greedy, verify_perfect_pairing,
 };
 use surftopo_mesh::generators::Surface;
 
@@ -206,6 +206,7 @@ fn profile_ks(
     let mut evict = std::env::var_os("COLD").map(|_| vec![0u8; 64 << 20]);
     // Per variant: the CPU seconds and the stats of each run.
     let mut ks_runs: [(Vec<f64>, Vec<_>); 2] = Default::default();
+    let mut last_pairing = None;
     for _ in 0..repeat {
         for (&guided, (times, stats)) in guided.iter().zip(&mut ks_runs) {
             let options = KarpSipserOptions {
@@ -217,7 +218,8 @@ fn profile_ks(
             if let Some(buffer) = &mut evict {
                 evict_caches(buffer);
             }
-            let (t, (_, ks)) = time(1, || karp_sipser_perfect_with(mesh, &options).unwrap());
+            let (t, (pairing, ks)) = time(1, || karp_sipser_perfect_with(mesh, &options).unwrap());
+            last_pairing = Some(pairing);
             times.push(t);
             stats.push(ks);
         }
@@ -256,6 +258,14 @@ fn profile_ks(
             ks.reversals,
             ks.subdivision_levels,
         );
+    }
+    // The independent check every pipeline result goes through (copies made beforehand).
+    if let Some(pairing) = last_pairing {
+        let mut copies = vec![pairing; repeat].into_iter();
+        let (t, perfect) = time(repeat, || {
+            verify_perfect_pairing(mesh, copies.next().expect("one per run")).is_ok()
+        });
+        println!("{:21} {t:.5}  perfect {perfect}", "verify (ks pairing)");
     }
     Ok(())
 }

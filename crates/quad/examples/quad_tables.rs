@@ -324,9 +324,8 @@ fn lemon_on(
 }
 
 /// Calls per round in `--side-by-side`, for KS and for LEMON alike, the fastest kept: the
-/// first call of each runs on caches the other program has just filled (until session 8, KS
-/// had one call per round and LEMON three, which favoured LEMON: venus_50k subdivided, KS
-/// 12–13 ms cold against 9.3 ms warm).
+/// first call of each runs on caches the other program has just filled (one call for one side
+/// and three for the other would favour the side with three).
 const ROUND_CALLS: u64 = 3;
 
 /// `--side-by-side`: KS and LEMON in alternate rounds ([`ROUND_CALLS`] KS calls, then as many
@@ -705,7 +704,7 @@ fn markdown(records: &[Record], args: &Args) -> String {
             "\n## KS and LEMON side by side, round by round\n\n\
              Each round: three KS `quadrangulate` calls, then three LEMON `run()`s in its \
              harness, the fastest of each kept (the first of each runs on caches the other \
-             program has just filled; until session 8 KS had one call per round); the ratio is \
+             program has just filled); the ratio is \
              KS's pairing time over LEMON's in the same round.\n\n\
              | input | faces | rounds | lowest ratio | median ratio | highest ratio |\n\
              |---|---:|---:|---:|---:|---:|"

@@ -7,14 +7,17 @@
 //! - [`quadrangulate`] / [`quadrangulate_with`]: the pipeline for every algorithm ([`QuadAlgorithm`]:
 //!   SG, PS, LRS, DS): initial pairing, augmenting paths until the pairing is perfect, one quad per
 //!   pair, with the figures of Table 4.3 ([`QuadStats`]).
-//! - [`lrs`]: the expansion step of LRS (Algorithms 3.1–3.4), which pairs the triangles of a
+//! - [`expand`]: the expansion step of LRS (Algorithms 3.1–3.4), which pairs the triangles of a
 //!   triangulation K obtained from the input by edge flips.
+//!
+//! Every pairing reaches the quads as a [`PerfectPairing`], which only the independent verifier
+//! of `surftopo-matching` builds.
 //!
 //! The pairing algorithms themselves (SG, PS, augmenting paths, DS) live in `surftopo-matching`
 //! and work on the dual graph read implicitly from the half-edge mesh.
 
 mod error;
-pub mod lrs;
+mod lrs;
 mod quadrangulate;
 pub mod quality;
 
@@ -27,4 +30,6 @@ pub use quality::{
     QualityObjective, QualityQuads, QualityReport, pair_costs, quadrangulate_by_quality,
     quality_report,
 };
-pub use surftopo_matching::{AugmentStats, AugmentStrategy, KarpSipserOptions};
+pub use surftopo_matching::{
+    AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,
+};

@@ -12,7 +12,8 @@ use std::time::Instant;
 
 use surftopo_matching::{
     AugmentError, AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, Pairing,
-    augment_to_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
+    PerfectPairing, augment_to_perfect, karp_sipser_perfect_with, pulli_segal, simple_greedy,
+    verify_perfect_pairing,
 };
 use surftopo_mesh::{EdgeId, SurfaceMesh, VertexId};
 
@@ -39,7 +40,7 @@ pub enum QuadAlgorithm {
     /// materialised as a [`surftopo_matching::CubicGraph`]. Deterministic, always perfect.
     DiksStanczyk,
     /// KS: the Karp–Sipser greedy with immediate local repairs (not from the paper; see
-    /// `surftopo_matching::karp_sipser`). Deterministic. Its repairs count as augmentation.
+    /// [`surftopo_matching::karp_sipser_perfect`]). Deterministic. Its repairs count as augmentation.
     KarpSipser,
 }
 
@@ -112,6 +113,9 @@ pub struct QuadResult {
     pub diagonals: Vec<EdgeId>,
     /// K, the triangulation whose triangles were paired, when it differs from the input (LRS).
     pub triangulation: Option<SurfaceMesh>,
+    /// The pairing of the triangles of the paired triangulation (the input, or K), checked by
+    /// the independent verifier of `surftopo-matching` for every algorithm.
+    pub pairing: PerfectPairing,
     /// The Table 4.3 figures.
     pub stats: QuadStats,
     /// Details of the augmenting-path phase.
@@ -138,15 +142,17 @@ pub fn quadrangulate(
 /// pair.
 ///
 /// Takes any closed mesh (tombstones allowed; LRS needs a simplicial one). Guarantees: every live
-/// triangle of the paired triangulation (the input, or K for LRS) is in exactly one quad; the quads
+/// triangle of the paired triangulation (the input, or K for LRS) is in exactly one quad (the
+/// pairing of every algorithm goes through the independent verifier, O(n), before the quads are
+/// built: [`QuadResult::pairing`]); the quads
 /// are consistently oriented and form a closed manifold quad mesh of the input's genus on all its
 /// vertices (when the input is simplicial). For LRS, the number of triangles the expansion leaves
 /// unpaired is checked against the paper's bound `max(4, 56g − 12)`.
 ///
 /// KS reads only `options.karp_sipser` (its repairs and completion are its own, see
-/// `surftopo_matching::karp_sipser`); the other algorithms only `options.augment`.
+/// [`surftopo_matching::karp_sipser_perfect`]); the other algorithms only `options.augment`.
 ///
-/// Complexity: SG, PS and KS O(n) plus the augmentation (see `surftopo_matching::augment`); LRS
+/// Complexity: SG, PS and KS O(n) plus the augmentation (see [`surftopo_matching::augment_to_perfect`]); LRS
 /// O(g n + g²) (Theorem 3.2) plus the augmentation; DS O(n log² n) amortized.
 ///
 /// # Errors
@@ -165,10 +171,13 @@ pub fn quadrangulate_with(
         return Err(QuadError::Empty);
     }
     let paired = pair(mesh, algorithm, options, start)?;
-    let (quads, diagonals) = quads_of(
-        paired.triangulation.as_ref().unwrap_or(mesh),
-        &paired.pairing,
-    )?;
+    let paired_mesh = paired.triangulation.as_ref().unwrap_or(mesh);
+    let pairing = verify_perfect_pairing(paired_mesh, paired.pairing).map_err(|err| {
+        QuadError::Internal(format!(
+            "the {algorithm} pairing is not a perfect matching of the dual: {err}"
+        ))
+    })?;
+    let (quads, diagonals) = quads_of(paired_mesh, &pairing);
     let stats = QuadStats {
         algorithm: algorithm.name().to_string(),
         faces,
@@ -185,6 +194,7 @@ pub fn quadrangulate_with(
         quads,
         diagonals,
         triangulation: paired.triangulation,
+        pairing,
         stats,
         augmentation: paired.augmentation,
         expansion: paired.expansion,
@@ -300,7 +310,7 @@ fn diks_stanczyk_pairing(mesh: &SurfaceMesh) -> Result<Pairing, QuadError> {
     let graph = surftopo_matching::mesh_dual_graph(dense).map_err(|err| {
         QuadError::Internal(format!("the dual graph is not cubic and bridgeless: {err}"))
     })?;
-    let matching = surftopo_matching::diks_stanczyk::perfect_matching(&graph);
+    let matching = surftopo_matching::diks_stanczyk(&graph);
     let mut new_to_old = vec![u32::MAX; dense.edge_count()];
     match &map {
         Some(map) => {
@@ -315,18 +325,20 @@ fn diks_stanczyk_pairing(mesh: &SurfaceMesh) -> Result<Pairing, QuadError> {
             .enumerate()
             .for_each(|(e, o)| *o = e as u32),
     }
-    let edges = matching.edges().into_iter().map(|e| new_to_old[e as usize]);
+    let edges = (0..graph.edge_count())
+        .filter(|&e| matching.contains_edge(&graph, e))
+        .map(|e| new_to_old[e as usize]);
     Pairing::from_edges(mesh, edges)
         .map_err(|err| QuadError::Internal(format!("DS result is not a matching: {err}")))
 }
 
 /// One counter-clockwise quad per matched edge, in increasing edge id order (one sequential pass
-/// over the edges).
+/// over the edges); a perfect pairing makes one quad of every two triangles.
 pub(crate) fn quads_of(
     mesh: &SurfaceMesh,
-    pairing: &Pairing,
-) -> Result<(Vec<[VertexId; 4]>, Vec<EdgeId>), QuadError> {
-    let flags = pairing.edge_flags(SurfaceMesh::edge_slots(mesh));
+    pairing: &PerfectPairing,
+) -> (Vec<[VertexId; 4]>, Vec<EdgeId>) {
+    let flags = pairing.matched_flags();
     let mut quads = Vec::with_capacity(mesh.face_count() / 2);
     let mut diagonals = Vec::with_capacity(mesh.face_count() / 2);
     for (e, _) in flags.iter().enumerate().filter(|&(_, &m)| m) {
@@ -337,12 +349,5 @@ pub(crate) fn quads_of(
         quads.push([a, d, b, c]);
         diagonals.push(e);
     }
-    if 2 * quads.len() != mesh.face_count() {
-        return Err(QuadError::Internal(format!(
-            "{} pairs for {} triangles after augmentation",
-            quads.len(),
-            mesh.face_count()
-        )));
-    }
-    Ok((quads, diagonals))
+    (quads, diagonals)
 }

@@ -25,7 +25,8 @@
 //! a zero-length edge gives a 0 angle (quality 0) rather than NaN.
 
 use surftopo_matching::weighted::MAX_COST;
-use surftopo_mesh::{EdgeId, HalfedgeId, Point3, SurfaceMesh, VertexId};
+use surftopo_mesh::geometry::Point3;
+use surftopo_mesh::{EdgeId, HalfedgeId, SurfaceMesh, VertexId};
 
 /// Integer cost units per unit of real cost: the cost of an edge is `round((1 − η) · 10⁹)`
 /// (see `surftopo_matching::weighted` for how this rounding bounds the gap to the real optimum:
@@ -273,7 +274,9 @@ pub fn quadrangulate_by_quality(
     let pairing_seconds = start.elapsed().as_secs_f64();
     let pairing = surftopo_matching::Pairing::from_edges(mesh, edges.iter().copied())
         .map_err(|err| crate::QuadError::Internal(format!("quality pairing: {err}")))?;
-    let (quads, diagonals) = crate::quadrangulate::quads_of(mesh, &pairing)?;
+    let pairing = surftopo_matching::verify_perfect_pairing(mesh, pairing)
+        .map_err(|err| crate::QuadError::Internal(format!("quality pairing: {err}")))?;
+    let (quads, diagonals) = crate::quadrangulate::quads_of(mesh, &pairing);
     let report = quality_report(mesh, positions, &diagonals);
     let stats = crate::QuadStats {
         algorithm: objective.name().to_string(),
@@ -288,6 +291,7 @@ pub fn quadrangulate_by_quality(
             quads,
             diagonals,
             triangulation: None,
+            pairing,
             stats,
             augmentation: surftopo_matching::AugmentStats::default(),
             expansion: None,

@@ -45,7 +45,7 @@ pub fn random_flips(surface: &Surface, flips: usize, seed: u64) -> Surface {
 
 /// Whether the two triangles made by flipping `e`, (d, c, a) and (c, d, b), both have an area
 /// above a relative threshold (1e-12 of the squared longest side).
-fn keeps_area(mesh: &crate::SurfaceMesh, positions: &[crate::Point3], e: EdgeId) -> bool {
+fn keeps_area(mesh: &crate::SurfaceMesh, positions: &[crate::geometry::Point3], e: EdgeId) -> bool {
     let h = e.halfedge();
     let p = |v: crate::VertexId| positions[v.idx()];
     let (a, b) = (p(mesh.origin(h)), p(mesh.dest(h)));
@@ -53,20 +53,21 @@ fn keeps_area(mesh: &crate::SurfaceMesh, positions: &[crate::Point3], e: EdgeId)
         p(mesh.opposite_vertex(h)),
         p(mesh.opposite_vertex(h.twin())),
     );
-    let fat = |x: crate::Point3, y: crate::Point3, z: crate::Point3| {
-        let u = [y[0] - x[0], y[1] - x[1], y[2] - x[2]];
-        let w = [z[0] - x[0], z[1] - x[1], z[2] - x[2]];
-        let n = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
-        let area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        let longest = [u, w, [z[0] - y[0], z[1] - y[1], z[2] - y[2]]]
-            .iter()
-            .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-            .fold(0.0, f64::max);
-        area2 > 1e-24 * longest * longest
-    };
+    let fat =
+        |x: crate::geometry::Point3, y: crate::geometry::Point3, z: crate::geometry::Point3| {
+            let u = [y[0] - x[0], y[1] - x[1], y[2] - x[2]];
+            let w = [z[0] - x[0], z[1] - x[1], z[2] - x[2]];
+            let n = [
+                u[1] * w[2] - u[2] * w[1],
+                u[2] * w[0] - u[0] * w[2],
+                u[0] * w[1] - u[1] * w[0],
+            ];
+            let area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+            let longest = [u, w, [z[0] - y[0], z[1] - y[1], z[2] - y[2]]]
+                .iter()
+                .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+                .fold(0.0, f64::max);
+            area2 > 1e-24 * longest * longest
+        };
     fat(d, c, a) && fat(c, d, b)
 }

@@ -5,7 +5,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use surftopo_matching::verify_perfect_matching_on;
+use surftopo_matching::{DualGraph, verify_perfect_matching_on};
 use surftopo_mesh::{Contraction, LinkScratch, SurfaceMesh};
 use surftopo_quad::{QuadAlgorithm, QuadResult};
 use surftopo_testkit::check_closed_oriented_manifold;
@@ -113,16 +113,15 @@ pub fn check_result(
         flags[diag.idx()] = true;
     }
     assert_eq!(used_tri.len(), tris.len(), "{name}: every triangle paired");
-    // The pairing, as per-edge flags, is a perfect matching of the dual (crate verifier).
+    // The pairing, as per-edge flags, is the one the result reports and a perfect matching of the
+    // dual (the crate's counting verifier).
+    assert!(
+        result.pairing.edge_flags(paired.edge_slots()) == flags,
+        "{name}: the quads' diagonals are the reported pairing"
+    );
     let dense = paired.face_slots() == paired.face_count();
     if dense {
-        let edges: Vec<[u32; 2]> = (0..paired.edge_slots())
-            .map(|e| {
-                let h = surftopo_mesh::EdgeId::new(e).halfedge();
-                [paired.face(h).0, paired.face(h.twin()).0]
-            })
-            .collect();
-        verify_perfect_matching_on(paired.face_count() as u32, &edges, &flags)
+        verify_perfect_matching_on(paired.face_count() as u32, &paired.edge_list(), &flags)
             .unwrap_or_else(|e| panic!("{name}: not a perfect matching: {e}"));
     }
     // Figures.

@@ -3,8 +3,8 @@
 //! and Loop subdivision make them, in any order within the four), a perfect pairing of the
 //! coarser mesh lifts to one of the finer mesh in O(n), with no search. Not from the
 //! quadrangulation paper (which pairs any triangulation, Section 3): a shortcut for inputs that
-//! carry their own hierarchy. KS ([`crate::karp_sipser`]) tries it after the file's quads
-//! ([`crate::file_order`]) and before its greedy, level after level down to the coarsest mesh.
+//! carry their own hierarchy. Phase 1 of KS ([`super`]): after the file's quads
+//! ([`super::file_order`]) and before the greedy, level after level down to the coarsest mesh.
 //!
 //! # The lift
 //! Let coarse triangles `p` and `q` be paired, across their shared edge `ab`. Two children of
@@ -25,17 +25,15 @@
 //! Why: subdivided meshes are a common input (icospheres, refined meshes; our
 //! `subdivide_midpoint` and `icosphere`, and trimesh's `remesh.subdivide`, which its `icosphere`
 //! uses, write the four children of each face consecutively), and KS's greedy does badly on
-//! their id order. Measured (`quad_profile MESH 5 ks`, results/quad.md, session 8):
-//! icosphere(7) (327,680 faces): the greedy in id order isolates 4,042 triangles, defers 256,
-//! and its repairs and completion reach 1.37M nodes, 1.3x LEMON's time; with the lift, no
-//! search at all.
+//! their id order (it isolates thousands of triangles on icosphere(7), whose repairs then reach
+//! several times the graph); with the lift there is no search at all.
 
 use crate::dual_graph::{DualGraph, NONE, Pairing};
 
 /// The blocks of four of a finer graph as the nodes of a coarser one ([`coarsen`]); node `k` is
 /// the block `4k..4k + 4`.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CoarseDual {
+pub(super) struct CoarseDual {
     /// Per block, its three `(coarse edge, neighbouring block)` pairs.
     adjacency: Vec<[(u32, u32); 3]>,
     /// Per coarse edge, its two blocks.
@@ -80,7 +78,7 @@ impl DualGraph for CoarseDual {
 /// One level of 1-to-4 subdivision read from a graph's ids: the coarse graph, and which node of
 /// each block is its centre.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SubdivisionLevel {
+pub(super) struct SubdivisionLevel {
     coarse: CoarseDual,
     /// Per block, the index (0–3) of its centre within the block.
     centres: Vec<u8>,
@@ -89,7 +87,7 @@ pub struct SubdivisionLevel {
 /// The coarse graph of `graph` when its nodes `4k..4k + 4` are the children of one coarser
 /// triangle for every `k`, as the module doc says what is checked; `None` otherwise (also when
 /// there are removed node slots, or fewer than two blocks). O(n) at most.
-pub fn coarsen<G: DualGraph + ?Sized>(graph: &G) -> Option<SubdivisionLevel> {
+pub(super) fn coarsen<G: DualGraph + ?Sized>(graph: &G) -> Option<SubdivisionLevel> {
     let slots = graph.node_slots();
     if graph.node_count() != slots || !slots.is_multiple_of(4) || slots < 8 {
         return None;
@@ -150,7 +148,7 @@ pub fn coarsen<G: DualGraph + ?Sized>(graph: &G) -> Option<SubdivisionLevel> {
 
 impl SubdivisionLevel {
     /// The coarse graph: node `k` is the block of nodes `4k..4k + 4`.
-    pub fn coarse(&self) -> &CoarseDual {
+    pub(super) fn coarse(&self) -> &CoarseDual {
         &self.coarse
     }
 
@@ -160,7 +158,11 @@ impl SubdivisionLevel {
     /// # Panics
     /// If `coarse_pairing` is not a perfect pairing of the coarse graph, or `graph` is not the
     /// graph this level was read from.
-    pub fn lift<G: DualGraph + ?Sized>(&self, graph: &G, coarse_pairing: &Pairing) -> Pairing {
+    pub(super) fn lift<G: DualGraph + ?Sized>(
+        &self,
+        graph: &G,
+        coarse_pairing: &Pairing,
+    ) -> Pairing {
         let mut mate = vec![NONE; graph.node_slots()];
         for (k, &centre) in self.centres.iter().enumerate() {
             let k = k as u32;

@@ -1,15 +1,12 @@
 //! The pairing a triangulated quad mesh is written in: when every triangle `2k` is adjacent to
 //! triangle `2k + 1`, the pairs `{2k, 2k + 1}` are a perfect pairing, and they are the quads the
 //! file came from (quad-to-triangle converters write the two triangles of each quad one after the
-//! other). Not from the quadrangulation paper: a shortcut for such files. KS
-//! ([`crate::karp_sipser`]) takes it before any greedy when it exists.
+//! other). Not from the quadrangulation paper: a shortcut for such files, phase 0 of KS
+//! ([`super`]), taken before any greedy when it exists.
 //!
 //! Why: such files are common, their quads are the pairing a user expects back, and a greedy can
-//! do badly on them. Measured (`quad_tables --side-by-side --no-file-order`, results/quad.md,
-//! session 6, run B): on sketched_brunnen with its faces in reverse order (still quad by quad),
-//! KS's greedy took 10.4 ms, 77% of it in augmenting paths, where LEMON's `MaxMatching::run()`
-//! took 0.8 ms (its greedy initialisation, in node order, happens to follow the quads); with this
-//! step KS takes 0.3 ms (run A).
+//! do badly on them (on a file whose quads are listed in reverse order, KS's greedy spends most of
+//! its time in augmenting paths, where this check takes one pass).
 //!
 //! The check stops at the first pair that is not adjacent, so other files pay for a few
 //! adjacency reads only (on the shared meshes that are not quad by quad, the first failure is
@@ -20,7 +17,7 @@ use crate::dual_graph::{DualGraph, Pairing};
 /// The pairing `{2k, 2k + 1}` for every `k` when each such pair is adjacent (through the first
 /// of their shared edges); `None` when one is not, when the graph has removed node slots, or when
 /// its node count is odd. O(n) at most. Guarantees on `Some`: a perfect matching.
-pub fn file_order_pairing<G: DualGraph + ?Sized>(graph: &G) -> Option<Pairing> {
+pub(super) fn file_order_pairing<G: DualGraph + ?Sized>(graph: &G) -> Option<Pairing> {
     let slots = graph.node_slots();
     if graph.node_count() != slots || !slots.is_multiple_of(2) {
         return None;
