@@ -14,7 +14,8 @@ use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox, Surface};
 use surftopo_mesh::{BuildReport, SurfaceMesh, geometry};
-use surftopo_quad::QuadAlgorithm;
+use surftopo_quad::quality::QualityObjective;
+use surftopo_quad::{QuadAlgorithm, quadrangulate_by_quality, quadrangulate_with_quality};
 
 /// A surface built from arrays, with the input index of each vertex id.
 pub struct Input {
@@ -296,18 +297,57 @@ pub fn quadrangulate<'py>(
         ],
     )
     .map_err(|f| f.into_pyerr(py))?;
-    // The objectives the pairings optimise: only the number of quads (every pairing is perfect).
-    choose("objective", objective, &[("count", ())]).map_err(|f| f.into_pyerr(py))?;
+    // `count`: any perfect pairing, by `algorithm`; `quality` / `quality-fast`: the pairing of
+    // least total cost 1 − η (Remacle et al.'s quality), exact or fast; `algorithm` unused.
+    let quality = choose(
+        "objective",
+        objective,
+        &[
+            ("count", None),
+            ("quality", Some(QualityObjective::Exact)),
+            ("quality-fast", Some(QualityObjective::Fast)),
+        ],
+    )
+    .map_err(|f| f.into_pyerr(py))?;
     let input = input_surface(py, vertices, faces)?;
-    let result = py
-        .detach(|| surftopo_quad::quadrangulate(&input.surface.mesh, algorithm))
+    let (mesh, positions) = (&input.surface.mesh, &input.surface.positions);
+    let q = py
+        .detach(|| match quality {
+            None => quadrangulate_with_quality(mesh, positions, algorithm),
+            Some(quality) => quadrangulate_by_quality(mesh, positions, quality),
+        })
         .map_err(|e| Failure::Quad(e).into_pyerr(py))?;
+    let result = &q.result;
     let quads: Vec<[u32; 4]> = result
         .quads
         .iter()
         .map(|q| q.map(|v| input.input_index[v.idx()]))
         .collect();
-    let stats = serde_json::to_string(&result.stats)
+    // The CLI's `quad --json` keys.
+    let json = serde_json::to_value(&result.stats).map(|mut stats| {
+        if let Some(map) = stats.as_object_mut() {
+            map.insert("objective".into(), objective.into());
+            map.insert("cost".into(), q.cost.into());
+            map.insert("optimality_gap".into(), q.optimality_gap.into());
+            map.insert(
+                "quality".into(),
+                serde_json::json!({
+                    "min": q.report.min, "p5": q.report.p5,
+                    "median": q.report.median, "mean": q.report.mean,
+                }),
+            );
+            map.insert(
+                "bad_quads_percent".into(),
+                q.report.bad_quads_percent.into(),
+            );
+            map.insert(
+                "median_max_angle_deviation".into(),
+                q.report.median_max_angle_deviation_degrees.into(),
+            );
+        }
+        stats.to_string()
+    });
+    let stats = json
         .map_err(|e| Failure::Quad(surftopo_quad::QuadError::Internal(e.to_string())))
         .map_err(|f| f.into_pyerr(py))?;
     Ok((

@@ -107,10 +107,10 @@ def test_two_triangle_sphere_is_refused():
 
 def test_bad_names_list_the_allowed_values():
     V, F = surftopo.tetrahedron()
-    with pytest.raises(ValueError, match=r"objective: expected one of \"count\", got \"quality\""):
-        surftopo.quadrangulate(V, F, objective="quality")
+    with pytest.raises(ValueError, match=r"objective: expected one of \"count\", \"quality\", \"quality-fast\", got \"best\""):
+        surftopo.quadrangulate(V, F, objective="best")
     with pytest.raises(surftopo.InvalidInputError) as caught:
-        surftopo.quadrangulate(V, F, objective="quality")
+        surftopo.quadrangulate(V, F, objective="best")
     assert caught.value.kind is None
     with pytest.raises(ValueError, match=r"method: expected one of \"flip\""):
         surftopo.intrinsic_delaunay(V, F, method="voronoi")

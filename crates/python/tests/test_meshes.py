@@ -63,8 +63,26 @@ def test_quadrangulate(name, algorithm):
     assert list(stats) == [
         "algorithm", "faces", "initial_pairing_seconds", "paired_percent", "unpaired",
         "augmentation_seconds", "total_seconds", "flipped_edges", "file_order",
-        "subdivision_levels",
+        "subdivision_levels", "objective", "cost", "optimality_gap", "quality",
+        "bad_quads_percent", "median_max_angle_deviation",
     ]
+    assert stats["objective"] == "count" and stats["optimality_gap"] is None
+
+
+@pytest.mark.parametrize("name", SURFACES)
+def test_quality_objectives(name):
+    V, F = SURFACES[name]()
+    _, count = surftopo.quadrangulate(V, F)
+    Q, exact = surftopo.quadrangulate(V, F, objective="quality")
+    Qf, fast = surftopo.quadrangulate(V, F, objective="quality-fast")
+    for quads in (Q, Qf):
+        assert quads.shape == (len(F) // 2, 4) and is_closed_oriented(quads)
+        assert quads_pair_triangles(quads, F)
+    assert exact["objective"] == "quality" and exact["optimality_gap"] == 0
+    assert fast["objective"] == "quality-fast" and fast["optimality_gap"] is None
+    # The optimum costs no more than any other perfect pairing (up to the costs' rounding).
+    assert exact["cost"] <= fast["cost"] + 1e-6 and exact["cost"] <= count["cost"] + 1e-6
+    assert 0.0 <= exact["quality"]["min"] <= exact["quality"]["median"] <= 1.0
 
 
 def test_seeded_algorithms_are_deterministic():

@@ -28,7 +28,7 @@ pub use quadrangulate::{
 };
 pub use quality::{
     QualityObjective, QualityQuads, QualityReport, pair_costs, quadrangulate_by_quality,
-    quality_report,
+    quadrangulate_with_quality, quality_report,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

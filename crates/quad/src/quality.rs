@@ -222,6 +222,32 @@ pub struct QualityQuads {
     pub report: QualityReport,
 }
 
+/// The quads of `algorithm` (any perfect pairing: `--objective count`) with their total cost
+/// `Σ (1 − η)` and quality, in the same form as [`quadrangulate_by_quality`] returns (the
+/// optimality gap unknown). The cost and quality are measured on the paired triangulation (K
+/// for LRS).
+///
+/// # Errors
+/// As [`crate::quadrangulate`].
+pub fn quadrangulate_with_quality(
+    mesh: &SurfaceMesh,
+    positions: &[Point3],
+    algorithm: crate::QuadAlgorithm,
+) -> Result<QualityQuads, crate::QuadError> {
+    let result = crate::quadrangulate(mesh, algorithm)?;
+    let paired = result.triangulation.as_ref().unwrap_or(mesh);
+    let costs = pair_costs(paired, positions);
+    let cost_units: i64 = result.diagonals.iter().map(|e| costs[e.idx()]).sum();
+    let report = quality_report(paired, positions, &result.diagonals);
+    Ok(QualityQuads {
+        result,
+        cost: cost_units as f64 / COST_RESOLUTION,
+        cost_units,
+        optimality_gap: None,
+        report,
+    })
+}
+
 /// Pairs the triangles of a closed mesh into quads minimising (exactly, or by the fast mode) the
 /// total cost `1 − η` of [`pair_costs`], and reports the result's quality.
 ///

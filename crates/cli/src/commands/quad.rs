@@ -3,10 +3,10 @@
 use crate::failure::invalid;
 use surftopo_io::PolygonSoup;
 use surftopo_mesh::generators::Surface;
-use surftopo_quad::quality::{COST_RESOLUTION, QualityObjective};
+use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, QuadStats, QualityReport, pair_costs, quadrangulate,
-    quadrangulate_by_quality, quality_report,
+    QuadAlgorithm, QuadError, QuadResult, QuadStats, QualityReport, quadrangulate,
+    quadrangulate_by_quality, quadrangulate_with_quality,
 };
 
 /// The `--objective` values.
@@ -72,20 +72,24 @@ pub enum AlgorithmName {
     Ks,
 }
 
+/// The library's algorithm of an `--algorithm` value.
+fn algorithm_of(name: AlgorithmName, seed: u64) -> QuadAlgorithm {
+    match name {
+        AlgorithmName::Sg => QuadAlgorithm::SimpleGreedy { seed },
+        AlgorithmName::Ps => QuadAlgorithm::PulliSegal { seed },
+        AlgorithmName::Lrs => QuadAlgorithm::Lrs,
+        AlgorithmName::Ds => QuadAlgorithm::DiksStanczyk,
+        AlgorithmName::Ks => QuadAlgorithm::KarpSipser,
+    }
+}
+
 /// Quadrangulates `surface`; quads use its vertex ids.
 pub fn quadrangulate_surface(
     surface: &Surface,
     name: AlgorithmName,
     seed: u64,
 ) -> anyhow::Result<QuadResult> {
-    let algorithm = match name {
-        AlgorithmName::Sg => QuadAlgorithm::SimpleGreedy { seed },
-        AlgorithmName::Ps => QuadAlgorithm::PulliSegal { seed },
-        AlgorithmName::Lrs => QuadAlgorithm::Lrs,
-        AlgorithmName::Ds => QuadAlgorithm::DiksStanczyk,
-        AlgorithmName::Ks => QuadAlgorithm::KarpSipser,
-    };
-    quadrangulate(&surface.mesh, algorithm).map_err(|e| match e {
+    quadrangulate(&surface.mesh, algorithm_of(name, seed)).map_err(|e| match e {
         QuadError::Internal(_) => anyhow::Error::new(e),
         other => invalid(other.to_string()),
     })
@@ -110,12 +114,13 @@ fn pair(
 ) -> anyhow::Result<(QuadResult, f64, Option<f64>, QualityReport)> {
     let quality = match objective {
         Objective::Count => {
-            let result = quadrangulate_surface(surface, name, seed)?;
-            let paired = result.triangulation.as_ref().unwrap_or(&surface.mesh);
-            let costs = pair_costs(paired, &surface.positions);
-            let units: i64 = result.diagonals.iter().map(|e| costs[e.idx()]).sum();
-            let report = quality_report(paired, &surface.positions, &result.diagonals);
-            return Ok((result, units as f64 / COST_RESOLUTION, None, report));
+            let algorithm = algorithm_of(name, seed);
+            let q = quadrangulate_with_quality(&surface.mesh, &surface.positions, algorithm)
+                .map_err(|e| match e {
+                    QuadError::Internal(_) => anyhow::Error::new(e),
+                    other => invalid(other.to_string()),
+                })?;
+            return Ok((q.result, q.cost, None, q.report));
         }
         Objective::Quality => QualityObjective::Exact,
         Objective::QualityFast => QualityObjective::Fast,

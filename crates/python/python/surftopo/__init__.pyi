@@ -154,10 +154,12 @@ def quadrangulate(
     ``algorithm``: ``"ks"`` (Karp–Sipser with local repairs, the fastest), ``"sg"`` (simple
     greedy) and ``"ps"`` (Pulli–Segal), both seeded by ``seed``, ``"lrs"`` (contraction and
     expansion; its quads pair triangles of a flipped triangulation), ``"ds"`` (Diks–Stanczyk).
-    ``objective``: ``"count"`` (every triangle paired; the only objective so far).
+    ``objective``: ``"count"`` (any perfect pairing, by ``algorithm``), ``"quality"`` (the pairing
+    of least total cost 1 − η, η being Remacle et al.'s quad quality, exact, its optimality
+    certificate verified; ``algorithm`` unused) or ``"quality-fast"`` (a cheaper approximation).
 
     Returns ``(Q, stats)``: ``Q`` an int64 ``(m/2, 4)`` array of indices into ``V``, and the keys
-    of ``surftopo quad --json``.
+    of ``surftopo quad --json`` (with ``cost``, ``optimality_gap`` and ``quality``).
 
     >>> V, F = surftopo.torus(24, 12)
     >>> Q, stats = surftopo.quadrangulate(V, F)
