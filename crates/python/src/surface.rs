@@ -323,30 +323,8 @@ pub fn quadrangulate<'py>(
         .iter()
         .map(|q| q.map(|v| input.input_index[v.idx()]))
         .collect();
-    // The CLI's `quad --json` keys.
-    let json = serde_json::to_value(&result.stats).map(|mut stats| {
-        if let Some(map) = stats.as_object_mut() {
-            map.insert("objective".into(), objective.into());
-            map.insert("cost".into(), q.cost.into());
-            map.insert("optimality_gap".into(), q.optimality_gap.into());
-            map.insert(
-                "quality".into(),
-                serde_json::json!({
-                    "min": q.report.min, "p5": q.report.p5,
-                    "median": q.report.median, "mean": q.report.mean,
-                }),
-            );
-            map.insert(
-                "bad_quads_percent".into(),
-                q.report.bad_quads_percent.into(),
-            );
-            map.insert(
-                "median_max_angle_deviation".into(),
-                q.report.median_max_angle_deviation_degrees.into(),
-            );
-        }
-        stats.to_string()
-    });
+    // The CLI's `quad --json` keys, in its order.
+    let json = serde_json::to_string(&q.figures(objective));
     let stats = json
         .map_err(|e| Failure::Quad(surftopo_quad::QuadError::Internal(e.to_string())))
         .map_err(|f| f.into_pyerr(py))?;

@@ -27,8 +27,8 @@ pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
 };
 pub use quality::{
-    QualityObjective, QualityQuads, QualityReport, pair_costs, quadrangulate_by_quality,
-    quadrangulate_with_quality, quality_report,
+    QuadFigures, QualityObjective, QualityQuads, QualityReport, QualitySummary, pair_costs,
+    quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

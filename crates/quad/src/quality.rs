@@ -222,6 +222,61 @@ pub struct QualityQuads {
     pub report: QualityReport,
 }
 
+/// η's summary in [`QuadFigures`].
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct QualitySummary {
+    /// Smallest η.
+    pub min: f64,
+    /// 5th percentile of η.
+    pub p5: f64,
+    /// Median of η.
+    pub median: f64,
+    /// Mean of η.
+    pub mean: f64,
+}
+
+/// The figures of a quadrangulation as `surftopo quad --json` prints them: Table 4.3's columns
+/// (the [`crate::QuadStats`]), then the objective, the pairing's cost and its quality.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct QuadFigures<'a> {
+    /// Table 4.3's columns.
+    #[serde(flatten)]
+    pub stats: &'a crate::QuadStats,
+    /// `count`, `quality` or `quality-fast`.
+    pub objective: &'a str,
+    /// Total cost `Σ (1 − η)`.
+    pub cost: f64,
+    /// 0 for the exact optimum; `None` when unknown.
+    pub optimality_gap: Option<f64>,
+    /// η's summary.
+    pub quality: QualitySummary,
+    /// Percentage of quads with a corner above 170° or below 10°.
+    pub bad_quads_percent: f64,
+    /// Median of `max_k |α_k − 90°|`, in degrees.
+    pub median_max_angle_deviation: f64,
+}
+
+impl QualityQuads {
+    /// The figures of `surftopo quad --json`, for the objective named `objective`.
+    pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
+        let r = &self.report;
+        QuadFigures {
+            stats: &self.result.stats,
+            objective,
+            cost: self.cost,
+            optimality_gap: self.optimality_gap,
+            quality: QualitySummary {
+                min: r.min,
+                p5: r.p5,
+                median: r.median,
+                mean: r.mean,
+            },
+            bad_quads_percent: r.bad_quads_percent,
+            median_max_angle_deviation: r.median_max_angle_deviation_degrees,
+        }
+    }
+}
+
 /// The quads of `algorithm` (any perfect pairing: `--objective count`) with their total cost
 /// `Σ (1 − η)` and quality, in the same form as [`quadrangulate_by_quality`] returns (the
 /// optimality gap unknown). The cost and quality are measured on the paired triangulation (K

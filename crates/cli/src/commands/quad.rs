@@ -5,8 +5,8 @@ use surftopo_io::PolygonSoup;
 use surftopo_mesh::generators::Surface;
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, QuadStats, QualityReport, quadrangulate,
-    quadrangulate_by_quality, quadrangulate_with_quality,
+    QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate, quadrangulate_by_quality,
+    quadrangulate_with_quality,
 };
 
 /// The `--objective` values.
@@ -31,28 +31,6 @@ impl Objective {
             Objective::QualityFast => "quality-fast",
         }
     }
-}
-
-/// η's summary in `--json`.
-#[derive(serde::Serialize)]
-struct QualitySummary {
-    min: f64,
-    p5: f64,
-    median: f64,
-    mean: f64,
-}
-
-/// `quad --json`: the run's figures, the objective, the pairing's cost and quality.
-#[derive(serde::Serialize)]
-struct QuadJson<'a> {
-    #[serde(flatten)]
-    stats: &'a QuadStats,
-    objective: &'static str,
-    cost: f64,
-    optimality_gap: Option<f64>,
-    quality: QualitySummary,
-    bad_quads_percent: f64,
-    median_max_angle_deviation: f64,
 }
 
 /// The `--algorithm` values.
@@ -111,7 +89,7 @@ fn pair(
     name: AlgorithmName,
     seed: u64,
     objective: Objective,
-) -> anyhow::Result<(QuadResult, f64, Option<f64>, QualityReport)> {
+) -> anyhow::Result<QualityQuads> {
     let quality = match objective {
         Objective::Count => {
             let algorithm = algorithm_of(name, seed);
@@ -120,7 +98,7 @@ fn pair(
                     QuadError::Internal(_) => anyhow::Error::new(e),
                     other => invalid(other.to_string()),
                 })?;
-            return Ok((q.result, q.cost, None, q.report));
+            return Ok(q);
         }
         Objective::Quality => QualityObjective::Exact,
         Objective::QualityFast => QualityObjective::Fast,
@@ -132,7 +110,7 @@ fn pair(
                 other => invalid(other.to_string()),
             },
         )?;
-    Ok((q.result, q.cost, q.optimality_gap, q.report))
+    Ok(q)
 }
 
 /// Runs `quad`.
@@ -148,27 +126,15 @@ pub fn run(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
-    let (result, cost, optimality_gap, report) = crate::progress::step("pairing triangles", || {
+    let paired = crate::progress::step("pairing triangles", || {
         pair(&loaded.surface, name, seed, objective)
     })
     .map_err(|e| e.context(crate::failure::shown(input)))?;
-    crate::output::write_soup(output, &quad_soup(&loaded.surface, &result))?;
+    let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
+    crate::output::write_soup(output, &quad_soup(&loaded.surface, result))?;
     let stats = &result.stats;
     if job.json {
-        crate::output::print_json(&QuadJson {
-            stats,
-            objective: objective.name(),
-            cost,
-            optimality_gap,
-            quality: QualitySummary {
-                min: report.min,
-                p5: report.p5,
-                median: report.median,
-                mean: report.mean,
-            },
-            bad_quads_percent: report.bad_quads_percent,
-            median_max_angle_deviation: report.median_max_angle_deviation_degrees,
-        })?;
+        crate::output::print_json(&paired.figures(objective.name()))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {
