@@ -896,3 +896,113 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
         );
     }
 }
+
+#[test]
+fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    // T_x for x = 10⁹ by exact corners, written here: `generate flat-torus` refuses x this large
+    // (it checks the double-precision lengths' triangulation first).
+    std::fs::write(
+        d("t.json"),
+        r#"{"format":"surftopo-portalgon","version":1,"polygons":[
+            {"corners":[["0","0"],["1","0"],["1000000000","2"]]},
+            {"corners":[["1","0"],["1000000001","2"],["1000000000","2"]]}],
+            "matching":[[[0,0],[1,1]],[[0,1],[1,2]],[[0,2],[1,0]]]}"#,
+    )
+    .unwrap();
+    // In f64, a T_x doubles can hold.
+    surftopo()
+        .args(["generate", "flat-torus", "--x", "1001", "-o"])
+        .arg(d("t1001.json"))
+        .assert()
+        .success();
+    for (input, exact) in [("t.json", true), ("t1001.json", false)] {
+        let mut cmd = surftopo();
+        cmd.arg("delaunay")
+            .arg(d(input))
+            .args(["-o"])
+            .arg(d("d.json"))
+            .args(["--method", "dubois", "--json", "--tessellation"])
+            .arg(d("tt.json"))
+            .arg("--laplacian")
+            .arg(d("L.mtx"))
+            .arg("--mass")
+            .arg(d("M.mtx"));
+        if exact {
+            cmd.arg("--exact");
+        }
+        let v = json_of(
+            &mut cmd,
+            &[
+                "method",
+                "arithmetic",
+                "outer_iterations",
+                "inner_passes",
+                "inner_passes_bound",
+                "tubes_replaced",
+                "peak_active_vertices",
+                "triangles_after_reduction",
+                "wave_events",
+                "max_constellation",
+            ],
+        );
+        assert_eq!(v["method"], "dubois");
+        assert_eq!(v["arithmetic"], if exact { "exact" } else { "f64" });
+        let n = v["outer_iterations"].as_u64().unwrap();
+        assert_eq!(v["inner_passes_bound"].as_u64().unwrap(), 350 * n);
+        assert!(v["inner_passes"].as_u64().unwrap() <= 350 * n);
+        assert!(v["tubes_replaced"]["thin"].is_u64() && v["tubes_replaced"]["thick"].is_u64());
+        for f in ["d.json", "tt.json", "L.mtx", "M.mtx"] {
+            assert!(d(f).is_file(), "{f} not written");
+        }
+        // D_x for integer x: one rectangle.
+        let tess: Value =
+            serde_json::from_str(&std::fs::read_to_string(d("tt.json")).unwrap()).unwrap();
+        let polygons = tess["polygons"].as_array().unwrap();
+        assert_eq!(polygons.len(), 1, "{tess}");
+        let sides = polygons[0]["corners"]
+            .as_array()
+            .or(polygons[0]["lengths"].as_array())
+            .unwrap()
+            .len();
+        assert_eq!(sides, 4, "{tess}");
+        // In f64 the output triangulation is the input torus, by the flip method's isometry test
+        // (for 10⁹ exactly, the rectangle above is D_x; the exact wave's isometry test is slow).
+        if !exact {
+            surftopo()
+                .arg("isometric")
+                .arg(d(input))
+                .arg(d("d.json"))
+                .assert()
+                .code(0);
+        }
+    }
+    // Cone points (a tetrahedron): exit 2, naming the vertex and the other methods.
+    surftopo()
+        .args(["generate", "tetrahedron", "-o"])
+        .arg(d("tet.obj"))
+        .assert()
+        .success();
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(d("tet.obj"))
+        .arg("-o")
+        .arg(d("x.json"))
+        .args(["--method", "dubois"])
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
+    assert!(stderr.contains("vertex 0"), "{stderr}");
+    assert!(stderr.contains("cone point"), "{stderr}");
+    assert!(stderr.contains("--method flip"), "{stderr}");
+    assert!(!d("x.json").exists(), "no output on refusal");
+    // isometric has no dubois method.
+    surftopo()
+        .arg("isometric")
+        .arg(d("t.json"))
+        .arg(d("t.json"))
+        .args(["--method", "dubois"])
+        .assert()
+        .code(2);
+}

@@ -1,10 +1,14 @@
 //! `surftopo delaunay`: the intrinsic Delaunay triangulation by edge flipping (`--method flip`)
-//! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), its
-//! tessellation, the cotan Laplacian and the lumped mass matrix.
+//! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), or by
+//! Dubois' Theorem 1 on flat surfaces (`--method dubois`: Section 4's reduction, then the wave from
+//! one vertex), its tessellation, the cotan Laplacian and the lumped mass matrix.
 
 use crate::failure::invalid;
 use crate::output::write_file;
 use std::path::{Path, PathBuf};
+use surftopo_intrinsic::dubois::{
+    DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
+};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
@@ -56,16 +60,19 @@ pub enum Method {
     Flip,
     /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
     Voronoi,
+    /// Dubois' Theorem 1 on flat closed surfaces: Section 4's reduction (Proposition 2 without
+    /// caps), then the wave from one vertex (Proposition 3). Refuses cone points.
+    Dubois,
 }
 
 /// `--method` and `--exact`, shared by `delaunay` and `isometric`.
 #[derive(clap::Args, Clone, Copy, Debug, Default)]
 pub struct MethodOptions {
-    /// The algorithm: flip (default) or voronoi.
+    /// The algorithm: flip (default), voronoi, or dubois (flat surfaces only).
     #[arg(long, value_enum, default_value_t = Method::Flip)]
     pub method: Method,
-    /// Compute in exact rational arithmetic (with --method voronoi; the input must be a portalgon
-    /// JSON file given by exact corners).
+    /// Compute in exact rational arithmetic (with --method voronoi or dubois; the input must be a
+    /// portalgon JSON file given by exact corners).
     #[arg(long)]
     pub exact: bool,
 }
@@ -78,7 +85,7 @@ impl MethodOptions {
     pub fn check(&self) -> anyhow::Result<()> {
         if self.exact && self.method == Method::Flip {
             return Err(invalid(
-                "--exact computes with --method voronoi only (the flip algorithm works on \
+                "--exact computes with --method voronoi or dubois only (the flip algorithm works on \
                  lengths, which are square roots)",
             ));
         }
@@ -112,19 +119,51 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     Ok(p)
 }
 
-/// The voronoi method's figures for `--json`.
+/// The voronoi and dubois methods' figures for `--json`.
 struct WaveFigures {
     events: u64,
     max_constellation: usize,
     arithmetic: &'static str,
+    /// The reduction's report (`--method dubois`).
+    reduction: Option<DuboisReport>,
 }
 
-fn wave_figures<S: Scalar>(v: &VoronoiDelaunay<S>) -> WaveFigures {
-    WaveFigures {
+/// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
+/// on a flat surface (`--method dubois`: reduction, then the wave from one vertex), with its
+/// figures. Errors are invalid input (exit 2) naming `input`; a cone point for `--method dubois`
+/// names the vertex and suggests the other methods.
+fn tessellate<S: Scalar>(
+    p: &Portalgon<S>,
+    method: Method,
+    input: &Path,
+) -> anyhow::Result<(VoronoiDelaunay<S>, WaveFigures)> {
+    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", input.display()));
+    let (v, reduction) = if method == Method::Dubois {
+        let out =
+            crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
+                delaunay_tessellation_flat(p, &FlatDelaunayOptions::default())
+            })
+            .map_err(|e| match e {
+                FlatDelaunayError::ConePoint { .. } => {
+                    fail(&format!("{e}; use --method flip or --method voronoi"))
+                }
+                other => fail(&other),
+            })?;
+        (out.delaunay, Some(out.reduction))
+    } else {
+        let v = crate::progress::step("running the Voronoi wave", || {
+            voronoi_delaunay(p, &VoronoiOptions::default())
+        })
+        .map_err(|e| fail(&e))?;
+        (v, None)
+    };
+    let figures = WaveFigures {
         events: v.wave.events,
         max_constellation: v.wave.max_constellation(),
         arithmetic: S::ARITHMETIC,
-    }
+        reduction,
+    };
+    Ok((v, figures))
 }
 
 /// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation, within the limits
@@ -180,7 +219,7 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
 /// Runs `delaunay`.
 pub fn run(options: &Options) -> anyhow::Result<()> {
     options.method.check()?;
-    if options.method.method == Method::Voronoi {
+    if options.method.method != Method::Flip {
         return run_voronoi(options);
     }
     let mut tri =
@@ -230,9 +269,9 @@ fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Re
     Ok(())
 }
 
-/// `--method voronoi`: the wave (f64, or exact with `--exact`) and its dual; the triangulation
-/// written is the tessellation cut along shortcuts (by lengths, or by exact corners with
-/// `--exact`).
+/// `--method voronoi` and `--method dubois`: the wave (f64, or exact with `--exact`) and its dual
+/// (after the reduction for dubois); the triangulation written is the tessellation cut along
+/// shortcuts (by lengths, or by exact corners with `--exact`).
 fn run_voronoi(options: &Options) -> anyhow::Result<()> {
     if options.mollify.is_some() || options.max_flips.is_some() {
         return Err(invalid(
@@ -243,32 +282,26 @@ fn run_voronoi(options: &Options) -> anyhow::Result<()> {
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
     let (tri, figures) = if options.method.exact {
         let p = crate::progress::step("reading", || load_exact(&options.input))?;
-        let v = crate::progress::step("running the Voronoi wave", || {
-            voronoi_delaunay(&p, &VoronoiOptions::default())
-        })
-        .map_err(|e| fail(&e))?;
+        let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
         let triangulated = v.triangulated().map_err(|e| fail(&e))?;
         write_file(&options.output, |w| {
             Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
         })?;
         write_tessellation(options, &v.tessellation)?;
         let tri = v.triangulation().map_err(|e| fail(&e))?;
-        (tri, wave_figures(&v))
+        (tri, figures)
     } else {
         let tri =
             crate::progress::step("reading", || load_intrinsic(&options.input, options.weld))?;
         tri.validate().map_err(|e| fail(&e))?;
         let (p, _) = tri.to_portalgon();
-        let v = crate::progress::step("running the Voronoi wave", || {
-            voronoi_delaunay(&p, &VoronoiOptions::default())
-        })
-        .map_err(|e| fail(&e))?;
+        let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
         let tri = v.triangulation().map_err(|e| fail(&e))?;
         write_file(&options.output, |w| {
             Ok(tri.write_json(w, TriangleStyle::Lengths)?)
         })?;
         write_tessellation(options, &v.tessellation)?;
-        (tri, wave_figures(&v))
+        (tri, figures)
     };
     let flips = FlipReport {
         flips: 0,
@@ -289,8 +322,10 @@ fn write_tessellation<S: Scalar>(options: &Options, t: &Portalgon<S>) -> anyhow:
     Ok(())
 }
 
-/// Prints the figures (`--json`: the stats with `method`, `arithmetic`, and for the voronoi
-/// method `wave_events` and `max_constellation`).
+/// Prints the figures (`--json`: the stats with `method`, `arithmetic`, for the voronoi and
+/// dubois methods `wave_events` and `max_constellation`, and for dubois the reduction's
+/// `outer_iterations`, `inner_passes` (total), `inner_passes_bound` (350·N), `tubes_replaced`
+/// (`thin`, `thick`), `peak_active_vertices` and `triangles_after_reduction`).
 fn report(
     options: &Options,
     stats: &DelaunayStats,
@@ -302,6 +337,7 @@ fn report(
             let method = match options.method.method {
                 Method::Flip => "flip",
                 Method::Voronoi => "voronoi",
+                Method::Dubois => "dubois",
             };
             map.insert("method".into(), method.into());
             map.insert(
@@ -311,6 +347,20 @@ fn report(
             if let Some(w) = wave {
                 map.insert("wave_events".into(), w.events.into());
                 map.insert("max_constellation".into(), w.max_constellation.into());
+            }
+            if let Some(r) = wave.and_then(|w| w.reduction.as_ref()) {
+                map.insert("outer_iterations".into(), r.outer_iterations.into());
+                map.insert("inner_passes".into(), r.inner_passes_total.into());
+                map.insert("inner_passes_bound".into(), r.inner_passes_bound.into());
+                map.insert(
+                    "tubes_replaced".into(),
+                    serde_json::json!({"thin": r.tubes_replaced_thin, "thick": r.tubes_replaced_thick}),
+                );
+                map.insert("peak_active_vertices".into(), r.peak_active_vertices.into());
+                map.insert(
+                    "triangles_after_reduction".into(),
+                    r.triangles_after_reduction.into(),
+                );
             }
         }
         crate::output::print_json(&value)?;

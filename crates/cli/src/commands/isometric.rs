@@ -86,6 +86,11 @@ fn decide_by_flips(a: &Path, b: &Path, weld: bool) -> anyhow::Result<IsometryDec
 /// stdout and the reason on stderr.
 pub fn run(a: &Path, b: &Path, weld: bool, method: &MethodOptions) -> anyhow::Result<Verdict> {
     method.check()?;
+    if method.method == Method::Dubois {
+        return Err(crate::failure::invalid(
+            "--method dubois applies to delaunay only (isometric: use --method flip or voronoi)",
+        ));
+    }
     let decision = if method.method == Method::Voronoi {
         decide_by_wave(a, b, weld, method.exact)?
     } else {

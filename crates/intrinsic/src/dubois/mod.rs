@@ -52,8 +52,21 @@
 //!   underestimated; in `f64` with a relative margin of 1e-9 upward.
 //!
 //! **Guarantees.** Proposition 1's bounds hold for exact input in exact mode; none is claimed in
-//! `f64` (the routines then run with the tolerances of the edits they call). Section 8's caps and
-//! Theorem 1's driver are not here: the input must be flat (every vertex of angle 2π).
+//! `f64` (the routines then run with the tolerances of the edits they call). Section 8's caps are
+//! not here: the input must be flat (every vertex of angle 2π).
+//!
+//! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
+//! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
+//! ([`crate::voronoi::voronoi_delaunay`] from one vertex, the lowest side id's, of the reduced
+//! triangulation), reporting both; a cone point is refused with
+//! [`FlatDelaunayError::ConePoint`] naming the first one ([`first_cone_point`]).
+
+pub mod flat_delaunay;
+
+pub use flat_delaunay::{
+    FlatDelaunay, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
+    first_cone_point,
+};
 
 use crate::biface::{Biface, BifaceError, BifaceKind};
 use crate::error::PortalgonError;

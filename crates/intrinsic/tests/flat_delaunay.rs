@@ -1,0 +1,142 @@
+//! Theorem 1 on flat tori (`dubois::delaunay_tessellation_flat`): the exact pipeline on Section
+//! 9's `T_x` gives exactly `D_x`, checked here with exact rational arithmetic on the output's
+//! corners — integer `x`: one rectangle with sides of squared lengths 1 and 4 meeting at right
+//! angles; otherwise two triangles with squared sides `{1, p² + 4, (1 − p)² + 4}`, `p = x − ⌊x⌋`.
+
+use surftopo_intrinsic::Portalgon;
+use surftopo_intrinsic::dubois::{
+    FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
+};
+use surftopo_intrinsic::geometry::Rational;
+
+fn q(s: &str) -> Rational {
+    s.parse().unwrap()
+}
+
+/// `T_x = R²/⟨(1, 0), (x, 2)⟩` as the triangles `0, u, v` and `u + v, v, u`, side i to side i.
+fn t_x(x: &Rational) -> Portalgon<Rational> {
+    let (z, one, two) = (q("0"), q("1"), q("2"));
+    let mut p = Portalgon::<Rational>::empty();
+    let a = p
+        .add_polygon(&[
+            [z.clone(), z.clone()],
+            [one.clone(), z.clone()],
+            [x.clone(), two.clone()],
+        ])
+        .unwrap();
+    let b = p
+        .add_polygon(&[
+            [x.clone() + one.clone(), two.clone()],
+            [x.clone(), two],
+            [one, z],
+        ])
+        .unwrap();
+    for i in 0..3 {
+        p.glue(p.side(a, i), p.side(b, i), 0.0).unwrap();
+    }
+    p
+}
+
+/// Squared side lengths of a polygon given by its corners, and the dot products of consecutive
+/// sides (at each corner).
+fn sides_and_dots(c: &[[Rational; 2]]) -> (Vec<Rational>, Vec<Rational>) {
+    let n = c.len();
+    let e: Vec<[Rational; 2]> = (0..n)
+        .map(|i| {
+            let j = (i + 1) % n;
+            [
+                c[j][0].clone() - c[i][0].clone(),
+                c[j][1].clone() - c[i][1].clone(),
+            ]
+        })
+        .collect();
+    let len2 = e
+        .iter()
+        .map(|v| v[0].clone() * v[0].clone() + v[1].clone() * v[1].clone())
+        .collect();
+    let dots = (0..n)
+        .map(|i| {
+            let (a, b) = (&e[i], &e[(i + 1) % n]);
+            a[0].clone() * b[0].clone() + a[1].clone() * b[1].clone()
+        })
+        .collect();
+    (len2, dots)
+}
+
+fn sorted(mut v: Vec<Rational>) -> Vec<Rational> {
+    v.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    v
+}
+
+#[test]
+fn the_exact_pipeline_gives_d_x_on_t_x() {
+    for (x, p) in [
+        ("1000", None),
+        ("1000000000", None),
+        ("1000000000000000000", None),
+        ("3000000001/3", Some(q("1/3"))),
+    ] {
+        let out = delaunay_tessellation_flat(&t_x(&q(x)), &FlatDelaunayOptions::default())
+            .unwrap_or_else(|e| panic!("T_{x}: {e}"));
+        let t = &out.delaunay.tessellation;
+        let polygons: Vec<_> = t.polygons().collect();
+        assert_eq!(out.delaunay.sources.len(), 1, "T_{x}: one vertex");
+        assert!(t.unmatched_sides().next().is_none(), "T_{x}: closed");
+        assert_eq!(t.area(), q("2"), "T_{x}: the area of T_x");
+        assert!(out.reduction.outer_iterations > 0);
+        assert!(out.reduction.inner_passes_total <= out.reduction.inner_passes_bound);
+        match p {
+            None => {
+                assert_eq!(polygons.len(), 1, "T_{x}: one rectangle");
+                let (len2, dots) = sides_and_dots(&t.corners(polygons[0]));
+                assert_eq!(len2.len(), 4, "T_{x}: four sides");
+                let (a, b) = (len2[0].clone(), len2[1].clone());
+                assert_eq!(sorted(vec![a.clone(), b.clone()]), vec![q("1"), q("4")]);
+                assert_eq!(len2, vec![a.clone(), b.clone(), a, b], "T_{x}");
+                assert!(dots.iter().all(|d| *d == q("0")), "T_{x}: right angles");
+            }
+            Some(p) => {
+                assert_eq!(polygons.len(), 2, "T_{x}: two triangles");
+                let one = q("1");
+                let four = q("4");
+                let want = sorted(vec![
+                    one.clone(),
+                    p.clone() * p.clone() + four.clone(),
+                    (one.clone() - p.clone()) * (one - p) + four,
+                ]);
+                for &poly in &polygons {
+                    let (len2, _) = sides_and_dots(&t.corners(poly));
+                    assert_eq!(sorted(len2), want, "T_{x}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_cone_point_is_refused_by_name() {
+    // The regular tetrahedron of side 1 in f64: four cone points of angle π.
+    let h = 3f64.sqrt() / 2.0;
+    let tri = [[0.0, 0.0], [1.0, 0.0], [0.5, h]];
+    let mut p = Portalgon::<f64>::empty();
+    let f: Vec<_> = (0..4).map(|_| p.add_polygon(&tri).unwrap()).collect();
+    // Faces 0..3 around vertex 0 (faces 0, 1, 2) and face 3 opposite.
+    let pairs = [
+        ((0, 0), (1, 2)),
+        ((1, 0), (2, 2)),
+        ((2, 0), (0, 2)),
+        ((0, 1), (3, 0)),
+        ((1, 1), (3, 2)),
+        ((2, 1), (3, 1)),
+    ];
+    for ((a, i), (b, j)) in pairs {
+        p.glue(p.side(f[a], i), p.side(f[b], j), 1e-9).unwrap();
+    }
+    p.check_closed().unwrap();
+    let err = delaunay_tessellation_flat(&p, &FlatDelaunayOptions::default()).unwrap_err();
+    assert!(
+        matches!(err, FlatDelaunayError::ConePoint { side: 0, .. }),
+        "{err}"
+    );
+    assert!(err.to_string().contains("cone point"), "{err}");
+}
