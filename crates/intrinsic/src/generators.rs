@@ -85,13 +85,19 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
 /// `(1, 0), (1 + x, 2), (x, 2)`.
 ///
 /// # Errors
-/// [`PortalgonError::NonFinite`] unless `x` is finite and `1 <= m <= 30000`.
+/// [`PortalgonError::InvalidParameter`] naming `x` or `m` unless `x` is finite and
+/// `1 <= m <= 30000`.
 pub fn flat_torus_portalgon<S: Scalar>(x: &S, m: u32) -> Result<Portalgon<S>, PortalgonError> {
-    if !x.is_finite() || m == 0 || m > 30_000 {
-        return Err(PortalgonError::NonFinite {
-            polygon: 0,
-            index: 0,
-        });
+    let invalid = |name, value: String, requirement: &str| PortalgonError::InvalidParameter {
+        name,
+        value,
+        requirement: requirement.into(),
+    };
+    if !x.is_finite() {
+        return Err(invalid("x", format!("{x}"), "must be a finite number"));
+    }
+    if !(1..=30_000).contains(&m) {
+        return Err(invalid("m", m.to_string(), "must be between 1 and 30000"));
     }
     let ms = S::from_i64(i64::from(m));
     let point = |i: u32, j: u32| -> Point<S> {

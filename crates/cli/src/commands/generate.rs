@@ -122,6 +122,55 @@ pub struct Modifiers {
     pub seed: u64,
 }
 
+/// Refuses the modifiers that need a surface mesh, and an output that is not portalgon JSON, for
+/// a generator of intrinsic triangulations.
+fn check_intrinsic_output(modifiers: &Modifiers, output: &std::path::Path) -> anyhow::Result<()> {
+    if modifiers.subdivide > 0
+        || modifiers.splits > 0
+        || modifiers.simplify.is_some()
+        || modifiers.shuffle_faces
+    {
+        return Err(crate::failure::invalid(
+            "--subdivide, --simplify, --splits and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
+        ));
+    }
+    let is_json = output
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    if !is_json {
+        return Err(crate::failure::invalid(format!(
+            "{}: an intrinsic triangulation is written as portalgon JSON (.json)",
+            crate::failure::shown(output)
+        )));
+    }
+    Ok(())
+}
+
+/// `flat-torus` without `--flips`: T_x written by its exact corners (any rational x, however
+/// large: no double-precision triangulation is built).
+fn write_exact_flat_torus(
+    x: &intrinsic::geometry::Rational,
+    m: u32,
+    modifiers: &Modifiers,
+    output: &std::path::Path,
+) -> anyhow::Result<()> {
+    check_size(&format!("flat-torus --m {m}"), 2 * u64::from(m).pow(2))?;
+    check_intrinsic_output(modifiers, output)?;
+    let exact = intrinsic::generators::flat_torus_portalgon(x, m)
+        .map_err(|e| crate::failure::invalid(format!("flat-torus: {e}")))?;
+    crate::output::write_file(output, |w| {
+        Ok(intrinsic::PortalgonDoc::from_portalgon(&exact).write(w, false)?)
+    })?;
+    let (faces, edges) = (exact.polygon_count(), exact.side_count() / 2);
+    let vertices = exact.vertex_classes().1;
+    let genus = (2 + edges as i64 - vertices as i64 - faces as i64) / 2;
+    eprintln!(
+        "wrote {} (intrinsic, exact corners): {vertices} vertices, {edges} edges, {faces} faces, genus {genus}",
+        crate::failure::shown(output),
+    );
+    Ok(())
+}
+
 /// Generates the surface or intrinsic triangulation of `kind` (without modifiers).
 pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
     let invalid = |e: &dyn std::fmt::Display| crate::failure::invalid(format!("{e}"));
@@ -281,6 +330,9 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
         .output
         .as_ref()
         .ok_or_else(|| crate::failure::invalid("generate: an output file is needed (-o OUT)"))?;
+    if let (Kind::FlatTorus { x, m }, 0) = (kind, modifiers.flips) {
+        return write_exact_flat_torus(x, *m, modifiers, output);
+    }
     let generated = crate::progress::step("generating", || generate_any(kind, modifiers.seed))?;
     let (mesh, what) = match generated {
         Generated::Surface(surface) => {
@@ -289,15 +341,7 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
-            if modifiers.subdivide > 0
-                || modifiers.splits > 0
-                || modifiers.simplify.is_some()
-                || modifiers.shuffle_faces
-            {
-                return Err(crate::failure::invalid(
-                    "--subdivide, --simplify, --splits and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
-                ));
-            }
+            check_intrinsic_output(modifiers, output)?;
             if modifiers.flips > 0 {
                 check_flips("--flips", modifiers.flips as u64, tri.mesh().edge_count())?;
                 intrinsic::generators::random_flips(
@@ -306,27 +350,9 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
                     modifiers.seed,
                 );
             }
-            let is_json = output
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-            if !is_json {
-                return Err(crate::failure::invalid(format!(
-                    "{}: an intrinsic triangulation is written as portalgon JSON (.json)",
-                    crate::failure::shown(output)
-                )));
-            }
-            if let (Kind::FlatTorus { x, m }, 0) = (kind, modifiers.flips) {
-                // Exact corners: the triangles of the lengths' triangulation, laid out exactly.
-                let exact = intrinsic::generators::flat_torus_portalgon(x, *m)
-                    .map_err(|e| crate::failure::invalid(format!("{e}")))?;
-                crate::output::write_file(output, |w| {
-                    Ok(intrinsic::PortalgonDoc::from_portalgon(&exact).write(w, false)?)
-                })?;
-            } else {
-                crate::output::write_file(output, |w| {
-                    Ok(tri.write_json(w, intrinsic::TriangleStyle::Lengths)?)
-                })?;
-            }
+            crate::output::write_file(output, |w| {
+                Ok(tri.write_json(w, intrinsic::TriangleStyle::Lengths)?)
+            })?;
             (tri.into_parts().0, " (intrinsic)")
         }
     };
