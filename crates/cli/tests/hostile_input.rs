@@ -291,21 +291,6 @@ fn item4_matrices_are_finite_and_scale_free() {
     let out = run(&["delaunay", s(&torus), "-o", s(&tri)]);
     assert_fails(&out, 2, &["not finite"]);
     assert!(!tri.exists());
-    let out = run(&[
-        "delaunay",
-        s(&torus),
-        "-o",
-        s(&tri),
-        "--method",
-        "dubois",
-        "--exact",
-    ]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
 }
 
 /// Item 5: a truncated binary STL whose header starts with `solid` (no newline in the body) and
