@@ -148,8 +148,8 @@ fn item1_memory_is_bounded() {
 }
 
 /// Item 2: a surface against itself and against an intrinsic re-triangulation, with nearly flat
-/// vertices (angle defects near the flatness tolerance, from perturbations of 1e-10), where the
-/// flat-vertex removal used to get stuck (exit 2, "cannot be removed by flips"): isometric.
+/// vertices (angle defects near the flatness tolerance, from perturbations of 1e-10), on which the
+/// plain flat-vertex removal gets stuck: isometric.
 /// Different surfaces stay "not isometric".
 #[test]
 fn item2_isometry_never_guesses() {
