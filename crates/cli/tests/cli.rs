@@ -530,14 +530,7 @@ fn is_irreducible_soup(triangles: &[[u32; 3]]) -> bool {
 #[test]
 fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("g3.off");
-    surftopo()
-        .args([
-            "generate", "genus", "--genus", "3", "--size", "2", "--flips", "300", "-o",
-        ])
-        .arg(&input)
-        .assert()
-        .success();
+    let input = common::generated_genus_surface(dir.path(), "g3.off", 3);
     for algorithm in ["rs", "schipper", "brute-force"] {
         let output = dir.path().join(format!("irr-{algorithm}.obj"));
         let v = command_json(
@@ -616,14 +609,7 @@ fn irreducible_refuses_input_that_is_not_a_triangulated_closed_surface() {
 fn quad_outputs_a_closed_quad_mesh_of_input_triangle_pairs() {
     use std::collections::HashSet;
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("g2.obj");
-    surftopo()
-        .args([
-            "generate", "genus", "--genus", "2", "--size", "2", "--flips", "300", "-o",
-        ])
-        .arg(&input)
-        .assert()
-        .success();
+    let input = common::generated_genus_surface(dir.path(), "g2.obj", 2);
     let soup = surftopo_io::read_path(&input).unwrap();
     // Input triangles as rotation-invariant oriented keys.
     let key = |t: [u32; 3]| {

@@ -30,14 +30,7 @@ fn quad_json(
 #[test]
 fn quality_objectives_write_certified_quads_with_their_figures() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("g2.obj");
-    surftopo()
-        .args([
-            "generate", "genus", "--genus", "2", "--size", "2", "--flips", "300", "-o",
-        ])
-        .arg(&input)
-        .assert()
-        .success();
+    let input = common::generated_genus_surface(dir.path(), "g2.obj", 2);
     let mut costs = std::collections::HashMap::new();
     for objective in ["count", "quality", "quality-fast"] {
         let output = dir.path().join(format!("q-{objective}.obj"));
