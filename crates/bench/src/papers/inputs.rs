@@ -287,3 +287,28 @@ impl Described {
         }
     }
 }
+
+/// Every input of one paper's experiment, in the paper's order: the stand-ins of its first table
+/// (`models`: the paper's model names and triangle counts), then, for each brick group (`groups`:
+/// the group's letter, cavities, holes), the chain of its rows in `sizes` (the paper's names and
+/// triangle counts; a row belongs to the group its name starts with). `each` gets the group
+/// ("first" for the stand-ins) and the input; `runs` says which inputs are wanted.
+pub fn paper_inputs(
+    scale: Scale,
+    meshes: Option<&std::path::Path>,
+    runs: impl Fn(&str) -> bool + Copy,
+    models: &[(&str, u64)],
+    sizes: &[(&str, u64)],
+    groups: &[(&str, u32, u32)],
+    mut each: impl FnMut(&str, Input),
+) {
+    stand_ins(scale, meshes, models, |i| each("first", i));
+    for &(group, cavities, holes) in groups {
+        let rows: Vec<(&str, u64)> = sizes
+            .iter()
+            .copied()
+            .filter(|s| s.0.starts_with(group))
+            .collect();
+        brick_chain(scale, runs, &rows, (cavities, holes), |i| each(group, i));
+    }
+}

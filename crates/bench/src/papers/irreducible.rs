@@ -151,18 +151,15 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
         .iter()
         .map(|m| (m.0, value(m.3) as u64))
         .collect();
-    inputs::stand_ins(scale, meshes, &models, |i| record("first", i, &mut rows));
-    for (group, cavities, holes) in [("B", 3844, 0), ("C", 344, 3500)] {
-        let sizes: Vec<(&str, u64)> = numbers::IRREDUCIBLE_SIZES
-            .iter()
-            .filter(|s| s.0.starts_with(group))
-            .map(|s| (s.0, value(s.3) as u64))
-            .collect();
-        let runs = |n: &str| options.runs_input(n);
-        inputs::brick_chain(scale, runs, &sizes, (cavities, holes), |i| {
-            record(group, i, &mut rows)
-        });
-    }
+    let sizes: Vec<(&str, u64)> = numbers::IRREDUCIBLE_SIZES
+        .iter()
+        .map(|s| (s.0, value(s.3) as u64))
+        .collect();
+    let runs = |n: &str| options.runs_input(n);
+    let groups = [("B", 3844, 0), ("C", 344, 3500)];
+    inputs::paper_inputs(scale, meshes, runs, &models, &sizes, &groups, |g, i| {
+        record(g, i, &mut rows)
+    });
     for (i, (name, _, _, f, g)) in numbers::IRREDUCIBLE_SIZES
         .iter()
         .filter(|s| s.0.starts_with('D'))

@@ -167,18 +167,15 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         .iter()
         .map(|m| (m.0, value(m.3) as u64))
         .collect();
-    inputs::stand_ins(scale, meshes, &models, |i| record("first", i, &mut records));
-    for (group, cavities, holes) in [("A", 3844, 0), ("B", 344, 3500)] {
-        let sizes: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_2
-            .iter()
-            .filter(|s| s.0.starts_with(group))
-            .map(|s| (s.0, value(s.3) as u64))
-            .collect();
-        let runs = |n: &str| options.runs_input(n);
-        inputs::brick_chain(scale, runs, &sizes, (cavities, holes), |i| {
-            record(group, i, &mut records)
-        });
-    }
+    let sizes: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_2
+        .iter()
+        .map(|s| (s.0, value(s.3) as u64))
+        .collect();
+    let runs = |n: &str| options.runs_input(n);
+    let groups = [("A", 3844, 0), ("B", 344, 3500)];
+    inputs::paper_inputs(scale, meshes, runs, &models, &sizes, &groups, |g, i| {
+        record(g, i, &mut records)
+    });
     (records, failures)
 }
 
