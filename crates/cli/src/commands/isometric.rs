@@ -8,7 +8,8 @@ use crate::failure::{invalid, shown};
 use std::path::Path;
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
-    IsometryDecision, IsometryOptions, Portalgon, compare_tessellations, decide_isometry,
+    IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon, compare_tessellations,
+    decide_isometry,
 };
 
 /// Exit code of `isometric` for an internal failure (1 means "not isometric" there).
@@ -29,55 +30,81 @@ impl Verdict {
     }
 }
 
-/// The canonical tessellation of one input by the Voronoi wave (V = the singular vertices).
-fn canonical_by_wave(path: &Path, weld: bool, exact: bool) -> anyhow::Result<Portalgon> {
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
-    let options = VoronoiOptions {
+/// The options of the wave for a canonical tessellation (V = the singular vertices).
+fn singular_wave() -> VoronoiOptions {
+    VoronoiOptions {
         sources: Sources::Singular,
         ..VoronoiOptions::default()
-    };
-    if exact {
-        let p = load_exact(path)?;
-        let v = voronoi_delaunay(&p, &options).map_err(|e| fail(&e))?;
-        Ok(to_f64(&v.tessellation))
-    } else {
-        let tri = load_intrinsic(path, weld)?;
-        tri.validate().map_err(|e| fail(&e))?;
-        let (p, _) = tri.to_portalgon();
-        let v = voronoi_delaunay(&p, &options).map_err(|e| fail(&e))?;
-        Ok(v.tessellation)
     }
+}
+
+/// The canonical tessellation of an exact portalgon file by the exact Voronoi wave.
+fn canonical_by_exact_wave(path: &Path) -> anyhow::Result<Portalgon> {
+    let p = load_exact(path)?;
+    let v = voronoi_delaunay(&p, &singular_wave())
+        .map_err(|e| invalid(format!("{}: {e}", shown(path))))?;
+    Ok(to_f64(&v.tessellation))
+}
+
+/// The canonical tessellation of an intrinsic triangulation by the f64 Voronoi wave.
+fn canonical_by_wave(path: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<Portalgon> {
+    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
+    tri.validate().map_err(|e| fail(&e))?;
+    let (p, _) = tri.to_portalgon();
+    let v = voronoi_delaunay(&p, &singular_wave()).map_err(|e| fail(&e))?;
+    Ok(v.tessellation)
+}
+
+/// Whether two canonical tessellations correspond.
+fn correspond(ta: &Portalgon, tb: &Portalgon) -> anyhow::Result<surftopo_intrinsic::Outcome> {
+    let options = IsometryOptions::default();
+    crate::progress::step("comparing Delaunay tessellations", || {
+        compare_tessellations(ta, tb, options.length_tolerance, options.allow_reflection)
+    })
+    .map_err(|(surface, e)| invalid(format!("surface {surface}: {e}")))
 }
 
 /// The verdict of `--method voronoi`. In exact mode the tessellations are exact and the
 /// comparison decides. In f64 a correspondence proves isometry up to the tolerance, but its
-/// absence proves nothing: the flip route's three-way decision ([`decide_isometry`]) settles it.
+/// absence, or a surface the f64 dual refuses, proves nothing: the flip route's three-way
+/// decision ([`decide_isometry`]) settles it, on the triangulations already read.
 fn decide_by_wave(a: &Path, b: &Path, weld: bool, exact: bool) -> anyhow::Result<IsometryDecision> {
-    let ta = canonical_by_wave(a, weld, exact)?;
-    let tb = canonical_by_wave(b, weld, exact)?;
-    let options = IsometryOptions::default();
-    let outcome = crate::progress::step("comparing Delaunay tessellations", || {
-        compare_tessellations(&ta, &tb, options.length_tolerance, options.allow_reflection)
-    })
-    .map_err(|(surface, e)| invalid(format!("surface {surface}: {e}")))?;
-    if outcome.is_isometric() {
-        return Ok(IsometryDecision::Isometric(format!(
-            "Voronoi-wave tessellations correspond: {outcome}"
-        )));
-    }
+    let isometric = |outcome: surftopo_intrinsic::Outcome| {
+        IsometryDecision::Isometric(format!("Voronoi-wave tessellations correspond: {outcome}"))
+    };
     if exact {
-        return Ok(IsometryDecision::NotIsometric(format!(
-            "exact Voronoi-wave tessellations differ: {outcome}"
-        )));
+        let outcome = correspond(&canonical_by_exact_wave(a)?, &canonical_by_exact_wave(b)?)?;
+        return Ok(if outcome.is_isometric() {
+            isometric(outcome)
+        } else {
+            IsometryDecision::NotIsometric(format!(
+                "exact Voronoi-wave tessellations differ: {outcome}"
+            ))
+        });
     }
-    decide_by_flips(a, b, weld)
+    let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
+    // The f64 wave's dual may refuse a surface (a tolerance it cannot settle): the flip route
+    // then decides, as it does when no correspondence is found.
+    let waves =
+        canonical_by_wave(a, &first).and_then(|ta| Ok((ta, canonical_by_wave(b, &second)?)));
+    if let Ok((ta, tb)) = waves {
+        let outcome = correspond(&ta, &tb)?;
+        if outcome.is_isometric() {
+            return Ok(isometric(outcome));
+        }
+    }
+    decide(a, b, &first, &second)
 }
 
-fn decide_by_flips(a: &Path, b: &Path, weld: bool) -> anyhow::Result<IsometryDecision> {
-    let first = load_intrinsic(a, weld)?;
-    let second = load_intrinsic(b, weld)?;
+/// The flip route's three-way decision.
+fn decide(
+    a: &Path,
+    b: &Path,
+    first: &IntrinsicTriangulation,
+    second: &IntrinsicTriangulation,
+) -> anyhow::Result<IsometryDecision> {
     crate::progress::step("comparing Delaunay tessellations", || {
-        decide_isometry(&first, &second, &IsometryOptions::default())
+        decide_isometry(first, second, &IsometryOptions::default())
     })
     .map_err(|e| invalid(format!("{} / {}: {e}", shown(a), shown(b))))
 }
@@ -94,7 +121,7 @@ pub fn run(a: &Path, b: &Path, weld: bool, method: &MethodOptions) -> anyhow::Re
     let decision = if method.method == Method::Voronoi {
         decide_by_wave(a, b, weld, method.exact)?
     } else {
-        decide_by_flips(a, b, weld)?
+        decide(a, b, &load_intrinsic(a, weld)?, &load_intrinsic(b, weld)?)?
     };
     let verdict = match decision {
         IsometryDecision::Isometric(_) => "isometric",
