@@ -8,7 +8,8 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use surftopo_io::{PolygonSoup, WriteOptions};
-use surftopo_mesh::generators::{self, Surface};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators;
 
 /// Options of `read-build`.
 #[derive(clap::Args)]

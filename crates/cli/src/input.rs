@@ -3,27 +3,8 @@
 use crate::failure::invalid;
 use std::path::Path;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 use surftopo_mesh::{BuildError, BuildReport, geometry};
-
-/// The arguments shared by the commands that read one mesh and write one result.
-#[derive(clap::Args, Debug)]
-pub struct MeshJob {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
-    pub mesh: std::path::PathBuf,
-    /// Output mesh file (.obj, .off or .ply, optionally .gz).
-    #[arg(short, long)]
-    pub output: std::path::PathBuf,
-    /// Seed of the randomised algorithms (brute force, simple greedy, Pulli-Segal).
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// Print the figures as JSON.
-    #[arg(long)]
-    pub json: bool,
-    /// Merge vertices with exactly equal positions first.
-    #[arg(long)]
-    pub weld: bool,
-}
 
 /// A surface read from a file, with what building it changed.
 pub struct Loaded {

@@ -6,6 +6,7 @@
 //! progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
+mod args;
 mod commands;
 mod failure;
 mod input;
@@ -14,7 +15,6 @@ mod output;
 mod progress;
 
 use clap::{Parser, Subcommand};
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Triangulations of closed surfaces: irreducible triangulations, quadrangulations, intrinsic
@@ -24,14 +24,8 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-    /// The most bytes read from one input file, after decompression (inputs beyond are refused
-    /// with exit code 2 before more memory is used).
-    #[arg(long, global = true, default_value_t = surftopo_io::DEFAULT_MAX_INPUT_BYTES)]
-    max_input_bytes: u64,
-    /// The most vertices or faces of an input, and the most triangles a generator or modifier may
-    /// make (about 100 bytes each once built); checked before allocating.
-    #[arg(long, global = true, default_value_t = limits::DEFAULT_MAX_ELEMENTS)]
-    max_elements: u64,
+    #[command(flatten)]
+    limits: args::LimitArgs,
 }
 
 /// The exit codes, at the end of `--help`.
@@ -40,115 +34,46 @@ output that cannot be written (missing folder, read-only or full disk, full stdo
 signal N, temporary files removed. `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
 undecidable in double precision, 4 internal failure.";
 
+/// The subcommands; each owns its arguments (`commands::NAME::Args`).
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Vertices, edges, faces, genus, Euler characteristic, components, closed, orientable,
     /// simplicial, and every problem found.
-    Info {
-        /// Mesh file (.obj, .off, .ply, .stl, optionally .gz).
-        mesh: PathBuf,
-        /// Print JSON.
-        #[arg(long)]
-        json: bool,
-        /// Merge vertices with exactly equal positions first.
-        #[arg(long)]
-        weld: bool,
-        /// Exit with code 2 when the mesh is not a valid closed orientable surface.
-        #[arg(long)]
-        strict: bool,
-    },
+    Info(commands::info::Args),
     /// Generate a surface.
-    Generate {
-        #[command(subcommand)]
-        kind: commands::generate::Kind,
-        #[command(flatten)]
-        modifiers: commands::generate::Modifiers,
-    },
+    Generate(commands::generate::Args),
     /// Convert between mesh formats (polygons are kept).
-    Convert {
-        /// Input mesh file.
-        input: PathBuf,
-        /// Output mesh file (.obj, .off, .ply, optionally .gz).
-        output: PathBuf,
-        /// Merge vertices with exactly equal positions.
-        #[arg(long)]
-        weld: bool,
-    },
+    Convert(commands::convert::Args),
     /// An irreducible triangulation (every edge fails the link condition) by topology-preserving
     /// edge contractions; its vertices are surviving input vertices, with their positions.
-    Irreducible {
-        #[command(flatten)]
-        job: input::MeshJob,
-        /// The algorithm.
-        #[arg(long, value_enum, default_value_t)]
-        algorithm: commands::irreducible::AlgorithmName,
-    },
+    Irreducible(commands::irreducible::Args),
     /// A quadrangulation with the same vertices, by a perfect pairing of the triangles (each quad is
     /// two adjacent triangles of the input, or of a flipped triangulation K for `lrs`).
-    Quad {
-        #[command(flatten)]
-        job: input::MeshJob,
-        /// The initial pairing (for `--objective count`).
-        #[arg(long, value_enum, default_value_t)]
-        algorithm: commands::quad::AlgorithmName,
-        /// What the pairing optimises.
-        #[arg(long, value_enum, default_value_t)]
-        objective: commands::quad::Objective,
-    },
+    Quad(commands::quad::Args),
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
-    Delaunay(commands::delaunay::Options),
+    Delaunay(commands::delaunay::Args),
     /// Whether two closed polyhedral surfaces are isometric: prints `isometric` (exit 0),
     /// `not isometric` (exit 1) or `undecidable in double precision` (exit 3); exit 2 for invalid
     /// input, 4 for an internal failure.
-    Isometric {
-        /// First surface (mesh or portalgon JSON).
-        a: PathBuf,
-        /// Second surface (mesh or portalgon JSON).
-        b: PathBuf,
-        /// Merge vertices with exactly equal positions first (mesh input).
-        #[arg(long)]
-        weld: bool,
-        /// How the canonical tessellations are computed.
-        #[command(flatten)]
-        method: commands::delaunay::MethodOptions,
-    },
+    Isometric(commands::isometric::Args),
     /// Run every capability on a built-in example and write the results into a folder.
-    Demo {
-        /// Folder for the results.
-        #[arg(long, default_value = "surftopo-demo")]
-        out: PathBuf,
-    },
+    Demo(commands::demo::Args),
 }
 
 fn run(command: Command) -> anyhow::Result<ExitCode> {
     let done = |r: anyhow::Result<()>| r.map(|()| ExitCode::SUCCESS);
     match command {
-        Command::Info {
-            mesh,
-            json,
-            weld,
-            strict,
-        } => done(commands::info::run(&mesh, json, weld, strict)),
-        Command::Generate { kind, modifiers } => done(commands::generate::run(&kind, &modifiers)),
-        Command::Convert {
-            input,
-            output,
-            weld,
-        } => done(commands::convert::run(&input, &output, weld)),
-        Command::Irreducible { job, algorithm } => {
-            done(commands::irreducible::run(&job, algorithm))
+        Command::Info(args) => done(commands::info::run(&args)),
+        Command::Generate(args) => done(commands::generate::run(&args)),
+        Command::Convert(args) => done(commands::convert::run(&args)),
+        Command::Irreducible(args) => done(commands::irreducible::run(&args)),
+        Command::Quad(args) => done(commands::quad::run(&args)),
+        Command::Delaunay(args) => done(commands::delaunay::run(&args)),
+        Command::Isometric(args) => {
+            commands::isometric::run(&args).map(|v| ExitCode::from(v.exit_code()))
         }
-        Command::Quad {
-            job,
-            algorithm,
-            objective,
-        } => done(commands::quad::run(&job, algorithm, objective)),
-        Command::Delaunay(options) => done(commands::delaunay::run(&options)),
-        Command::Isometric { a, b, weld, method } => {
-            commands::isometric::run(&a, &b, weld, &method).map(|v| ExitCode::from(v.exit_code()))
-        }
-        Command::Demo { out } => done(commands::demo::run(&out)),
+        Command::Demo(args) => done(commands::demo::run(&args)),
     }
 }
 
@@ -177,12 +102,9 @@ fn main() -> ExitCode {
         }
         Err(e) => e.exit(),
     };
-    limits::set(limits::Limits {
-        max_input_bytes: cli.max_input_bytes,
-        max_elements: cli.max_elements,
-    });
+    limits::set(cli.limits.limits());
     remove_temporaries_on_signals();
-    let isometric = matches!(cli.command, Command::Isometric { .. });
+    let isometric = matches!(cli.command, Command::Isometric(_));
     match run(cli.command) {
         Ok(code) => code,
         Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 use surftopo_io::{PolygonSoup, WriteOptions};
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 
 /// Writes a surface's live faces (dense vertex ids) to a mesh file, atomically.
 pub fn write_surface(path: &Path, surface: &Surface) -> anyhow::Result<()> {

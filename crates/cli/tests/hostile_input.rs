@@ -46,7 +46,7 @@ fn temporaries(dir: &Path) -> Vec<String> {
         .collect()
 }
 
-fn write_obj(path: &Path, surface: &surftopo_mesh::generators::Surface, scale: f64) {
+fn write_obj(path: &Path, surface: &surftopo_mesh::Surface, scale: f64) {
     let (mut positions, triangles) = surface.to_triangles();
     for p in &mut positions {
         for c in p.iter_mut() {

@@ -12,7 +12,7 @@ use surftopo_intrinsic::{
 use surftopo_mesh::generators::{icosphere, torus};
 use surftopo_mesh::{EdgeId, SurfaceMesh};
 
-fn from_surface(s: surftopo_mesh::generators::Surface) -> IntrinsicTriangulation {
+fn from_surface(s: surftopo_mesh::Surface) -> IntrinsicTriangulation {
     IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap()
 }
 

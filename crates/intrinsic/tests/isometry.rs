@@ -10,7 +10,8 @@ use surftopo_intrinsic::{
     DEFAULT_ANGLE_TOLERANCE, DelaunayOptions, IntrinsicTriangulation, IsometryOptions, Outcome,
     canonical_tessellation, isometric, remove_flat_vertices,
 };
-use surftopo_mesh::generators::{Surface, icosphere, torus};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators::{icosphere, torus};
 
 fn tri_of(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> IntrinsicTriangulation {
     IntrinsicTriangulation::from_soup(positions, triangles)

@@ -57,6 +57,33 @@ pub enum Algorithm {
 }
 
 impl Algorithm {
+    /// Every algorithm, the brute force with `seed`, in the order the CLI lists them.
+    pub fn all(seed: u64) -> [Algorithm; 3] {
+        [
+            Algorithm::RamaswamiSiqueira,
+            Algorithm::Schipper,
+            Algorithm::BruteForce { seed },
+        ]
+    }
+
+    /// The algorithm whose [`Self::name`] is `name`, the brute force with `seed`.
+    pub fn from_name(name: &str, seed: u64) -> Option<Algorithm> {
+        Self::all(seed).into_iter().find(|a| a.name() == name)
+    }
+
+    /// One line on the algorithm (the CLI's `--algorithm` help).
+    pub fn summary(&self) -> &'static str {
+        match self {
+            Algorithm::RamaswamiSiqueira => {
+                "Ramaswami–Siqueira (Section 4): O(g² + gn), linear for genus 0"
+            }
+            Algorithm::Schipper => "Schipper's algorithm (Section 3)",
+            Algorithm::BruteForce { .. } => {
+                "Randomised brute force (Section 5), seeded by `--seed`"
+            }
+        }
+    }
+
     /// Short name: `rs`, `schipper` or `brute-force` (the CLI's `--algorithm` values).
     pub fn name(&self) -> &'static str {
         match self {

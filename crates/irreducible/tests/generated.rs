@@ -7,9 +7,10 @@ mod support;
 use proptest::prelude::*;
 use support::{all_algorithms, run_and_verify, verify};
 use surftopo_irreducible::{Algorithm, brute_force, ramaswami_siqueira, schipper};
+use surftopo_mesh::Surface;
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::{
-    CavityBox, Surface, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
+    CavityBox, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
     tetrahedron, torus,
 };
 

@@ -4,7 +4,8 @@
 //! - [`build()`] / [`inspect`]: from a triangle soup, with typed validation errors ([`BuildError`]).
 //! - Edits with their checks: [`SurfaceMesh::flip`], [`SurfaceMesh::contract`] /
 //!   [`SurfaceMesh::split_vertex`], [`SurfaceMesh::compact`], [`geometry::reorder_morton`].
-//! - [`geometry`]: positions and edge lengths beside the topology.
+//! - [`geometry`]: positions and edge lengths beside the topology; [`Surface`]: a mesh with its
+//!   positions.
 //! - [`generators`]: deterministic test and benchmark surfaces.
 //!
 
@@ -19,6 +20,7 @@ mod gluing;
 mod ids;
 mod invariants;
 mod printable;
+mod surface;
 mod topology;
 mod union_find;
 
@@ -29,5 +31,6 @@ pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
 pub use printable::printable;
+pub use surface::Surface;
 pub use topology::{Outgoing, SurfaceMesh};
 pub use union_find::UnionFind;

@@ -3,7 +3,7 @@
 //! unreferenced vertices, welding) and `inspect`'s counts on broken soups.
 
 use std::collections::HashMap;
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 use surftopo_mesh::geometry::{Point3, weld_exact};
 use surftopo_mesh::{BuildError, FaceId, VertexId, build, build_topology, inspect};
 

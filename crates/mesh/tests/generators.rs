@@ -3,8 +3,9 @@
 
 use std::collections::{HashMap, HashSet};
 use surftopo_mesh::LinkScratch;
+use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{
-    CavityBox, Surface, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
+    CavityBox, cavity_box, genus_surface, icosphere, random_flips, random_vertex_splits,
     shuffle_faces, subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_mesh::geometry::Point3;

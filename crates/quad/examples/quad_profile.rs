@@ -23,7 +23,7 @@ use surftopo_matching::{
     AugmentStrategy, DualGraph, KarpSipserOptions, augment_to_perfect, karp_sipser_perfect_with,
     pulli_segal, simple_greedy, verify_perfect_pairing,
 };
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 
 /// On-CPU nanoseconds of the current thread (`/proc/thread-self/schedstat`), or wall time when
 /// unavailable.

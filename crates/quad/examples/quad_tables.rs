@@ -37,9 +37,8 @@ use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::Command;
 
-use surftopo_mesh::generators::{
-    Surface, cavity_box, icosphere, shuffle_faces, subdivide_midpoint,
-};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators::{cavity_box, icosphere, shuffle_faces, subdivide_midpoint};
 use surftopo_quad::{
     AugmentStrategy, KarpSipserOptions, QuadAlgorithm, QuadOptions, quadrangulate_with,
 };

@@ -32,8 +32,9 @@ use surftopo_matching::weighted::{
     fast_min_cost_perfect_matching, min_cost_perfect_matching, verify_min_cost_perfect_matching,
 };
 use surftopo_mesh::EdgeId;
+use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{
-    Surface, cavity_box, genus_surface, icosphere, random_flips, shuffle_faces, subdivide_midpoint,
+    cavity_box, genus_surface, icosphere, random_flips, shuffle_faces, subdivide_midpoint,
 };
 use surftopo_quad::quality::COST_RESOLUTION;
 use surftopo_quad::{QuadAlgorithm, QualityReport, pair_costs, quadrangulate, quality_report};

@@ -45,6 +45,43 @@ pub enum QuadAlgorithm {
 }
 
 impl QuadAlgorithm {
+    /// Every algorithm, the seeded ones (SG, PS) with `seed`, in the order the CLI lists them.
+    pub fn all(seed: u64) -> [QuadAlgorithm; 5] {
+        [
+            QuadAlgorithm::SimpleGreedy { seed },
+            QuadAlgorithm::PulliSegal { seed },
+            QuadAlgorithm::Lrs,
+            QuadAlgorithm::DiksStanczyk,
+            QuadAlgorithm::KarpSipser,
+        ]
+    }
+
+    /// The algorithm whose [`Self::name`] is `name`, the seeded ones with `seed`.
+    pub fn from_name(name: &str, seed: u64) -> Option<QuadAlgorithm> {
+        Self::all(seed).into_iter().find(|a| a.name() == name)
+    }
+
+    /// One line on what the algorithm does (the CLI's `--algorithm` help).
+    pub fn summary(&self) -> &'static str {
+        match self {
+            QuadAlgorithm::SimpleGreedy { .. } => {
+                "Simple greedy pairing (seeded edge order), then augmenting paths"
+            }
+            QuadAlgorithm::PulliSegal { .. } => {
+                "Pulli–Segal priority pairing (seeded triangle order), then augmenting paths"
+            }
+            QuadAlgorithm::Lrs => {
+                "Contraction/expansion (Ramaswami–Siqueira, Algorithm 3.1 with flips), then augmenting paths"
+            }
+            QuadAlgorithm::DiksStanczyk => {
+                "Diks–Stanczyk: a perfect matching directly, by Frink reductions"
+            }
+            QuadAlgorithm::KarpSipser => {
+                "Karp–Sipser greedy with immediate local repairs (not from the paper), then augmenting paths; deterministic"
+            }
+        }
+    }
+
     /// Short name: `sg`, `ps`, `lrs`, `ds` or `ks` (the CLI's `--algorithm` values and the
     /// `algorithm` field of [`QuadStats`]).
     pub fn name(&self) -> &'static str {

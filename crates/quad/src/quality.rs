@@ -196,6 +196,21 @@ pub enum QualityObjective {
 }
 
 impl QualityObjective {
+    /// Both objectives, in the order the CLI lists them.
+    pub const ALL: [QualityObjective; 2] = [QualityObjective::Exact, QualityObjective::Fast];
+
+    /// One line on the objective (the CLI's `--objective` help).
+    pub fn summary(&self) -> &'static str {
+        match self {
+            QualityObjective::Exact => {
+                "The pairing of least total cost 1 − η (η: Remacle et al.'s quad quality), exact, its optimality certificate verified; `--algorithm` is not used"
+            }
+            QualityObjective::Fast => {
+                "A low-cost pairing by the fast mode (greedy, completion, short exchanges); `--algorithm` is not used"
+            }
+        }
+    }
+
     /// `quality` or `quality-fast` (the CLI's `--objective` values).
     pub fn name(&self) -> &'static str {
         match self {

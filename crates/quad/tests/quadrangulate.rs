@@ -5,10 +5,11 @@
 mod support;
 
 use support::{check_result, check_same_surface, naive_contractions};
+use surftopo_mesh::Surface;
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::{
-    CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits,
-    shuffle_faces, subdivide_midpoint, tetrahedron, torus,
+    CavityBox, genus_surface, icosphere, random_flips, random_vertex_splits, shuffle_faces,
+    subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_quad::{
     AugmentStrategy, KarpSipserOptions, QuadAlgorithm, QuadError, QuadOptions, expand,

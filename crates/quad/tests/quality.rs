@@ -10,9 +10,10 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 use surftopo_matching::weighted::{
     fast_min_cost_perfect_matching, min_cost_perfect_matching, verify_min_cost_perfect_matching,
 };
+use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{
-    CavityBox, Surface, genus_surface, icosphere, random_flips, random_vertex_splits,
-    shuffle_faces, subdivide_midpoint, tetrahedron, torus,
+    CavityBox, genus_surface, icosphere, random_flips, random_vertex_splits, shuffle_faces,
+    subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_mesh::{EdgeId, SurfaceMesh};
 use surftopo_quad::quality::{quad_corner_angles, quality_of_angles};

@@ -6,7 +6,7 @@
 //! - Independent checkers of results, written without the algorithms' code.
 
 use std::path::{Path, PathBuf};
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 
 /// One mesh of the shared collection, as the manifest describes it.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -17,7 +17,8 @@
 
 use std::path::PathBuf;
 
-use surftopo_mesh::generators::{CavityBox, Surface, simplify};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators::{CavityBox, simplify};
 use surftopo_testkit::SharedMesh;
 
 /// Seed of every simplification.

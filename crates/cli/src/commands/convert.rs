@@ -1,11 +1,24 @@
 //! `surftopo convert`: any readable format to OBJ, OFF or PLY (polygons kept as they are).
 
+use crate::args::WeldArg;
 use crate::input::read_soup;
-use std::path::Path;
+use std::path::PathBuf;
+
+/// The arguments of `convert`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input mesh file.
+    pub input: PathBuf,
+    /// Output mesh file (.obj, .off, .ply, optionally .gz).
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub weld: WeldArg,
+}
 
 /// Converts `input` to `output`, welding exactly coincident positions when asked.
-pub fn run(input: &Path, output: &Path, weld: bool) -> anyhow::Result<()> {
-    let (soup, welded) = read_soup(input, weld)?;
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (input, output) = (args.input.as_path(), args.output.as_path());
+    let (soup, welded) = read_soup(input, args.weld.weld)?;
     crate::output::write_soup(output, &soup)?;
     eprintln!(
         "wrote {} ({} vertices, {} faces{})",

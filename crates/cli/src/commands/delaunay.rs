@@ -3,6 +3,7 @@
 //! Dubois' Theorem 1 on flat surfaces (`--method dubois`: Section 4's reduction, then the wave from
 //! one vertex), its tessellation, the cotan Laplacian and the lumped mass matrix.
 
+use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::output::write_file;
 use std::path::{Path, PathBuf};
@@ -18,9 +19,9 @@ use surftopo_intrinsic::{
     write_matrix_market,
 };
 
-/// Options of `delaunay`.
+/// The arguments of `delaunay`.
 #[derive(clap::Args, Debug)]
-pub struct Options {
+pub struct Args {
     /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md).
     pub input: PathBuf,
     /// The Delaunay triangulation, as portalgon JSON.
@@ -41,12 +42,10 @@ pub struct Options {
     /// Mollify degenerate input with this epsilon (relative to the mean edge length).
     #[arg(long)]
     pub mollify: Option<f64>,
-    /// Merge vertices with exactly equal positions first (mesh input).
-    #[arg(long)]
-    pub weld: bool,
-    /// Print the figures as JSON.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub weld: WeldArg,
+    #[command(flatten)]
+    pub json: JsonArg,
     /// The algorithm and the arithmetic.
     #[command(flatten)]
     pub method: MethodOptions,
@@ -217,13 +216,14 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
 }
 
 /// Runs `delaunay`.
-pub fn run(options: &Options) -> anyhow::Result<()> {
+pub fn run(options: &Args) -> anyhow::Result<()> {
     options.method.check()?;
     if options.method.method != Method::Flip {
         return run_voronoi(options);
     }
-    let mut tri =
-        crate::progress::step("reading", || load_intrinsic(&options.input, options.weld))?;
+    let mut tri = crate::progress::step("reading", || {
+        load_intrinsic(&options.input, options.weld.weld)
+    })?;
     let flip_options = DelaunayOptions {
         max_flips: options.max_flips,
         mollify: options.mollify,
@@ -253,7 +253,7 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
 }
 
 /// Writes `--laplacian` and `--mass` of a Delaunay triangulation.
-fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
+fn write_matrices(options: &Args, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         let laplacian = cotan_laplacian(tri);
@@ -272,7 +272,7 @@ fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Re
 /// `--method voronoi` and `--method dubois`: the wave (f64, or exact with `--exact`) and its dual
 /// (after the reduction for dubois); the triangulation written is the tessellation cut along
 /// shortcuts (by lengths, or by exact corners with `--exact`).
-fn run_voronoi(options: &Options) -> anyhow::Result<()> {
+fn run_voronoi(options: &Args) -> anyhow::Result<()> {
     if options.mollify.is_some() || options.max_flips.is_some() {
         return Err(invalid(
             "--mollify and --max-flips apply to --method flip only",
@@ -291,8 +291,9 @@ fn run_voronoi(options: &Options) -> anyhow::Result<()> {
         let tri = v.triangulation().map_err(|e| fail(&e))?;
         (tri, figures)
     } else {
-        let tri =
-            crate::progress::step("reading", || load_intrinsic(&options.input, options.weld))?;
+        let tri = crate::progress::step("reading", || {
+            load_intrinsic(&options.input, options.weld.weld)
+        })?;
         tri.validate().map_err(|e| fail(&e))?;
         let (p, _) = tri.to_portalgon();
         let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
@@ -313,7 +314,7 @@ fn run_voronoi(options: &Options) -> anyhow::Result<()> {
     report(options, &stats, Some(&figures))
 }
 
-fn write_tessellation<S: Scalar>(options: &Options, t: &Portalgon<S>) -> anyhow::Result<()> {
+fn write_tessellation<S: Scalar>(options: &Args, t: &Portalgon<S>) -> anyhow::Result<()> {
     if let Some(path) = &options.tessellation {
         write_file(path, |w| {
             Ok(PortalgonDoc::from_portalgon(t).write(w, false)?)
@@ -326,19 +327,11 @@ fn write_tessellation<S: Scalar>(options: &Options, t: &Portalgon<S>) -> anyhow:
 /// dubois methods `wave_events` and `max_constellation`, and for dubois the reduction's
 /// `outer_iterations`, `inner_passes` (total), `inner_passes_bound` (350·N), `tubes_replaced`
 /// (`thin`, `thick`), `peak_active_vertices` and `triangles_after_reduction`).
-fn report(
-    options: &Options,
-    stats: &DelaunayStats,
-    wave: Option<&WaveFigures>,
-) -> anyhow::Result<()> {
-    if options.json {
+fn report(options: &Args, stats: &DelaunayStats, wave: Option<&WaveFigures>) -> anyhow::Result<()> {
+    if options.json.json {
         let mut value = serde_json::to_value(stats)?;
         if let Some(map) = value.as_object_mut() {
-            let method = match options.method.method {
-                Method::Flip => "flip",
-                Method::Voronoi => "voronoi",
-                Method::Dubois => "dubois",
-            };
+            let method = crate::args::value_name(&options.method.method);
             map.insert("method".into(), method.into());
             map.insert(
                 "arithmetic".into(),

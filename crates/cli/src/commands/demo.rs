@@ -1,19 +1,30 @@
 //! `surftopo demo`: the main job on a built-in example, needing no file.
 
 use crate::commands::generate::{self, Kind, Modifiers};
-use crate::commands::irreducible::{AlgorithmName, reduce_surface};
-use crate::commands::quad::{AlgorithmName as QuadName, quad_soup, quadrangulate_surface};
+use crate::commands::irreducible::reduce_surface;
+use crate::commands::quad::{quad_soup, quadrangulate_surface};
 use crate::output::{emit, write_file};
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::PathBuf;
 use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, TriangleStyle, cotan_laplacian, delaunay_with_stats,
     write_matrix_market,
 };
+use surftopo_irreducible::Algorithm;
+use surftopo_quad::QuadAlgorithm;
+
+/// The arguments of `demo`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Folder for the results.
+    #[arg(long, default_value = "surftopo-demo")]
+    pub out: PathBuf,
+}
 
 /// Generates a surface (a genus-2 brick with irregular connectivity), runs every capability on it,
-/// writes the results into `out_dir` and prints a summary.
-pub fn run(out_dir: &Path) -> anyhow::Result<()> {
+/// writes the results into `--out` and prints a summary.
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let out_dir = args.out.as_path();
     std::fs::create_dir_all(out_dir).map_err(|e| crate::failure::unwritable(out_dir, &e))?;
     let mut summary = String::new();
     let kind = Kind::Genus { genus: 2, size: 2 };
@@ -45,7 +56,7 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         mesh.genus()
     )?;
 
-    let (irreducible, report) = reduce_surface(&surface, AlgorithmName::Rs, 0)?;
+    let (irreducible, report) = reduce_surface(&surface, Algorithm::RamaswamiSiqueira)?;
     let irreducible_path = out_dir.join("irreducible.obj");
     crate::output::write_surface(&irreducible_path, &irreducible)?;
     writeln!(
@@ -62,8 +73,8 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         report.seconds
     )?;
 
-    for name in [QuadName::Ks, QuadName::Lrs] {
-        let result = quadrangulate_surface(&surface, name, 7)?;
+    for algorithm in [QuadAlgorithm::KarpSipser, QuadAlgorithm::Lrs] {
+        let result = quadrangulate_surface(&surface, algorithm)?;
         let label = result.stats.algorithm.clone();
         let path = out_dir.join(format!("quads-{label}.obj"));
         crate::output::write_soup(&path, &quad_soup(&surface, &result))?;

@@ -1,11 +1,22 @@
 //! `surftopo generate`: every surface generator, with optional subdivision, simplification,
 //! random flips, random vertex splits and a random face order, applied in that order.
 
-use clap::{Args, Subcommand};
+use clap::Subcommand;
 use std::path::PathBuf;
 use surftopo_intrinsic::geometry::Scalar as _;
 use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
-use surftopo_mesh::generators::{self, Surface};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators;
+
+/// The arguments of `generate`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The surface.
+    #[command(subcommand)]
+    pub kind: Kind,
+    #[command(flatten)]
+    pub modifiers: Modifiers,
+}
 
 /// The surface to generate.
 #[derive(Subcommand, Debug, Clone)]
@@ -94,7 +105,7 @@ pub enum Generated {
 }
 
 /// Options common to every generator.
-#[derive(Args, Debug, Clone)]
+#[derive(clap::Args, Debug, Clone)]
 pub struct Modifiers {
     /// Output mesh file (.obj, .off, .ply, optionally .gz).
     #[arg(short, long, global = true)]
@@ -325,7 +336,8 @@ pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Sur
 }
 
 /// Runs `generate`.
-pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (kind, modifiers) = (&args.kind, &args.modifiers);
     let output = modifiers
         .output
         .as_ref()

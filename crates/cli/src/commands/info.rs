@@ -5,10 +5,25 @@
 //! corrected for the added diagonals. (A diagonal that coincides with an existing edge shows up as a
 //! non-manifold edge.)
 
+use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::input::{fan_triangles, locate, read_soup, renumber_face};
 use serde::Serialize;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// The arguments of `info`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Mesh file (.obj, .off, .ply, .stl, optionally .gz).
+    pub mesh: PathBuf,
+    #[command(flatten)]
+    pub json: JsonArg,
+    #[command(flatten)]
+    pub weld: WeldArg,
+    /// Exit with code 2 when the mesh is not a valid closed orientable surface.
+    #[arg(long)]
+    pub strict: bool,
+}
 
 /// The facts `info` reports (JSON keys as named).
 #[derive(Serialize)]
@@ -51,9 +66,10 @@ pub struct Info {
     pub problems: Vec<String>,
 }
 
-/// Runs `info`; with `strict`, problems make it fail with exit code 2.
-pub fn run(path: &Path, json: bool, weld: bool, strict: bool) -> anyhow::Result<()> {
-    let (soup, welded) = read_soup(path, weld)?;
+/// Runs `info`; with `--strict`, problems make it fail with exit code 2.
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (path, json, strict) = (args.mesh.as_path(), args.json.json, args.strict);
+    let (soup, welded) = read_soup(path, args.weld.weld)?;
     // Polygon meshes are inspected through their fan triangulation (see `fan_triangles`).
     let (triangles, polygon_of) = fan_triangles(&soup);
     let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);

@@ -1,21 +1,34 @@
 //! `surftopo irreducible`: an irreducible triangulation by topology-preserving edge contractions.
 
+use crate::args::{JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
 use serde::Serialize;
+use std::path::PathBuf;
 use surftopo_irreducible::{Algorithm, Counters, reduce};
+use surftopo_mesh::Surface;
 use surftopo_mesh::SurfaceMesh;
-use surftopo_mesh::generators::Surface;
 
-/// The `--algorithm` values.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
-pub enum AlgorithmName {
-    /// Ramaswami–Siqueira (Section 4): O(g² + gn), linear for genus 0.
-    #[default]
-    Rs,
-    /// Schipper's algorithm (Section 3).
-    Schipper,
-    /// Randomised brute force (Section 5), seeded by `--seed`.
-    BruteForce,
+/// The arguments of `irreducible`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    pub mesh: PathBuf,
+    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub seed: SeedArg,
+    #[command(flatten)]
+    pub json: JsonArg,
+    #[command(flatten)]
+    pub weld: WeldArg,
+    /// The algorithm.
+    #[arg(
+        long,
+        default_value = Algorithm::RamaswamiSiqueira.name(),
+        value_parser = names(Algorithm::all(0).map(|a| (a.name(), a.summary()))),
+    )]
+    pub algorithm: String,
 }
 
 /// V, E, F and genus of a mesh.
@@ -69,14 +82,8 @@ pub struct Report {
 /// input vertices with their positions) and the report.
 pub fn reduce_surface(
     surface: &Surface,
-    name: AlgorithmName,
-    seed: u64,
+    algorithm: Algorithm,
 ) -> anyhow::Result<(Surface, Report)> {
-    let algorithm = match name {
-        AlgorithmName::Rs => Algorithm::RamaswamiSiqueira,
-        AlgorithmName::Schipper => Algorithm::Schipper,
-        AlgorithmName::BruteForce => Algorithm::BruteForce { seed },
-    };
     let input = Counts::of(&surface.mesh);
     let reduction = reduce(surface.mesh.clone(), algorithm).map_err(|e| invalid(e.to_string()))?;
     let Counters {
@@ -93,7 +100,10 @@ pub fn reduce_surface(
         edges_tested_more_than_once,
         contractions,
         seconds,
-        seed: matches!(name, AlgorithmName::BruteForce).then_some(seed),
+        seed: match algorithm {
+            Algorithm::BruteForce { seed } => Some(seed),
+            _ => None,
+        },
     };
     let mut irreducible = Surface {
         mesh: reduction.mesh,
@@ -104,15 +114,16 @@ pub fn reduce_surface(
 }
 
 /// Runs `irreducible`.
-pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<()> {
-    let (input, output, seed) = (job.mesh.as_path(), job.output.as_path(), job.seed);
-    let loaded = crate::input::read_surface(input, job.weld)?;
-    let (irreducible, report) = crate::progress::step("contracting", || {
-        reduce_surface(&loaded.surface, name, seed)
-    })
-    .map_err(|e| e.context(crate::failure::shown(input)))?;
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (input, output) = (args.mesh.as_path(), args.output.as_path());
+    let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
+        .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
+    let loaded = crate::input::read_surface(input, args.weld.weld)?;
+    let (irreducible, report) =
+        crate::progress::step("contracting", || reduce_surface(&loaded.surface, algorithm))
+            .map_err(|e| e.context(crate::failure::shown(input)))?;
     crate::output::write_surface(output, &irreducible)?;
-    if job.json {
+    if args.json.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(

@@ -3,14 +3,29 @@
 //! precision cannot decide. The canonical tessellations come from flipping (`--method flip`) or
 //! from the Voronoi wave from the singular vertices (`--method voronoi`, exactly with `--exact`).
 
+use crate::args::WeldArg;
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
     IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon, compare_tessellations,
     decide_isometry,
 };
+
+/// The arguments of `isometric`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// First surface (mesh or portalgon JSON).
+    pub a: PathBuf,
+    /// Second surface (mesh or portalgon JSON).
+    pub b: PathBuf,
+    #[command(flatten)]
+    pub weld: WeldArg,
+    /// How the canonical tessellations are computed.
+    #[command(flatten)]
+    pub method: MethodOptions,
+}
 
 /// Exit code of `isometric` for an internal failure (1 means "not isometric" there).
 pub const INTERNAL_FAILURE: u8 = 4;
@@ -111,7 +126,8 @@ fn decide(
 
 /// Runs `isometric`: prints `isometric`, `not isometric` or `undecidable in double precision` on
 /// stdout and the reason on stderr.
-pub fn run(a: &Path, b: &Path, weld: bool, method: &MethodOptions) -> anyhow::Result<Verdict> {
+pub fn run(args: &Args) -> anyhow::Result<Verdict> {
+    let (a, b, weld, method) = (&args.a, &args.b, args.weld.weld, &args.method);
     method.check()?;
     if method.method == Method::Dubois {
         return Err(crate::failure::invalid(

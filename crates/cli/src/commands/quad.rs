@@ -1,73 +1,79 @@
 //! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
 
+use crate::args::{JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
+use std::path::PathBuf;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
     QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate, quadrangulate_by_quality,
     quadrangulate_with_quality,
 };
 
-/// The `--objective` values.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Objective {
-    /// Any perfect pairing, by `--algorithm` (the fastest).
-    #[default]
-    Count,
-    /// The pairing of least total cost 1 − η (η: Remacle et al.'s quad quality), exact, its
-    /// optimality certificate verified; `--algorithm` is not used.
-    Quality,
-    /// A low-cost pairing by the fast mode (greedy, completion, short exchanges); `--algorithm`
-    /// is not used.
-    QualityFast,
+/// The arguments of `quad`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    pub mesh: PathBuf,
+    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub seed: SeedArg,
+    #[command(flatten)]
+    pub json: JsonArg,
+    #[command(flatten)]
+    pub weld: WeldArg,
+    /// The initial pairing (for `--objective count`).
+    #[arg(
+        long,
+        default_value = QuadAlgorithm::KarpSipser.name(),
+        value_parser = names(QuadAlgorithm::all(0).map(|a| (a.name(), a.summary()))),
+    )]
+    pub algorithm: String,
+    /// What the pairing optimises.
+    #[arg(
+        long,
+        default_value = COUNT,
+        value_parser = names(
+            std::iter::once((COUNT, COUNT_HELP))
+                .chain(QualityObjective::ALL.map(|o| (o.name(), o.summary())))
+        ),
+    )]
+    pub objective: String,
 }
 
-impl Objective {
-    fn name(self) -> &'static str {
-        match self {
-            Objective::Count => "count",
-            Objective::Quality => "quality",
-            Objective::QualityFast => "quality-fast",
-        }
-    }
-}
-
-/// The `--algorithm` values.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, Default)]
-pub enum AlgorithmName {
-    /// Simple greedy pairing (seeded edge order), then augmenting paths.
-    Sg,
-    /// Pulli–Segal priority pairing (seeded triangle order), then augmenting paths.
-    Ps,
-    /// Contraction/expansion (Ramaswami–Siqueira, Algorithm 3.1 with flips), then augmenting paths.
-    Lrs,
-    /// Diks–Stanczyk: a perfect matching directly, by Frink reductions.
-    Ds,
-    /// Karp–Sipser greedy with immediate local repairs (not from the paper), then augmenting
-    /// paths; deterministic, and the default.
-    #[default]
-    Ks,
-}
+/// The `--objective` of any perfect pairing by `--algorithm` (the others are
+/// [`QualityObjective`]s).
+const COUNT: &str = "count";
+/// The help of `--objective count`.
+const COUNT_HELP: &str = "Any perfect pairing, by `--algorithm` (the fastest)";
 
 /// The library's algorithm of an `--algorithm` value.
-fn algorithm_of(name: AlgorithmName, seed: u64) -> QuadAlgorithm {
-    match name {
-        AlgorithmName::Sg => QuadAlgorithm::SimpleGreedy { seed },
-        AlgorithmName::Ps => QuadAlgorithm::PulliSegal { seed },
-        AlgorithmName::Lrs => QuadAlgorithm::Lrs,
-        AlgorithmName::Ds => QuadAlgorithm::DiksStanczyk,
-        AlgorithmName::Ks => QuadAlgorithm::KarpSipser,
+pub fn algorithm_named(name: &str, seed: u64) -> anyhow::Result<QuadAlgorithm> {
+    QuadAlgorithm::from_name(name, seed)
+        .ok_or_else(|| anyhow::anyhow!("no quad algorithm is called {name}"))
+}
+
+/// The quality objective of an `--objective` value (`None` for `count`).
+fn objective_named(name: &str) -> anyhow::Result<Option<QualityObjective>> {
+    if name == COUNT {
+        return Ok(None);
     }
+    QualityObjective::ALL
+        .into_iter()
+        .find(|o| o.name() == name)
+        .map(Some)
+        .ok_or_else(|| anyhow::anyhow!("no quad objective is called {name}"))
 }
 
 /// Quadrangulates `surface`; quads use its vertex ids.
 pub fn quadrangulate_surface(
     surface: &Surface,
-    name: AlgorithmName,
-    seed: u64,
+    algorithm: QuadAlgorithm,
 ) -> anyhow::Result<QuadResult> {
-    quadrangulate(&surface.mesh, algorithm_of(name, seed)).map_err(|e| match e {
+    quadrangulate(&surface.mesh, algorithm).map_err(|e| match e {
         QuadError::Internal(_) => anyhow::Error::new(e),
         other => invalid(other.to_string()),
     })
@@ -86,13 +92,11 @@ pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
 /// The quads of `objective`, with their total cost, optimality gap (when known) and quality.
 fn pair(
     surface: &Surface,
-    name: AlgorithmName,
-    seed: u64,
-    objective: Objective,
+    algorithm: QuadAlgorithm,
+    objective: Option<QualityObjective>,
 ) -> anyhow::Result<QualityQuads> {
     let quality = match objective {
-        Objective::Count => {
-            let algorithm = algorithm_of(name, seed);
+        None => {
             let q = quadrangulate_with_quality(&surface.mesh, &surface.positions, algorithm)
                 .map_err(|e| match e {
                     QuadError::Internal(_) => anyhow::Error::new(e),
@@ -100,8 +104,7 @@ fn pair(
                 })?;
             return Ok(q);
         }
-        Objective::Quality => QualityObjective::Exact,
-        Objective::QualityFast => QualityObjective::Fast,
+        Some(quality) => quality,
     };
     let q =
         quadrangulate_by_quality(&surface.mesh, &surface.positions, quality).map_err(
@@ -114,27 +117,25 @@ fn pair(
 }
 
 /// Runs `quad`.
-pub fn run(
-    job: &crate::input::MeshJob,
-    name: AlgorithmName,
-    objective: Objective,
-) -> anyhow::Result<()> {
-    let (input, output, seed) = (job.mesh.as_path(), job.output.as_path(), job.seed);
-    let loaded = crate::input::read_surface(input, job.weld)?;
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (input, output) = (args.mesh.as_path(), args.output.as_path());
+    let algorithm = algorithm_named(&args.algorithm, args.seed.seed)?;
+    let objective = objective_named(&args.objective)?;
+    let loaded = crate::input::read_surface(input, args.weld.weld)?;
     if !loaded.report.dropped_vertices.is_empty() {
         eprintln!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
     let paired = crate::progress::step("pairing triangles", || {
-        pair(&loaded.surface, name, seed, objective)
+        pair(&loaded.surface, algorithm, objective)
     })
     .map_err(|e| e.context(crate::failure::shown(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
     crate::output::write_soup(output, &quad_soup(&loaded.surface, result))?;
     let stats = &result.stats;
-    if job.json {
-        crate::output::print_json(&paired.figures(objective.name()))?;
+    if args.json.json {
+        crate::output::print_json(&paired.figures(&args.objective))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {

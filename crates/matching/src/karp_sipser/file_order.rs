@@ -37,7 +37,8 @@ pub(super) fn file_order_pairing<G: DualGraph + ?Sized>(graph: &G) -> Option<Pai
 mod tests {
     use super::*;
     use crate::verify::assert_perfect_pairing;
-    use surftopo_mesh::generators::{Surface, icosphere, torus};
+    use surftopo_mesh::Surface;
+    use surftopo_mesh::generators::{icosphere, torus};
 
     /// Checks `pairing` independently: perfect on `graph`, and each pair is `{2k, 2k + 1}`.
     fn check_file_order<G: DualGraph + ?Sized>(graph: &G, pairing: &Pairing) {

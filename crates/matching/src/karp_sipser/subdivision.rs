@@ -197,7 +197,8 @@ mod tests {
     use crate::augment::{AugmentStrategy, augment_to_perfect};
     use crate::greedy::simple_greedy;
     use crate::verify::assert_perfect_pairing;
-    use surftopo_mesh::generators::{Surface, icosphere, shuffle_faces, torus};
+    use surftopo_mesh::Surface;
+    use surftopo_mesh::generators::{icosphere, shuffle_faces, torus};
 
     #[test]
     fn an_icosphere_coarsens_level_by_level_to_the_icosahedron() {

@@ -1,6 +1,6 @@
 //! Tetrahedron, icosphere and (sheared) tori.
 
-use super::Surface;
+use crate::Surface;
 use crate::geometry::Point3;
 use std::collections::HashMap;
 

@@ -24,8 +24,8 @@
 //! paper's smallest sizes (8,796 triangles for B9, obtained there by simplification that no longer
 //! keeps every cavity as a pit) are below what a polycube can represent.
 
-use super::Surface;
 use super::polycube::HeightField;
+use crate::Surface;
 
 /// The dimensions of a cavity/hole brick, in lattice steps (see the module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

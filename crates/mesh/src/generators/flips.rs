@@ -1,6 +1,6 @@
 //! Random simplicial edge flips: irregular connectivity on a fixed vertex set.
 
-use super::Surface;
+use crate::Surface;
 use crate::ids::EdgeId;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;

@@ -1,7 +1,7 @@
 //! A closed orientable surface of any genus, at a chosen resolution.
 
-use super::Surface;
 use super::cavity_box::CavityBox;
+use crate::Surface;
 
 /// A closed orientable surface of genus `genus`: a square slab with `genus` square through-holes
 /// on the smallest square grid holding them (the [`CavityBox`] with no cavities, pit side, wall

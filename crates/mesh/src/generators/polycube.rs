@@ -9,7 +9,7 @@
 //! (and `hmax > 0`). So every vertical line holds `{0} ∪ [a, b]`: vertex ids are given by a grid
 //! index (a base id and `a` per line), with no hash map. O(V + F) time and memory.
 
-use super::Surface;
+use crate::Surface;
 use crate::geometry::Point3;
 
 /// Heights of the unit columns of a polycube, row-major (`heights[j * nx + i]`).

@@ -1,7 +1,7 @@
 //! The same surface with its triangles listed in a random order: what a mesh written by a tool
 //! that does not keep the face order looks like, for measuring how algorithms depend on it.
 
-use super::Surface;
+use crate::Surface;
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;

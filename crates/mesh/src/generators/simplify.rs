@@ -8,7 +8,7 @@
 //! the geometry is not optimised (no error metric) and may fold over, only the topology is
 //! guaranteed.
 
-use super::Surface;
+use crate::Surface;
 use crate::contract::LinkScratch;
 use crate::ids::EdgeId;
 use rand::{RngExt, SeedableRng};

@@ -1,6 +1,6 @@
 //! 1-to-4 midpoint subdivision, to grow real meshes to millions of triangles.
 
-use super::Surface;
+use crate::Surface;
 use crate::geometry::Point3;
 
 /// `surface` refined `levels` times by 1-to-4 splits: each edge gets a new vertex at its midpoint

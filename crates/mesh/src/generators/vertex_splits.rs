@@ -1,6 +1,6 @@
 //! Random vertex splits (the inverse of edge contractions, with fresh ids).
 
-use super::Surface;
+use crate::Surface;
 use crate::geometry::Point3;
 use crate::ids::{HalfedgeId, VertexId};
 use rand::{RngExt, SeedableRng};

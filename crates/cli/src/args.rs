@@ -1,0 +1,73 @@
+//! The flag groups several commands share, each declared once and flattened
+//! (`#[command(flatten)]`) into the commands' own `clap::Args`, and the value parser that takes
+//! an option's values from a library enum's names.
+
+use clap::builder::{PossibleValue, PossibleValuesParser};
+
+/// The global limits `--max-input-bytes` and `--max-elements` (see [`crate::limits`]).
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct LimitArgs {
+    /// The most bytes read from one input file, after decompression (inputs beyond are refused
+    /// with exit code 2 before more memory is used).
+    #[arg(long, global = true, default_value_t = surftopo_io::DEFAULT_MAX_INPUT_BYTES)]
+    pub max_input_bytes: u64,
+    /// The most vertices or faces of an input, and the most triangles a generator or modifier may
+    /// make (about 100 bytes each once built); checked before allocating.
+    #[arg(long, global = true, default_value_t = crate::limits::DEFAULT_MAX_ELEMENTS)]
+    pub max_elements: u64,
+}
+
+impl LimitArgs {
+    /// The limits these options set.
+    pub fn limits(&self) -> crate::limits::Limits {
+        crate::limits::Limits {
+            max_input_bytes: self.max_input_bytes,
+            max_elements: self.max_elements,
+        }
+    }
+}
+
+/// `--json`.
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct JsonArg {
+    /// Print the results as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `--weld`.
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct WeldArg {
+    /// Merge vertices with exactly equal positions first (mesh input; STL input always is).
+    #[arg(long)]
+    pub weld: bool,
+}
+
+/// `--seed` of the randomised algorithms.
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct SeedArg {
+    /// Seed of the randomised algorithms (brute force, simple greedy, Pulli-Segal).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+}
+
+/// A parser accepting exactly `values` (name, one-line help), so an option's values are the
+/// names a library enum gives its variants (e.g. [`surftopo_quad::QuadAlgorithm::name`]) and
+/// are listed nowhere else.
+pub fn names(
+    values: impl IntoIterator<Item = (&'static str, &'static str)>,
+) -> PossibleValuesParser {
+    PossibleValuesParser::new(
+        values
+            .into_iter()
+            .map(|(name, help)| PossibleValue::new(name).help(help)),
+    )
+}
+
+/// The name clap gives a value of a CLI-owned [`clap::ValueEnum`] (its kebab-case variant name),
+/// for reports that repeat the option's value.
+pub fn value_name(value: &impl clap::ValueEnum) -> String {
+    value
+        .to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_owned())
+}
