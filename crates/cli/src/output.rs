@@ -1,8 +1,144 @@
-//! Writing results: mesh files atomically through surftopo-io; JSON to stdout.
+//! Writing results: output paths checked before any work ([`check_outputs`]), files written
+//! atomically through surftopo-io (several outputs of one command together: [`Outputs`]), JSON
+//! to stdout.
 
-use std::path::Path;
-use surftopo_io::{PolygonSoup, WriteOptions};
+use crate::failure::{invalid, shown};
+use std::path::{Component, Path, PathBuf};
+use surftopo_io::{Format, PolygonSoup, StagedFile, WriteOptions};
 use surftopo_mesh::Surface;
+
+/// What an output file holds, and so the extensions it may have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputKind {
+    /// A mesh: `.obj`, `.off` or `.ply`, optionally `.gz`.
+    Mesh,
+    /// An intrinsic triangulation or tessellation: portalgon JSON, `.json` (a mesh file cannot
+    /// hold its loops and multi-edges).
+    Portalgon,
+    /// A sparse matrix: Matrix Market, `.mtx`.
+    MatrixMarket,
+}
+
+/// Whether the file name of `path` ends in `.ext` (case-insensitive).
+fn has_extension(path: &Path, ext: &str) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case(ext))
+}
+
+/// Refuses an output whose extension does not fit what it will hold (exit 2); `option` names the
+/// option that gave it (`-o`, `--laplacian`, ...).
+fn check_extension(option: &str, path: &Path, kind: OutputKind) -> anyhow::Result<()> {
+    let refuse = |what: &str| Err(invalid(format!("{}: {option}: {what}", shown(path))));
+    match kind {
+        OutputKind::Mesh => match Format::from_path(path) {
+            Some(format) if format.can_write() => Ok(()),
+            Some(format) => refuse(&format!(
+                "{format} is read only; write .obj, .off or .ply (optionally .gz)"
+            )),
+            None => refuse("not a mesh file name; write .obj, .off or .ply (optionally .gz)"),
+        },
+        OutputKind::Portalgon if has_extension(path, "json") => Ok(()),
+        OutputKind::Portalgon => refuse(
+            "an intrinsic triangulation is written as portalgon JSON (.json): a mesh file cannot \
+             hold its loops and multi-edges",
+        ),
+        OutputKind::MatrixMarket if has_extension(path, "mtx") => Ok(()),
+        OutputKind::MatrixMarket => refuse("a matrix is written as Matrix Market (.mtx)"),
+    }
+}
+
+/// The path that identifies an output file: the canonical path when the file exists; else its
+/// folder's canonical path joined with its name when the folder exists; else the path made
+/// absolute with `.` and `..` resolved lexically.
+fn identity(path: &Path) -> PathBuf {
+    if let Ok(canonical) = std::fs::canonicalize(path) {
+        return canonical;
+    }
+    let absolute = std::env::current_dir()
+        .map(|dir| dir.join(path))
+        .unwrap_or_else(|_| path.to_path_buf());
+    if let (Some(parent), Some(name)) = (absolute.parent(), absolute.file_name())
+        && let Ok(folder) = std::fs::canonicalize(parent)
+    {
+        return folder.join(name);
+    }
+    let mut normal = PathBuf::new();
+    for component in absolute.components() {
+        match component {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                normal.pop();
+            }
+            other => normal.push(other),
+        }
+    }
+    normal
+}
+
+/// Checks a command's outputs before any work: each extension fits its kind, and no file is
+/// named by two options (compared by [`identity`]). `outputs`: (option, path, kind).
+///
+/// # Errors
+/// An invalid-input error (exit 2) naming the path and the option(s).
+pub fn check_outputs(outputs: &[(&str, &Path, OutputKind)]) -> anyhow::Result<()> {
+    for &(option, path, kind) in outputs {
+        check_extension(option, path, kind)?;
+    }
+    let identities: Vec<PathBuf> = outputs.iter().map(|o| identity(o.1)).collect();
+    for (j, id) in identities.iter().enumerate() {
+        if let Some(i) = identities[..j].iter().position(|earlier| earlier == id) {
+            return Err(invalid(format!(
+                "{}: named by both {} and {}: give each output its own file",
+                shown(outputs[j].1),
+                outputs[i].0,
+                outputs[j].0
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The output files of one command, written under temporary names and renamed over their
+/// targets by [`Outputs::commit`] only once every one is written: a failure before that (an
+/// error, or a signal: the temporary files are registered with surftopo-io) leaves no output
+/// behind. The renames follow one another; a rename failing midway (rare: same folder, already
+/// written) leaves the outputs committed before it.
+#[derive(Default)]
+pub struct Outputs {
+    staged: Vec<StagedFile>,
+}
+
+impl Outputs {
+    /// Writes a polygon soup as a mesh file (format from the extension) under a temporary name.
+    pub fn soup(&mut self, path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
+        self.staged.push(stage_soup(path, soup)?);
+        Ok(())
+    }
+
+    /// Writes a file under a temporary name, `fill` writing its contents.
+    pub fn file(
+        &mut self,
+        path: &Path,
+        fill: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> anyhow::Result<()>,
+    ) -> anyhow::Result<()> {
+        self.staged.push(stage_file(path, fill)?);
+        Ok(())
+    }
+
+    /// Renames every file written over its target, in the order written.
+    ///
+    /// # Errors
+    /// An unwritable-output error (exit 2) naming the file whose rename failed.
+    pub fn commit(self) -> anyhow::Result<()> {
+        for staged in self.staged {
+            let target = staged.target().to_path_buf();
+            staged
+                .commit()
+                .map_err(|e| crate::failure::unwritable(&target, &e))?;
+        }
+        Ok(())
+    }
+}
 
 /// Writes a surface's live faces (dense vertex ids) to a mesh file, atomically.
 pub fn write_surface(path: &Path, surface: &Surface) -> anyhow::Result<()> {
@@ -12,7 +148,14 @@ pub fn write_surface(path: &Path, surface: &Surface) -> anyhow::Result<()> {
 
 /// Writes a polygon soup to a mesh file (format from the extension), atomically.
 pub fn write_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
-    surftopo_io::write_path(path, soup, &WriteOptions::default()).map_err(|e| match e {
+    let mut outputs = Outputs::default();
+    outputs.soup(path, soup)?;
+    outputs.commit()
+}
+
+/// A polygon soup written as a mesh file under a temporary name ([`StagedFile`]).
+fn stage_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<StagedFile> {
+    surftopo_io::stage_path(path, soup, &WriteOptions::default()).map_err(|e| match e {
         // The soup is surftopo's own: an inconsistent one is an internal failure.
         surftopo_io::IoError::InvalidSoup { .. } => anyhow::Error::new(e),
         surftopo_io::IoError::Io { source, .. } => crate::failure::unwritable(path, &source),
@@ -59,9 +202,20 @@ pub fn write_file(
     path: &Path,
     fill: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
+    let mut outputs = Outputs::default();
+    outputs.file(path, fill)?;
+    outputs.commit()
+}
+
+/// A file written under a temporary name ([`StagedFile`]), `fill` writing its contents; failures
+/// as [`write_file`]'s.
+fn stage_file(
+    path: &Path,
+    fill: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> anyhow::Result<()>,
+) -> anyhow::Result<StagedFile> {
     use std::io::Write;
     let mut failure = None;
-    let result = surftopo_io::atomic_write(path, |mut file| {
+    let result = surftopo_io::stage_write(path, |mut file| {
         let mut writer = std::io::BufWriter::new(&mut file);
         if let Err(e) = fill(&mut writer) {
             failure = Some(e);
@@ -77,6 +231,6 @@ pub fn write_file(
             &crate::failure::message(&e),
         )),
         (None, Err(e)) => Err(crate::failure::unwritable(path, &e)),
-        (None, Ok(())) => Ok(()),
+        (None, Ok(staged)) => Ok(staged),
     }
 }

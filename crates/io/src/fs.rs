@@ -250,13 +250,30 @@ fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result
 /// renamed over `path`; on any error the temporary file is removed and
 /// `path` is left as it was.
 pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Result<(), IoError> {
+    let staged = stage_path(path, soup, options)?;
+    staged.commit().map_err(|e| {
+        Ctx {
+            name: &path_name(path),
+        }
+        .io(e)
+    })
+}
+
+/// [`write_path`] up to the rename: the mesh file written and synced under its temporary name,
+/// to be renamed over `path` by [`StagedFile::commit`] (or removed when dropped), so that several
+/// outputs are renamed only once all are written.
+pub fn stage_path(
+    path: &Path,
+    soup: &PolygonSoup,
+    options: &WriteOptions,
+) -> Result<StagedFile, IoError> {
     let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
     crate::check_writable(soup, format)?;
     let gz = is_gzip_path(path);
     let level = Compression::new(options.gzip_level.min(9));
-    atomic_write(path, |file| {
+    stage_write(path, |file| {
         if gz {
             let enc = crate::write_unchecked(GzEncoder::new(file, level), soup, format, options)?;
             enc.finish()
@@ -336,6 +353,27 @@ pub fn remove_temporaries_then<T>(last: impl FnOnce() -> T) -> T {
 /// it over `path`; removes the temporary file on any error. The temporary file is registered
 /// for [`remove_temporaries_then`] while it exists.
 pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) -> io::Result<()> {
+    stage_write(path, fill)?.commit()
+}
+
+/// A file written and synced under a temporary name beside its target, not yet renamed over it.
+/// [`StagedFile::commit`] renames it; dropping it uncommitted removes the temporary file. While
+/// it exists the temporary file is registered for [`remove_temporaries_then`], so a signal
+/// between writing and renaming leaves nothing behind.
+#[derive(Debug)]
+pub struct StagedFile {
+    tmp: PathBuf,
+    target: PathBuf,
+    committed: bool,
+}
+
+/// Runs `fill` on a new temporary file next to `path` (keeping the permissions of a file `path`
+/// replaces) and syncs it; the rename is [`StagedFile::commit`]. On any error the temporary file
+/// is removed.
+pub fn stage_write(
+    path: &Path,
+    fill: impl FnOnce(File) -> io::Result<File>,
+) -> io::Result<StagedFile> {
     let tmp = temp_path(path)?;
     let file = {
         let mut open = temporaries();
@@ -343,36 +381,59 @@ pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) ->
         open.push(tmp.clone());
         file
     };
-    let unregister = |open: &mut Vec<PathBuf>| open.retain(|p| p != &tmp);
-    let result = (|| {
-        if let Ok(meta) = fs::metadata(path) {
-            // Keep the permissions of the file being replaced.
-            let _ = file.set_permissions(meta.permissions());
-        }
-        let mut file = fill(file)?;
-        file.flush()?;
-        file.sync_all()?;
-        drop(file);
-        let mut open = temporaries();
-        fs::rename(&tmp, path)?;
-        unregister(&mut open);
-        Ok(())
-    })();
-    if let Err(e) = result {
-        let mut open = temporaries();
-        let _ = fs::remove_file(&tmp);
-        unregister(&mut open);
-        return Err(e);
-    }
-    // Make the rename durable; best effort.
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
+    // From here on, dropping `staged` (an error) removes the temporary file.
+    let staged = StagedFile {
+        tmp,
+        target: path.to_path_buf(),
+        committed: false,
     };
-    if let Ok(d) = File::open(dir) {
-        let _ = d.sync_all();
+    if let Ok(meta) = fs::metadata(path) {
+        // Keep the permissions of the file being replaced.
+        let _ = file.set_permissions(meta.permissions());
     }
-    Ok(())
+    let mut file = fill(file)?;
+    file.flush()?;
+    file.sync_all()?;
+    Ok(staged)
+}
+
+impl StagedFile {
+    /// The file this one replaces once committed.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
+    /// Renames the temporary file over the target (then syncs the folder, best effort).
+    ///
+    /// # Errors
+    /// The rename's error; the temporary file is then removed and the target left as it was.
+    pub fn commit(mut self) -> io::Result<()> {
+        {
+            let mut open = temporaries();
+            fs::rename(&self.tmp, &self.target)?;
+            open.retain(|p| p != &self.tmp);
+            self.committed = true;
+        }
+        // Make the rename durable; best effort.
+        let dir = match self.target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        if let Ok(d) = File::open(dir) {
+            let _ = d.sync_all();
+        }
+        Ok(())
+    }
+}
+
+impl Drop for StagedFile {
+    fn drop(&mut self) {
+        if !self.committed {
+            let mut open = temporaries();
+            let _ = fs::remove_file(&self.tmp);
+            open.retain(|p| p != &self.tmp);
+        }
+    }
 }
 
 #[cfg(test)]
@@ -401,6 +462,41 @@ mod tests {
         assert_eq!(err.to_string(), "boom");
         assert_eq!(fs::read(&target).unwrap(), b"old");
         assert_eq!(entries(dir.path()), ["m.obj"]);
+    }
+
+    #[test]
+    fn a_staged_file_replaces_its_target_only_when_committed() {
+        let dir = tempfile::tempdir().unwrap();
+        let (kept, dropped) = (dir.path().join("a.obj"), dir.path().join("b.obj"));
+        fs::write(&kept, b"old").unwrap();
+        let write = |path: &Path| {
+            stage_write(path, |mut f| {
+                f.write_all(b"new")?;
+                Ok(f)
+            })
+            .unwrap()
+        };
+        let (a, b) = (write(&kept), write(&dropped));
+        assert_eq!(fs::read(&kept).unwrap(), b"old");
+        assert_eq!(entries(dir.path()).len(), 3, "a.obj and two temporaries");
+        assert_eq!(
+            temporaries()
+                .iter()
+                .filter(|t| t.starts_with(dir.path()))
+                .count(),
+            2
+        );
+        a.commit().unwrap();
+        drop(b);
+        assert_eq!(fs::read(&kept).unwrap(), b"new");
+        assert_eq!(entries(dir.path()), ["a.obj"]);
+        assert_eq!(
+            temporaries()
+                .iter()
+                .filter(|t| t.starts_with(dir.path()))
+                .count(),
+            0
+        );
     }
 
     #[test]

@@ -39,8 +39,8 @@ use std::io::{self, Read, Write};
 pub use error::{IoError, Location};
 pub use format::{Format, is_gzip_path};
 pub use fs::{
-    DEFAULT_MAX_INPUT_BYTES, ReadLimits, atomic_write, decompress_gzip, load_path, read_path,
-    read_path_with, remove_temporaries_then, write_path,
+    DEFAULT_MAX_INPUT_BYTES, ReadLimits, StagedFile, atomic_write, decompress_gzip, load_path,
+    read_path, read_path_with, remove_temporaries_then, stage_path, stage_write, write_path,
 };
 pub use soup::{NotTriangles, PolygonSoup};
 

@@ -18,6 +18,7 @@ pub struct Args {
 /// Converts `input` to `output`, welding exactly coincident positions when asked.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.input.as_path(), args.output.as_path());
+    crate::output::check_outputs(&[("OUTPUT", output, crate::output::OutputKind::Mesh)])?;
     let (soup, welded) = read_soup(input, args.weld.weld)?;
     crate::output::write_soup(output, &soup)?;
     eprintln!(

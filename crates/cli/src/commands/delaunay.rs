@@ -5,7 +5,7 @@
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
-use crate::output::write_file;
+use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{
     DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
@@ -24,16 +24,17 @@ use surftopo_intrinsic::{
 pub struct Args {
     /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md).
     pub input: PathBuf,
-    /// The Delaunay triangulation, as portalgon JSON.
+    /// The Delaunay triangulation, as portalgon JSON (.json). Optional: at least one output
+    /// (this, --tessellation, --laplacian, --mass) or --json is needed.
     #[arg(short, long)]
-    pub output: PathBuf,
-    /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON.
+    pub output: Option<PathBuf>,
+    /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON (.json).
     #[arg(long)]
     pub tessellation: Option<PathBuf>,
-    /// The cotan Laplacian (positive semidefinite: positive diagonal), Matrix Market.
+    /// The cotan Laplacian (positive semidefinite: positive diagonal), Matrix Market (.mtx).
     #[arg(long)]
     pub laplacian: Option<PathBuf>,
-    /// The lumped (barycentric) mass matrix, Matrix Market.
+    /// The lumped (barycentric) mass matrix, Matrix Market (.mtx).
     #[arg(long)]
     pub mass: Option<PathBuf>,
     /// Stop with an error after this many flips.
@@ -215,8 +216,36 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
     Ok(())
 }
 
+/// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o` and
+/// `--tessellation`, Matrix Market for `--laplacian` and `--mass`), a file named twice, and a run
+/// with nothing to write and no `--json`.
+fn check_outputs(options: &Args) -> anyhow::Result<()> {
+    let named = [
+        ("-o", &options.output, OutputKind::Portalgon),
+        (
+            "--tessellation",
+            &options.tessellation,
+            OutputKind::Portalgon,
+        ),
+        ("--laplacian", &options.laplacian, OutputKind::MatrixMarket),
+        ("--mass", &options.mass, OutputKind::MatrixMarket),
+    ];
+    let outputs: Vec<_> = named
+        .iter()
+        .filter_map(|(option, path, kind)| Some((*option, path.as_deref()?, *kind)))
+        .collect();
+    if outputs.is_empty() && !options.json.json {
+        return Err(invalid(
+            "delaunay: nothing to write: give -o, --tessellation, --laplacian or --mass (or \
+             --json for the figures alone)",
+        ));
+    }
+    crate::output::check_outputs(&outputs)
+}
+
 /// Runs `delaunay`.
 pub fn run(options: &Args) -> anyhow::Result<()> {
+    check_outputs(options)?;
     options.method.check()?;
     if options.method.method != Method::Flip {
         return run_voronoi(options);
@@ -239,32 +268,38 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
             crate::failure::shown(&options.input)
         )),
     })?;
-    write_file(&options.output, |w| {
-        Ok(tri.write_json(w, TriangleStyle::Lengths)?)
-    })?;
+    let mut outputs = Outputs::default();
+    if let Some(path) = &options.output {
+        outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+    }
     if let Some(path) = &options.tessellation {
         let tessellation = delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE);
-        write_file(path, |w| {
+        outputs.file(path, |w| {
             Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
         })?;
     }
-    write_matrices(options, &tri)?;
+    write_matrices(options, &tri, &mut outputs)?;
+    outputs.commit()?;
     report(options, &stats, None)
 }
 
-/// Writes `--laplacian` and `--mass` of a Delaunay triangulation.
-fn write_matrices(options: &Args, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
+/// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).
+fn write_matrices(
+    options: &Args,
+    tri: &IntrinsicTriangulation,
+    outputs: &mut Outputs,
+) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         let laplacian = cotan_laplacian(tri);
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
-        write_file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
+        outputs.file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
         let mass = lumped_mass(tri);
         check_matrix(&mass, "the mass matrix", true)?;
-        write_file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
+        outputs.file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
     }
     Ok(())
 }
@@ -280,14 +315,17 @@ fn run_voronoi(options: &Args) -> anyhow::Result<()> {
     }
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
+    let mut outputs = Outputs::default();
     let (tri, figures) = if options.method.exact {
         let p = crate::progress::step("reading", || load_exact(&options.input))?;
         let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
         let triangulated = v.triangulated().map_err(|e| fail(&e))?;
-        write_file(&options.output, |w| {
-            Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
-        })?;
-        write_tessellation(options, &v.tessellation)?;
+        if let Some(path) = &options.output {
+            outputs.file(path, |w| {
+                Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
+            })?;
+        }
+        write_tessellation(options, &v.tessellation, &mut outputs)?;
         let tri = v.triangulation().map_err(|e| fail(&e))?;
         (tri, figures)
     } else {
@@ -298,10 +336,10 @@ fn run_voronoi(options: &Args) -> anyhow::Result<()> {
         let (p, _) = tri.to_portalgon();
         let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
         let tri = v.triangulation().map_err(|e| fail(&e))?;
-        write_file(&options.output, |w| {
-            Ok(tri.write_json(w, TriangleStyle::Lengths)?)
-        })?;
-        write_tessellation(options, &v.tessellation)?;
+        if let Some(path) = &options.output {
+            outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+        }
+        write_tessellation(options, &v.tessellation, &mut outputs)?;
         (tri, figures)
     };
     let flips = FlipReport {
@@ -310,13 +348,19 @@ fn run_voronoi(options: &Args) -> anyhow::Result<()> {
         non_delaunay_edges: tri.non_delaunay_edges(surftopo_intrinsic::DEFAULT_TOLERANCE),
     };
     let stats = DelaunayStats::new(&tri, &flips, start.elapsed().as_secs_f64());
-    write_matrices(options, &tri)?;
+    write_matrices(options, &tri, &mut outputs)?;
+    outputs.commit()?;
     report(options, &stats, Some(&figures))
 }
 
-fn write_tessellation<S: Scalar>(options: &Args, t: &Portalgon<S>) -> anyhow::Result<()> {
+/// Writes `--tessellation` (under a temporary name).
+fn write_tessellation<S: Scalar>(
+    options: &Args,
+    t: &Portalgon<S>,
+    outputs: &mut Outputs,
+) -> anyhow::Result<()> {
     if let Some(path) = &options.tessellation {
-        write_file(path, |w| {
+        outputs.file(path, |w| {
             Ok(PortalgonDoc::from_portalgon(t).write(w, false)?)
         })?;
     }
@@ -360,7 +404,7 @@ fn report(options: &Args, stats: &DelaunayStats, wave: Option<&WaveFigures>) -> 
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s\n",
-            crate::failure::shown(&options.output),
+            crate::failure::shown(options.output.as_deref().unwrap_or(&options.input)),
             stats.vertices,
             stats.edges,
             stats.faces,

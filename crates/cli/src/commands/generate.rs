@@ -1,6 +1,7 @@
 //! `surftopo generate`: every surface generator, with optional subdivision, simplification,
 //! random flips, random vertex splits and a random face order, applied in that order.
 
+use crate::output::OutputKind;
 use clap::Subcommand;
 use std::path::PathBuf;
 use surftopo_intrinsic::geometry::Scalar as _;
@@ -133,9 +134,8 @@ pub struct Modifiers {
     pub seed: u64,
 }
 
-/// Refuses the modifiers that need a surface mesh, and an output that is not portalgon JSON, for
-/// a generator of intrinsic triangulations.
-fn check_intrinsic_output(modifiers: &Modifiers, output: &std::path::Path) -> anyhow::Result<()> {
+/// Refuses the modifiers that need a surface mesh for a generator of intrinsic triangulations.
+fn check_intrinsic_modifiers(modifiers: &Modifiers) -> anyhow::Result<()> {
     if modifiers.subdivide > 0
         || modifiers.splits > 0
         || modifiers.simplify.is_some()
@@ -144,15 +144,6 @@ fn check_intrinsic_output(modifiers: &Modifiers, output: &std::path::Path) -> an
         return Err(crate::failure::invalid(
             "--subdivide, --simplify, --splits and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
         ));
-    }
-    let is_json = output
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    if !is_json {
-        return Err(crate::failure::invalid(format!(
-            "{}: an intrinsic triangulation is written as portalgon JSON (.json)",
-            crate::failure::shown(output)
-        )));
     }
     Ok(())
 }
@@ -166,7 +157,7 @@ fn write_exact_flat_torus(
     output: &std::path::Path,
 ) -> anyhow::Result<()> {
     check_size(&format!("flat-torus --m {m}"), 2 * u64::from(m).pow(2))?;
-    check_intrinsic_output(modifiers, output)?;
+    check_intrinsic_modifiers(modifiers)?;
     let exact = intrinsic::generators::flat_torus_portalgon(x, m)
         .map_err(|e| crate::failure::invalid(format!("flat-torus: {e}")))?;
     crate::output::write_file(output, |w| {
@@ -180,6 +171,14 @@ fn write_exact_flat_torus(
         crate::failure::shown(output),
     );
     Ok(())
+}
+
+impl Kind {
+    /// Whether the kind makes an intrinsic triangulation (written as portalgon JSON) rather than
+    /// a surface with positions.
+    pub fn is_intrinsic(&self) -> bool {
+        matches!(self, Kind::FlatTorus { .. } | Kind::IntrinsicFlips { .. })
+    }
 }
 
 /// Generates the surface or intrinsic triangulation of `kind` (without modifiers).
@@ -342,6 +341,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .output
         .as_ref()
         .ok_or_else(|| crate::failure::invalid("generate: an output file is needed (-o OUT)"))?;
+    let holds = if kind.is_intrinsic() {
+        OutputKind::Portalgon
+    } else {
+        OutputKind::Mesh
+    };
+    crate::output::check_outputs(&[("-o", output, holds)])?;
     if let (Kind::FlatTorus { x, m }, 0) = (kind, modifiers.flips) {
         return write_exact_flat_torus(x, *m, modifiers, output);
     }
@@ -353,7 +358,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
-            check_intrinsic_output(modifiers, output)?;
+            check_intrinsic_modifiers(modifiers)?;
             if modifiers.flips > 0 {
                 check_flips("--flips", modifiers.flips as u64, tri.mesh().edge_count())?;
                 intrinsic::generators::random_flips(

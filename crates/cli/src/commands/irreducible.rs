@@ -116,6 +116,7 @@ pub fn reduce_surface(
 /// Runs `irreducible`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
+    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
     let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;

@@ -119,6 +119,7 @@ fn pair(
 /// Runs `quad`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
+    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
     let algorithm = algorithm_named(&args.algorithm, args.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
