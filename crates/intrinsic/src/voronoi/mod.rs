@@ -28,8 +28,11 @@
 //! side lists taken at the bisector of consecutive cells, not at their (overlapping) ends.
 //!
 //! Limits: the `f64` mode can refuse a surface with a typed [`DualError`] when rounding makes the
-//! traced Voronoi edges inconsistent (one shared mesh, chassis_upright, and T_x for large x, where
-//! doubles cannot hold the needle); it never returns an unchecked polygon (each is validated by
+//! traced Voronoi edges inconsistent (two shared meshes, chassis_upright and wheel, where
+//! near-co-circular sites put two Voronoi vertices closer than the tolerance: merged, they make a
+//! polygon the flip route does not make; kept apart, the edge between them is too short to follow;
+//! and T_x for large x, where doubles cannot hold the needle; [`VoronoiError::is_numerical`] tells
+//! these from bad input); it never returns an unchecked polygon (each is validated by
 //! [`Portalgon::add_polygon`], each gluing by [`Portalgon::glue`]). The exact mode has no
 //! tolerance.
 
@@ -90,6 +93,16 @@ pub enum VoronoiError {
     /// The dual could not be built.
     #[error(transparent)]
     Dual(#[from] DualError),
+}
+
+impl VoronoiError {
+    /// Whether this is a numerical refusal of an `f64` run rather than bad input: the dual's
+    /// refusals (rounding made the traced Voronoi edges inconsistent) and the event budget (a run
+    /// that does not settle). In exact mode the same errors mean a bug or an input beyond the
+    /// budget, so callers decide by the arithmetic; [`WaveError::Input`] is always bad input.
+    pub fn is_numerical(&self) -> bool {
+        matches!(self, Self::Dual(_) | Self::Wave(WaveError::Budget(_)))
+    }
 }
 
 /// The Delaunay tessellation of (S(T), V) computed by the wave, with the wave's data.
