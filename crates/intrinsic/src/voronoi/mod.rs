@@ -129,6 +129,15 @@ impl<S: Scalar> VoronoiDelaunay<S> {
     /// # Errors
     /// A [`PortalgonError`] if a polygon cannot be cut (it would not be convex).
     pub fn triangulation(&self) -> Result<IntrinsicTriangulation, PortalgonError> {
+        let t = &self.tessellation;
+        // A tessellation of triangles (no co-circular polygon; dense ids as built) is its own
+        // triangulation: no copy to cut.
+        if t.polygons().all(|q| t.polygon_sides(q).len() == 3)
+            && t.polygon_count() == t.polygon_slots()
+            && t.side_count() == t.side_slots()
+        {
+            return IntrinsicTriangulation::from_portalgon(t, 1e-6);
+        }
         IntrinsicTriangulation::from_portalgon(&self.triangulated()?, 1e-6)
     }
 
