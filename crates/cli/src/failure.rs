@@ -6,7 +6,7 @@
 //! | 1 | internal failure (`isometric`: not isometric) |
 //! | 2 | invalid input or usage, or an output that cannot be written (missing folder, read-only or full disk, full stdout): something the user must fix |
 //! | 3 | `isometric` only: double precision cannot decide |
-//! | 4 | `isometric` only: internal failure |
+//! | 4 | numerical failure: double precision could not finish (`delaunay --method voronoi` without `--exact`); `isometric`: internal failure |
 //! | 128 + N | stopped by signal N (SIGHUP 129, SIGINT 130, SIGTERM 143) after removing temporary files |
 
 use std::fmt;
@@ -23,6 +23,27 @@ impl fmt::Display for InvalidInput {
 }
 
 impl std::error::Error for InvalidInput {}
+
+/// Marks an error as a numerical failure (exit code 4): double precision could not finish a
+/// computation on input that is valid (exact arithmetic or another method can).
+#[derive(Debug)]
+pub struct NumericalFailure(pub String);
+
+impl fmt::Display for NumericalFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for NumericalFailure {}
+
+/// An `anyhow` error marked as a numerical failure.
+pub fn numerical(message: impl Into<String>) -> anyhow::Error {
+    anyhow::Error::new(NumericalFailure(message.into()))
+}
+
+/// The exit code of a numerical failure (`isometric` uses it for internal failures).
+pub const NUMERICAL_FAILURE: u8 = 4;
 
 /// An `anyhow` error marked as invalid input.
 pub fn invalid(message: impl Into<String>) -> anyhow::Error {
@@ -41,9 +62,15 @@ pub fn shown(path: &Path) -> String {
 }
 
 /// The exit code for an error: 2 when any cause is invalid input (including every reader error),
-/// 1 otherwise.
+/// 4 when one is a numerical failure, 1 otherwise.
 pub fn exit_code(error: &anyhow::Error) -> u8 {
-    if is_invalid_input(error) { 2 } else { 1 }
+    if is_invalid_input(error) {
+        2
+    } else if error.chain().any(|cause| cause.is::<NumericalFailure>()) {
+        NUMERICAL_FAILURE
+    } else {
+        1
+    }
 }
 
 /// Whether any cause of `error` is invalid input (including every reader error).
@@ -87,5 +114,13 @@ mod tests {
         assert_eq!(text.matches("entity not found").count(), 1, "{text}");
         assert!(text.starts_with("reading \\u{1b}[2J: m.obj: "), "{text}");
         assert_eq!(exit_code(&error), 2);
+    }
+
+    #[test]
+    fn numerical_failures_exit_with_4_and_other_failures_with_1() {
+        let refused = numerical("the dual refused").context("t.json");
+        assert_eq!(exit_code(&refused), NUMERICAL_FAILURE);
+        assert_eq!(exit_code(&anyhow::anyhow!("a bug")), 1);
+        assert_eq!(exit_code(&invalid("bad input")), 2);
     }
 }

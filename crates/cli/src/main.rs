@@ -2,7 +2,7 @@
 //!
 //! A thin layer over the surftopo libraries. Exit codes (see [`failure`]): 0 on success, 2 on
 //! invalid input, usage or an unwritable output (message on stderr starting with `error:`), 1 on
-//! an internal failure; `isometric` has its own (0, 1, 2, 3 undecidable, 4). Results go to stdout,
+//! an internal failure, 4 on a numerical failure of double precision; `isometric` has its own (0, 1, 2, 3 undecidable, 4). Results go to stdout,
 //! progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
@@ -31,7 +31,8 @@ struct Cli {
 /// The exit codes, at the end of `--help`.
 const EXIT_CODES: &str = "Exit codes: 0 success; 1 internal failure; 2 invalid input or usage, or an \
 output that cannot be written (missing folder, read-only or full disk, full stdout); 128+N stopped by \
-signal N, temporary files removed. `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
+signal N, temporary files removed; 4 numerical failure (double precision could not finish: \
+`delaunay --method voronoi` without `--exact`). `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
 undecidable in double precision, 4 internal failure.";
 
 /// The subcommands; each owns its arguments (`commands::NAME::Args`).

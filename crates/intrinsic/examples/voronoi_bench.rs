@@ -1,6 +1,7 @@
 //! The Voronoi wave (Dubois, Appendix D) against edge flipping, side by side in one run: on the
 //! shared meshes of about 100k faces (f64 only: their lengths are square roots, so exact mode does
-//! not apply) and on the flat torus T_x for x from 10 to 10⁶ (exact, f64 and flipping).
+//! not apply), on generated inputs (an icosphere under random intrinsic flips, sheared tori) and on
+//! the flat torus T_x for x from 10 to 10⁶ (exact, f64 and flipping).
 //!
 //! ```text
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-intrinsic \
@@ -24,7 +25,9 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde_json::{Value, json};
-use surftopo_intrinsic::generators::{flat_torus, flat_torus_portalgon};
+use surftopo_intrinsic::generators::{
+    flat_torus, flat_torus_portalgon, random_flips, sheared_torus,
+};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
@@ -38,6 +41,7 @@ struct Args {
     budget: f64,
     mesh_timeout: f64,
     one_mesh: Option<String>,
+    one_generated: Option<usize>,
 }
 
 fn parse_args() -> Args {
@@ -47,6 +51,7 @@ fn parse_args() -> Args {
         budget: 120.0,
         mesh_timeout: 180.0,
         one_mesh: None,
+        one_generated: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(a) = it.next() {
@@ -59,6 +64,9 @@ fn parse_args() -> Args {
                 args.mesh_timeout = value().parse().expect("--mesh-timeout SECONDS");
             }
             "--one-mesh" => args.one_mesh = Some(value()),
+            "--one-generated" => {
+                args.one_generated = Some(value().parse().expect("--one-generated K"))
+            }
             other => panic!("unknown argument {other}"),
         }
     }
@@ -68,21 +76,32 @@ fn parse_args() -> Args {
 /// One mesh, in this (child) process: best of `repeat` alternated runs of both pipelines.
 fn measure_mesh(mesh: &surftopo_testkit::SharedMesh, repeat: usize) -> Value {
     let surface = load(mesh);
+    let make = || {
+        IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions).unwrap()
+    };
+    measure(&mesh.file, mesh.faces, make, repeat)
+}
+
+/// Best of `repeat` alternated runs of both pipelines on the triangulation `make` builds (its
+/// building is timed in both).
+fn measure(
+    name: &str,
+    faces: usize,
+    make: impl Fn() -> IntrinsicTriangulation,
+    repeat: usize,
+) -> Value {
     let (mut best_flip, mut best_wave) = (f64::INFINITY, f64::INFINITY);
     let mut outcome = String::from("ok");
     let mut figures = (0u64, 0usize, 0usize);
     for _ in 0..repeat {
         let start = Instant::now();
-        let mut tri =
-            IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)
-                .unwrap();
+        let mut tri = make();
         flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
         std::hint::black_box(cotan_laplacian(&tri));
         best_flip = best_flip.min(start.elapsed().as_secs_f64());
 
         let start = Instant::now();
-        let tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)
-            .unwrap();
+        let tri = make();
         let (p, _) = tri.to_portalgon();
         match voronoi_delaunay(&p, &VoronoiOptions::default()) {
             Ok(v) => {
@@ -103,15 +122,118 @@ fn measure_mesh(mesh: &surftopo_testkit::SharedMesh, repeat: usize) -> Value {
     }
     let ratio = best_wave / best_flip;
     json!({
-        "kind": "mesh", "mesh": mesh.file, "faces": mesh.faces,
+        "kind": "mesh", "mesh": name, "faces": faces,
         "flip_ms": 1e3 * best_flip, "voronoi_ms": 1e3 * best_wave, "ratio": ratio,
-        "wave_events": figures.0, "events_per_triangle": figures.0 as f64 / mesh.faces as f64,
+        "wave_events": figures.0, "events_per_triangle": figures.0 as f64 / faces as f64,
         "max_constellation": figures.1, "polygons": figures.2, "outcome": outcome,
     })
 }
 
+/// The header of a mesh table.
+const HEADER: &str = "| mesh | F | flip pipeline | voronoi pipeline | ratio | wave events | \
+events / triangle | max \\|X_Δ\\| | polygons | outcome |\n\
+|---|---:|---:|---:|---:|---:|---:|---:|---:|---|";
+
+/// One row of a mesh table.
+fn row(md: &mut String, name: &str, faces: usize, record: &Value) {
+    let f = |k: &str| {
+        record[k]
+            .as_f64()
+            .map_or(String::new(), |x| format!("{x:.2}"))
+    };
+    let u = |k: &str| record[k].as_u64().map_or(String::new(), |x| x.to_string());
+    writeln!(
+        md,
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+        name,
+        faces,
+        f("flip_ms"),
+        f("voronoi_ms"),
+        f("ratio"),
+        u("wave_events"),
+        record["events_per_triangle"]
+            .as_f64()
+            .map_or(String::new(), |x| format!("{x:.3}")),
+        u("max_constellation"),
+        u("polygons"),
+        record["outcome"].as_str().unwrap_or("")
+    )
+    .unwrap();
+}
+
+/// How many generated inputs [`generated`] makes.
+const GENERATED: usize = 5;
+
+/// Generated input `k`: its name, its face count and a builder.
+fn generated(k: usize) -> (String, usize, Box<dyn Fn() -> IntrinsicTriangulation>) {
+    if k < 3 {
+        let flips = [0u64, 20_000, 100_000][k];
+        let ico = surftopo_mesh::generators::icosphere(6);
+        let faces = ico.mesh.face_count();
+        let make = move || {
+            let mut t =
+                IntrinsicTriangulation::from_positions(ico.mesh.clone(), &ico.positions).unwrap();
+            random_flips(&mut t, flips, 1);
+            t
+        };
+        (
+            format!("icosphere 6 + {flips} flips"),
+            faces,
+            Box::new(make),
+        )
+    } else {
+        let (m, n, shear) = [(250u32, 200u32, 3u32), (500, 100, 20)][k - 3];
+        let torus = sheared_torus(m, n, shear);
+        let faces = torus.mesh.face_count();
+        let make = move || {
+            IntrinsicTriangulation::from_positions(torus.mesh.clone(), &torus.positions).unwrap()
+        };
+        (
+            format!("sheared torus {m}×{n} shear {shear}"),
+            faces,
+            Box::new(make),
+        )
+    }
+}
+
+/// Runs this program on one input (`child_args`) in a child process, stopped after
+/// `--mesh-timeout` seconds; its record.
+fn in_child(child_args: &[&str], name: &str, faces: usize, args: &Args) -> Value {
+    let mut child = std::process::Command::new(std::env::current_exe().unwrap())
+        .args(child_args)
+        .args(["--repeat", &args.repeat.to_string()])
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let finished = loop {
+        if child.try_wait().unwrap().is_some() {
+            break true;
+        }
+        if start.elapsed().as_secs_f64() > args.mesh_timeout {
+            child.kill().unwrap();
+            child.wait().unwrap();
+            break false;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    };
+    if finished {
+        let mut text = String::new();
+        std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut text).unwrap();
+        serde_json::from_str(text.trim()).unwrap()
+    } else {
+        json!({"kind": "mesh", "mesh": name, "faces": faces,
+               "outcome": format!("did not finish within {} s", args.mesh_timeout)})
+    }
+}
+
 fn main() {
     let args = parse_args();
+    if let Some(k) = args.one_generated {
+        let (name, faces, make) = generated(k);
+        println!("{}", measure(&name, faces, make, args.repeat));
+        return;
+    }
     if let Some(file) = &args.one_mesh {
         let mesh = shared_meshes()
             .into_iter()
@@ -147,77 +269,38 @@ fn main() {
         args.repeat
     )
     .unwrap();
-    writeln!(
-        md,
-        "| mesh | F | flip pipeline | voronoi pipeline | ratio | wave events | events / triangle | \
-         max \\|X_Δ\\| | polygons | outcome |"
-    )
-    .unwrap();
-    writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|").unwrap();
+    writeln!(md, "{HEADER}").unwrap();
     let meshes: Vec<_> = shared_meshes()
         .into_iter()
         .filter(|m| (90_000..=110_000).contains(&m.faces))
         .collect();
     for mesh in &meshes {
-        // Each mesh in a child process, stopped after `--mesh-timeout` seconds.
-        let mut child = std::process::Command::new(std::env::current_exe().unwrap())
-            .args([
-                "--one-mesh",
-                &mesh.file,
-                "--repeat",
-                &args.repeat.to_string(),
-            ])
-            .stdout(std::process::Stdio::piped())
-            .spawn()
-            .unwrap();
-        let start = Instant::now();
-        let finished = loop {
-            if child.try_wait().unwrap().is_some() {
-                break true;
-            }
-            if start.elapsed().as_secs_f64() > args.mesh_timeout {
-                child.kill().unwrap();
-                child.wait().unwrap();
-                break false;
-            }
-            std::thread::sleep(std::time::Duration::from_millis(100));
-        };
-        let record: Value = if finished {
-            let mut text = String::new();
-            std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut text).unwrap();
-            serde_json::from_str(text.trim()).unwrap()
-        } else {
-            json!({"kind": "mesh", "mesh": mesh.file, "faces": mesh.faces,
-                   "outcome": format!("did not finish within {} s", args.mesh_timeout)})
-        };
-        let f = |k: &str| {
-            record[k]
-                .as_f64()
-                .map_or(String::new(), |x| format!("{x:.2}"))
-        };
-        let u = |k: &str| record[k].as_u64().map_or(String::new(), |x| x.to_string());
-        writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            mesh.file,
-            mesh.faces,
-            f("flip_ms"),
-            f("voronoi_ms"),
-            f("ratio"),
-            u("wave_events"),
-            record["events_per_triangle"]
-                .as_f64()
-                .map_or(String::new(), |x| format!("{x:.3}")),
-            u("max_constellation"),
-            u("polygons"),
-            record["outcome"].as_str().unwrap_or("")
-        )
-        .unwrap();
+        let record = in_child(&["--one-mesh", &mesh.file], &mesh.file, mesh.faces, &args);
+        row(&mut md, &mesh.file, mesh.faces, &record);
         eprintln!("{}: {}", mesh.file, record);
         records.push(record);
     }
     if meshes.is_empty() {
         writeln!(md, "\n(SURFTOPO_MESHES not set: no meshes.)").unwrap();
+    }
+
+    // Generated inputs (not tuned on): an icosphere re-triangulated by random intrinsic flips
+    // and sheared tori, in this process.
+    writeln!(md, "\n## Generated inputs (f64)\n").unwrap();
+    writeln!(
+        md,
+        "Built in the run (building timed in both pipelines): `icosphere S + F flips` = the \
+         icosphere refined S times, then F random intrinsic flips (seed 1); `sheared torus M×N \
+         shear K` = [`sheared_torus`]. Same columns.\n"
+    )
+    .unwrap();
+    writeln!(md, "{HEADER}").unwrap();
+    for k in 0..GENERATED {
+        let (name, faces, _) = generated(k);
+        let record = in_child(&["--one-generated", &k.to_string()], &name, faces, &args);
+        row(&mut md, &name, faces, &record);
+        eprintln!("{name}: {record}");
+        records.push(record);
     }
 
     // T_x.
@@ -298,11 +381,14 @@ fn main() {
             row["f64_outcome"] = json!(outcome);
             f64_on = result.is_ok() && 10.0 * s <= args.budget;
         }
-        let mut tri = flat_torus(xf, 1).unwrap();
         let start = Instant::now();
-        let flips = flip_to_delaunay(&mut tri, &DelaunayOptions::default())
-            .map(|r| r.flips.to_string())
-            .unwrap_or_else(|e| format!("failed: {e}"));
+        // T_x by lengths is refused once doubles cannot hold its needle.
+        let flips = match flat_torus(xf, 1) {
+            Ok(mut tri) => flip_to_delaunay(&mut tri, &DelaunayOptions::default())
+                .map(|r| r.flips.to_string())
+                .unwrap_or_else(|e| format!("failed: {e}")),
+            Err(e) => format!("refused: {e}"),
+        };
         let s = start.elapsed().as_secs_f64();
         row["flip_s"] = json!(s);
         row["flips"] = json!(flips);

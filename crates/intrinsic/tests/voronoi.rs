@@ -592,3 +592,21 @@ fn random_intrinsic_retriangulations_and_sheared_tori() {
         assert_same_as_flip(&tri, &p, &v, "a re-triangulation");
     }
 }
+
+/// A wave stopped by its event budget is a numerical refusal; an open portalgon is bad input.
+#[test]
+fn numerical_refusals_are_told_from_bad_input() {
+    let sheared = surftopo_intrinsic::generators::sheared_torus(24, 8, 3);
+    let tri = IntrinsicTriangulation::from_positions(sheared.mesh, &sheared.positions).unwrap();
+    let (p, _) = tri.to_portalgon();
+    let mut options = VoronoiOptions::default();
+    options.wave.max_events = Some(1);
+    let e = voronoi_delaunay(&p, &options).unwrap_err();
+    assert!(matches!(e, VoronoiError::Wave(_)), "{e}");
+    assert!(e.is_numerical(), "{e}");
+    let mut open = Portalgon::<f64>::empty();
+    open.add_polygon(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+        .unwrap();
+    let e = voronoi_delaunay(&open, &VoronoiOptions::default()).unwrap_err();
+    assert!(!e.is_numerical(), "{e}");
+}

@@ -130,7 +130,8 @@ struct WaveFigures {
 
 /// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
 /// on a flat surface (`--method dubois`: reduction, then the wave from one vertex), with its
-/// figures. Errors are invalid input (exit 2) naming `input`; a cone point for `--method dubois`
+/// figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of the
+/// `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4); a cone point for `--method dubois`
 /// names the vertex and suggests the other methods.
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
@@ -154,7 +155,17 @@ fn tessellate<S: Scalar>(
         let v = crate::progress::step("running the Voronoi wave", || {
             voronoi_delaunay(p, &VoronoiOptions::default())
         })
-        .map_err(|e| fail(&e))?;
+        .map_err(|e| {
+            if !S::EXACT && e.is_numerical() {
+                crate::failure::numerical(format!(
+                    "{}: {e} (a numerical failure of double precision: try --exact on exact \
+                     input, or --method flip)",
+                    input.display()
+                ))
+            } else {
+                fail(&e)
+            }
+        })?;
         (v, None)
     };
     let figures = WaveFigures {

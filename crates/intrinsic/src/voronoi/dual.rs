@@ -250,18 +250,18 @@ impl<S: Scalar> Dual<'_, S> {
     /// The sites nearest to `x` among X_q, and their squared distance.
     fn nearest(&self, q: PolygonId, x: &Point<S>) -> Vec<u32> {
         let pts = self.pts(q);
-        let d: Vec<S> = pts.iter().map(|y| dist2(x, y)).collect();
-        let best = d
+        // Two passes instead of a buffer of distances: constellations are small.
+        let best = pts
             .iter()
-            .fold(None::<&S>, |m, v| match m {
-                Some(m) if *m <= *v => Some(m),
+            .map(|y| dist2(x, y))
+            .fold(None::<S>, |m, v| match m {
+                Some(m) if m <= v => Some(m),
                 _ => Some(v),
             })
-            .cloned()
             .unwrap_or_else(S::zero);
         let tol = 4.0 * self.eps * best.to_f64().sqrt().max(self.eps);
         (0..pts.len() as u32)
-            .filter(|&i| self.same_value(&d[i as usize], &best, tol))
+            .filter(|&i| self.same_value(&dist2(x, &pts[i as usize]), &best, tol))
             .collect()
     }
 

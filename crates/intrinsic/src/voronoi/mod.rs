@@ -28,8 +28,11 @@
 //! side lists taken at the bisector of consecutive cells, not at their (overlapping) ends.
 //!
 //! Limits: the `f64` mode can refuse a surface with a typed [`DualError`] when rounding makes the
-//! traced Voronoi edges inconsistent (one shared mesh, chassis_upright, and T_x for large x, where
-//! doubles cannot hold the needle); it never returns an unchecked polygon (each is validated by
+//! traced Voronoi edges inconsistent (two shared meshes, chassis_upright and wheel, where
+//! near-co-circular sites put two Voronoi vertices closer than the tolerance: merged, they make a
+//! polygon the flip route does not make; kept apart, the edge between them is too short to follow;
+//! and T_x for large x, where doubles cannot hold the needle; [`VoronoiError::is_numerical`] tells
+//! these from bad input); it never returns an unchecked polygon (each is validated by
 //! [`Portalgon::add_polygon`], each gluing by [`Portalgon::glue`]). The exact mode has no
 //! tolerance.
 
@@ -92,6 +95,16 @@ pub enum VoronoiError {
     Dual(#[from] DualError),
 }
 
+impl VoronoiError {
+    /// Whether this is a numerical refusal of an `f64` run rather than bad input: the dual's
+    /// refusals (rounding made the traced Voronoi edges inconsistent) and the event budget (a run
+    /// that does not settle). In exact mode the same errors mean a bug or an input beyond the
+    /// budget, so callers decide by the arithmetic; [`WaveError::Input`] is always bad input.
+    pub fn is_numerical(&self) -> bool {
+        matches!(self, Self::Dual(_) | Self::Wave(WaveError::Budget(_)))
+    }
+}
+
 /// The Delaunay tessellation of (S(T), V) computed by the wave, with the wave's data.
 #[derive(Clone, Debug)]
 pub struct VoronoiDelaunay<S: Scalar> {
@@ -116,6 +129,15 @@ impl<S: Scalar> VoronoiDelaunay<S> {
     /// # Errors
     /// A [`PortalgonError`] if a polygon cannot be cut (it would not be convex).
     pub fn triangulation(&self) -> Result<IntrinsicTriangulation, PortalgonError> {
+        let t = &self.tessellation;
+        // A tessellation of triangles (no co-circular polygon; dense ids as built) is its own
+        // triangulation: no copy to cut.
+        if t.polygons().all(|q| t.polygon_sides(q).len() == 3)
+            && t.polygon_count() == t.polygon_slots()
+            && t.side_count() == t.side_slots()
+        {
+            return IntrinsicTriangulation::from_portalgon(t, 1e-6);
+        }
         IntrinsicTriangulation::from_portalgon(&self.triangulated()?, 1e-6)
     }
 

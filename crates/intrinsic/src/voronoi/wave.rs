@@ -80,6 +80,28 @@ pub struct Wave<S: Scalar> {
     index: HashMap<(u32, i64, i64), Vec<u32>>,
     /// Per stamp: whether a cell still carries it.
     alive: Vec<bool>,
+    scratch: Scratch<S>,
+}
+
+/// Buffers of [`Wave::update_side`], reused from one side update to the next so that an update
+/// allocates nothing.
+#[derive(Clone, Debug)]
+struct Scratch<S> {
+    before: Vec<(SideCell<S>, bool)>,
+    after: Vec<(SideCell<S>, bool)>,
+    run: Vec<SideCell<S>>,
+    changed: Vec<usize>,
+}
+
+impl<S> Default for Scratch<S> {
+    fn default() -> Self {
+        Self {
+            before: Vec::new(),
+            after: Vec::new(),
+            run: Vec::new(),
+            changed: Vec::new(),
+        }
+    }
 }
 
 /// Why the wave cannot run.
@@ -191,6 +213,7 @@ pub fn run_wave<S: Scalar>(
         scale,
         index: HashMap::new(),
         alive: Vec::new(),
+        scratch: Scratch::default(),
     };
     let mut in_v = vec![false; class.iter().map(|&c| c as usize + 1).max().unwrap_or(0)];
     for &c in sources {
@@ -358,7 +381,7 @@ impl<S: Scalar> Wave<S> {
         for &s in p.polygon_sides(q) {
             let changed = self.insert_on_side(p, s, site);
             let target = p.owner(p.mate(s).expect("closed"));
-            for k in changed {
+            for &k in &changed {
                 let cell = &self.cells[s.idx()][k];
                 let y = &self.points[q.idx()][cell.site as usize];
                 // Points are never removed: an image already in the target's constellation can
@@ -374,6 +397,7 @@ impl<S: Scalar> Wave<S> {
                     stamp: cell.stamp,
                 }));
             }
+            self.scratch.changed = changed;
         }
     }
 
@@ -399,6 +423,8 @@ impl<S: Scalar> Wave<S> {
         let pts = &self.points[q.idx()];
         let z = &pts[site as usize];
         let cells = &self.cells[s.idx()];
+        let mut changed = std::mem::take(&mut self.scratch.changed);
+        changed.clear();
         let fresh = |alive: &mut Vec<bool>| {
             alive.push(true);
             alive.len() as u64 - 1
@@ -411,7 +437,8 @@ impl<S: Scalar> Wave<S> {
                 hi: S::one(),
                 stamp,
             });
-            return vec![0];
+            changed.push(0);
+            return changed;
         }
         let az = dist2(a, z);
         // h_j(u) = |p(u) − z|² − |p(u) − y_j|² = c_j + 2u·e_j: negative where z is closer.
@@ -453,7 +480,7 @@ impl<S: Scalar> Wave<S> {
         };
         let (c0, e0) = coeffs(j_min);
         if sgn(&h(&c0, &e0, &u_min), &tie(j_min)) == Ordering::Greater {
-            return Vec::new();
+            return changed;
         }
         let reaches = |cell: &SideCell<S>| {
             let (c, e) = coeffs(cell.site);
@@ -474,8 +501,12 @@ impl<S: Scalar> Wave<S> {
         while r < cells.len() && reaches(&cells[r]) {
             r += 1;
         }
-        let mut before = Vec::new();
-        let mut after = Vec::new();
+        let mut before = std::mem::take(&mut self.scratch.before);
+        let mut after = std::mem::take(&mut self.scratch.after);
+        let mut run = std::mem::take(&mut self.scratch.run);
+        before.clear();
+        after.clear();
+        run.clear();
         let (mut z_lo, mut z_hi): (Option<S>, Option<S>) = (None, None);
         let mut widen = |lo: S, hi: S| {
             if z_lo.as_ref().is_none_or(|x| lo < *x) {
@@ -553,8 +584,7 @@ impl<S: Scalar> Wave<S> {
             z_lo.expect("z reaches the side"),
             z_hi.expect("z reaches the side"),
         );
-        let mut run = Vec::with_capacity(before.len() + after.len() + 1);
-        let mut changed = Vec::new();
+
         // A kept cell keeps its stamp (its event stays valid); a shrunk one gets a fresh stamp.
         let mut push = |run: &mut Vec<SideCell<S>>, mut cell: SideCell<S>, same: bool| {
             if same {
@@ -565,7 +595,7 @@ impl<S: Scalar> Wave<S> {
             }
             run.push(cell);
         };
-        for (cell, same) in before {
+        for (cell, same) in before.drain(..) {
             push(&mut run, cell, same);
         }
         let new_cell = SideCell {
@@ -575,10 +605,16 @@ impl<S: Scalar> Wave<S> {
             stamp: 0,
         };
         push(&mut run, new_cell, false);
-        for (cell, same) in after {
+        for (cell, same) in after.drain(..) {
             push(&mut run, cell, same);
         }
-        self.cells[s.idx()].splice(l..r, run);
+        self.cells[s.idx()].splice(l..r, run.drain(..));
+        self.scratch = Scratch {
+            before,
+            after,
+            run,
+            changed: Vec::new(),
+        };
         changed
     }
 }
