@@ -147,18 +147,44 @@ pub fn quality_report(
     positions: &[Point3],
     diagonals: &[EdgeId],
 ) -> QualityReport {
-    if diagonals.is_empty() {
-        return QualityReport::default();
-    }
-    let mut qualities = Vec::with_capacity(diagonals.len());
-    let mut deviations = Vec::with_capacity(diagonals.len());
+    report_of_corners(
+        diagonals
+            .iter()
+            .map(|&e| quad_corner_angles(mesh, positions, e)),
+    )
+}
+
+/// The corner angles (radians) of the quad `[p0, p1, p2, p3]` measured in space: at each corner
+/// the angle between the directions to its two neighbours along the boundary. This is the
+/// definition that applies to any tool's quads (only the four vertices are known), the one of
+/// the peer comparison. It differs from [`quad_corner_angles`] (the surface definition the
+/// pairing costs use) only on a non-planar pair: there the corners at the diagonal's ends are
+/// the angle between two edge vectors, at most the sum of the two triangles' angles, so a reflex
+/// or folded pair reads below 180° instead of above it.
+pub fn space_corner_angles(corners: [Point3; 4]) -> [f64; 4] {
+    std::array::from_fn(|k| angle(corners[k], corners[(k + 3) % 4], corners[(k + 1) % 4]))
+}
+
+/// The quality report of quads given by their four vertices (indices into `positions`),
+/// corners measured in space ([`space_corner_angles`]). All zero for no quads.
+pub fn space_quality_report(positions: &[Point3], quads: &[[usize; 4]]) -> QualityReport {
+    report_of_corners(
+        quads
+            .iter()
+            .map(|q| space_corner_angles(q.map(|v| positions[v]))),
+    )
+}
+
+/// The report of quads with these corner angles (radians). All zero for no quads.
+fn report_of_corners(corners: impl Iterator<Item = [f64; 4]>) -> QualityReport {
+    let mut qualities = Vec::new();
+    let mut deviations = Vec::new();
     let mut bad = 0usize;
     let (above, below) = (
         BAD_CORNER_ABOVE_DEGREES.to_radians(),
         BAD_CORNER_BELOW_DEGREES.to_radians(),
     );
-    for &e in diagonals {
-        let angles = quad_corner_angles(mesh, positions, e);
+    for angles in corners {
         qualities.push(quality_of_angles(angles));
         let deviation = max_angle_deviation(angles);
         deviations.push(if deviation.is_nan() {
@@ -169,6 +195,9 @@ pub fn quality_report(
         if angles.iter().any(|&a| !(below..=above).contains(&a)) {
             bad += 1;
         }
+    }
+    if qualities.is_empty() {
+        return QualityReport::default();
     }
     let n = qualities.len();
     let mean = qualities.iter().sum::<f64>() / n as f64;

@@ -16,7 +16,9 @@ use surftopo_mesh::generators::{
     subdivide_midpoint, tetrahedron, torus,
 };
 use surftopo_mesh::{EdgeId, SurfaceMesh};
-use surftopo_quad::quality::{quad_corner_angles, quality_of_angles};
+use surftopo_quad::quality::{
+    quad_corner_angles, quality_of_angles, space_corner_angles, space_quality_report,
+};
 use surftopo_quad::{QuadAlgorithm, pair_costs, quadrangulate, quality_report};
 use surftopo_testkit::check_closed_oriented_manifold;
 
@@ -79,6 +81,48 @@ fn square_pair_has_quality_one_and_corners_sum_to_two_pi() {
         );
     }
     assert_eq!(pair_costs(mesh, &surface.positions)[diagonal.idx()], 0);
+}
+
+#[test]
+fn space_corners_of_known_quads() {
+    // Planar unit square: four right angles, quality 1.
+    let square = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    for a in space_corner_angles(square) {
+        assert!((a - FRAC_PI_2).abs() < 1e-12);
+    }
+    // Planar dart with a reflex corner at p2 (interior 233.13°): in space the angle between
+    // its two edge vectors is the other side, acos(−0.6) = 126.87°; the corners at p1 and p3
+    // are atan(1/3), at p0 a right angle.
+    let dart = [
+        [0.0, 0.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [0.5, 0.5, 0.0],
+        [0.0, 2.0, 0.0],
+    ];
+    let angles = space_corner_angles(dart);
+    let third = (1.0f64 / 3.0).atan();
+    let expected = [FRAC_PI_2, third, (-0.6f64).acos(), third];
+    for (a, e) in angles.iter().zip(expected) {
+        assert!((a - e).abs() < 1e-12, "{angles:?}");
+    }
+    // A flat corner (p1 on segment p0 p2): 180°, a bad quad of quality 0.
+    let flat = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+    ];
+    let positions: Vec<_> = square.iter().chain(&flat).copied().collect();
+    let report = space_quality_report(&positions, &[[0, 1, 2, 3], [4, 5, 6, 7]]);
+    assert_eq!(report.quads, 2);
+    assert_eq!(report.bad_quads_percent, 50.0);
+    assert!(report.min.abs() < 1e-12 && (report.mean - 0.5).abs() < 1e-12);
+    assert!(space_quality_report(&positions, &[]).quads == 0);
 }
 
 /// The quads `[a, d, b, c]` of the matched diagonals, checked independently: a closed oriented

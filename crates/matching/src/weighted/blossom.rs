@@ -88,7 +88,9 @@ pub struct BlossomStats {
     pub blossoms: usize,
     /// Seconds of the greedy initialisation.
     pub greedy_seconds: f64,
-    /// Seconds of the searches.
+    /// Seconds of the fractional phase (its rounding included).
+    pub fractional_seconds: f64,
+    /// Seconds of the searches (the fractional phase included).
     pub search_seconds: f64,
 }
 
@@ -203,6 +205,7 @@ pub fn min_cost_perfect_matching<G: DualGraph + ?Sized>(
     let start = Instant::now();
     solver.grow_forest(true)?;
     solver.round_half_cycles();
+    solver.stats.fractional_seconds = start.elapsed().as_secs_f64();
     solver.stats.exposed_after_fractional = (0..solver.n)
         .filter(|&v| solver.is_live[v] && solver.mate[v] == NONE)
         .count();
@@ -355,6 +358,11 @@ impl Solver {
     /// The vertices of outermost node `x`, from its set's list, into `out` (cleared first).
     fn collect_vertices(&self, x: u32, out: &mut Vec<u32>) {
         out.clear();
+        if !self.is_blossom(x) {
+            // An outermost vertex is alone in its set.
+            out.push(x);
+            return;
+        }
         let mut v = self.set_head[self.node_set[x as usize] as usize];
         while v != NONE {
             out.push(v);
