@@ -140,3 +140,49 @@ fn a_cone_point_is_refused_by_name() {
     );
     assert!(err.to_string().contains("cone point"), "{err}");
 }
+
+/// The doubly covered triangle `(0, 0), (1, 0), (x, 2)`: three cone points, a needle for large x.
+fn needle_pillow(x: &Rational) -> Portalgon<Rational> {
+    let (z, one, two) = (q("0"), q("1"), q("2"));
+    let mut p = Portalgon::<Rational>::empty();
+    let a = p
+        .add_polygon(&[
+            [z.clone(), z.clone()],
+            [one.clone(), z.clone()],
+            [x.clone(), two.clone()],
+        ])
+        .unwrap();
+    // Its mirror image across the x axis, counter-clockwise.
+    let b = p
+        .add_polygon(&[[z.clone(), z.clone()], [x.clone(), -two], [one, z]])
+        .unwrap();
+    for (i, j) in [(0, 2), (1, 1), (2, 0)] {
+        p.glue(p.side(a, i), p.side(b, j), 0.0).unwrap();
+    }
+    p.check_closed().unwrap();
+    p
+}
+
+#[test]
+fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
+    use surftopo_intrinsic::method_choice::{
+        AUTO_ASPECT_LIMIT, DUBOIS_TAKES_CONE_POINTS, Method, choose_method, largest_aspect_ratio,
+    };
+    // T_x's triangles have aspect ratio ℓ²/(2A) = (x² + 4)/2 (area 1, longest side² x² + 4).
+    assert_eq!(largest_aspect_ratio(&t_x(&q("10"))), 52.0);
+    assert_eq!(choose_method(&t_x(&q("10"))), Method::Flip);
+    assert_eq!(choose_method(&t_x(&q("447"))), Method::Flip); // aspect 99906.5
+    assert_eq!(choose_method(&t_x(&q("448"))), Method::Dubois); // aspect 100354
+    assert_eq!(choose_method(&t_x(&q("3000000001/3"))), Method::Dubois);
+    // A needle with cone points: flipping until Section 8's caps let Dubois take it.
+    let pillow = needle_pillow(&q("1000"));
+    assert!(largest_aspect_ratio(&pillow) > AUTO_ASPECT_LIMIT);
+    let expected = if DUBOIS_TAKES_CONE_POINTS {
+        Method::Dubois
+    } else {
+        Method::Flip
+    };
+    assert_eq!(choose_method(&pillow), expected);
+    // The same pillow, not a needle: flipping.
+    assert_eq!(choose_method(&needle_pillow(&q("3"))), Method::Flip);
+}
