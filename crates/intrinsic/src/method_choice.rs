@@ -24,6 +24,7 @@
 use crate::geometry::Scalar;
 use crate::portalgon::Portalgon;
 use crate::quality::DEFAULT_ANGLE_TOLERANCE;
+use crate::triangulation::IntrinsicTriangulation;
 
 /// The Delaunay methods [`choose_method`] chooses between.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -65,18 +66,48 @@ pub fn largest_aspect_ratio<S: Scalar>(p: &Portalgon<S>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// `--method auto` (see the module doc): [`Method::Flip`] unless the largest aspect ratio exceeds
-/// [`AUTO_ASPECT_LIMIT`]; then [`Method::Dubois`] for a surface without cone points (or with
-/// them once [`DUBOIS_TAKES_CONE_POINTS`]), else [`Method::Flip`]. Cone points are decided with
-/// the default angle tolerance in `f64`, exactly in exact mode. O(n).
-pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
-    if largest_aspect_ratio(p) <= AUTO_ASPECT_LIMIT {
+/// The rule of the module doc on its two inputs: the largest aspect ratio, and whether the
+/// surface has no cone point (asked only above [`AUTO_ASPECT_LIMIT`]).
+pub fn method_for(largest_aspect: f64, flat: impl FnOnce() -> bool) -> Method {
+    if largest_aspect <= AUTO_ASPECT_LIMIT {
         return Method::Flip;
     }
-    let flat = crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none();
-    if flat || DUBOIS_TAKES_CONE_POINTS {
+    if DUBOIS_TAKES_CONE_POINTS || flat() {
         Method::Dubois
     } else {
         Method::Flip
     }
+}
+
+/// `--method auto` on a portalgon (see the module doc): [`method_for`] its
+/// [`largest_aspect_ratio`] and whether it has a cone point (decided with the default angle
+/// tolerance in `f64`, exactly in exact mode). O(n).
+pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
+    method_for(largest_aspect_ratio(p), || {
+        crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none()
+    })
+}
+
+/// `--method auto` on an intrinsic triangulation: the aspect ratios from its edge lengths
+/// (`ℓ²/(2A)`, Heron's area), flatness from its angle sums (within the default angle
+/// tolerance); no portalgon is built unless needed. O(n).
+pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
+    let largest = tri
+        .mesh()
+        .faces()
+        .map(|f| {
+            let longest = tri.face_sides(f).into_iter().fold(0.0, f64::max);
+            let area = tri.face_area(f);
+            if area > 0.0 {
+                longest * longest / (2.0 * area)
+            } else {
+                f64::INFINITY
+            }
+        })
+        .fold(0.0, f64::max);
+    method_for(largest, || {
+        tri.angle_sums()
+            .iter()
+            .all(|a| (a - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
+    })
 }

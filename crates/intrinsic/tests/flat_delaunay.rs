@@ -185,4 +185,15 @@ fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
     assert_eq!(choose_method(&pillow), expected);
     // The same pillow, not a needle: flipping.
     assert_eq!(choose_method(&needle_pillow(&q("3"))), Method::Flip);
+    // The same rule on intrinsic triangulations (lengths in f64).
+    let by_lengths = |p: &Portalgon<Rational>| {
+        let tri = surftopo_intrinsic::PortalgonDoc::from_portalgon(p)
+            .to_triangulation(1e-9)
+            .unwrap();
+        surftopo_intrinsic::method_choice::choose_method_for_triangulation(&tri)
+    };
+    assert_eq!(by_lengths(&t_x(&q("10"))), Method::Flip);
+    assert_eq!(by_lengths(&t_x(&q("1000"))), Method::Dubois);
+    assert_eq!(by_lengths(&pillow), expected);
+    assert_eq!(by_lengths(&needle_pillow(&q("3"))), Method::Flip);
 }
