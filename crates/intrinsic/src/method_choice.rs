@@ -66,10 +66,10 @@ pub fn largest_aspect_ratio<S: Scalar>(p: &Portalgon<S>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The rule of the module doc on its two inputs: the largest aspect ratio, and whether the
-/// surface has no cone point (asked only above [`AUTO_ASPECT_LIMIT`]).
-pub fn method_for(largest_aspect: f64, flat: impl FnOnce() -> bool) -> Method {
-    if largest_aspect <= AUTO_ASPECT_LIMIT {
+/// The rule of the module doc on its two inputs: whether some triangle's aspect ratio exceeds
+/// [`AUTO_ASPECT_LIMIT`], and whether the surface has no cone point (asked only for a needle).
+pub fn method_for(needle: bool, flat: impl FnOnce() -> bool) -> Method {
+    if !needle {
         return Method::Flip;
     }
     if DUBOIS_TAKES_CONE_POINTS || flat() {
@@ -79,35 +79,40 @@ pub fn method_for(largest_aspect: f64, flat: impl FnOnce() -> bool) -> Method {
     }
 }
 
-/// `--method auto` on a portalgon (see the module doc): [`method_for`] its
+/// `--method auto` on a portalgon (see the module doc): [`method_for`] on its
 /// [`largest_aspect_ratio`] and whether it has a cone point (decided with the default angle
 /// tolerance in `f64`, exactly in exact mode). O(n).
 pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
-    method_for(largest_aspect_ratio(p), || {
+    method_for(largest_aspect_ratio(p) > AUTO_ASPECT_LIMIT, || {
         crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none()
     })
 }
 
-/// `--method auto` on an intrinsic triangulation: the aspect ratios from its edge lengths
-/// (`ℓ²/(2A)`, Heron's area), flatness from its angle sums (within the default angle
-/// tolerance); no portalgon is built unless needed. O(n).
+/// Whether the triangle of sides `a, b, c` has aspect ratio `ℓ²/(2A)` above
+/// [`AUTO_ASPECT_LIMIT`] (a degenerate one counts): `4ℓ⁴ > K²·16A²` with Heron's
+/// `16A² = (a+b+c)(−a+b+c)(a−b+c)(a+b−c)`, no square root.
+fn is_needle(a: f64, b: f64, c: f64) -> bool {
+    let longest = a.max(b).max(c);
+    let sixteen_area2 = (a + b + c) * (-a + b + c) * (a - b + c) * (a + b - c);
+    let l4 = longest * longest * longest * longest;
+    // NaN (overflowing lengths) counts as a needle, like a degenerate triangle.
+    (4.0 * l4)
+        .partial_cmp(&(AUTO_ASPECT_LIMIT * AUTO_ASPECT_LIMIT * sixteen_area2))
+        .is_none_or(|o| o == std::cmp::Ordering::Greater)
+}
+
+/// `--method auto` on an intrinsic triangulation: the needle test from its edge lengths (stopping
+/// at the first needle), and only then flatness from its angle sums (within the default angle
+/// tolerance, stopping at the first cone point). At most one pass over the faces and one over
+/// the corners.
 pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
-    let largest = tri
-        .mesh()
-        .faces()
-        .map(|f| {
-            let longest = tri.face_sides(f).into_iter().fold(0.0, f64::max);
-            let area = tri.face_area(f);
-            if area > 0.0 {
-                longest * longest / (2.0 * area)
-            } else {
-                f64::INFINITY
-            }
-        })
-        .fold(0.0, f64::max);
-    method_for(largest, || {
-        tri.angle_sums()
-            .iter()
-            .all(|a| (a - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
+    let needle = tri.mesh().faces().any(|f| {
+        let [a, b, c] = tri.face_sides(f);
+        is_needle(a, b, c)
+    });
+    method_for(needle, || {
+        tri.mesh()
+            .vertices()
+            .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
     })
 }
