@@ -63,6 +63,29 @@ fn best_of<T>(n: usize, mut f: impl FnMut() -> T) -> (T, f64) {
     (out.expect("n ≥ 1"), best)
 }
 
+/// Theorem 1's exact pipeline on `⟨(1, 0), (a, b)⟩`, best of 3.
+fn exact_pipeline(a: &str, b: &str) -> (FlatDelaunay<Rational>, f64) {
+    let t = lattice_torus([q("1"), q("0")], [q(a), q(b)]);
+    let options = FlatDelaunayOptions::default();
+    best_of(3, || {
+        delaunay_tessellation_flat(&t, &options).expect("flat")
+    })
+}
+
+/// The table cells `ms | N | total / 350·N | triangles after reduction | wave events`.
+fn dubois_cells(out: &FlatDelaunay<Rational>, seconds: f64) -> String {
+    let rep = &out.reduction;
+    format!(
+        "{:.3} | {} | {} / {} | {} | {}",
+        seconds * 1e3,
+        rep.outer_iterations,
+        rep.inner_passes_total,
+        rep.inner_passes_bound,
+        rep.triangles_after_reduction,
+        out.delaunay.wave.events
+    )
+}
+
 /// Whether the exact tessellation is one quadrilateral with squared sides `a, b, a, b` and right
 /// angles (the rectangle `√a × √b`).
 fn is_rectangle(t: &FlatDelaunay<Rational>, a: &str, b: &str) -> bool {
@@ -139,26 +162,17 @@ fn main() {
     );
     let mut jsonl = String::new();
     let (mut dubois_points, mut flip_points) = (Vec::new(), Vec::new());
-    let options = FlatDelaunayOptions::default();
     for k in 1..=18 {
         let x = format!("1{}", "0".repeat(k));
-        let t = lattice_torus([q("1"), q("0")], [q(&x), q("2")]);
-        let (out, seconds) = best_of(3, || {
-            delaunay_tessellation_flat(&t, &options).expect("flat")
-        });
+        let (out, seconds) = exact_pipeline(&x, "2");
         let rep = &out.reduction;
         let d_x = is_rectangle(&out, "1", "4");
         let (flips, flip_seconds, verdict) = flip_t_x(10f64.powi(k as i32));
         let ms = |s: Option<f64>| s.map_or(String::new(), |s| format!("{:.3}", s * 1e3));
         writeln!(
             md,
-            "| 1e{k} | {:.3} | {} | {} / {} | {} | {} | {} | {} | {} | {} | {verdict} |",
-            seconds * 1e3,
-            rep.outer_iterations,
-            rep.inner_passes_total,
-            rep.inner_passes_bound,
-            rep.triangles_after_reduction,
-            out.delaunay.wave.events,
+            "| 1e{k} | {} | {} | {} | {} | {} | {verdict} |",
+            dubois_cells(&out, seconds),
             out.delaunay.wave.max_constellation(),
             if d_x { "yes" } else { "NO" },
             flips.map_or(String::new(), |f| f.to_string()),
@@ -192,21 +206,13 @@ fn main() {
     );
     for k in [1, 3, 6, 9, 12, 18] {
         let s = format!("1{}", "0".repeat(k));
-        let t = lattice_torus([q("1"), q("0")], [q(&s), q("1")]);
-        let (out, seconds) = best_of(3, || {
-            delaunay_tessellation_flat(&t, &options).expect("flat")
-        });
+        let (out, seconds) = exact_pipeline(&s, "1");
         let rep = &out.reduction;
         let square = is_rectangle(&out, "1", "1");
         writeln!(
             md,
-            "| 1e{k} | {:.3} | {} | {} / {} | {} | {} | {} |",
-            seconds * 1e3,
-            rep.outer_iterations,
-            rep.inner_passes_total,
-            rep.inner_passes_bound,
-            rep.triangles_after_reduction,
-            out.delaunay.wave.events,
+            "| 1e{k} | {} | {} |",
+            dubois_cells(&out, seconds),
             if square { "yes" } else { "NO" },
         )
         .expect("write to a string");

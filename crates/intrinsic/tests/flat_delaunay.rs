@@ -13,17 +13,16 @@ fn q(s: &str) -> Rational {
     s.parse().unwrap()
 }
 
+/// The triangle `(0, 0), (1, 0), (x, 2)`.
+fn needle(x: &Rational) -> [[Rational; 2]; 3] {
+    [[q("0"), q("0")], [q("1"), q("0")], [x.clone(), q("2")]]
+}
+
 /// `T_x = R²/⟨(1, 0), (x, 2)⟩` as the triangles `0, u, v` and `u + v, v, u`, side i to side i.
 fn t_x(x: &Rational) -> Portalgon<Rational> {
     let (z, one, two) = (q("0"), q("1"), q("2"));
     let mut p = Portalgon::<Rational>::empty();
-    let a = p
-        .add_polygon(&[
-            [z.clone(), z.clone()],
-            [one.clone(), z.clone()],
-            [x.clone(), two.clone()],
-        ])
-        .unwrap();
+    let a = p.add_polygon(&needle(x)).unwrap();
     let b = p
         .add_polygon(&[
             [x.clone() + one.clone(), two.clone()],
@@ -145,13 +144,7 @@ fn a_cone_point_is_refused_by_name() {
 fn needle_pillow(x: &Rational) -> Portalgon<Rational> {
     let (z, one, two) = (q("0"), q("1"), q("2"));
     let mut p = Portalgon::<Rational>::empty();
-    let a = p
-        .add_polygon(&[
-            [z.clone(), z.clone()],
-            [one.clone(), z.clone()],
-            [x.clone(), two.clone()],
-        ])
-        .unwrap();
+    let a = p.add_polygon(&needle(x)).unwrap();
     // Its mirror image across the x axis, counter-clockwise.
     let b = p
         .add_polygon(&[[z.clone(), z.clone()], [x.clone(), -two], [one, z]])
