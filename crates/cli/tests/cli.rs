@@ -832,7 +832,11 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
         &d("tet.obj"),
         "exact corners",
     );
-    refused(&["--exact"], &d("t.json"), "--method voronoi");
+    refused(
+        &["--method", "flip", "--exact"],
+        &d("t.json"),
+        "--method voronoi",
+    );
     std::fs::write(
         d("lengths.json"),
         r#"{"polygons": [{"lengths": [1, 1, 1]}, {"lengths": [1, 1, 1]}],
@@ -918,26 +922,40 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
         if exact {
             cmd.arg("--exact");
         }
-        let v = json_of(
-            &mut cmd,
-            &[
-                "method",
-                "arithmetic",
-                "outer_iterations",
-                "inner_passes",
-                "inner_passes_bound",
-                "tubes_replaced",
-                "peak_active_vertices",
-                "triangles_after_reduction",
-                "wave_events",
-                "max_constellation",
-            ],
-        );
+        // The keys, in the order of issue 22's list (a struct, not a map sorted by name).
+        let order = [
+            "method",
+            "outer_iterations",
+            "inner_passes",
+            "inner_passes_total",
+            "inner_passes_bound",
+            "tubes_replaced",
+            "peak_active_vertices",
+            "triangles_after_reduction",
+            "wave_events",
+            "max_constellation",
+            "arithmetic",
+        ];
+        let v = json_of(&mut cmd, &order);
+        let text = String::from_utf8(cmd.output().unwrap().stdout).unwrap();
+        let at = |k: &str| text.find(&format!("\"{k}\"")).unwrap();
+        assert!(order.windows(2).all(|w| at(w[0]) < at(w[1])), "{text}");
         assert_eq!(v["method"], "dubois");
         assert_eq!(v["arithmetic"], if exact { "exact" } else { "f64" });
         let n = v["outer_iterations"].as_u64().unwrap();
         assert_eq!(v["inner_passes_bound"].as_u64().unwrap(), 350 * n);
-        assert!(v["inner_passes"].as_u64().unwrap() <= 350 * n);
+        let per_outer: Vec<u64> = v["inner_passes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p.as_u64().unwrap())
+            .collect();
+        assert!(per_outer.len() as u64 <= n && per_outer.iter().all(|&p| (1..=350).contains(&p)));
+        assert_eq!(
+            per_outer.iter().sum::<u64>(),
+            v["inner_passes_total"].as_u64().unwrap()
+        );
+        assert!(v["inner_passes_total"].as_u64().unwrap() <= 350 * n);
         assert!(v["tubes_replaced"]["thin"].is_u64() && v["tubes_replaced"]["thick"].is_u64());
         for f in ["d.json", "tt.json", "L.mtx", "M.mtx"] {
             assert!(d(f).is_file(), "{f} not written");
@@ -983,12 +1001,140 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
     assert!(stderr.contains("cone point"), "{stderr}");
     assert!(stderr.contains("--method flip"), "{stderr}");
     assert!(!d("x.json").exists(), "no output on refusal");
-    // isometric has no dubois method.
+    // isometric --method dubois refuses cone points too.
+    surftopo()
+        .arg("isometric")
+        .arg(d("tet.obj"))
+        .arg(d("tet.obj"))
+        .args(["--method", "dubois"])
+        .assert()
+        .code(2);
+}
+
+/// `T_x = R²/⟨(1, 0), (x, 2)⟩` by exact corners (`x` a rational written as text), as portalgon
+/// JSON: triangles `0, u, v` and `u, u + v, v`.
+fn t_x_json(x: &str, plus_one: &str) -> String {
+    format!(
+        r#"{{"format":"surftopo-portalgon","version":1,"polygons":[
+            {{"corners":[["0","0"],["1","0"],["{x}","2"]]}},
+            {{"corners":[["1","0"],["{plus_one}","2"],["{x}","2"]]}}],
+            "matching":[[[0,0],[1,1]],[[0,1],[1,2]],[[0,2],[1,0]]]}}"#
+    )
+}
+
+/// Corollary 2 by Theorem 1 (`isometric --method dubois --exact`) on `T_x` against `T_{x+k}`
+/// (isometric: the same lattice) and `T_{x+1/3}` (not: `D_x` is a rectangle, `D_{x+1/3}` two
+/// triangles), each pair also under the default `--method auto` (dubois on these needles).
+/// Each input is given as `(x, x + 1)`.
+fn isometry_of_t_x(x: [&str; 2], x_plus_k: [&str; 2], x_plus_third: [&str; 2]) {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    for (name, [v, w]) in [
+        ("a.json", x),
+        ("b.json", x_plus_k),
+        ("c.json", x_plus_third),
+    ] {
+        std::fs::write(d(name), t_x_json(v, w)).unwrap();
+    }
+    for method in [&["--method", "dubois", "--exact"][..], &["--exact"][..]] {
+        for (other, code, verdict) in [("b.json", 0, "isometric"), ("c.json", 1, "not isometric")] {
+            let out = surftopo()
+                .arg("isometric")
+                .arg(d("a.json"))
+                .arg(d(other))
+                .args(method)
+                .assert()
+                .code(code);
+            let stdout = String::from_utf8_lossy(&out.get_output().stdout).into_owned();
+            assert_eq!(stdout.trim(), verdict, "{method:?} {other}");
+            let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
+            assert!(stderr.contains("Theorem 1"), "{stderr}");
+        }
+    }
+}
+
+#[test]
+fn isometric_by_dubois_on_t_x_at_1e9() {
+    isometry_of_t_x(
+        ["1000000000", "1000000001"],
+        ["1000000007", "1000000008"],
+        ["3000000001/3", "3000000004/3"],
+    );
+}
+
+#[test]
+fn isometric_by_dubois_on_t_x_at_1e18() {
+    isometry_of_t_x(
+        ["1000000000000000000", "1000000000000000001"],
+        ["1000000000000000007", "1000000000000000008"],
+        ["3000000000000000001/3", "3000000000000000004/3"],
+    );
+}
+
+/// `--reduced` (Corollary 1) writes the reduced triangulation of `T_x`: a closed triangular
+/// portalgon of the same area (2) as the input, isometric to it; `--method auto` takes dubois on
+/// this needle, and `--reduced` is refused with flipping.
+#[test]
+fn delaunay_writes_the_reduced_triangulation() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    std::fs::write(d("t.json"), t_x_json("1000000000", "1000000001")).unwrap();
+    let v = json_of(
+        surftopo()
+            .arg("delaunay")
+            .arg(d("t.json"))
+            .arg("-o")
+            .arg(d("d.json"))
+            .args(["--exact", "--json", "--reduced"])
+            .arg(d("r.json")),
+        &["method", "requested_method", "triangles_after_reduction"],
+    );
+    assert_eq!(v["method"], "dubois");
+    assert_eq!(v["requested_method"], "auto");
+    let reduced: Value =
+        serde_json::from_str(&std::fs::read_to_string(d("r.json")).unwrap()).unwrap();
+    let polygons = reduced["polygons"].as_array().unwrap();
+    assert_eq!(
+        polygons.len() as u64,
+        v["triangles_after_reduction"].as_u64().unwrap()
+    );
+    // Exact corners: every polygon a triangle, the areas summing to the input's, 2.
+    let num = |x: &Value| -> f64 {
+        let t = x.as_str().map_or_else(|| x.to_string(), str::to_string);
+        match t.split_once('/') {
+            Some((p, q)) => p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap(),
+            None => t.parse().unwrap(),
+        }
+    };
+    let mut area = 0.0;
+    for p in polygons {
+        let c: Vec<[f64; 2]> = p["corners"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|xy| [num(&xy[0]), num(&xy[1])])
+            .collect();
+        assert_eq!(c.len(), 3, "{p}");
+        area += ((c[1][0] - c[0][0]) * (c[2][1] - c[0][1])
+            - (c[1][1] - c[0][1]) * (c[2][0] - c[0][0]))
+            / 2.0;
+    }
+    assert!((area - 2.0).abs() < 1e-9, "area {area}");
+    // The reduced triangulation is the same torus (Corollary 2 by Theorem 1, exactly).
     surftopo()
         .arg("isometric")
         .arg(d("t.json"))
+        .arg(d("r.json"))
+        .args(["--method", "dubois", "--exact"])
+        .assert()
+        .code(0);
+    surftopo()
+        .arg("delaunay")
         .arg(d("t.json"))
-        .args(["--method", "dubois"])
+        .arg("-o")
+        .arg(d("x.json"))
+        .args(["--method", "voronoi", "--exact", "--reduced"])
+        .arg(d("r2.json"))
         .assert()
         .code(2);
 }

@@ -139,7 +139,7 @@ fn delaunay_needs_no_triangulation_output_when_another_output_or_json_is_given()
     refused(
         d,
         &["delaunay", "g.obj"],
-        "nothing to write: give -o, --tessellation, --laplacian or --mass",
+        "nothing to write: give -o, --tessellation, --reduced, --laplacian or --mass",
     );
 }
 

@@ -66,6 +66,7 @@ mod isometry;
 mod isometry_decision;
 mod laplacian;
 mod matrix_market;
+pub mod method_choice;
 mod mollify;
 mod portalgon;
 mod portalgon_edits;

@@ -13,17 +13,16 @@ fn q(s: &str) -> Rational {
     s.parse().unwrap()
 }
 
+/// The triangle `(0, 0), (1, 0), (x, 2)`.
+fn needle(x: &Rational) -> [[Rational; 2]; 3] {
+    [[q("0"), q("0")], [q("1"), q("0")], [x.clone(), q("2")]]
+}
+
 /// `T_x = R²/⟨(1, 0), (x, 2)⟩` as the triangles `0, u, v` and `u + v, v, u`, side i to side i.
 fn t_x(x: &Rational) -> Portalgon<Rational> {
     let (z, one, two) = (q("0"), q("1"), q("2"));
     let mut p = Portalgon::<Rational>::empty();
-    let a = p
-        .add_polygon(&[
-            [z.clone(), z.clone()],
-            [one.clone(), z.clone()],
-            [x.clone(), two.clone()],
-        ])
-        .unwrap();
+    let a = p.add_polygon(&needle(x)).unwrap();
     let b = p
         .add_polygon(&[
             [x.clone() + one.clone(), two.clone()],
@@ -139,4 +138,55 @@ fn a_cone_point_is_refused_by_name() {
         "{err}"
     );
     assert!(err.to_string().contains("cone point"), "{err}");
+}
+
+/// The doubly covered triangle `(0, 0), (1, 0), (x, 2)`: three cone points, a needle for large x.
+fn needle_pillow(x: &Rational) -> Portalgon<Rational> {
+    let (z, one, two) = (q("0"), q("1"), q("2"));
+    let mut p = Portalgon::<Rational>::empty();
+    let a = p.add_polygon(&needle(x)).unwrap();
+    // Its mirror image across the x axis, counter-clockwise.
+    let b = p
+        .add_polygon(&[[z.clone(), z.clone()], [x.clone(), -two], [one, z]])
+        .unwrap();
+    for (i, j) in [(0, 2), (1, 1), (2, 0)] {
+        p.glue(p.side(a, i), p.side(b, j), 0.0).unwrap();
+    }
+    p.check_closed().unwrap();
+    p
+}
+
+#[test]
+fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
+    use surftopo_intrinsic::method_choice::{
+        AUTO_ASPECT_LIMIT, DUBOIS_TAKES_CONE_POINTS, Method, choose_method, largest_aspect_ratio,
+    };
+    // T_x's triangles have aspect ratio ℓ²/(2A) = (x² + 4)/2 (area 1, longest side² x² + 4).
+    assert_eq!(largest_aspect_ratio(&t_x(&q("10"))), 52.0);
+    assert_eq!(choose_method(&t_x(&q("10"))), Method::Flip);
+    assert_eq!(choose_method(&t_x(&q("447"))), Method::Flip); // aspect 99906.5
+    assert_eq!(choose_method(&t_x(&q("448"))), Method::Dubois); // aspect 100354
+    assert_eq!(choose_method(&t_x(&q("3000000001/3"))), Method::Dubois);
+    // A needle with cone points: flipping until Section 8's caps let Dubois take it.
+    let pillow = needle_pillow(&q("1000"));
+    assert!(largest_aspect_ratio(&pillow) > AUTO_ASPECT_LIMIT);
+    let expected = if DUBOIS_TAKES_CONE_POINTS {
+        Method::Dubois
+    } else {
+        Method::Flip
+    };
+    assert_eq!(choose_method(&pillow), expected);
+    // The same pillow, not a needle: flipping.
+    assert_eq!(choose_method(&needle_pillow(&q("3"))), Method::Flip);
+    // The same rule on intrinsic triangulations (lengths in f64).
+    let by_lengths = |p: &Portalgon<Rational>| {
+        let tri = surftopo_intrinsic::PortalgonDoc::from_portalgon(p)
+            .to_triangulation(1e-9)
+            .unwrap();
+        surftopo_intrinsic::method_choice::choose_method_for_triangulation(&tri)
+    };
+    assert_eq!(by_lengths(&t_x(&q("10"))), Method::Flip);
+    assert_eq!(by_lengths(&t_x(&q("1000"))), Method::Dubois);
+    assert_eq!(by_lengths(&pillow), expected);
+    assert_eq!(by_lengths(&needle_pillow(&q("3"))), Method::Flip);
 }

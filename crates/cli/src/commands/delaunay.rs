@@ -1,7 +1,8 @@
 //! `surftopo delaunay`: the intrinsic Delaunay triangulation by edge flipping (`--method flip`)
 //! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), or by
 //! Dubois' Theorem 1 on flat surfaces (`--method dubois`: Section 4's reduction, then the wave from
-//! one vertex), its tessellation, the cotan Laplacian and the lumped mass matrix.
+//! one vertex), or the method `surftopo_intrinsic::method_choice` picks (`--method auto`, the
+//! default), its tessellation, the cotan Laplacian and the lumped mass matrix.
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
@@ -11,6 +12,9 @@ use surftopo_intrinsic::dubois::{
     DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
 };
 use surftopo_intrinsic::geometry::{Rational, Scalar};
+use surftopo_intrinsic::method_choice::{
+    Method as Choice, choose_method, choose_method_for_triangulation,
+};
 use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
@@ -25,7 +29,7 @@ pub struct Args {
     /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md).
     pub input: PathBuf,
     /// The Delaunay triangulation, as portalgon JSON (.json). Optional: at least one output
-    /// (this, --tessellation, --laplacian, --mass) or --json is needed.
+    /// (this, --tessellation, --reduced, --laplacian, --mass) or --json is needed.
     #[arg(short, long)]
     pub output: Option<PathBuf>,
     /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON (.json).
@@ -47,6 +51,10 @@ pub struct Args {
     pub weld: WeldArg,
     #[command(flatten)]
     pub json: JsonArg,
+    /// Corollary 1: the low-happiness triangulation after Dubois' reduction, as portalgon JSON
+    /// (with --method dubois; --method auto then takes dubois).
+    #[arg(long, value_name = "OUT.json")]
+    pub reduced: Option<PathBuf>,
     /// The algorithm and the arithmetic.
     #[command(flatten)]
     pub method: MethodOptions,
@@ -55,8 +63,13 @@ pub struct Args {
 /// The algorithm computing the Delaunay tessellation.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Method {
-    /// Edge flipping (Bobenko–Springborn).
+    /// Flipping unless a triangle's aspect ratio ℓ²/(2A) exceeds 1e5 (flipping would need about
+    /// √(2·aspect) flips and lose digits in double precision); then dubois on a flat surface,
+    /// flipping with cone points (voronoi with --exact). --mollify or --max-flips ask for flip,
+    /// --reduced for dubois.
     #[default]
+    Auto,
+    /// Edge flipping (Bobenko–Springborn).
     Flip,
     /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
     Voronoi,
@@ -65,11 +78,24 @@ pub enum Method {
     Dubois,
 }
 
+impl Method {
+    /// The method [`choose_method`]'s answer names; in exact mode flipping (which works on
+    /// lengths) becomes the exact wave.
+    pub fn chosen(choice: Choice, exact: bool) -> Self {
+        match choice {
+            Choice::Dubois => Method::Dubois,
+            Choice::Voronoi => Method::Voronoi,
+            Choice::Flip if exact => Method::Voronoi,
+            Choice::Flip => Method::Flip,
+        }
+    }
+}
+
 /// `--method` and `--exact`, shared by `delaunay` and `isometric`.
 #[derive(clap::Args, Clone, Copy, Debug, Default)]
 pub struct MethodOptions {
-    /// The algorithm: flip (default), voronoi, or dubois (flat surfaces only).
-    #[arg(long, value_enum, default_value_t = Method::Flip)]
+    /// The algorithm: auto (default), flip, voronoi, or dubois (flat surfaces only).
+    #[arg(long, value_enum, default_value_t = Method::Auto)]
     pub method: Method,
     /// Compute in exact rational arithmetic (with --method voronoi or dubois; the input must be a
     /// portalgon JSON file given by exact corners).
@@ -128,18 +154,21 @@ struct WaveFigures {
     reduction: Option<DuboisReport>,
 }
 
+/// The tessellation of [`tessellate`], its figures, and (dubois) the reduced triangulation.
+type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
+
 /// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
 /// on a flat surface (`--method dubois`: reduction, then the wave from one vertex), with its
 /// figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of the
-/// `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4); a cone point for `--method dubois`
-/// names the vertex and suggests the other methods.
+/// `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4); a cone point
+/// for `--method dubois` names the vertex and suggests the other methods.
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
     method: Method,
     input: &Path,
-) -> anyhow::Result<(VoronoiDelaunay<S>, WaveFigures)> {
+) -> anyhow::Result<Tessellated<S>> {
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", input.display()));
-    let (v, reduction) = if method == Method::Dubois {
+    let (v, reduction, reduced) = if method == Method::Dubois {
         let out =
             crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
                 delaunay_tessellation_flat(p, &FlatDelaunayOptions::default())
@@ -150,7 +179,7 @@ fn tessellate<S: Scalar>(
                 }
                 other => fail(&other),
             })?;
-        (out.delaunay, Some(out.reduction))
+        (out.delaunay, Some(out.reduction), Some(out.reduced))
     } else {
         let v = crate::progress::step("running the Voronoi wave", || {
             voronoi_delaunay(p, &VoronoiOptions::default())
@@ -166,7 +195,7 @@ fn tessellate<S: Scalar>(
                 fail(&e)
             }
         })?;
-        (v, None)
+        (v, None, None)
     };
     let figures = WaveFigures {
         events: v.wave.events,
@@ -174,7 +203,7 @@ fn tessellate<S: Scalar>(
         arithmetic: S::ARITHMETIC,
         reduction,
     };
-    Ok((v, figures))
+    Ok((v, figures, reduced))
 }
 
 /// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation, within the limits
@@ -227,8 +256,8 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
     Ok(())
 }
 
-/// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o` and
-/// `--tessellation`, Matrix Market for `--laplacian` and `--mass`), a file named twice, and a run
+/// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o`,
+/// `--tessellation` and `--reduced`, Matrix Market for `--laplacian` and `--mass`), a file named twice, and a run
 /// with nothing to write and no `--json`.
 fn check_outputs(options: &Args) -> anyhow::Result<()> {
     let named = [
@@ -238,6 +267,7 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
             &options.tessellation,
             OutputKind::Portalgon,
         ),
+        ("--reduced", &options.reduced, OutputKind::Portalgon),
         ("--laplacian", &options.laplacian, OutputKind::MatrixMarket),
         ("--mass", &options.mass, OutputKind::MatrixMarket),
     ];
@@ -247,23 +277,50 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
         .collect();
     if outputs.is_empty() && !options.json.json {
         return Err(invalid(
-            "delaunay: nothing to write: give -o, --tessellation, --laplacian or --mass (or \
+            "delaunay: nothing to write: give -o, --tessellation, --reduced, --laplacian or --mass (or \
              --json for the figures alone)",
         ));
     }
     crate::output::check_outputs(&outputs)
 }
 
-/// Runs `delaunay`.
+/// Runs `delaunay`: resolves `--method auto` on the input read (see [`Method::Auto`]), then
+/// flips or runs the wave (after the reduction for dubois).
 pub fn run(options: &Args) -> anyhow::Result<()> {
     check_outputs(options)?;
     options.method.check()?;
-    if options.method.method != Method::Flip {
-        return run_voronoi(options);
+    let flip_options_given = options.mollify.is_some() || options.max_flips.is_some();
+    let requested = options.method.method;
+    if options.method.exact {
+        let p = crate::progress::step("reading", || load_exact(&options.input))?;
+        let method = match requested {
+            Method::Auto if options.reduced.is_some() => Method::Dubois,
+            Method::Auto => Method::chosen(choose_method(&p), true),
+            m => m,
+        };
+        return run_exact(options, &p, method);
     }
-    let mut tri = crate::progress::step("reading", || {
+    let tri = crate::progress::step("reading", || {
         load_intrinsic(&options.input, options.weld.weld)
     })?;
+    let method = match requested {
+        Method::Auto if options.reduced.is_some() => Method::Dubois,
+        Method::Auto if flip_options_given => Method::Flip,
+        Method::Auto => Method::chosen(choose_method_for_triangulation(&tri), false),
+        m => m,
+    };
+    if method == Method::Flip {
+        run_flip(options, tri)
+    } else {
+        run_wave(options, tri, method)
+    }
+}
+
+/// `--method flip`.
+fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+    if options.reduced.is_some() {
+        return Err(invalid("--reduced applies to --method dubois only"));
+    }
     let flip_options = DelaunayOptions {
         max_flips: options.max_flips,
         mollify: options.mollify,
@@ -291,7 +348,7 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     }
     write_matrices(options, &tri, &mut outputs)?;
     outputs.commit()?;
-    report(options, &stats, None)
+    report(options, Method::Flip, &stats, None)
 }
 
 /// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).
@@ -315,53 +372,92 @@ fn write_matrices(
     Ok(())
 }
 
-/// `--method voronoi` and `--method dubois`: the wave (f64, or exact with `--exact`) and its dual
-/// (after the reduction for dubois); the triangulation written is the tessellation cut along
-/// shortcuts (by lengths, or by exact corners with `--exact`).
-fn run_voronoi(options: &Args) -> anyhow::Result<()> {
+/// Refuses the flip-only options and `--reduced` without dubois.
+fn check_wave_options(options: &Args, method: Method) -> anyhow::Result<()> {
     if options.mollify.is_some() || options.max_flips.is_some() {
         return Err(invalid(
             "--mollify and --max-flips apply to --method flip only",
         ));
     }
+    if options.reduced.is_some() && method != Method::Dubois {
+        return Err(invalid("--reduced applies to --method dubois only"));
+    }
+    Ok(())
+}
+
+/// `--method voronoi` and `--method dubois` with `--exact`: the exact wave and its dual (after
+/// the exact reduction for dubois); the triangulation written is the tessellation cut along
+/// shortcuts by exact corners.
+fn run_exact(options: &Args, p: &Portalgon<Rational>, method: Method) -> anyhow::Result<()> {
+    check_wave_options(options, method)?;
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
+    let (v, figures, reduced) = tessellate(p, method, &options.input)?;
+    let triangulated = v.triangulated().map_err(|e| fail(&e))?;
     let mut outputs = Outputs::default();
-    let (tri, figures) = if options.method.exact {
-        let p = crate::progress::step("reading", || load_exact(&options.input))?;
-        let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
-        let triangulated = v.triangulated().map_err(|e| fail(&e))?;
-        if let Some(path) = &options.output {
-            outputs.file(path, |w| {
-                Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
-            })?;
-        }
-        write_tessellation(options, &v.tessellation, &mut outputs)?;
-        let tri = v.triangulation().map_err(|e| fail(&e))?;
-        (tri, figures)
-    } else {
-        let tri = crate::progress::step("reading", || {
-            load_intrinsic(&options.input, options.weld.weld)
+    if let Some(path) = &options.output {
+        outputs.file(path, |w| {
+            Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
         })?;
-        tri.validate().map_err(|e| fail(&e))?;
-        let (p, _) = tri.to_portalgon();
-        let (v, figures) = tessellate(&p, options.method.method, &options.input)?;
-        let tri = v.triangulation().map_err(|e| fail(&e))?;
-        if let Some(path) = &options.output {
-            outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
-        }
-        write_tessellation(options, &v.tessellation, &mut outputs)?;
-        (tri, figures)
-    };
+    }
+    write_tessellation(options, &v.tessellation, &mut outputs)?;
+    write_reduced(options, reduced.as_ref(), &mut outputs)?;
+    let tri = v.triangulation().map_err(|e| fail(&e))?;
+    finish(options, method, &tri, &figures, start, outputs)
+}
+
+/// `--method voronoi` and `--method dubois` in f64: the wave and its dual (after the reduction
+/// for dubois); the triangulation written is the tessellation cut along shortcuts by lengths.
+fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyhow::Result<()> {
+    check_wave_options(options, method)?;
+    let start = std::time::Instant::now();
+    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
+    tri.validate().map_err(|e| fail(&e))?;
+    let (p, _) = tri.to_portalgon();
+    let (v, figures, reduced) = tessellate(&p, method, &options.input)?;
+    let tri = v.triangulation().map_err(|e| fail(&e))?;
+    let mut outputs = Outputs::default();
+    if let Some(path) = &options.output {
+        outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+    }
+    write_tessellation(options, &v.tessellation, &mut outputs)?;
+    write_reduced(options, reduced.as_ref(), &mut outputs)?;
+    finish(options, method, &tri, &figures, start, outputs)
+}
+
+/// The matrices and the figures of a wave run.
+fn finish(
+    options: &Args,
+    method: Method,
+    tri: &IntrinsicTriangulation,
+    figures: &WaveFigures,
+    start: std::time::Instant,
+    mut outputs: Outputs,
+) -> anyhow::Result<()> {
     let flips = FlipReport {
         flips: 0,
         mollify_delta: None,
         non_delaunay_edges: tri.non_delaunay_edges(surftopo_intrinsic::DEFAULT_TOLERANCE),
     };
-    let stats = DelaunayStats::new(&tri, &flips, start.elapsed().as_secs_f64());
-    write_matrices(options, &tri, &mut outputs)?;
+    let stats = DelaunayStats::new(tri, &flips, start.elapsed().as_secs_f64());
+    write_matrices(options, tri, &mut outputs)?;
     outputs.commit()?;
-    report(options, &stats, Some(&figures))
+    report(options, method, &stats, Some(figures))
+}
+
+/// Writes `--reduced` (Corollary 1's triangulation, exact corners in exact mode; under a
+/// temporary name).
+fn write_reduced<S: Scalar>(
+    options: &Args,
+    reduced: Option<&Portalgon<S>>,
+    outputs: &mut Outputs,
+) -> anyhow::Result<()> {
+    if let (Some(path), Some(r)) = (&options.reduced, reduced) {
+        outputs.file(path, |w| {
+            Ok(PortalgonDoc::from_portalgon(r).write(w, false)?)
+        })?;
+    }
+    Ok(())
 }
 
 /// Writes `--tessellation` (under a temporary name).
@@ -378,43 +474,80 @@ fn write_tessellation<S: Scalar>(
     Ok(())
 }
 
-/// Prints the figures (`--json`: the stats with `method`, `arithmetic`, for the voronoi and
-/// dubois methods `wave_events` and `max_constellation`, and for dubois the reduction's
-/// `outer_iterations`, `inner_passes` (total), `inner_passes_bound` (350·N), `tubes_replaced`
-/// (`thin`, `thick`), `peak_active_vertices` and `triangles_after_reduction`).
-fn report(options: &Args, stats: &DelaunayStats, wave: Option<&WaveFigures>) -> anyhow::Result<()> {
+/// The `--json` object: the stats, then `method` (the one run, after `auto`'s choice),
+/// `requested_method`, for dubois the reduction's figures (`outer_iterations` N, `inner_passes`
+/// per outer iteration, `inner_passes_total`, `inner_passes_bound` = 350·N, `tubes_replaced`
+/// `{thin, thick}`, `peak_active_vertices`, `triangles_after_reduction`), for the wave methods
+/// `wave_events` and `max_constellation`, and `arithmetic`. A struct, so the key order is this
+/// one.
+#[derive(serde::Serialize)]
+struct JsonReport<'a> {
+    #[serde(flatten)]
+    stats: &'a DelaunayStats,
+    method: String,
+    requested_method: String,
+    #[serde(flatten)]
+    reduction: Option<ReductionJson<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    wave_events: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max_constellation: Option<usize>,
+    arithmetic: &'static str,
+}
+
+/// The reduction's keys of [`JsonReport`].
+#[derive(serde::Serialize)]
+struct ReductionJson<'a> {
+    outer_iterations: u32,
+    inner_passes: &'a [u32],
+    inner_passes_total: u64,
+    inner_passes_bound: u64,
+    tubes_replaced: TubesJson,
+    peak_active_vertices: usize,
+    triangles_after_reduction: usize,
+}
+
+/// `tubes_replaced` of [`ReductionJson`].
+#[derive(serde::Serialize)]
+struct TubesJson {
+    thin: usize,
+    thick: usize,
+}
+
+/// Prints the figures (`--json`: [`JsonReport`]).
+fn report(
+    options: &Args,
+    method: Method,
+    stats: &DelaunayStats,
+    wave: Option<&WaveFigures>,
+) -> anyhow::Result<()> {
     if options.json.json {
-        let mut value = serde_json::to_value(stats)?;
-        if let Some(map) = value.as_object_mut() {
-            let method = crate::args::value_name(&options.method.method);
-            map.insert("method".into(), method.into());
-            map.insert(
-                "arithmetic".into(),
-                wave.map_or("f64", |w| w.arithmetic).into(),
-            );
-            if let Some(w) = wave {
-                map.insert("wave_events".into(), w.events.into());
-                map.insert("max_constellation".into(), w.max_constellation.into());
-            }
-            if let Some(r) = wave.and_then(|w| w.reduction.as_ref()) {
-                map.insert("outer_iterations".into(), r.outer_iterations.into());
-                map.insert("inner_passes".into(), r.inner_passes_total.into());
-                map.insert("inner_passes_bound".into(), r.inner_passes_bound.into());
-                map.insert(
-                    "tubes_replaced".into(),
-                    serde_json::json!({"thin": r.tubes_replaced_thin, "thick": r.tubes_replaced_thick}),
-                );
-                map.insert("peak_active_vertices".into(), r.peak_active_vertices.into());
-                map.insert(
-                    "triangles_after_reduction".into(),
-                    r.triangles_after_reduction.into(),
-                );
-            }
-        }
-        crate::output::print_json(&value)?;
+        let reduction = wave
+            .and_then(|w| w.reduction.as_ref())
+            .map(|r| ReductionJson {
+                outer_iterations: r.outer_iterations,
+                inner_passes: &r.inner_passes,
+                inner_passes_total: r.inner_passes_total,
+                inner_passes_bound: r.inner_passes_bound,
+                tubes_replaced: TubesJson {
+                    thin: r.tubes_replaced_thin,
+                    thick: r.tubes_replaced_thick,
+                },
+                peak_active_vertices: r.peak_active_vertices,
+                triangles_after_reduction: r.triangles_after_reduction,
+            });
+        crate::output::print_json(&JsonReport {
+            stats,
+            method: crate::args::value_name(&method),
+            requested_method: crate::args::value_name(&options.method.method),
+            reduction,
+            wave_events: wave.map(|w| w.events),
+            max_constellation: wave.map(|w| w.max_constellation),
+            arithmetic: wave.map_or("f64", |w| w.arithmetic),
+        })?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s\n",
+            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s ({})\n",
             crate::failure::shown(options.output.as_deref().unwrap_or(&options.input)),
             stats.vertices,
             stats.edges,
@@ -423,7 +556,8 @@ fn report(options: &Args, stats: &DelaunayStats, wave: Option<&WaveFigures>) -> 
             stats.non_delaunay_edges,
             stats.loops,
             stats.multi_edges,
-            stats.seconds
+            stats.seconds,
+            crate::args::value_name(&method)
         ))?;
     }
     Ok(())

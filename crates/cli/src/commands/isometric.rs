@@ -1,12 +1,20 @@
 //! `surftopo isometric`: whether two closed polyhedral surfaces are isometric (Corollary 2 of the
 //! intrinsic-Delaunay paper: their canonical Delaunay tessellations are equal), or that double
-//! precision cannot decide. The canonical tessellations come from flipping (`--method flip`) or
-//! from the Voronoi wave from the singular vertices (`--method voronoi`, exactly with `--exact`).
+//! precision cannot decide. The canonical tessellations come from flipping (`--method flip`),
+//! from the Voronoi wave from the singular vertices (`--method voronoi`), or from Dubois'
+//! Theorem 1 on flat surfaces (`--method dubois`: the reduction, then the wave); exactly with
+//! `--exact`. `--method auto` (the default) takes dubois when both surfaces are flat needles
+//! (`surftopo_intrinsic::method_choice` on each), otherwise flip (the exact wave with `--exact`).
 
 use crate::args::WeldArg;
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
+use surftopo_intrinsic::dubois::{FlatDelaunayOptions, delaunay_tessellation_flat};
+use surftopo_intrinsic::geometry::Scalar;
+use surftopo_intrinsic::method_choice::{
+    Method as Choice, choose_method, choose_method_for_triangulation,
+};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
     IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon, compare_tessellations,
@@ -53,21 +61,41 @@ fn singular_wave() -> VoronoiOptions {
     }
 }
 
-/// The canonical tessellation of an exact portalgon file by the exact Voronoi wave.
-fn canonical_by_exact_wave(path: &Path) -> anyhow::Result<Portalgon> {
-    let p = load_exact(path)?;
-    let v = voronoi_delaunay(&p, &singular_wave())
-        .map_err(|e| invalid(format!("{}: {e}", shown(path))))?;
-    Ok(to_f64(&v.tessellation))
+/// The canonical tessellation of a portalgon by the wave from its singular vertices
+/// (`--method voronoi`) or by Theorem 1 on a flat surface (`--method dubois`), in f64 for the
+/// comparison. Errors (a cone point for dubois, a tolerance the f64 dual cannot settle) name
+/// `path`.
+fn canonical<S: Scalar>(
+    path: &Path,
+    p: &surftopo_intrinsic::Portalgon<S>,
+    method: Method,
+) -> anyhow::Result<Portalgon> {
+    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
+    let tessellation = if method == Method::Dubois {
+        crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
+            delaunay_tessellation_flat(p, &FlatDelaunayOptions::default())
+        })
+        .map_err(|e| fail(&e))?
+        .delaunay
+        .tessellation
+    } else {
+        voronoi_delaunay(p, &singular_wave())
+            .map_err(|e| fail(&e))?
+            .tessellation
+    };
+    Ok(to_f64(&tessellation))
 }
 
-/// The canonical tessellation of an intrinsic triangulation by the f64 Voronoi wave.
-fn canonical_by_wave(path: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<Portalgon> {
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
-    tri.validate().map_err(|e| fail(&e))?;
+/// The canonical tessellation of an intrinsic triangulation in f64 (see [`canonical`]).
+fn canonical_of_triangulation(
+    path: &Path,
+    tri: &IntrinsicTriangulation,
+    method: Method,
+) -> anyhow::Result<Portalgon> {
+    tri.validate()
+        .map_err(|e| invalid(format!("{}: {e}", shown(path))))?;
     let (p, _) = tri.to_portalgon();
-    let v = voronoi_delaunay(&p, &singular_wave()).map_err(|e| fail(&e))?;
-    Ok(v.tessellation)
+    canonical(path, &p, method)
 }
 
 /// Whether two canonical tessellations correspond.
@@ -79,33 +107,80 @@ fn correspond(ta: &Portalgon, tb: &Portalgon) -> anyhow::Result<surftopo_intrins
     .map_err(|(surface, e)| invalid(format!("surface {surface}: {e}")))
 }
 
-/// The verdict of `--method voronoi`. In exact mode the tessellations are exact and the
-/// comparison decides. In f64 a correspondence proves isometry up to the tolerance, but its
-/// absence, or a surface the f64 dual refuses, proves nothing: the flip route's three-way
-/// decision ([`decide_isometry`]) settles it, on the triangulations already read.
-fn decide_by_wave(a: &Path, b: &Path, weld: bool, exact: bool) -> anyhow::Result<IsometryDecision> {
-    let isometric = |outcome: surftopo_intrinsic::Outcome| {
-        IsometryDecision::Isometric(format!("Voronoi-wave tessellations correspond: {outcome}"))
+/// The verdict of `--method voronoi` and `--method dubois`. In exact mode the tessellations are
+/// exact and the comparison decides. In f64 a correspondence proves isometry up to the
+/// tolerance, but its absence, or a surface the f64 dual refuses, proves nothing: the flip
+/// route's three-way decision ([`decide_isometry`]) settles it, on the triangulations already
+/// read. Dubois refuses cone points (exit 2) when asked for by name.
+fn decide_by_tessellations(
+    a: &Path,
+    b: &Path,
+    weld: bool,
+    method: Method,
+    exact: bool,
+) -> anyhow::Result<IsometryDecision> {
+    let what = |method: Method| {
+        if method == Method::Dubois {
+            "Theorem 1 (Dubois) tessellations"
+        } else {
+            "Voronoi-wave tessellations"
+        }
+    };
+    let isometric = |method: Method, outcome: surftopo_intrinsic::Outcome| {
+        IsometryDecision::Isometric(format!("{} correspond: {outcome}", what(method)))
     };
     if exact {
-        let outcome = correspond(&canonical_by_exact_wave(a)?, &canonical_by_exact_wave(b)?)?;
+        let (pa, pb) = (load_exact(a)?, load_exact(b)?);
+        let method = match method {
+            Method::Auto
+                if choose_method(&pa) == Choice::Dubois && choose_method(&pb) == Choice::Dubois =>
+            {
+                Method::Dubois
+            }
+            Method::Auto => Method::Voronoi,
+            m => m,
+        };
+        let outcome = correspond(&canonical(a, &pa, method)?, &canonical(b, &pb, method)?)?;
         return Ok(if outcome.is_isometric() {
-            isometric(outcome)
+            isometric(method, outcome)
         } else {
-            IsometryDecision::NotIsometric(format!(
-                "exact Voronoi-wave tessellations differ: {outcome}"
-            ))
+            IsometryDecision::NotIsometric(format!("exact {} differ: {outcome}", what(method)))
         });
     }
     let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
-    // The f64 wave's dual may refuse a surface (a tolerance it cannot settle): the flip route
-    // then decides, as it does when no correspondence is found.
-    let waves =
-        canonical_by_wave(a, &first).and_then(|ta| Ok((ta, canonical_by_wave(b, &second)?)));
-    if let Ok((ta, tb)) = waves {
+    let method = match method {
+        Method::Auto
+            if choose_method_for_triangulation(&first) == Choice::Dubois
+                && choose_method_for_triangulation(&second) == Choice::Dubois =>
+        {
+            Method::Dubois
+        }
+        Method::Auto => return decide(a, b, &first, &second),
+        m => m,
+    };
+    if method == Method::Dubois {
+        // Asked for by name (or chosen), a cone point is refused rather than decided otherwise.
+        for (path, tri) in [(a, &first), (b, &second)] {
+            let (p, _) = tri.to_portalgon();
+            if surftopo_intrinsic::dubois::first_cone_point(
+                &p,
+                surftopo_intrinsic::DEFAULT_ANGLE_TOLERANCE,
+            )
+            .is_some()
+            {
+                return Err(invalid(format!(
+                    "{}: a cone point: --method dubois takes flat surfaces only; use --method flip or voronoi",
+                    shown(path)
+                )));
+            }
+        }
+    }
+    let tessellations = canonical_of_triangulation(a, &first, method)
+        .and_then(|ta| Ok((ta, canonical_of_triangulation(b, &second, method)?)));
+    if let Ok((ta, tb)) = tessellations {
         let outcome = correspond(&ta, &tb)?;
         if outcome.is_isometric() {
-            return Ok(isometric(outcome));
+            return Ok(isometric(method, outcome));
         }
     }
     decide(a, b, &first, &second)
@@ -129,15 +204,10 @@ fn decide(
 pub fn run(args: &Args) -> anyhow::Result<Verdict> {
     let (a, b, weld, method) = (&args.a, &args.b, args.weld.weld, &args.method);
     method.check()?;
-    if method.method == Method::Dubois {
-        return Err(crate::failure::invalid(
-            "--method dubois applies to delaunay only (isometric: use --method flip or voronoi)",
-        ));
-    }
-    let decision = if method.method == Method::Voronoi {
-        decide_by_wave(a, b, weld, method.exact)?
-    } else {
+    let decision = if method.method == Method::Flip {
         decide(a, b, &load_intrinsic(a, weld)?, &load_intrinsic(b, weld)?)?
+    } else {
+        decide_by_tessellations(a, b, weld, method.method, method.exact)?
     };
     let verdict = match decision {
         IsometryDecision::Isometric(_) => "isometric",

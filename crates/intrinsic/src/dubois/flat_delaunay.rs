@@ -78,6 +78,9 @@ pub struct FlatDelaunay<S: Scalar> {
     pub delaunay: VoronoiDelaunay<S>,
     /// Proposition 2's (ALGORITHM's) report.
     pub reduction: DuboisReport,
+    /// Corollary 1: the low-happiness triangulation ALGORITHM produced (dense ids), on which the
+    /// wave ran.
+    pub reduced: Portalgon<S>,
 }
 
 /// The first cone point of a closed portalgon, by lowest side id: `(label, class, side)`.
@@ -129,5 +132,6 @@ pub fn delaunay_tessellation_flat<S: Scalar>(
     Ok(FlatDelaunay {
         delaunay,
         reduction: r.report,
+        reduced,
     })
 }

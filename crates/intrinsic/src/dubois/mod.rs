@@ -39,8 +39,9 @@
 //! - GARDENING and the inactive regions: each biface marked inactive gets a region of its own.
 //!
 //! **Deviations** (none changes the output):
-//! - The 350 inner repetitions stop after the first repetition that changes nothing (no edit of
-//!   the portalgon, no change of the regions): everything is deterministic, so the remaining
+//! - The 350 inner repetitions stop after the first repetition that changes nothing (no splice,
+//!   marking, deletion or cut; debug builds check that the portalgon and the regions are then
+//!   unchanged): everything is deterministic, so the remaining
 //!   repetitions would change nothing either (DUBOIS.md §2.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
@@ -171,6 +172,19 @@ pub struct DuboisReport {
     pub triangles_after_reduction: usize,
     /// `"f64"` or `"exact"`.
     pub arithmetic: &'static str,
+}
+
+impl DuboisReport {
+    /// The counters of the edits of an inner repetition (splices, markings, deletions): equal
+    /// before and after a repetition that also cut nothing iff it changed nothing.
+    fn edits(&self) -> (usize, usize, usize, usize) {
+        (
+            self.tubes_replaced_thin,
+            self.tubes_replaced_thick,
+            self.bifaces_inactive,
+            self.vertices_deleted,
+        )
+    }
 }
 
 /// Section 4.4's data structure: the portalgon `R` and its partition into regions, one active.
@@ -678,14 +692,24 @@ pub fn reduce<S: Scalar>(
         r.insert_edges()?;
         let mut passes = 0;
         for _ in 0..INNER_REPETITIONS {
-            let before = (!options.faithful).then(|| (r.portalgon.clone(), r.regions.clone()));
+            #[cfg(debug_assertions)]
+            let before = (r.portalgon.clone(), r.regions.clone());
+            let edits_before = r.report.edits();
             r.gardening()?;
             r.simplify_tubes()?;
             r.gardening()?;
             r.delete_vertices()?;
-            r.insert_edges()?;
+            let cuts = r.insert_edges()?;
             passes += 1;
-            if before.is_some_and(|(p, g)| p == r.portalgon && g == r.regions) {
+            // Every edit of a repetition is counted: a splice (tubes replaced), a marking
+            // (bifaces inactive), a deletion, or a cut. SIMPLIFYTUBES' cut along J is glued back.
+            let unchanged = cuts == 0 && r.report.edits() == edits_before;
+            #[cfg(debug_assertions)]
+            assert!(
+                !unchanged || (before.0 == r.portalgon && before.1 == r.regions),
+                "an inner repetition changed the structure without counting an edit"
+            );
+            if unchanged && !options.faithful {
                 break;
             }
         }

@@ -9,7 +9,7 @@ use dashu_int::ops::{BitTest, UnsignedAbs};
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 
-use super::Scalar;
+use super::{Point, Scalar};
 
 /// An exact rational number (arbitrary-precision numerator and denominator, always reduced).
 ///
@@ -188,11 +188,96 @@ impl Scalar for Rational {
     fn lengths_match(a: &Self, b: &Self, _tolerance: f64) -> bool {
         a == b
     }
+
+    /// The sign of `(b − a) × (c − a)` on unreduced fractions: the four differences and the two
+    /// products are formed on numerators and denominators without the gcd normalisation of
+    /// [`RBig`] arithmetic, and compared by cross-multiplication (denominators are positive).
+    /// Equal denominators (dyadic charts share them often) skip their products.
+    fn orient2d(a: &Point<Self>, b: &Point<Self>, c: &Point<Self>) -> Ordering {
+        let (ux, uxd) = unreduced_difference(&b[0], &a[0]);
+        let (uy, uyd) = unreduced_difference(&b[1], &a[1]);
+        let (vx, vxd) = unreduced_difference(&c[0], &a[0]);
+        let (vy, vyd) = unreduced_difference(&c[1], &a[1]);
+        // (ux/uxd)(vy/vyd) − (uy/uyd)(vx/vxd): compare ux·vy·uyd·vxd with uy·vx·uxd·vyd.
+        let (left_sign, right_sign) = (ux.signum() * vy.signum(), uy.signum() * vx.signum());
+        if left_sign != right_sign {
+            return left_sign.cmp(&right_sign);
+        }
+        if left_sign == IBig::ZERO {
+            return Ordering::Equal;
+        }
+        let (left_den, right_den) = (uxd * vyd, uyd * vxd);
+        let (left, right) = if left_den == right_den {
+            (ux * vy, uy * vx)
+        } else {
+            (
+                ux * vy * IBig::from(right_den),
+                uy * vx * IBig::from(left_den),
+            )
+        };
+        left.cmp(&right)
+    }
+}
+
+/// `p − q` as an unreduced fraction (numerator, positive denominator).
+fn unreduced_difference(p: &Rational, q: &Rational) -> (IBig, UBig) {
+    let (pn, pd) = (p.0.numerator(), p.0.denominator());
+    let (qn, qd) = (q.0.numerator(), q.0.denominator());
+    if pd == qd {
+        (pn - qn, pd.clone())
+    } else {
+        (
+            pn * IBig::from(qd.clone()) - qn * IBig::from(pd.clone()),
+            pd * qd,
+        )
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn orientation_on_unreduced_fractions_agrees_with_the_determinant() {
+        let r = |s: &str| s.parse::<Rational>().unwrap();
+        let values = [
+            "0",
+            "1",
+            "-3/4",
+            "7/6",
+            "1000000000000000001/2",
+            "5/12",
+            "-2",
+            "1/3",
+        ];
+        let mut checked = 0;
+        for (i, a) in values.iter().enumerate() {
+            for (j, b) in values.iter().enumerate() {
+                for (k, c) in values.iter().enumerate() {
+                    let p = [r(a), r(b)];
+                    let q = [r(b), r(c)];
+                    let s = [r(c), r(values[(i + j + k) % values.len()])];
+                    let by_determinant =
+                        super::super::cross(&super::super::sub(&q, &p), &super::super::sub(&s, &p))
+                            .sign();
+                    assert_eq!(
+                        Rational::orient2d(&p, &q, &s),
+                        by_determinant,
+                        "{p:?} {q:?} {s:?}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 512);
+        // Collinear points with different denominators.
+        let (p, q, s) = (
+            [r("1/3"), r("2/3")],
+            [r("1/2"), r("1")],
+            [r("5/6"), r("5/3")],
+        );
+        assert_eq!(Rational::orient2d(&p, &q, &s), Ordering::Equal);
+    }
 
     #[test]
     fn parses_integers_decimals_and_fractions() {

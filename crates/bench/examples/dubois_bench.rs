@@ -1,0 +1,316 @@
+//! Dubois' Theorem 1 (exact: `dubois::delaunay_tessellation_flat` on rational corners) side by
+//! side with edge flipping (`f64`), and `--method auto` against flipping on the shared meshes:
+//!
+//! 1. Section 9's `T_x`, `x = 10, 10², …, 10¹⁸`: the exact pipeline's seconds (best of 3), `N`,
+//!    inner passes (total / 350·N), triangles after the reduction, wave events, the largest
+//!    constellation, and whether the tessellation is `D_x` (one 1 × 2 rectangle); flipping's
+//!    flips, seconds and whether it reached `D_x` (lengths 1, 2, √5 to 1e-9), or why it could not
+//!    run (the `f64` lengths of `T_x` no longer describe it from about `x = 10⁵`).
+//! 2. Lattice tori `⟨(1, 0), (s, 1)⟩`, `s = 10, 10³, …, 10¹⁸` (shears): the exact pipeline
+//!    (its tessellation must be the unit square).
+//! 3. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
+//!    (`method_choice::choose_method_for_triangulation`, then flipping), alternated, best of 7.
+//!
+//! ```text
+//! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
+//! ```
+//!
+//! Results under `--out-dir` (default: the workspace root): `results/dubois_bench.md`,
+//! `results/dubois_bench.jsonl` and the plot `results/dubois_bench.svg` (milliseconds against
+//! log₁₀ x). Inputs are built before the clock starts.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use serde_json::json;
+use surftopo_bench::papers::plot::{self, Axis, Plot, Series};
+use surftopo_intrinsic::dubois::{FlatDelaunay, FlatDelaunayOptions, delaunay_tessellation_flat};
+use surftopo_intrinsic::generators::flat_torus;
+use surftopo_intrinsic::geometry::Rational;
+use surftopo_intrinsic::method_choice::{Method, choose_method_for_triangulation};
+use surftopo_intrinsic::{DelaunayOptions, IntrinsicTriangulation, Portalgon, flip_to_delaunay};
+
+fn q(s: &str) -> Rational {
+    s.parse().expect("a rational")
+}
+
+/// `R²/⟨u, v⟩` as the triangles `0, u, v` and `u + v, v, u`, side i glued to side i.
+fn lattice_torus(u: [Rational; 2], v: [Rational; 2]) -> Portalgon<Rational> {
+    let uv = [u[0].clone() + v[0].clone(), u[1].clone() + v[1].clone()];
+    let mut p = Portalgon::<Rational>::empty();
+    let a = p
+        .add_polygon(&[[q("0"), q("0")], u.clone(), v.clone()])
+        .expect("a triangle");
+    let b = p.add_polygon(&[uv, v, u]).expect("a triangle");
+    for i in 0..3 {
+        p.glue(p.side(a, i), p.side(b, i), 0.0)
+            .expect("equal sides");
+    }
+    p
+}
+
+/// Best of `n` runs of `f`, in seconds, with the last result.
+fn best_of<T>(n: usize, mut f: impl FnMut() -> T) -> (T, f64) {
+    let mut best = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..n {
+        let start = Instant::now();
+        let r = f();
+        best = best.min(start.elapsed().as_secs_f64());
+        out = Some(r);
+    }
+    (out.expect("n ≥ 1"), best)
+}
+
+/// Theorem 1's exact pipeline on `⟨(1, 0), (a, b)⟩`, best of 3.
+fn exact_pipeline(a: &str, b: &str) -> (FlatDelaunay<Rational>, f64) {
+    let t = lattice_torus([q("1"), q("0")], [q(a), q(b)]);
+    let options = FlatDelaunayOptions::default();
+    best_of(3, || {
+        delaunay_tessellation_flat(&t, &options).expect("flat")
+    })
+}
+
+/// The table cells `ms | N | total / 350·N | triangles after reduction | wave events`.
+fn dubois_cells(out: &FlatDelaunay<Rational>, seconds: f64) -> String {
+    let rep = &out.reduction;
+    format!(
+        "{:.3} | {} | {} / {} | {} | {}",
+        seconds * 1e3,
+        rep.outer_iterations,
+        rep.inner_passes_total,
+        rep.inner_passes_bound,
+        rep.triangles_after_reduction,
+        out.delaunay.wave.events
+    )
+}
+
+/// Whether the exact tessellation is one quadrilateral with squared sides `a, b, a, b` and right
+/// angles (the rectangle `√a × √b`).
+fn is_rectangle(t: &FlatDelaunay<Rational>, a: &str, b: &str) -> bool {
+    let tess = &t.delaunay.tessellation;
+    let polygons: Vec<_> = tess.polygons().collect();
+    if polygons.len() != 1 || tess.polygon_sides(polygons[0]).len() != 4 {
+        return false;
+    }
+    let sides = tess.polygon_sides(polygons[0]);
+    let mut lengths: Vec<Rational> = sides.iter().map(|&s| tess.side_length2(s)).collect();
+    lengths.sort();
+    let mut expected = vec![q(a), q(a), q(b), q(b)];
+    expected.sort();
+    // Four sides of squared lengths a, a, b, b with area √(ab) are a rectangle.
+    let area = tess.polygon_area(polygons[0]);
+    lengths == expected && area.clone() * area == q(a) * q(b)
+}
+
+/// Flipping on the `f64` `T_x`: (flips, seconds, verdict).
+fn flip_t_x(x: f64) -> (Option<u64>, Option<f64>, String) {
+    let tri = match flat_torus(x, 1) {
+        Ok(t) => t,
+        Err(e) => return (None, None, format!("cannot run: {e}")),
+    };
+    let options = DelaunayOptions {
+        max_flips: Some(10_000_000),
+        ..DelaunayOptions::default()
+    };
+    let ((result, tri), seconds) = best_of(if x <= 1e4 { 3 } else { 1 }, || {
+        let mut t = tri.clone();
+        (flip_to_delaunay(&mut t, &options), t)
+    });
+    match result {
+        Err(e) => (None, Some(seconds), format!("error: {e}")),
+        Ok(report) => {
+            let expected = [1.0, 2.0, 5f64.sqrt()];
+            let error = tri
+                .mesh()
+                .faces()
+                .map(|f| {
+                    let mut s = tri.face_sides(f);
+                    s.sort_by(f64::total_cmp);
+                    (0..3)
+                        .map(|i| (s[i] - expected[i]).abs())
+                        .fold(0.0, f64::max)
+                })
+                .fold(0.0, f64::max);
+            let verdict = if error <= 1e-9 {
+                "D_x".to_string()
+            } else {
+                format!("wrong: lengths off by {error:.1e}")
+            };
+            (Some(report.flips), Some(seconds), verdict)
+        }
+    }
+}
+
+fn main() {
+    let mut out_dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--out-dir" => out_dir = PathBuf::from(args.next().expect("--out-dir DIR")),
+            other => panic!("unknown argument {other}"),
+        }
+    }
+    let command = "SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench";
+    let mut md = format!(
+        "# Dubois' Theorem 1 (exact) side by side with flipping (f64)\n\nProduced by `{command}`. \
+         Times in milliseconds, best of 3 (flipping beyond x = 10⁴: one run); inputs built before \
+         the clock starts.\n\n## T_x (Section 9)\n\n\
+         | x | Dubois ms | N | inner passes (total / 350·N) | triangles after reduction | wave events | max constellation | D_x | flips | flip ms | flipping |\n\
+         |---|---:|---:|---:|---:|---:|---:|---|---:|---:|---|\n"
+    );
+    let mut jsonl = String::new();
+    let (mut dubois_points, mut flip_points) = (Vec::new(), Vec::new());
+    for k in 1..=18 {
+        let x = format!("1{}", "0".repeat(k));
+        let (out, seconds) = exact_pipeline(&x, "2");
+        let rep = &out.reduction;
+        let d_x = is_rectangle(&out, "1", "4");
+        let (flips, flip_seconds, verdict) = flip_t_x(10f64.powi(k as i32));
+        let ms = |s: Option<f64>| s.map_or(String::new(), |s| format!("{:.3}", s * 1e3));
+        writeln!(
+            md,
+            "| 1e{k} | {} | {} | {} | {} | {} | {verdict} |",
+            dubois_cells(&out, seconds),
+            out.delaunay.wave.max_constellation(),
+            if d_x { "yes" } else { "NO" },
+            flips.map_or(String::new(), |f| f.to_string()),
+            ms(flip_seconds),
+        )
+        .expect("write to a string");
+        dubois_points.push((k as f64, seconds * 1e3));
+        if let (Some(s), true) = (flip_seconds, verdict == "D_x") {
+            flip_points.push((k as f64, s * 1e3));
+        }
+        let line = json!({
+            "kind": "t_x", "x": x, "seconds": seconds, "outer_iterations": rep.outer_iterations,
+            "inner_passes": rep.inner_passes, "inner_passes_total": rep.inner_passes_total,
+            "inner_passes_bound": rep.inner_passes_bound,
+            "tubes_replaced": {"thin": rep.tubes_replaced_thin, "thick": rep.tubes_replaced_thick},
+            "peak_active_vertices": rep.peak_active_vertices,
+            "triangles_after_reduction": rep.triangles_after_reduction,
+            "wave_events": out.delaunay.wave.events,
+            "max_constellation": out.delaunay.wave.max_constellation(),
+            "d_x": d_x, "flips": flips, "flip_seconds": flip_seconds, "flipping": verdict,
+            "arithmetic": rep.arithmetic,
+        });
+        writeln!(jsonl, "{line}").expect("write to a string");
+        eprintln!("T_1e{k}: {:.3} ms", seconds * 1e3);
+    }
+
+    md.push_str(
+        "\n## Lattice tori ⟨(1, 0), (s, 1)⟩ (shear s)\n\n\
+         | s | Dubois ms | N | inner passes (total / 350·N) | triangles after reduction | wave events | unit square |\n\
+         |---|---:|---:|---:|---:|---:|---|\n",
+    );
+    for k in [1, 3, 6, 9, 12, 18] {
+        let s = format!("1{}", "0".repeat(k));
+        let (out, seconds) = exact_pipeline(&s, "1");
+        let rep = &out.reduction;
+        let square = is_rectangle(&out, "1", "1");
+        writeln!(
+            md,
+            "| 1e{k} | {} | {} |",
+            dubois_cells(&out, seconds),
+            if square { "yes" } else { "NO" },
+        )
+        .expect("write to a string");
+        let line = json!({
+            "kind": "shear", "s": s, "seconds": seconds,
+            "outer_iterations": rep.outer_iterations, "inner_passes_total": rep.inner_passes_total,
+            "triangles_after_reduction": rep.triangles_after_reduction, "unit_square": square,
+        });
+        writeln!(jsonl, "{line}").expect("write to a string");
+    }
+
+    let meshes: Vec<_> = surftopo_testkit::shared_meshes()
+        .into_iter()
+        .filter(|m| (90_000..=110_000).contains(&m.faces))
+        .collect();
+    if meshes.is_empty() {
+        eprintln!("no shared meshes (set SURFTOPO_MESHES): the auto-vs-flip table is skipped");
+    } else {
+        md.push_str(
+            "\n## `auto` against `flip` on the ~100k-face shared meshes\n\n\
+             `auto` = `choose_method_for_triangulation` (one pass over the faces) then flipping \
+             when it says flip; runs alternated (flip, auto, flip, auto, …), best of 7. `choice / flip` \
+             is `auto`'s own cost (the choice alone, best of 7) against flipping; `auto / flip` \
+             compares the two whole runs (noisy on a shared machine).\n\n\
+             | mesh | F | auto chose | choice ms | flip ms | auto ms | choice / flip | auto / flip |\n|---|---:|---|---:|---:|---:|---:|---:|\n",
+        );
+        let flip_options = DelaunayOptions::default();
+        for m in &meshes {
+            let s = surftopo_testkit::load(m);
+            let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
+            let (mut flip_best, mut auto_best) = (f64::INFINITY, f64::INFINITY);
+            let mut chosen = Method::Flip;
+            for _ in 0..7 {
+                let mut t = tri.clone();
+                let start = Instant::now();
+                flip_to_delaunay(&mut t, &flip_options).expect("flips");
+                flip_best = flip_best.min(start.elapsed().as_secs_f64());
+                let mut t = tri.clone();
+                let start = Instant::now();
+                chosen = choose_method_for_triangulation(&t);
+                if chosen == Method::Flip {
+                    flip_to_delaunay(&mut t, &flip_options).expect("flips");
+                }
+                auto_best = auto_best.min(start.elapsed().as_secs_f64());
+            }
+            let (_, choice_seconds) = best_of(7, || choose_method_for_triangulation(&tri));
+            writeln!(
+                md,
+                "| {} | {} | {chosen:?} | {:.2} | {:.1} | {:.1} | {:.3} | {:.3} |",
+                m.file,
+                m.faces,
+                choice_seconds * 1e3,
+                flip_best * 1e3,
+                auto_best * 1e3,
+                choice_seconds / flip_best,
+                auto_best / flip_best
+            )
+            .expect("write to a string");
+            let line = json!({
+                "kind": "auto_vs_flip", "mesh": m.file, "faces": m.faces,
+                "chosen": format!("{chosen:?}"), "choice_seconds": choice_seconds, "flip_seconds": flip_best,
+                "auto_seconds": auto_best, "ratio": auto_best / flip_best,
+            });
+            writeln!(jsonl, "{line}").expect("write to a string");
+            eprintln!("{}: auto / flip = {:.3}", m.file, auto_best / flip_best);
+        }
+    }
+
+    let results = out_dir.join("results");
+    std::fs::create_dir_all(&results).expect("results directory");
+    let drawn = plot::write(
+        &results.join("dubois_bench.svg"),
+        &Plot {
+            title: "T_x: exact Theorem 1 (Dubois) and f64 flipping (while it gives D_x)",
+            x_label: "log10 x",
+            y_label: "milliseconds",
+            x_axis: Axis::Linear,
+            y_axis: Axis::Log,
+            scatter: false,
+        },
+        &[
+            Series {
+                name: "Dubois, exact".into(),
+                points: dubois_points,
+            },
+            Series {
+                name: "flipping, f64".into(),
+                points: flip_points,
+            },
+        ],
+    )
+    .expect("write dubois_bench.svg");
+    if drawn {
+        md.push_str(
+            "\nPlot: [dubois_bench.svg](dubois_bench.svg) (milliseconds against log₁₀ x).\n",
+        );
+    }
+    print!("{md}");
+    std::fs::write(results.join("dubois_bench.md"), md).expect("write dubois_bench.md");
+    std::fs::write(results.join("dubois_bench.jsonl"), jsonl).expect("write dubois_bench.jsonl");
+}

@@ -1,0 +1,118 @@
+//! The automatic choice of the Delaunay method (`--method auto`): flipping where it is safe and
+//! fast, Dubois' Theorem 1 where flipping would take too many flips or lose precision.
+//!
+//! **The rule** ([`choose_method`]), read off one O(n) pass over the triangles:
+//! - Let `a` be the largest triangle aspect ratio `ℓ²/(2A)` (longest side over the height on it;
+//!   `A` the area). Flipping a needle of aspect `a` takes about `√(2a)` flips (Section 9's `T_x`:
+//!   aspect `(x² + 4)/2`, `x − 1` flips) and, in double precision, loses about `log₁₀ a` digits.
+//!   `results/papers/intrinsic.md` measures the flip route on `T_x`: lengths right to 2e-9 up to
+//!   `x = 10³` (aspect 5·10⁵), wrong from `x = 3·10³` (aspect 4.5·10⁶). [`AUTO_ASPECT_LIMIT`]
+//!   = 10⁵ leaves a margin of 45 below the first failure.
+//! - Aspect at most the limit: [`Method::Flip`] (on the shared meshes flipping is the fastest
+//!   method, and this pass is all `auto` adds to it).
+//! - Above the limit, no cone point: [`Method::Dubois`] (Theorem 1: time polylogarithmic in the
+//!   aspect ratio, exact in exact mode).
+//! - Above the limit with a cone point: [`Method::Dubois`] when [`DUBOIS_TAKES_CONE_POINTS`]
+//!   (Section 8's caps are built), otherwise [`Method::Flip`] — the wave alone on a raw needle
+//!   does as much work as flipping (its constellations grow like the flip count), so it is no
+//!   better a fallback.
+//!
+//! Decision where the issue is silent: the rule looks at the input only (no flip budget that
+//! restarts another method half-way), so that the method, hence the output bytes, depends on
+//! the input alone.
+
+use crate::geometry::Scalar;
+use crate::portalgon::Portalgon;
+use crate::quality::DEFAULT_ANGLE_TOLERANCE;
+use crate::triangulation::IntrinsicTriangulation;
+
+/// The Delaunay methods [`choose_method`] chooses between.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Edge flipping (Bobenko–Springborn).
+    Flip,
+    /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
+    Voronoi,
+    /// Dubois' Theorem 1: the happiness reduction, then the wave.
+    Dubois,
+}
+
+/// Above this largest triangle aspect ratio `ℓ²/(2A)`, [`choose_method`] leaves flipping (see the
+/// module doc for the measurement behind it).
+pub const AUTO_ASPECT_LIMIT: f64 = 1e5;
+
+/// Whether [`crate::dubois`] takes surfaces with cone points (Section 8's caps). While it does
+/// not, [`choose_method`] keeps flipping for them.
+pub const DUBOIS_TAKES_CONE_POINTS: bool = false;
+
+/// The largest triangle aspect ratio `ℓ²/(2A)` of the polygons (longest side `ℓ`, area `A`; for
+/// a polygon that is not a triangle the same formula), as a double; infinite for a polygon of
+/// zero area. O(n).
+pub fn largest_aspect_ratio<S: Scalar>(p: &Portalgon<S>) -> f64 {
+    p.polygons()
+        .map(|q| {
+            let longest2 = p
+                .polygon_sides(q)
+                .iter()
+                .map(|&s| p.side_length2(s).to_f64())
+                .fold(0.0, f64::max);
+            let area = p.polygon_area(q).to_f64();
+            if area > 0.0 {
+                longest2 / (2.0 * area)
+            } else {
+                f64::INFINITY
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The rule of the module doc on its two inputs: whether some triangle's aspect ratio exceeds
+/// [`AUTO_ASPECT_LIMIT`], and whether the surface has no cone point (asked only for a needle).
+pub fn method_for(needle: bool, flat: impl FnOnce() -> bool) -> Method {
+    if !needle {
+        return Method::Flip;
+    }
+    if DUBOIS_TAKES_CONE_POINTS || flat() {
+        Method::Dubois
+    } else {
+        Method::Flip
+    }
+}
+
+/// `--method auto` on a portalgon (see the module doc): [`method_for`] on its
+/// [`largest_aspect_ratio`] and whether it has a cone point (decided with the default angle
+/// tolerance in `f64`, exactly in exact mode). O(n).
+pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
+    method_for(largest_aspect_ratio(p) > AUTO_ASPECT_LIMIT, || {
+        crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none()
+    })
+}
+
+/// Whether the triangle of sides `a, b, c` has aspect ratio `ℓ²/(2A)` above
+/// [`AUTO_ASPECT_LIMIT`] (a degenerate one counts): `4ℓ⁴ > K²·16A²` with Heron's
+/// `16A² = (a+b+c)(−a+b+c)(a−b+c)(a+b−c)`, no square root.
+fn is_needle(a: f64, b: f64, c: f64) -> bool {
+    let longest = a.max(b).max(c);
+    let sixteen_area2 = (a + b + c) * (-a + b + c) * (a - b + c) * (a + b - c);
+    let l4 = longest * longest * longest * longest;
+    // NaN (overflowing lengths) counts as a needle, like a degenerate triangle.
+    (4.0 * l4)
+        .partial_cmp(&(AUTO_ASPECT_LIMIT * AUTO_ASPECT_LIMIT * sixteen_area2))
+        .is_none_or(|o| o == std::cmp::Ordering::Greater)
+}
+
+/// `--method auto` on an intrinsic triangulation: the needle test from its edge lengths (stopping
+/// at the first needle), and only then flatness from its angle sums (within the default angle
+/// tolerance, stopping at the first cone point). At most one pass over the faces and one over
+/// the corners.
+pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
+    let needle = tri.mesh().faces().any(|f| {
+        let [a, b, c] = tri.face_sides(f);
+        is_needle(a, b, c)
+    });
+    method_for(needle, || {
+        tri.mesh()
+            .vertices()
+            .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
+    })
+}
