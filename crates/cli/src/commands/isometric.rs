@@ -3,14 +3,14 @@
 //! precision cannot decide. The canonical tessellations come from flipping (`--method flip`) or
 //! from the Voronoi wave from the singular vertices (`--method voronoi`, exactly with `--exact`).
 
-use crate::args::WeldArg;
+use crate::args::{JsonArg, WeldArg};
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
-    IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon, compare_tessellations,
-    decide_isometry,
+    ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision, IsometryOptions,
+    Portalgon, compare_tessellations, decide_isometry,
 };
 
 /// The arguments of `isometric`.
@@ -25,13 +25,34 @@ pub struct Args {
     /// How the canonical tessellations are computed.
     #[command(flatten)]
     pub method: MethodOptions,
+    /// Lengths and polygon corners of the two canonical tessellations agree when they are
+    /// within this fraction of the longest side (0 < T < 1; the undecidable check also tries it
+    /// 100 times larger and smaller).
+    #[arg(long, value_name = "T", default_value_t = ISOMETRY_LENGTH_TOLERANCE)]
+    pub tolerance: f64,
+    /// Print `isometric` (true, false, or null when undecidable), `verdict`, `reason`, `method`
+    /// and `tolerance` as JSON instead of the verdict line and the reason on stderr.
+    #[command(flatten)]
+    pub json: JsonArg,
 }
 
-/// Exit code of `isometric` for an internal failure (1 means "not isometric" there).
-pub const INTERNAL_FAILURE: u8 = 4;
+/// What `--json` prints.
+#[derive(serde::Serialize)]
+struct Report<'a> {
+    /// true, false, or null when double precision cannot decide.
+    isometric: Option<bool>,
+    /// `isometric`, `not isometric` or `undecidable in double precision`.
+    verdict: &'static str,
+    /// Why, in words.
+    reason: &'a str,
+    /// `flip` or `voronoi`.
+    method: String,
+    /// `--tolerance`.
+    tolerance: f64,
+}
 
 /// The verdict, as an exit code: 0 isometric, 1 not isometric, 3 undecidable in double precision
-/// (2 is invalid input, [`INTERNAL_FAILURE`] an internal failure).
+/// (2 is invalid input, [`crate::failure::ISOMETRIC_INTERNAL_FAILURE`] an internal failure).
 pub struct Verdict(IsometryDecision);
 
 impl Verdict {
@@ -71,8 +92,11 @@ fn canonical_by_wave(path: &Path, tri: &IntrinsicTriangulation) -> anyhow::Resul
 }
 
 /// Whether two canonical tessellations correspond.
-fn correspond(ta: &Portalgon, tb: &Portalgon) -> anyhow::Result<surftopo_intrinsic::Outcome> {
-    let options = IsometryOptions::default();
+fn correspond(
+    ta: &Portalgon,
+    tb: &Portalgon,
+    options: &IsometryOptions,
+) -> anyhow::Result<surftopo_intrinsic::Outcome> {
     crate::progress::step("comparing Delaunay tessellations", || {
         compare_tessellations(ta, tb, options.length_tolerance, options.allow_reflection)
     })
@@ -83,17 +107,25 @@ fn correspond(ta: &Portalgon, tb: &Portalgon) -> anyhow::Result<surftopo_intrins
 /// comparison decides. In f64 a correspondence proves isometry up to the tolerance, but its
 /// absence, or a surface the f64 dual refuses, proves nothing: the flip route's three-way
 /// decision ([`decide_isometry`]) settles it, on the triangulations already read.
-fn decide_by_wave(a: &Path, b: &Path, weld: bool, exact: bool) -> anyhow::Result<IsometryDecision> {
+fn decide_by_wave(
+    a: &Path,
+    b: &Path,
+    weld: bool,
+    exact: bool,
+    options: &IsometryOptions,
+) -> anyhow::Result<IsometryDecision> {
     let isometric = |outcome: surftopo_intrinsic::Outcome| {
-        IsometryDecision::Isometric(format!("Voronoi-wave tessellations correspond: {outcome}"))
+        IsometryDecision::Isometric(format!("by the Voronoi wave, {}", outcome.reason()))
     };
     if exact {
-        let outcome = correspond(&canonical_by_exact_wave(a)?, &canonical_by_exact_wave(b)?)?;
+        let (ta, tb) = (canonical_by_exact_wave(a)?, canonical_by_exact_wave(b)?);
+        let outcome = correspond(&ta, &tb, options)?;
         return Ok(if outcome.is_isometric() {
             isometric(outcome)
         } else {
             IsometryDecision::NotIsometric(format!(
-                "exact Voronoi-wave tessellations differ: {outcome}"
+                "by the exact Voronoi wave, {}",
+                outcome.reason()
             ))
         });
     }
@@ -103,12 +135,12 @@ fn decide_by_wave(a: &Path, b: &Path, weld: bool, exact: bool) -> anyhow::Result
     let waves =
         canonical_by_wave(a, &first).and_then(|ta| Ok((ta, canonical_by_wave(b, &second)?)));
     if let Ok((ta, tb)) = waves {
-        let outcome = correspond(&ta, &tb)?;
+        let outcome = correspond(&ta, &tb, options)?;
         if outcome.is_isometric() {
             return Ok(isometric(outcome));
         }
     }
-    decide(a, b, &first, &second)
+    decide(a, b, &first, &second, options)
 }
 
 /// The flip route's three-way decision.
@@ -117,15 +149,16 @@ fn decide(
     b: &Path,
     first: &IntrinsicTriangulation,
     second: &IntrinsicTriangulation,
+    options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
     crate::progress::step("comparing Delaunay tessellations", || {
-        decide_isometry(first, second, &IsometryOptions::default())
+        decide_isometry(first, second, options)
     })
     .map_err(|e| invalid(format!("{} / {}: {e}", shown(a), shown(b))))
 }
 
 /// Runs `isometric`: prints `isometric`, `not isometric` or `undecidable in double precision` on
-/// stdout and the reason on stderr.
+/// stdout and the reason on stderr (`--json`: both as JSON on stdout).
 pub fn run(args: &Args) -> anyhow::Result<Verdict> {
     let (a, b, weld, method) = (&args.a, &args.b, args.weld.weld, &args.method);
     method.check()?;
@@ -134,17 +167,38 @@ pub fn run(args: &Args) -> anyhow::Result<Verdict> {
             "--method dubois applies to delaunay only (isometric: use --method flip or voronoi)",
         ));
     }
+    if !(args.tolerance > 0.0 && args.tolerance < 1.0) {
+        return Err(invalid(format!(
+            "--tolerance {}: a fraction of the longest side, above 0 and below 1",
+            args.tolerance
+        )));
+    }
+    let options = IsometryOptions {
+        length_tolerance: args.tolerance,
+        ..IsometryOptions::default()
+    };
     let decision = if method.method == Method::Voronoi {
-        decide_by_wave(a, b, weld, method.exact)?
+        decide_by_wave(a, b, weld, method.exact, &options)?
     } else {
-        decide(a, b, &load_intrinsic(a, weld)?, &load_intrinsic(b, weld)?)?
+        let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
+        decide(a, b, &first, &second, &options)?
     };
-    let verdict = match decision {
-        IsometryDecision::Isometric(_) => "isometric",
-        IsometryDecision::NotIsometric(_) => "not isometric",
-        IsometryDecision::Undecidable(_) => "undecidable in double precision",
+    let (isometric, verdict, reason) = match &decision {
+        IsometryDecision::Isometric(reason) => (Some(true), "isometric", reason),
+        IsometryDecision::NotIsometric(reason) => (Some(false), "not isometric", reason),
+        IsometryDecision::Undecidable(reason) => (None, "undecidable in double precision", reason),
     };
-    crate::output::emit(&format!("{verdict}\n"))?;
-    eprintln!("{decision}");
+    if args.json.json {
+        crate::output::print_json(&Report {
+            isometric,
+            verdict,
+            reason,
+            method: crate::args::value_name(&method.method),
+            tolerance: args.tolerance,
+        })?;
+    } else {
+        crate::output::emit(&format!("{verdict}\n"))?;
+        eprintln!("{decision}");
+    }
     Ok(Verdict(decision))
 }
