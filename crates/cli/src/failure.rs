@@ -6,7 +6,7 @@
 //! | 1 | internal failure (`isometric`: not isometric) |
 //! | 2 | invalid input or usage, or an output that cannot be written (missing folder, read-only or full disk, full stdout): something the user must fix |
 //! | 3 | `isometric` only: double precision cannot decide |
-//! | 4 | numerical failure: double precision could not finish (`delaunay --method voronoi` without `--exact`); `isometric`: internal failure |
+//! | 4 | numerical failure: double precision could not finish (`delaunay --method voronoi` without `--exact`); `isometric`: internal failure ([`ISOMETRIC_INTERNAL_FAILURE`]) |
 //! | 128 + N | stopped by signal N (SIGHUP 129, SIGINT 130, SIGTERM 143) after removing temporary files |
 
 use std::fmt;
@@ -59,6 +59,18 @@ pub fn unwritable(path: &Path, cause: &dyn fmt::Display) -> anyhow::Error {
 /// A path as messages show it: control characters escaped ([`surftopo_mesh::printable`]).
 pub fn shown(path: &Path) -> String {
     surftopo_mesh::printable(&path.display().to_string()).into_owned()
+}
+
+/// `isometric`'s exit code for an internal failure (its 1 means "not isometric").
+pub const ISOMETRIC_INTERNAL_FAILURE: u8 = 4;
+
+/// The exit code for an error of a command: [`exit_code`], except that `isometric` (where 1
+/// means "not isometric") reports an internal failure as [`ISOMETRIC_INTERNAL_FAILURE`].
+pub fn command_exit_code(error: &anyhow::Error, isometric: bool) -> u8 {
+    match (exit_code(error), isometric) {
+        (1, true) => ISOMETRIC_INTERNAL_FAILURE,
+        (code, _) => code,
+    }
 }
 
 /// The exit code for an error: 2 when any cause is invalid input (including every reader error),
@@ -122,5 +134,18 @@ mod tests {
         assert_eq!(exit_code(&refused), NUMERICAL_FAILURE);
         assert_eq!(exit_code(&anyhow::anyhow!("a bug")), 1);
         assert_eq!(exit_code(&invalid("bad input")), 2);
+    }
+
+    #[test]
+    fn isometric_reports_an_internal_failure_as_4_and_invalid_input_as_2() {
+        let internal = anyhow::anyhow!("a bug");
+        assert_eq!(command_exit_code(&internal, false), 1);
+        assert_eq!(
+            command_exit_code(&internal, true),
+            ISOMETRIC_INTERNAL_FAILURE
+        );
+        let bad = invalid("a.obj: line 3: not a number");
+        assert_eq!(command_exit_code(&bad, false), 2);
+        assert_eq!(command_exit_code(&bad, true), 2);
     }
 }

@@ -111,11 +111,7 @@ fn main() -> ExitCode {
         Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,
         Err(error) => {
             eprintln!("error: {}", failure::message(&error));
-            let code = failure::exit_code(&error);
-            ExitCode::from(match (isometric, code) {
-                (true, 1) => commands::isometric::INTERNAL_FAILURE,
-                _ => code,
-            })
+            ExitCode::from(failure::command_exit_code(&error, isometric))
         }
     }
 }

@@ -314,7 +314,8 @@ fn main() {
                 made,
                 flips,
                 1e3 * flip_s,
-                outcome,
+                // The verdict; the reason (a sentence) is in the JSONL row.
+                outcome.split(':').next().unwrap_or_default(),
                 1e3 * iso_s
             );
             rows.push(row);

@@ -40,6 +40,11 @@ use std::fmt;
 /// merging decisions, so the test merges up to 1e-6.
 pub const ISOMETRY_COCIRCULAR_TOLERANCE: f64 = 1e-6;
 
+/// Default [`IsometryOptions::length_tolerance`]: lengths and corners agree within this fraction
+/// of the longest side (well above the rounding of the flips and the flat-vertex removal, well
+/// below any difference a real surface shows).
+pub const ISOMETRY_LENGTH_TOLERANCE: f64 = 1e-7;
+
 /// Options of [`isometric`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IsometryOptions {
@@ -61,13 +66,15 @@ impl Default for IsometryOptions {
             delaunay: DelaunayOptions::default(),
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
             cocircular_tolerance: ISOMETRY_COCIRCULAR_TOLERANCE,
-            length_tolerance: 1e-7,
+            length_tolerance: ISOMETRY_LENGTH_TOLERANCE,
             allow_reflection: true,
         }
     }
 }
 
-/// Why two tessellations are, or are not, equal.
+/// Why two tessellations are, or are not, equal. Polygon and side ids are those of the compacted
+/// tessellations; the reasons ([`Outcome::reason`]) say in words which polygon, side or length
+/// differs.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
     /// A correspondence was found mapping side `side_a` of the first to side `side_b` of the
@@ -79,6 +86,14 @@ pub enum Outcome {
         side_b: u32,
         /// Whether the second tessellation was mirrored.
         reflected: bool,
+        /// The polygon of `side_a` and of `side_b`.
+        polygons: [u32; 2],
+        /// The number of sides of those polygons.
+        sides: usize,
+        /// The length of `side_a`.
+        length: f64,
+        /// `[polygons, sides, vertices]` of either tessellation.
+        counts: [usize; 3],
     },
     /// Different numbers of polygons, sides or vertices.
     Counts {
@@ -104,17 +119,141 @@ pub enum Outcome {
         a: f64,
         /// Length in the second.
         b: f64,
+        /// The size of the polygons of those sides.
+        sides: usize,
+        /// The absolute tolerance (the relative one times the longest side).
+        tolerance: f64,
     },
     /// Some side of the first has no side of the second with the same length and polygon size.
     NoCandidate {
         /// The side of the first.
         side_a: u32,
+        /// Its polygon.
+        polygon_a: u32,
+        /// The polygon's number of sides.
+        sides: usize,
+        /// The side's length.
+        length: f64,
     },
     /// Every candidate correspondence failed.
     NoCorrespondence {
         /// Number of candidate seeds tried (both orientations).
         candidates: usize,
+        /// Where the candidate that matched the most polygons failed.
+        closest: Mismatch,
     },
+}
+
+/// Where a candidate correspondence failed: laying polygon `polygon_a` of the first onto
+/// `polygon_b` of the second, after `polygons_matched` polygons had been laid.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mismatch {
+    /// Polygons laid onto their images before the failure.
+    pub polygons_matched: usize,
+    /// All polygons of the first.
+    pub polygons: usize,
+    /// The polygon of the first.
+    pub polygon_a: u32,
+    /// The polygon of the second it was to lie on.
+    pub polygon_b: u32,
+    /// What did not fit.
+    pub what: MismatchKind,
+    /// Whether the second tessellation was mirrored.
+    pub reflected: bool,
+}
+
+/// What did not fit in a [`Mismatch`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MismatchKind {
+    /// The polygons have different numbers of sides.
+    Sides {
+        /// Sides of the first's polygon.
+        a: usize,
+        /// Sides of the second's.
+        b: usize,
+    },
+    /// The sides laid onto each other have different lengths.
+    Length {
+        /// Length in the first.
+        a: f64,
+        /// Length in the second.
+        b: f64,
+    },
+    /// A corner, moved by the rigid motion that lays the first side onto its image, lands this
+    /// far from the second's corner.
+    Corner {
+        /// The corner's index in the first's polygon.
+        corner: usize,
+        /// The distance.
+        distance: f64,
+    },
+    /// A side would be glued to a different neighbour than the correspondence already chose.
+    Gluing,
+}
+
+/// "1st", "2nd", "3rd", "4th", ..., "11th", "12th", "13th", "21st", ...
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
+}
+
+/// "triangle", "quadrilateral", or "k-gon".
+fn polygon_name(sides: usize) -> String {
+    match sides {
+        3 => "triangle".into(),
+        4 => "quadrilateral".into(),
+        k => format!("{k}-gon"),
+    }
+}
+
+/// "P polygons, E edges, V vertices" of `[polygons, sides, vertices]` (E = sides / 2: closed).
+fn sizes(counts: [usize; 3]) -> String {
+    format!(
+        "{} polygons, {} edges, {} vertices",
+        counts[0],
+        counts[1] / 2,
+        counts[2]
+    )
+}
+
+impl fmt::Display for Mismatch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "after {} of {} polygons matched, polygon {} of the first does not lie on polygon {} \
+             of the second{}: ",
+            self.polygons_matched,
+            self.polygons,
+            self.polygon_a,
+            self.polygon_b,
+            if self.reflected { " (mirrored)" } else { "" }
+        )?;
+        match self.what {
+            MismatchKind::Sides { a, b } => write!(
+                f,
+                "one is a {}, the other a {}",
+                polygon_name(a),
+                polygon_name(b)
+            ),
+            MismatchKind::Length { a, b } => {
+                write!(f, "a side {a} long would lie on a side {b} long")
+            }
+            MismatchKind::Corner { corner, distance } => write!(
+                f,
+                "its corner {corner} lands {distance:e} away from the other's corner"
+            ),
+            MismatchKind::Gluing => write!(
+                f,
+                "a side is glued to a different neighbour than the correspondence already chose"
+            ),
+        }
+    }
 }
 
 impl Outcome {
@@ -122,45 +261,84 @@ impl Outcome {
     pub fn is_isometric(&self) -> bool {
         matches!(self, Outcome::Isometric { .. })
     }
+
+    /// The reason in words (without the verdict): which counts, polygon, side or length
+    /// differs, or which polygons a correspondence lays onto each other.
+    pub fn reason(&self) -> String {
+        match self {
+            Outcome::Isometric {
+                reflected,
+                polygons,
+                sides,
+                length,
+                counts,
+                ..
+            } => format!(
+                "the canonical Delaunay tessellations ({}) correspond: an isometry{} lays polygon \
+                 {} of the first, a {}, onto polygon {} of the second, its side {length} long on \
+                 theirs, and every other polygon onto one of the second",
+                sizes(*counts),
+                if *reflected {
+                    " reversing orientation"
+                } else {
+                    ""
+                },
+                polygons[0],
+                polygon_name(*sides),
+                polygons[1],
+            ),
+            Outcome::Counts { a, b } => format!(
+                "the canonical Delaunay tessellations differ in size: {} against {}",
+                sizes(*a),
+                sizes(*b)
+            ),
+            Outcome::PolygonSizes { sides, a, b } => format!(
+                "the canonical Delaunay tessellations have {a} and {b} {}s",
+                polygon_name(*sides)
+            ),
+            Outcome::Lengths {
+                rank,
+                a,
+                b,
+                sides,
+                tolerance,
+            } => format!(
+                "the edge lengths differ: the {} shortest side of a {} is {a} long in the \
+                 first and {b} in the second (more than the tolerance {tolerance:e} apart)",
+                ordinal(rank + 1),
+                polygon_name(*sides)
+            ),
+            Outcome::NoCandidate {
+                side_a,
+                polygon_a,
+                sides,
+                length,
+            } => format!(
+                "side {side_a} of the first (in polygon {polygon_a}, a {}) is {length} long; no \
+                 {} of the second has a side of that length",
+                polygon_name(*sides),
+                polygon_name(*sides)
+            ),
+            Outcome::NoCorrespondence {
+                candidates,
+                closest,
+            } => format!(
+                "the counts, polygon sizes and edge lengths agree, but none of the {candidates} \
+                 ways of laying one polygon onto another extends to the whole surface; the \
+                 closest: {closest}"
+            ),
+        }
+    }
 }
 
 impl fmt::Display for Outcome {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Outcome::Isometric {
-                side_a,
-                side_b,
-                reflected,
-            } => write!(
-                f,
-                "isometric: side {side_a} maps to side {side_b}{}",
-                if *reflected {
-                    " (orientation-reversing)"
-                } else {
-                    ""
-                }
-            ),
-            Outcome::Counts { a, b } => write!(
-                f,
-                "not isometric: [polygons, sides, vertices] {a:?} vs {b:?}"
-            ),
-            Outcome::PolygonSizes { sides, a, b } => {
-                write!(f, "not isometric: {a} vs {b} polygons with {sides} sides")
-            }
-            Outcome::Lengths { rank, a, b } => write!(
-                f,
-                "not isometric: side lengths differ at rank {rank} of the sides sorted by polygon \
-                 size and length ({a} vs {b})"
-            ),
-            Outcome::NoCandidate { side_a } => write!(
-                f,
-                "not isometric: side {side_a} of the first has no counterpart of the same length"
-            ),
-            Outcome::NoCorrespondence { candidates } => write!(
-                f,
-                "not isometric: none of the {candidates} candidate correspondences is consistent"
-            ),
-        }
+        let verdict = if self.is_isometric() {
+            "isometric"
+        } else {
+            "not isometric"
+        };
+        write!(f, "{verdict}: {}", self.reason())
     }
 }
 
@@ -276,6 +454,8 @@ pub fn compare_tessellations(
             rank,
             a: keyed_a[rank].1,
             b: keyed_b[rank].1,
+            sides: keyed_a[rank].0,
+            tolerance: eps,
         });
     }
     let mut tried = 0usize;
@@ -299,9 +479,16 @@ pub fn compare_tessellations(
         }
     }
     let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    let seed_sides = a.polygon_sides(a.owner(seed)).len();
     if candidates.is_empty() {
-        return Ok(Outcome::NoCandidate { side_a: seed.0 });
+        return Ok(Outcome::NoCandidate {
+            side_a: seed.0,
+            polygon_a: a.owner(seed).0,
+            sides: seed_sides,
+            length: a.side_length(seed),
+        });
     }
+    let mut closest: Option<Mismatch> = None;
     for reflected in [false, true] {
         if reflected && !allow_reflection {
             break;
@@ -323,37 +510,88 @@ pub fn compare_tessellations(
                 s_b
             };
             tried += 1;
-            if correspondence(a, target, seed, s_t, eps) {
-                return Ok(Outcome::Isometric {
-                    side_a: seed.0,
-                    side_b: s_b.0,
-                    reflected,
-                });
+            match correspondence(a, target, seed, s_t, eps) {
+                Ok(()) => {
+                    return Ok(Outcome::Isometric {
+                        side_a: seed.0,
+                        side_b: s_b.0,
+                        reflected,
+                        polygons: [a.owner(seed).0, b.owner(s_b).0],
+                        sides: seed_sides,
+                        length: a.side_length(seed),
+                        counts: counts(a),
+                    });
+                }
+                Err(mut mismatch) => {
+                    mismatch.reflected = reflected;
+                    if closest
+                        .as_ref()
+                        .is_none_or(|c| mismatch.polygons_matched > c.polygons_matched)
+                    {
+                        closest = Some(mismatch);
+                    }
+                }
             }
         }
     }
-    Ok(Outcome::NoCorrespondence { candidates: tried })
+    Ok(Outcome::NoCorrespondence {
+        candidates: tried,
+        closest: closest.expect("at least one candidate was tried"),
+    })
 }
 
 /// Tries to build the side correspondence from `seed_a ↦ seed_b` by propagation through polygons
 /// and the matching; checks each polygon is congruent to its image (corners within `eps`).
-fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, eps: f64) -> bool {
+/// Returns where it failed otherwise (`reflected` is the caller's to set).
+fn correspondence(
+    a: &Portalgon,
+    b: &Portalgon,
+    seed_a: SideId,
+    seed_b: SideId,
+    eps: f64,
+) -> Result<(), Mismatch> {
     let mut phi = vec![SideId::INVALID; a.side_slots()];
     let mut inverse = vec![SideId::INVALID; b.side_slots()];
     let mut stack = vec![(seed_a, seed_b)];
     let mut polygons_done = 0usize;
+    let (mut pa, mut pb) = (a.owner(seed_a), b.owner(seed_b));
+    let fail = |pa: crate::portalgon::PolygonId,
+                pb: crate::portalgon::PolygonId,
+                done: usize,
+                what: MismatchKind| Mismatch {
+        polygons_matched: done,
+        polygons: a.polygon_count(),
+        polygon_a: pa.0,
+        polygon_b: pb.0,
+        what,
+        reflected: false,
+    };
     while let Some((sa, sb)) = stack.pop() {
         if phi[sa.idx()].is_valid() {
             if phi[sa.idx()] != sb {
-                return false;
+                return Err(fail(
+                    a.owner(sa),
+                    b.owner(sb),
+                    polygons_done,
+                    MismatchKind::Gluing,
+                ));
             }
             continue;
         }
-        let (pa, pb) = (a.owner(sa), b.owner(sb));
+        (pa, pb) = (a.owner(sa), b.owner(sb));
         let (sides_a, sides_b) = (a.polygon_sides(pa), b.polygon_sides(pb));
         let k = sides_a.len();
-        if sides_b.len() != k || (a.side_length(sa) - b.side_length(sb)).abs() > eps {
-            return false;
+        if sides_b.len() != k {
+            let what = MismatchKind::Sides {
+                a: k,
+                b: sides_b.len(),
+            };
+            return Err(fail(pa, pb, polygons_done, what));
+        }
+        let (la, lb) = (a.side_length(sa), b.side_length(sb));
+        if (la - lb).abs() > eps {
+            let what = MismatchKind::Length { a: la, b: lb };
+            return Err(fail(pa, pb, polygons_done, what));
         }
         let motion = Motion::rigid_taking(
             a.start_ref(sa),
@@ -366,11 +604,16 @@ fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, 
         for m in 0..k {
             let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);
             if phi[xa.idx()].is_valid() || inverse[xb.idx()].is_valid() {
-                return false;
+                return Err(fail(pa, pb, polygons_done, MismatchKind::Gluing));
             }
             let (p, q) = (moved(a.start(xa)), b.start(xb));
-            if (p[0] - q[0]).hypot(p[1] - q[1]) > 4.0 * eps {
-                return false;
+            let distance = (p[0] - q[0]).hypot(p[1] - q[1]);
+            if distance > 4.0 * eps {
+                let what = MismatchKind::Corner {
+                    corner: (ia + m) % k,
+                    distance,
+                };
+                return Err(fail(pa, pb, polygons_done, what));
             }
             phi[xa.idx()] = xb;
             inverse[xb.idx()] = xa;
@@ -381,17 +624,22 @@ fn correspondence(a: &Portalgon, b: &Portalgon, seed_a: SideId, seed_b: SideId, 
                 (Some(ma), Some(mb)) => {
                     if phi[ma.idx()].is_valid() {
                         if phi[ma.idx()] != mb {
-                            return false;
+                            return Err(fail(pa, pb, polygons_done, MismatchKind::Gluing));
                         }
                     } else {
                         stack.push((ma, mb));
                     }
                 }
                 (None, None) => {}
-                _ => return false,
+                _ => return Err(fail(pa, pb, polygons_done, MismatchKind::Gluing)),
             }
         }
         polygons_done += 1;
     }
-    polygons_done == a.polygon_count()
+    if polygons_done == a.polygon_count() {
+        Ok(())
+    } else {
+        // The propagation stopped short: the first is not connected the way the second is.
+        Err(fail(pa, pb, polygons_done, MismatchKind::Gluing))
+    }
 }

@@ -120,24 +120,21 @@ pub fn decide_isometry(
             Attempt::Different(_) => {}
             Attempt::Isometric(_) => {
                 return Ok(IsometryDecision::Undecidable(format!(
-                    "the tessellations differ with the default tolerances ({first}) but match \
-                     with {what}"
+                    "the tessellations differ with the default tolerances ({}) but match \
+                     with {what}",
+                    first.reason()
                 )));
             }
             Attempt::Unsettled(reason) => {
                 return Ok(IsometryDecision::Undecidable(format!(
-                    "the tessellations differ with the default tolerances ({first}); with {what}: \
-                     {reason}"
+                    "the tessellations differ with the default tolerances ({}); with {what}: \
+                     {reason}",
+                    first.reason()
                 )));
             }
         }
     }
-    Ok(IsometryDecision::NotIsometric(
-        first
-            .to_string()
-            .trim_start_matches("not isometric: ")
-            .to_string(),
-    ))
+    Ok(IsometryDecision::NotIsometric(first.reason()))
 }
 
 /// After a stuck removal or a breakdown with the default options (no finding either way): the
@@ -163,8 +160,7 @@ fn retry_unsettled(
 
 /// The verdict of a correspondence found by [`isometric`].
 fn isometric_by(outcome: &Outcome) -> IsometryDecision {
-    let text = outcome.to_string();
-    IsometryDecision::Isometric(text.trim_start_matches("isometric: ").to_string())
+    IsometryDecision::Isometric(outcome.reason())
 }
 
 /// Relative difference of the lattice invariants beyond which two flat tori are certainly not

@@ -88,8 +88,8 @@ pub use error::{
 pub use flat::{RemovalReport, remove_flat_vertices};
 pub use format::{FORMAT_NAME, FORMAT_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle};
 pub use isometry::{
-    ISOMETRY_COCIRCULAR_TOLERANCE, IsometryOptions, Outcome, canonical_tessellation,
-    compare_tessellations, isometric,
+    ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
+    MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,
 };
 pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use laplacian::{

@@ -812,6 +812,21 @@ impl<S: Scalar> Portalgon<S> {
         Ok(p)
     }
 
+    /// A copy with every polygon cut along shortcuts into triangles
+    /// ([`Self::triangulate_by_shortcuts`], INSERTEDGES of Section 4.1), dense ids, labels kept:
+    /// e.g. a Delaunay tessellation as a Delaunay triangulation.
+    ///
+    /// # Errors
+    /// As [`Self::triangulate_by_shortcuts`] (a polygon that cannot be cut is not convex).
+    pub fn triangulated(&self) -> Result<Portalgon<S>, PortalgonError> {
+        let mut t = self.clone();
+        let polygons: Vec<_> = t.polygons().collect();
+        for q in polygons {
+            t.triangulate_by_shortcuts(q)?;
+        }
+        Ok(t.compacted().0)
+    }
+
     /// INSERTEDGES (Section 4.1) on one polygon: as long as a piece is not a triangle, cut it along
     /// a shortcut. Returns the resulting triangles (the first is `p`). O(k⁴) in the worst case.
     ///

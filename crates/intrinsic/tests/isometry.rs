@@ -337,3 +337,43 @@ fn delete_vertices_then_insert_edges_on_the_portalgon() {
             .is_isometric()
     );
 }
+
+#[test]
+fn reasons_say_in_words_which_polygon_or_length_differs() {
+    let (p, t) = bumpy_sphere(2);
+    let a = tri_of(&p, &t);
+    let mut b = a.clone();
+    random_flips(&mut b, 500, 3);
+    let same = isometric(a.clone(), b, &IsometryOptions::default()).unwrap();
+    let text = same.reason();
+    assert!(same.is_isometric(), "{text}");
+    assert!(
+        text.contains("lays polygon") && text.contains("of the first, a "),
+        "{text}"
+    );
+    let mut q = p.clone();
+    q[17] = q[17].map(|c| c * (1.0 + 1e-3));
+    let moved = isometric(a, tri_of(&q, &t), &IsometryOptions::default()).unwrap();
+    let text = moved.reason();
+    assert!(!moved.is_isometric(), "{text}");
+    // Whichever invariant catches it, the reason names a length, a polygon kind or the sizes.
+    let words = match &moved {
+        Outcome::Lengths { .. } => "the edge lengths differ",
+        Outcome::NoCandidate { .. } => "no triangle of the second has a side of that length",
+        Outcome::NoCorrespondence { .. } => "does not lie on polygon",
+        Outcome::Counts { .. } => "differ in size",
+        Outcome::PolygonSizes { .. } => "the canonical Delaunay tessellations have",
+        Outcome::Isometric { .. } => unreachable!(),
+    };
+    assert!(text.contains(words), "{text}");
+    let (s, u) = (torus(8, 5), torus(8, 6));
+    let a = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
+    let b = IntrinsicTriangulation::from_positions(u.mesh, &u.positions).unwrap();
+    let text = isometric(a, b, &IsometryOptions::default())
+        .unwrap()
+        .reason();
+    assert!(
+        text.contains("differ in size: ") && text.contains(" edges, "),
+        "{text}"
+    );
+}

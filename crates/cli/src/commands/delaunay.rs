@@ -18,9 +18,9 @@ use surftopo_intrinsic::method_choice::{
 use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
-    DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, SparseMatrix,
-    TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats, lumped_mass,
-    write_matrix_market,
+    DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError,
+    SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats,
+    lumped_mass, write_matrix_market,
 };
 
 /// The arguments of `delaunay`.
@@ -206,7 +206,8 @@ fn tessellate<S: Scalar>(
     Ok((v, figures, reduced))
 }
 
-/// Reads a mesh file or a portalgon JSON file as an intrinsic triangulation, within the limits
+/// Reads a mesh file or a portalgon JSON file (a triangulation, or a tessellation whose polygons
+/// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
     let is_json = path
@@ -219,9 +220,17 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
-        return doc
-            .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
-            .map_err(|e| invalid(format!("{name}: {e}")));
+        let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
+        return match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
+            // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
+            Err(PortalgonError::NotTriangle { .. }) => {
+                let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
+                let triangles = p.triangulated().map_err(fail)?;
+                IntrinsicTriangulation::from_portalgon(&triangles, DEFAULT_LENGTH_TOLERANCE)
+                    .map_err(fail)
+            }
+            other => other.map_err(fail),
+        };
     }
     let loaded = crate::input::read_surface(path, weld)?;
     IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)

@@ -6,7 +6,7 @@
 //! `--exact`. `--method auto` (the default) takes dubois when both surfaces are flat needles
 //! (`surftopo_intrinsic::method_choice` on each), otherwise flip (the exact wave with `--exact`).
 
-use crate::args::WeldArg;
+use crate::args::{JsonArg, WeldArg};
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
@@ -17,8 +17,8 @@ use surftopo_intrinsic::method_choice::{
 };
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
-    IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon, compare_tessellations,
-    decide_isometry,
+    ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision, IsometryOptions,
+    Portalgon, compare_tessellations, decide_isometry,
 };
 
 /// The arguments of `isometric`.
@@ -33,13 +33,34 @@ pub struct Args {
     /// How the canonical tessellations are computed.
     #[command(flatten)]
     pub method: MethodOptions,
+    /// Lengths and polygon corners of the two canonical tessellations agree when they are
+    /// within this fraction of the longest side (0 < T < 1; the undecidable check also tries it
+    /// 100 times larger and smaller).
+    #[arg(long, value_name = "T", default_value_t = ISOMETRY_LENGTH_TOLERANCE)]
+    pub tolerance: f64,
+    /// Print `isometric` (true, false, or null when undecidable), `verdict`, `reason`, `method`
+    /// and `tolerance` as JSON instead of the verdict line and the reason on stderr.
+    #[command(flatten)]
+    pub json: JsonArg,
 }
 
-/// Exit code of `isometric` for an internal failure (1 means "not isometric" there).
-pub const INTERNAL_FAILURE: u8 = 4;
+/// What `--json` prints.
+#[derive(serde::Serialize)]
+struct Report<'a> {
+    /// true, false, or null when double precision cannot decide.
+    isometric: Option<bool>,
+    /// `isometric`, `not isometric` or `undecidable in double precision`.
+    verdict: &'static str,
+    /// Why, in words.
+    reason: &'a str,
+    /// The method run (`flip`, `voronoi`, `dubois`; `auto` as asked).
+    method: String,
+    /// `--tolerance`.
+    tolerance: f64,
+}
 
 /// The verdict, as an exit code: 0 isometric, 1 not isometric, 3 undecidable in double precision
-/// (2 is invalid input, [`INTERNAL_FAILURE`] an internal failure).
+/// (2 is invalid input, [`crate::failure::ISOMETRIC_INTERNAL_FAILURE`] an internal failure).
 pub struct Verdict(IsometryDecision);
 
 impl Verdict {
@@ -99,8 +120,11 @@ fn canonical_of_triangulation(
 }
 
 /// Whether two canonical tessellations correspond.
-fn correspond(ta: &Portalgon, tb: &Portalgon) -> anyhow::Result<surftopo_intrinsic::Outcome> {
-    let options = IsometryOptions::default();
+fn correspond(
+    ta: &Portalgon,
+    tb: &Portalgon,
+    options: &IsometryOptions,
+) -> anyhow::Result<surftopo_intrinsic::Outcome> {
     crate::progress::step("comparing Delaunay tessellations", || {
         compare_tessellations(ta, tb, options.length_tolerance, options.allow_reflection)
     })
@@ -118,16 +142,17 @@ fn decide_by_tessellations(
     weld: bool,
     method: Method,
     exact: bool,
+    options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
     let what = |method: Method| {
         if method == Method::Dubois {
-            "Theorem 1 (Dubois) tessellations"
+            "Theorem 1 (Dubois) tessellation"
         } else {
-            "Voronoi-wave tessellations"
+            "Voronoi wave"
         }
     };
     let isometric = |method: Method, outcome: surftopo_intrinsic::Outcome| {
-        IsometryDecision::Isometric(format!("{} correspond: {outcome}", what(method)))
+        IsometryDecision::Isometric(format!("by the {}, {}", what(method), outcome.reason()))
     };
     if exact {
         let (pa, pb) = (load_exact(a)?, load_exact(b)?);
@@ -140,11 +165,16 @@ fn decide_by_tessellations(
             Method::Auto => Method::Voronoi,
             m => m,
         };
-        let outcome = correspond(&canonical(a, &pa, method)?, &canonical(b, &pb, method)?)?;
+        let (ta, tb) = (canonical(a, &pa, method)?, canonical(b, &pb, method)?);
+        let outcome = correspond(&ta, &tb, options)?;
         return Ok(if outcome.is_isometric() {
             isometric(method, outcome)
         } else {
-            IsometryDecision::NotIsometric(format!("exact {} differ: {outcome}", what(method)))
+            IsometryDecision::NotIsometric(format!(
+                "by the exact {}, {}",
+                what(method),
+                outcome.reason()
+            ))
         });
     }
     let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
@@ -155,7 +185,7 @@ fn decide_by_tessellations(
         {
             Method::Dubois
         }
-        Method::Auto => return decide(a, b, &first, &second),
+        Method::Auto => return decide(a, b, &first, &second, options),
         m => m,
     };
     if method == Method::Dubois {
@@ -178,12 +208,12 @@ fn decide_by_tessellations(
     let tessellations = canonical_of_triangulation(a, &first, method)
         .and_then(|ta| Ok((ta, canonical_of_triangulation(b, &second, method)?)));
     if let Ok((ta, tb)) = tessellations {
-        let outcome = correspond(&ta, &tb)?;
+        let outcome = correspond(&ta, &tb, options)?;
         if outcome.is_isometric() {
             return Ok(isometric(method, outcome));
         }
     }
-    decide(a, b, &first, &second)
+    decide(a, b, &first, &second, options)
 }
 
 /// The flip route's three-way decision.
@@ -192,29 +222,51 @@ fn decide(
     b: &Path,
     first: &IntrinsicTriangulation,
     second: &IntrinsicTriangulation,
+    options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
     crate::progress::step("comparing Delaunay tessellations", || {
-        decide_isometry(first, second, &IsometryOptions::default())
+        decide_isometry(first, second, options)
     })
     .map_err(|e| invalid(format!("{} / {}: {e}", shown(a), shown(b))))
 }
 
 /// Runs `isometric`: prints `isometric`, `not isometric` or `undecidable in double precision` on
-/// stdout and the reason on stderr.
+/// stdout and the reason on stderr (`--json`: both as JSON on stdout).
 pub fn run(args: &Args) -> anyhow::Result<Verdict> {
     let (a, b, weld, method) = (&args.a, &args.b, args.weld.weld, &args.method);
     method.check()?;
+    if !(args.tolerance > 0.0 && args.tolerance < 1.0) {
+        return Err(invalid(format!(
+            "--tolerance {}: a fraction of the longest side, above 0 and below 1",
+            args.tolerance
+        )));
+    }
+    let options = IsometryOptions {
+        length_tolerance: args.tolerance,
+        ..IsometryOptions::default()
+    };
     let decision = if method.method == Method::Flip {
-        decide(a, b, &load_intrinsic(a, weld)?, &load_intrinsic(b, weld)?)?
+        let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
+        decide(a, b, &first, &second, &options)?
     } else {
-        decide_by_tessellations(a, b, weld, method.method, method.exact)?
+        decide_by_tessellations(a, b, weld, method.method, method.exact, &options)?
     };
-    let verdict = match decision {
-        IsometryDecision::Isometric(_) => "isometric",
-        IsometryDecision::NotIsometric(_) => "not isometric",
-        IsometryDecision::Undecidable(_) => "undecidable in double precision",
+    let (isometric, verdict, reason) = match &decision {
+        IsometryDecision::Isometric(reason) => (Some(true), "isometric", reason),
+        IsometryDecision::NotIsometric(reason) => (Some(false), "not isometric", reason),
+        IsometryDecision::Undecidable(reason) => (None, "undecidable in double precision", reason),
     };
-    crate::output::emit(&format!("{verdict}\n"))?;
-    eprintln!("{decision}");
+    if args.json.json {
+        crate::output::print_json(&Report {
+            isometric,
+            verdict,
+            reason,
+            method: crate::args::value_name(&method.method),
+            tolerance: args.tolerance,
+        })?;
+    } else {
+        crate::output::emit(&format!("{verdict}\n"))?;
+        eprintln!("{decision}");
+    }
     Ok(Verdict(decision))
 }

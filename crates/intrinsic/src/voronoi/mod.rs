@@ -147,12 +147,7 @@ impl<S: Scalar> VoronoiDelaunay<S> {
     /// # Errors
     /// As [`Self::triangulation`].
     pub fn triangulated(&self) -> Result<Portalgon<S>, PortalgonError> {
-        let mut t = self.tessellation.clone();
-        let polygons: Vec<_> = t.polygons().collect();
-        for q in polygons {
-            t.triangulate_by_shortcuts(q)?;
-        }
-        Ok(t.compacted().0)
+        self.tessellation.triangulated()
     }
 }
 
