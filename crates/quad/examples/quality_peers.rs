@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-use surftopo_mesh::generators::Surface;
+use surftopo_mesh::Surface;
 use surftopo_quad::quality::space_quality_report;
 use surftopo_quad::{
     QualityObjective, QualityReport, quadrangulate_by_quality, quadrangulate_with_quality,
