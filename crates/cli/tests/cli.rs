@@ -884,7 +884,7 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
 }
 
 #[test]
-fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
+fn delaunay_by_dubois_on_a_flat_torus_and_on_cone_points() {
     let dir = tempfile::tempdir().unwrap();
     let d = |name: &str| dir.path().join(name);
     // T_x for x = 10⁹ by exact corners, written here: `generate flat-torus` refuses x this large
@@ -964,25 +964,53 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
                 .code(0);
         }
     }
-    // Cone points (a tetrahedron): exit 2, naming the vertex and the other methods.
+    // Cone points (a tetrahedron): Section 8's caps; the same Laplacian as the flip route (every
+    // vertex of the tetrahedron is a cone point, so the vertex sets agree).
     surftopo()
         .args(["generate", "tetrahedron", "-o"])
         .arg(d("tet.obj"))
         .assert()
         .success();
-    let out = surftopo()
-        .arg("delaunay")
-        .arg(d("tet.obj"))
-        .arg("-o")
-        .arg(d("x.json"))
-        .args(["--method", "dubois"])
-        .assert()
-        .code(2);
-    let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
-    assert!(stderr.contains("vertex 0"), "{stderr}");
-    assert!(stderr.contains("cone point"), "{stderr}");
-    assert!(stderr.contains("--method flip"), "{stderr}");
-    assert!(!d("x.json").exists(), "no output on refusal");
+    for method in ["dubois", "flip"] {
+        surftopo()
+            .arg("delaunay")
+            .arg(d("tet.obj"))
+            .arg("-o")
+            .arg(d(&format!("{method}.json")))
+            .arg("--laplacian")
+            .arg(d(&format!("{method}.mtx")))
+            .args(["--method", method])
+            .assert()
+            .success();
+    }
+    let entries = |name: &str| -> Vec<(usize, usize, f64)> {
+        let text = std::fs::read_to_string(d(name)).unwrap();
+        let mut v: Vec<(usize, usize, f64)> = text
+            .lines()
+            .filter(|l| !l.starts_with('%'))
+            .skip(1)
+            .map(|l| {
+                let w: Vec<&str> = l.split_whitespace().collect();
+                (
+                    w[0].parse().unwrap(),
+                    w[1].parse().unwrap(),
+                    w[2].parse().unwrap(),
+                )
+            })
+            .filter(|e: &(usize, usize, f64)| e.2.abs() > 1e-12)
+            .collect();
+        v.sort_by_key(|a| (a.0, a.1));
+        v
+    };
+    let (a, b) = (entries("dubois.mtx"), entries("flip.mtx"));
+    assert_eq!(a.len(), b.len(), "{a:?} vs {b:?}");
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!((x.0, x.1), (y.0, y.1));
+        assert!(
+            (x.2 - y.2).abs() <= 1e-9 * (1.0 + y.2.abs()),
+            "{x:?} vs {y:?}"
+        );
+    }
     // isometric has no dubois method.
     surftopo()
         .arg("isometric")

@@ -256,6 +256,7 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
     let is_cap = |p: PolygonId| is_cap.get(p.idx()).copied().unwrap_or(false);
     let remaining: Vec<PolygonId> = t0.polygons().filter(|&p| !is_cap(p)).collect();
     let (remainder, to_remainder) = t0.sub_portalgon(&remaining);
+    let remainder = in_local_frames(&remainder)?;
     let l1_2 = remainder
         .sides()
         .map(|s| remainder.side_length2(s))
@@ -270,6 +271,33 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
         cone_points: cone.iter().filter(|&&c| c).count(),
         outer_iterations,
     })
+}
+
+/// A copy of a dense portalgon with every polygon translated so that its first corner is the
+/// origin (same side ids, labels and matching): the frames ALGORITHM's merges start from are then
+/// local, so that in `f64` rounding is relative to the polygons' sizes rather than to the
+/// coordinates of the input (cap-sized pieces lie far from the origin). Exact in exact mode.
+fn in_local_frames<S: Scalar>(p: &Portalgon<S>) -> Result<Portalgon<S>, CapsError> {
+    let mut out = Portalgon::empty();
+    for q in p.polygons() {
+        let c = p.corners(q);
+        let o = c[0].clone();
+        let moved: Vec<_> = c.iter().map(|x| crate::geometry::sub(x, &o)).collect();
+        let r = out.add_polygon(&moved)?;
+        let labels: Vec<u32> = p
+            .polygon_sides(q)
+            .iter()
+            .map(|&s| p.vertex_label(s).unwrap_or(u32::MAX))
+            .collect();
+        out.set_vertex_labels(r, &labels)?;
+    }
+    for s in p.sides() {
+        if let Some(t) = p.mate(s).filter(|&t| s < t) {
+            // Translations keep lengths (exactly in exact mode, to rounding in `f64`).
+            out.glue(s, t, 1e-9)?;
+        }
+    }
+    Ok(out)
 }
 
 /// Section 8's last step (Proposition 2's output `T′`): the cap triangles of `cut` added to

@@ -52,8 +52,12 @@
 //!   underestimated; in `f64` with a relative margin of 1e-9 upward.
 //!
 //! **Guarantees.** Proposition 1's bounds hold for exact input in exact mode; none is claimed in
-//! `f64` (the routines then run with the tolerances of the edits they call). Section 8's caps are
-//! not here: the input must be flat (every vertex of angle 2π).
+//! `f64` (the routines then run with the tolerances of the edits they call). [`reduce`] takes a
+//! closed flat input; [`reduce_with_boundary`] a flat input with boundary (every interior vertex
+//! of angle 2π), Section 8's truncated surface.
+//!
+//! **Section 8 and Theorem 1 with cone points** ([`caps`]): [`cut_caps`], [`proposition_2`],
+//! [`put_caps_back`], [`delaunay_tessellation_dubois`] (the CLI's `delaunay --method dubois`).
 //!
 //! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
 //! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
