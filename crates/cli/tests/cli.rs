@@ -888,7 +888,7 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
 }
 
 #[test]
-fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
+fn delaunay_by_dubois_on_a_flat_torus_and_on_cone_points() {
     let dir = tempfile::tempdir().unwrap();
     let d = |name: &str| dir.path().join(name);
     // T_x for x = 10⁹ by exact corners, written here: `generate flat-torus` refuses x this large
@@ -982,7 +982,9 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
                 .code(0);
         }
     }
-    // Cone points (a tetrahedron): exit 2, naming the vertex and the other methods.
+    // Cone points in double precision (a tetrahedron mesh): refused with exit 2, naming the
+    // vertex and the ways out, and nothing written (Section 8 runs in exact arithmetic; its
+    // exact tests are in the intrinsic crate, tests/caps.rs).
     surftopo()
         .args(["generate", "tetrahedron", "-o"])
         .arg(d("tet.obj"))
@@ -999,9 +1001,10 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
     let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
     assert!(stderr.contains("vertex 0"), "{stderr}");
     assert!(stderr.contains("cone point"), "{stderr}");
+    assert!(stderr.contains("--exact"), "{stderr}");
     assert!(stderr.contains("--method flip"), "{stderr}");
     assert!(!d("x.json").exists(), "no output on refusal");
-    // isometric --method dubois refuses cone points too.
+    // isometric --method dubois takes flat surfaces only: a cone point is refused.
     surftopo()
         .arg("isometric")
         .arg(d("tet.obj"))

@@ -1,16 +1,16 @@
 //! `surftopo delaunay`: the intrinsic Delaunay triangulation by edge flipping (`--method flip`)
 //! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), or by
-//! Dubois' Theorem 1 on flat surfaces (`--method dubois`: Section 4's reduction, then the wave from
-//! one vertex), or the method `surftopo_intrinsic::method_choice` picks (`--method auto`, the
-//! default), its tessellation, the cotan Laplacian and the lumped mass matrix.
+//! Dubois' Theorem 1 (`--method dubois`: Section 8's caps around the cone points, Section 4's
+//! reduction of the flat remainder, the caps put back, then the wave from the singular vertices —
+//! one vertex on a flat torus), or the method `surftopo_intrinsic::method_choice` picks
+//! (`--method auto`, the default), its tessellation, the cotan Laplacian and the lumped mass
+//! matrix.
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
-use surftopo_intrinsic::dubois::{
-    DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
-};
+use surftopo_intrinsic::dubois::{DuboisReport, FlatDelaunayOptions, delaunay_tessellation_dubois};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::method_choice::{
     Method as Choice, choose_method, choose_method_for_triangulation,
@@ -73,8 +73,9 @@ pub enum Method {
     Flip,
     /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
     Voronoi,
-    /// Dubois' Theorem 1 on flat closed surfaces: Section 4's reduction (Proposition 2 without
-    /// caps), then the wave from one vertex (Proposition 3). Refuses cone points.
+    /// Dubois' Theorem 1: Proposition 2 (Section 8's caps around the cone points, Section 4's
+    /// reduction of the flat remainder, the caps put back), then the wave from the singular
+    /// vertices (Proposition 3).
     Dubois,
 }
 
@@ -94,7 +95,7 @@ impl Method {
 /// `--method` and `--exact`, shared by `delaunay` and `isometric`.
 #[derive(clap::Args, Clone, Copy, Debug, Default)]
 pub struct MethodOptions {
-    /// The algorithm: auto (default), flip, voronoi, or dubois (flat surfaces only).
+    /// The algorithm: auto (default), flip, voronoi, or dubois.
     #[arg(long, value_enum, default_value_t = Method::Auto)]
     pub method: Method,
     /// Compute in exact rational arithmetic (with --method voronoi or dubois; the input must be a
@@ -158,10 +159,9 @@ struct WaveFigures {
 type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
 
 /// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
-/// on a flat surface (`--method dubois`: reduction, then the wave from one vertex), with its
-/// figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of the
-/// `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4); a cone point
-/// for `--method dubois` names the vertex and suggests the other methods.
+/// (`--method dubois`: caps, reduction, caps back, then the wave from the singular vertices), with
+/// its figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of
+/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4).
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
     method: Method,
@@ -169,16 +169,11 @@ fn tessellate<S: Scalar>(
 ) -> anyhow::Result<Tessellated<S>> {
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", input.display()));
     let (v, reduction, reduced) = if method == Method::Dubois {
-        let out =
-            crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
-                delaunay_tessellation_flat(p, &FlatDelaunayOptions::default())
-            })
-            .map_err(|e| match e {
-                FlatDelaunayError::ConePoint { .. } => {
-                    fail(&format!("{e}; use --method flip or --method voronoi"))
-                }
-                other => fail(&other),
-            })?;
+        let out = crate::progress::step(
+            "reducing (Dubois, Sections 8 and 4) and running the wave",
+            || delaunay_tessellation_dubois(p, &FlatDelaunayOptions::default()),
+        )
+        .map_err(|e| fail(&e))?;
         (out.delaunay, Some(out.reduction), Some(out.reduced))
     } else {
         let v = crate::progress::step("running the Voronoi wave", || {

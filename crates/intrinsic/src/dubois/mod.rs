@@ -53,8 +53,12 @@
 //!   underestimated; in `f64` with a relative margin of 1e-9 upward.
 //!
 //! **Guarantees.** Proposition 1's bounds hold for exact input in exact mode; none is claimed in
-//! `f64` (the routines then run with the tolerances of the edits they call). Section 8's caps are
-//! not here: the input must be flat (every vertex of angle 2π).
+//! `f64` (the routines then run with the tolerances of the edits they call). [`reduce`] takes a
+//! closed flat input; [`reduce_with_boundary`] a flat input with boundary (every interior vertex
+//! of angle 2π), Section 8's truncated surface.
+//!
+//! **Section 8 and Theorem 1 with cone points** ([`caps`]): [`cut_caps`], [`proposition_2`],
+//! [`put_caps_back`], [`delaunay_tessellation_dubois`] (the CLI's `delaunay --method dubois`).
 //!
 //! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
 //! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
@@ -62,8 +66,13 @@
 //! triangulation), reporting both; a cone point is refused with
 //! [`FlatDelaunayError::ConePoint`] naming the first one ([`first_cone_point`]).
 
+pub mod caps;
 pub mod flat_delaunay;
 
+pub use caps::{
+    CapCut, CapsError, ConeDelaunay, cut_caps, delaunay_tessellation_dubois, proposition_2,
+    put_caps_back,
+};
 pub use flat_delaunay::{
     FlatDelaunay, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
     first_cone_point,
@@ -624,10 +633,17 @@ pub fn outer_iterations<S: Scalar>(portalgon: &Portalgon<S>) -> u32 {
     }
 }
 
-/// Checks ALGORITHM's input: valid, closed, triangular, every vertex flat.
-fn check_input<S: Scalar>(t: &Portalgon<S>, tolerance: f64) -> Result<(), DuboisError> {
+/// Checks ALGORITHM's input: valid, closed unless `bounded`, triangular, every interior vertex
+/// flat.
+fn check_input<S: Scalar>(
+    t: &Portalgon<S>,
+    tolerance: f64,
+    bounded: bool,
+) -> Result<(), DuboisError> {
     t.check_invariants()?;
-    t.check_closed()?;
+    if !bounded {
+        t.check_closed()?;
+    }
     if let Some(p) = t.polygons().find(|&p| t.polygon_sides(p).len() != 3) {
         return Err(DuboisError::NotTriangular {
             polygon: p.idx(),
@@ -635,7 +651,10 @@ fn check_input<S: Scalar>(t: &Portalgon<S>, tolerance: f64) -> Result<(), Dubois
         });
     }
     let info = t.vertex_info();
-    for sides in sides_by_vertex(t, &info) {
+    for (v, sides) in sides_by_vertex(t, &info).into_iter().enumerate() {
+        if !info.interior[v] {
+            continue;
+        }
         let (flat, angle) = t.is_full_turn(&sides, tolerance);
         if !flat {
             return Err(DuboisError::NotFlat {
@@ -661,7 +680,30 @@ pub fn reduce<S: Scalar>(
     t: &Portalgon<S>,
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
-    check_input(t, options.tolerance)?;
+    check_input(t, options.tolerance, false)?;
+    reduce_checked(t, options)
+}
+
+/// ALGORITHM (Section 4.5, Proposition 1) on a flat triangular portalgon that may have boundary
+/// (Section 8's truncated surface `T₁`): as [`reduce`], with every *interior* vertex flat. The
+/// boundary sides are never split nor removed and keep their ids through every routine (the
+/// splice keeps boundary ids), so the caller can glue back what it cut off
+/// ([`caps::delaunay_tessellation_dubois`]).
+///
+/// # Errors
+/// As [`reduce`] (a boundary is allowed).
+pub fn reduce_with_boundary<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &ReduceOptions,
+) -> Result<Reduction<S>, DuboisError> {
+    check_input(t, options.tolerance, true)?;
+    reduce_checked(t, options)
+}
+
+fn reduce_checked<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &ReduceOptions,
+) -> Result<Reduction<S>, DuboisError> {
     let n = options
         .outer_iterations
         .unwrap_or_else(|| outer_iterations(t));
@@ -670,13 +712,12 @@ pub fn reduce<S: Scalar>(
     r.report.inner_passes_bound = u64::from(INNER_REPETITIONS) * u64::from(n);
     // Vertices and genus of the input, for Lemma 3's and Proposition 5's bounds (debug builds).
     let m = t.vertex_info().count();
+    // g + b of Proposition 5 (an upper bound: (2 − χ)/2 + b per component, b its boundaries).
     let genus = {
-        let chi: i64 = t
-            .components(&t.polygons().collect::<Vec<_>>())?
-            .iter()
-            .map(|c| c.euler_characteristic)
-            .sum();
-        usize::try_from((2 - chi).max(0) / 2).unwrap_or(0)
+        let comps = t.components(&t.polygons().collect::<Vec<_>>())?;
+        let chi: i64 = comps.iter().map(|c| c.euler_characteristic).sum();
+        let b: usize = comps.iter().map(|c| c.boundary_cycles.len()).sum();
+        usize::try_from((2 - chi).max(0) / 2).unwrap_or(0) + b
     };
     for _ in 0..n {
         if r.active_polygons().is_empty() && !options.faithful {

@@ -1,0 +1,489 @@
+//! Section 8 (proof of Proposition 2): caps around the cone points, ALGORITHM on the flat
+//! remainder, the caps put back; then Theorem 1 for closed surfaces with cone points
+//! (Proposition 2, then Proposition 3's wave).
+//!
+//! **The paper's steps and their functions:**
+//! - `d`, the minimum height of the triangles of `T`, and the cap points on every directed edge
+//!   leaving a cone point (interior singularity): [`cut_caps`], with the radius of DUBOIS.md §2.4
+//!   (below);
+//! - tracing each cap boundary and cutting the faces along it (`T₀`), then cutting the
+//!   remaining polygons along shortcuts (INSERTEDGES' [`Portalgon::triangulate_by_shortcuts`]):
+//!   [`cut_caps`] ([`CapCut::t0`]);
+//! - removing the cap triangles (`T₁`, flat, with one boundary cycle per cone point):
+//!   [`CapCut::remainder`];
+//! - Proposition 1 on `T₁` (ALGORITHM with `N = ⌈log₂(2 + L₁/s)⌉`, `s = d/(12r)` below):
+//!   [`super::reduce_with_boundary`] with [`CapCut::outer_iterations`];
+//! - placing the caps back (Proposition 2's output portalgon `T′`): [`put_caps_back`];
+//! - Theorem 1 = Proposition 2 then Proposition 3 ([`crate::voronoi::voronoi_delaunay`] from the
+//!   singular vertices of `T′`): [`delaunay_tessellation_dubois`]; on a flat surface (no cone
+//!   point) it is [`super::delaunay_tessellation_flat`].
+//!
+//! **Decisions and deviations:**
+//! - **\[reconstruction, DUBOIS.md §2.4\] Cap radius.** The paper's point at distance `d/6` from
+//!   the cone point is irrational in general (`d` is a height). Each edge `e` at a cone point gets
+//!   the point at distance `ρ_e = 2^{−k}|e|` from it, `k` the least integer with `ρ_e ≤ d/6`
+//!   (decided exactly on squares: `36·|e|² ≤ 4^k·d²`, `d² = min 4A²/ℓ²_max`), so
+//!   `ρ_e ∈ (d/12, d/6]` and the split parameter is the dyadic rational `2^{−k}`: exact in exact
+//!   mode. An edge between two cone points (or a loop at one) gets a point from each end, with
+//!   the same `k` (they are distinct: `ρ_e ≤ d/6 < |e|/2`). Every cap point is within `d/6` of its
+//!   cone point, as in the paper, so the paper's argument for the happiness bound is unchanged.
+//! - **`s` and `N`.** The paper's bound `ℓ(p) ≥ d/(6r)` on a cap boundary segment becomes
+//!   `ℓ(p) ≥ (d/12)·sin θ ≥ d/(12r)` (the angle `θ` at the cone point has `sin θ ≥ d/L`; for
+//!   `θ ≥ π/2` the segment is longer than either radius), so the systole bound of the first
+//!   claim is `s = d/(12r)`, `r = L/d` with `L`, `d` of the input `T`. `N` is the least integer
+//!   with `2^N ≥ 2 + L₁/s = 2 + 12·L₁·L/d²`, `L₁` the longest side of `T₁`, decided exactly on
+//!   squares in exact mode, with a relative margin of 1e-9 upward in `f64` (never
+//!   underestimated).
+//! - Cone points are decided by [`crate::voronoi::is_flat_vertex`] (exactly in exact mode, within
+//!   the angle tolerance in `f64`); a surface with none goes to
+//!   [`super::delaunay_tessellation_flat`] (no caps, `s = d/2`).
+//! - Order: edges in increasing side id (lower id of the pair), corners in increasing id of the
+//!   side leaving the cone point; the remaining polygons are cut in increasing polygon id.
+//! - The caps are kept as they were cut (triangles of `T₀` with their corners and labels) and
+//!   glued back by side id: the boundary sides of `T₁` keep their ids through ALGORITHM
+//!   (INSERTVERTICES never splits them, deletions only remove sides at interior vertices, the
+//!   splice keeps boundary ids), which [`put_caps_back`] checks (a missing or changed side is a
+//!   typed error, never a silent mismatch).
+//! - Output vertex labels: the wave numbers its sources; when every cone point of the input is
+//!   labelled (mesh input), the tessellation's corners get the input's labels back, so its
+//!   triangulation indexes the Laplacian like the flip route's. A vertex of the input that is
+//!   flat (within the tolerance in `f64`) is no vertex of Theorem 1's tessellation.
+//!
+//! **Guarantees.** Proposition 2's and Theorem 1's hold for exact input in exact mode (every
+//! step above is exact over the rationals). In `f64` a surface with cone points is refused
+//! ([`CapsError::ConePointInDoublePrecision`]): ALGORITHM's f64 routines on the remainder can
+//! create degenerate pieces on real meshes (a zero-area shortcut on `table.off`, 92 faces).
+
+use super::{
+    DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
+    first_cone_point, reduce_with_boundary,
+};
+use crate::geometry::Scalar;
+use crate::portalgon::{PolygonId, Portalgon, SideId};
+use crate::voronoi::{
+    Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, voronoi_delaunay,
+};
+
+/// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum CapsError {
+    /// Bad input (not closed, not triangular) or a failure of ALGORITHM on the remainder.
+    #[error(transparent)]
+    Reduction(#[from] DuboisError),
+    /// Proposition 3's wave or its dual failed.
+    #[error(transparent)]
+    Voronoi(#[from] VoronoiError),
+    /// A cone point in double precision: Section 8 is exact-mode only, because ALGORITHM's f64
+    /// routines on the caps' remainder can produce degenerate pieces (zero-area shortcuts on the
+    /// small polygons near the caps). Give exact corners and use exact mode, or flip.
+    #[error(
+        "vertex {vertex}: a cone point; Dubois' caps (Section 8) run in exact arithmetic only \
+         (--exact on a portalgon given by exact corners), or use --method flip or voronoi"
+    )]
+    ConePointInDoublePrecision {
+        /// The cone point's label (or class index when unlabelled).
+        vertex: u32,
+    },
+}
+
+impl From<crate::error::PortalgonError> for CapsError {
+    fn from(e: crate::error::PortalgonError) -> Self {
+        Self::Reduction(e.into())
+    }
+}
+
+impl From<crate::portalgon_edits::EditError> for CapsError {
+    fn from(e: crate::portalgon_edits::EditError) -> Self {
+        Self::Reduction(e.into())
+    }
+}
+
+/// Section 8's cut: `T₀` (the caps traced and cut, the rest cut along shortcuts), its cap
+/// triangles, and `T₁` (the flat remainder).
+#[derive(Clone, Debug)]
+pub struct CapCut<S: Scalar> {
+    /// `T₀`: the input's surface, every polygon a triangle, the caps among them.
+    pub t0: Portalgon<S>,
+    /// The cap triangles of `T₀` (corner 1 of each is not guaranteed: the cone point is the start
+    /// of [`Self::apex_sides`]`[k]`), in the order they were cut.
+    pub caps: Vec<PolygonId>,
+    /// Per cap, its side leaving the cone point.
+    pub apex_sides: Vec<SideId>,
+    /// `T₁ = T₀` minus the caps, dense ids; the cap boundaries are its boundary.
+    pub remainder: Portalgon<S>,
+    /// Side ids of `T₀` to those of `T₁` (`INVALID` for cap sides).
+    pub to_remainder: Vec<SideId>,
+    /// The number of cone points.
+    pub cone_points: usize,
+    /// `N = ⌈log₂(2 + L₁/s)⌉` with `s = d/(12r)` (module doc).
+    pub outer_iterations: u32,
+}
+
+/// The squared smallest height `d²` and squared longest side `L²` of a triangular portalgon.
+fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
+    let mut d2: Option<S> = None;
+    let mut l2 = S::zero();
+    for p in t.polygons() {
+        let longest = t
+            .polygon_sides(p)
+            .iter()
+            .map(|&s| t.side_length2(s))
+            .fold(S::zero(), |m, l| if l > m { l } else { m });
+        let a = t.polygon_area(p);
+        let h2 = S::from_i64(4) * a.clone() * a / longest.clone();
+        if d2.as_ref().is_none_or(|d| h2 < *d) {
+            d2 = Some(h2);
+        }
+        if longest > l2 {
+            l2 = longest;
+        }
+    }
+    (d2.unwrap_or_else(S::zero), l2)
+}
+
+/// The least `k ≥ 0` with `36·ℓ² ≤ 4^k·d²` (the radius `2^{−k}ℓ ≤ d/6`), capped at 4096.
+fn radius_exponent<S: Scalar>(l2: &S, d2: &S) -> u32 {
+    let lhs = S::from_i64(36) * l2.clone();
+    let mut rhs = d2.clone();
+    let mut k = 0;
+    while rhs < lhs && k < 4096 {
+        rhs = rhs * S::from_i64(4);
+        k += 1;
+    }
+    k
+}
+
+/// `2^{−k}`, exactly.
+fn dyadic<S: Scalar>(k: u32) -> S {
+    let mut x = S::one();
+    for _ in 0..k {
+        x = x.half();
+    }
+    x
+}
+
+/// The least `N ≥ 1` with `((2^N − 2)·d²)² ≥ 144·L₁²·L²` (`2^N ≥ 2 + L₁/s`, `s = d²/(12L)`); in
+/// `f64` the right side enlarged by a relative 1e-9. Capped at 4096.
+fn outer_iterations_with_caps<S: Scalar>(d2: &S, l2: &S, l1_2: &S) -> u32 {
+    let margin = if S::EXACT {
+        S::one()
+    } else {
+        S::one() + S::from_f64(1e-9).expect("finite")
+    };
+    let rhs = S::from_i64(144) * l1_2.clone() * l2.clone() * margin;
+    let mut n = 1u32;
+    let mut power = S::from_i64(2);
+    loop {
+        let lhs = (power.clone() - S::from_i64(2)) * d2.clone();
+        if lhs.clone() * lhs >= rhs || n >= 4096 {
+            return n;
+        }
+        n += 1;
+        power = power.clone() + power;
+    }
+}
+
+/// Section 8's first construction on a closed triangular portalgon `t`: a point on every
+/// directed edge leaving a cone point at the dyadic radius of the module doc, every corner at a
+/// cone point cut off along the segment joining its two points (the cap triangle), the rest of
+/// each face cut along shortcuts (`T₀`), and the caps removed (`T₁`). O(n) edits.
+///
+/// # Errors
+/// [`DuboisError::Portalgon`] for an invalid or open input, [`DuboisError::NotTriangular`].
+pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<CapCut<S>, CapsError> {
+    t.check_invariants()?;
+    t.check_closed()?;
+    if let Some(p) = t.polygons().find(|&p| t.polygon_sides(p).len() != 3) {
+        return Err(DuboisError::NotTriangular {
+            polygon: p.idx(),
+            sides: t.polygon_sides(p).len(),
+        }
+        .into());
+    }
+    let (d2, l2) = heights_and_lengths(t);
+    let (class, count) = t.vertex_classes();
+    let mut first = vec![SideId::INVALID; count];
+    for s in t.sides() {
+        let c = class[s.idx()] as usize;
+        if !first[c].is_valid() {
+            first[c] = s;
+        }
+    }
+    let cone: Vec<bool> = first
+        .iter()
+        .map(|&s| !is_flat_vertex(t, s, angle_tolerance))
+        .collect();
+    let is_cone = |s: SideId| cone[class[s.idx()] as usize];
+    let mut t0 = t.clone();
+    // The sides leaving a cone point (one per corner there), before any split.
+    let apex_sides: Vec<SideId> = t.sides().filter(|&s| is_cone(s)).collect();
+    // One point per edge end at a cone point. The side leaving the cone point keeps its id and
+    // its start through `split_side` (it keeps its first half), so `apex_sides` stay valid.
+    let edges: Vec<(SideId, SideId)> = t
+        .sides()
+        .filter_map(|s| t.mate(s).filter(|&m| s < m).map(|m| (s, m)))
+        .collect();
+    for (s, m) in edges {
+        let (at_start, at_end) = (is_cone(s), is_cone(m));
+        if !at_start && !at_end {
+            continue;
+        }
+        let k = radius_exponent(&t.side_length2(s), &d2);
+        let lambda: S = dyadic(k);
+        if at_start {
+            t0.split_side(s, &lambda)?;
+        }
+        if at_end {
+            // `m` starts at the other end; after a split at `s` it is the part of length
+            // `(1 − λ)·|e|`, so the parameter is rescaled to keep the distance `λ·|e|`.
+            let mu = if at_start {
+                lambda.clone() / (S::one() - lambda)
+            } else {
+                lambda
+            };
+            t0.split_side(m, &mu)?;
+        }
+    }
+    let mut caps = Vec::with_capacity(apex_sides.len());
+    for &x in &apex_sides {
+        let p = t0.owner(x);
+        let (i, j) = (
+            t0.side_index(t0.prev_side(x)),
+            t0.side_index(t0.next_side(x)),
+        );
+        // `p` keeps corners i..=j: the point before the cone point, the cone point, the point
+        // after it — the cap triangle.
+        t0.cut(p, i, j)?;
+        caps.push(t0.owner(x));
+    }
+    let mut is_cap = vec![false; t0.polygon_slots()];
+    for &c in &caps {
+        is_cap[c.idx()] = true;
+    }
+    let others: Vec<PolygonId> = t0.polygons().filter(|p| !is_cap[p.idx()]).collect();
+    for &p in &others {
+        if t0.polygon_sides(p).len() > 3 {
+            t0.triangulate_by_shortcuts(p)?;
+        }
+    }
+    let is_cap = |p: PolygonId| is_cap.get(p.idx()).copied().unwrap_or(false);
+    let remaining: Vec<PolygonId> = t0.polygons().filter(|&p| !is_cap(p)).collect();
+    let (remainder, to_remainder) = t0.sub_portalgon(&remaining);
+    let remainder = in_local_frames(&remainder)?;
+    let l1_2 = remainder
+        .sides()
+        .map(|s| remainder.side_length2(s))
+        .fold(S::zero(), |m, l| if l > m { l } else { m });
+    let outer_iterations = outer_iterations_with_caps(&d2, &l2, &l1_2);
+    Ok(CapCut {
+        t0,
+        caps,
+        apex_sides,
+        remainder,
+        to_remainder,
+        cone_points: cone.iter().filter(|&&c| c).count(),
+        outer_iterations,
+    })
+}
+
+/// A copy of a dense portalgon with every polygon translated so that its first corner is the
+/// origin (same side ids, labels and matching): the frames ALGORITHM's merges start from are then
+/// local, so that in `f64` rounding is relative to the polygons' sizes rather than to the
+/// coordinates of the input (cap-sized pieces lie far from the origin). Exact in exact mode.
+fn in_local_frames<S: Scalar>(p: &Portalgon<S>) -> Result<Portalgon<S>, CapsError> {
+    let mut out = Portalgon::empty();
+    for q in p.polygons() {
+        let c = p.corners(q);
+        let o = c[0].clone();
+        let moved: Vec<_> = c.iter().map(|x| crate::geometry::sub(x, &o)).collect();
+        let r = out.add_polygon(&moved)?;
+        let labels: Vec<u32> = p
+            .polygon_sides(q)
+            .iter()
+            .map(|&s| p.vertex_label(s).unwrap_or(u32::MAX))
+            .collect();
+        out.set_vertex_labels(r, &labels)?;
+    }
+    for s in p.sides() {
+        if let Some(t) = p.mate(s).filter(|&t| s < t) {
+            // Translations keep lengths (exactly in exact mode, to rounding in `f64`).
+            out.glue(s, t, 1e-9)?;
+        }
+    }
+    Ok(out)
+}
+
+/// Section 8's last step (Proposition 2's output `T′`): the cap triangles of `cut` added to
+/// `reduced` (a portalgon of the surface of [`CapCut::remainder`] whose boundary sides keep
+/// `T₁`'s ids, as ALGORITHM's output does) and glued back: to each other as in `T₀`, and to the
+/// boundary sides by id. Lengths are checked by [`Portalgon::glue`] (exactly in exact mode,
+/// within `tolerance` in `f64`).
+///
+/// # Errors
+/// [`DuboisError::Portalgon`] when a boundary side is missing, already matched or of another
+/// length.
+pub fn put_caps_back<S: Scalar>(
+    reduced: &Portalgon<S>,
+    cut: &CapCut<S>,
+    tolerance: f64,
+) -> Result<Portalgon<S>, CapsError> {
+    let t0 = &cut.t0;
+    let mut out = reduced.clone();
+    let mut new_side = vec![SideId::INVALID; t0.side_slots()];
+    for &c in &cut.caps {
+        let q = out.add_polygon(&t0.corners(c))?;
+        let labels: Vec<u32> = t0
+            .polygon_sides(c)
+            .iter()
+            .map(|&s| t0.vertex_label(s).unwrap_or(u32::MAX))
+            .collect();
+        out.set_vertex_labels(q, &labels)?;
+        for (i, &s) in t0.polygon_sides(c).iter().enumerate() {
+            new_side[s.idx()] = out.side(q, i);
+        }
+    }
+    for &c in &cut.caps {
+        for &x in t0.polygon_sides(c) {
+            let y = t0.mate(x).expect("T₀ is closed");
+            if new_side[y.idx()].is_valid() {
+                if x < y {
+                    out.glue(new_side[x.idx()], new_side[y.idx()], tolerance)?;
+                }
+            } else {
+                out.glue(new_side[x.idx()], cut.to_remainder[y.idx()], tolerance)?;
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Proposition 2 on a closed triangular portalgon: [`cut_caps`], ALGORITHM on `T₁`
+/// ([`reduce_with_boundary`] with `N` of the module doc), [`put_caps_back`]. Returns `T′`
+/// (compacted: dense ids), ALGORITHM's report and the cut.
+///
+/// # Errors
+/// As the three steps.
+pub fn proposition_2<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<(Portalgon<S>, DuboisReport, CapCut<S>), CapsError> {
+    let cut = cut_caps(t, options.angle_tolerance)?;
+    let mut reduce = options.reduce;
+    reduce.outer_iterations = reduce.outer_iterations.or(Some(cut.outer_iterations));
+    let r = reduce_with_boundary(&cut.remainder, &reduce)?;
+    let t_prime = put_caps_back(&r.portalgon, &cut, options.reduce.tolerance)?;
+    let mut report = r.report;
+    report.triangles_after_reduction = t_prime.polygon_count();
+    Ok((t_prime.compacted().0, report, cut))
+}
+
+/// Theorem 1's output on a closed surface: the tessellation (with the wave's data), ALGORITHM's
+/// report, and the caps.
+#[derive(Clone, Debug)]
+pub struct ConeDelaunay<S: Scalar> {
+    /// Proposition 3 on Proposition 2's `T′`: `.tessellation`, `.wave`, `.sources`.
+    pub delaunay: VoronoiDelaunay<S>,
+    /// ALGORITHM's report (on `T₁`; `triangles_after_reduction` counts `T′`, caps included).
+    pub reduction: DuboisReport,
+    /// Cone points, each with a cap (0 for a flat surface).
+    pub cone_points: usize,
+    /// Cap triangles cut off and put back.
+    pub cap_triangles: usize,
+    /// Corollary 1: the low-happiness triangulation the wave ran on (Proposition 2's `T′`, caps
+    /// included; ALGORITHM's output on a flat surface).
+    pub reduced: Portalgon<S>,
+}
+
+/// Theorem 1 on a closed triangular portalgon, with or without cone points: without, it is
+/// [`delaunay_tessellation_flat`]; with, [`proposition_2`] then
+/// [`crate::voronoi::voronoi_delaunay`] from the singular vertices of `T′` (its cone points are
+/// the input's). Labels: see the module doc. Exact on rational input in exact mode.
+///
+/// # Errors
+/// [`CapsError`]: bad input, ALGORITHM's or the wave's errors.
+pub fn delaunay_tessellation_dubois<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<ConeDelaunay<S>, CapsError> {
+    t.check_invariants()?;
+    t.check_closed()?;
+    if first_cone_point(t, options.angle_tolerance).is_none() {
+        let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
+            FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
+            FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
+            FlatDelaunayError::ConePoint { .. } => CapsError::Reduction(DuboisError::Invariant(
+                "a cone point appeared on a flat surface".into(),
+            )),
+        })?;
+        return Ok(ConeDelaunay {
+            delaunay: flat.delaunay,
+            reduction: flat.reduction,
+            cone_points: 0,
+            cap_triangles: 0,
+            reduced: flat.reduced,
+        });
+    }
+    if !S::EXACT {
+        let (label, class, _) =
+            first_cone_point(t, options.angle_tolerance).expect("a cone point was found above");
+        return Err(CapsError::ConePointInDoublePrecision {
+            vertex: label.unwrap_or(class),
+        });
+    }
+    let (t_prime, reduction, cut) = proposition_2(t, options)?;
+    let mut delaunay = voronoi_delaunay(
+        &t_prime,
+        &VoronoiOptions {
+            sources: Sources::Singular,
+            angle_tolerance: options.angle_tolerance,
+            wave: options.wave,
+        },
+    )?;
+    relabel_with_input_labels(&t_prime, &mut delaunay)?;
+    Ok(ConeDelaunay {
+        delaunay,
+        reduction,
+        cone_points: cut.cone_points,
+        cap_triangles: cut.caps.len(),
+        reduced: t_prime,
+    })
+}
+
+/// Gives the tessellation's corners (labelled with the index of their source) the label of their
+/// source in `t_prime`, when every source has one.
+fn relabel_with_input_labels<S: Scalar>(
+    t_prime: &Portalgon<S>,
+    delaunay: &mut VoronoiDelaunay<S>,
+) -> Result<(), CapsError> {
+    let (class, _) = t_prime.vertex_classes();
+    let mut label_of_class: Vec<Option<u32>> = vec![None; class.len()];
+    for s in t_prime.sides() {
+        let c = class[s.idx()] as usize;
+        if label_of_class[c].is_none() {
+            label_of_class[c] = t_prime.vertex_label(s);
+        }
+    }
+    let labels: Option<Vec<u32>> = delaunay
+        .sources
+        .iter()
+        .map(|&c| label_of_class[c as usize])
+        .collect();
+    let Some(labels) = labels else {
+        return Ok(());
+    };
+    let tess = &mut delaunay.tessellation;
+    let polygons: Vec<PolygonId> = tess.polygons().collect();
+    for p in polygons {
+        let new: Vec<u32> = tess
+            .polygon_sides(p)
+            .iter()
+            .map(|&s| {
+                tess.vertex_label(s)
+                    .and_then(|k| labels.get(k as usize).copied())
+                    .unwrap_or(u32::MAX)
+            })
+            .collect();
+        tess.set_vertex_labels(p, &new)?;
+    }
+    Ok(())
+}
