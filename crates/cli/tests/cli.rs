@@ -992,3 +992,49 @@ fn delaunay_by_dubois_on_a_flat_torus_and_refused_on_cone_points() {
         .assert()
         .code(2);
 }
+
+/// The `seconds` figures of `--json` are rounded to the microsecond (no `0.0012000300000000002`)
+/// and the summary lines give times with a unit (µs, ms, s), never `0.000 s`.
+#[test]
+fn times_are_short_decimals_in_json_and_carry_a_unit_in_summaries() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::generated_genus_surface(dir.path(), "g2.off", 2);
+    let output = dir.path().join("out.obj");
+    for command in ["irreducible", "quad"] {
+        let out = surftopo()
+            .arg(command)
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .arg("--json")
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stdout).unwrap();
+        let mut times = 0;
+        for line in text.lines().filter(|l| l.contains("seconds\": ")) {
+            let number = line.split("\": ").nth(1).unwrap().trim_end_matches(',');
+            let decimals = number.split('.').nth(1).map_or(0, str::len);
+            assert!(decimals <= 6 && !number.contains('e'), "{command}: {line}");
+            times += 1;
+        }
+        assert!(times >= 1, "{command}: no time in {text}");
+
+        let out = surftopo()
+            .arg(command)
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let summary = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            [" µs", " ms", " s"]
+                .iter()
+                .any(|unit| summary.contains(unit))
+                && !summary.contains("0.000 s"),
+            "{command}: {summary}"
+        );
+    }
+}

@@ -366,7 +366,7 @@ fn report(
         crate::output::print_json(&value)?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s\n",
+            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {}\n",
             crate::failure::shown(&options.output),
             stats.vertices,
             stats.edges,
@@ -375,7 +375,7 @@ fn report(
             stats.non_delaunay_edges,
             stats.loops,
             stats.multi_edges,
-            stats.seconds
+            crate::output::format_seconds(stats.seconds)
         ))?;
     }
     Ok(())

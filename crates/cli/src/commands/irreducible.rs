@@ -116,7 +116,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {:.3} s ({})\n",
+            "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
             crate::failure::shown(output),
             report.output.vertices,
             report.output.edges,
@@ -126,7 +126,7 @@ pub fn run(job: &crate::input::MeshJob, name: AlgorithmName) -> anyhow::Result<(
             report.contractions,
             report.link_tests,
             report.edges_tested_more_than_once,
-            report.seconds,
+            crate::output::format_seconds(report.seconds),
             report.algorithm
         ))?;
     }
