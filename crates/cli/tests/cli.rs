@@ -1038,3 +1038,46 @@ fn times_are_short_decimals_in_json_and_carry_a_unit_in_summaries() {
         );
     }
 }
+
+/// Every command's summary is on stdout, `generate` and `convert` included; stderr stays free
+/// for notes and progress.
+#[test]
+fn generate_and_convert_print_their_summary_on_stdout() {
+    let dir = tempfile::tempdir().unwrap();
+    let mesh = dir.path().join("t.off");
+    let out = surftopo()
+        .args(["generate", "torus", "--m", "6", "--n", "4", "-o"])
+        .arg(&mesh)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
+        "{stdout}"
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+
+    let converted = dir.path().join("t.obj");
+    let out = surftopo()
+        .arg("convert")
+        .arg(&mesh)
+        .arg(&converted)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
+        "{stdout}"
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -7,8 +7,8 @@ use std::path::Path;
 pub fn run(input: &Path, output: &Path, weld: bool) -> anyhow::Result<()> {
     let (soup, welded) = read_soup(input, weld)?;
     crate::output::write_soup(output, &soup)?;
-    eprintln!(
-        "wrote {} ({} vertices, {} faces{})",
+    crate::output::emit(&format!(
+        "wrote {} ({} vertices, {} faces{})\n",
         crate::failure::shown(output),
         soup.positions.len(),
         soup.face_count(),
@@ -17,6 +17,6 @@ pub fn run(input: &Path, output: &Path, weld: bool) -> anyhow::Result<()> {
         } else {
             String::new()
         }
-    );
+    ))?;
     Ok(())
 }

@@ -164,10 +164,10 @@ fn write_exact_flat_torus(
     let (faces, edges) = (exact.polygon_count(), exact.side_count() / 2);
     let vertices = exact.vertex_classes().1;
     let genus = (2 + edges as i64 - vertices as i64 - faces as i64) / 2;
-    eprintln!(
-        "wrote {} (intrinsic, exact corners): {vertices} vertices, {edges} edges, {faces} faces, genus {genus}",
+    crate::output::emit(&format!(
+        "wrote {} (intrinsic, exact corners): {vertices} vertices, {edges} edges, {faces} faces, genus {genus}\n",
         crate::failure::shown(output),
-    );
+    ))?;
     Ok(())
 }
 
@@ -356,13 +356,13 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
             (tri.into_parts().0, " (intrinsic)")
         }
     };
-    eprintln!(
-        "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}",
+    crate::output::emit(&format!(
+        "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}\n",
         crate::failure::shown(output),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),
         mesh.genus()
-    );
+    ))?;
     Ok(())
 }
