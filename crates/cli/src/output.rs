@@ -10,9 +10,13 @@ pub fn write_surface(path: &Path, surface: &Surface) -> anyhow::Result<()> {
     write_soup(path, &PolygonSoup::from_triangles(positions, &triangles))
 }
 
-/// Writes a polygon soup to a mesh file (format from the extension), atomically.
+/// Writes a polygon soup to a mesh file (format from the extension), atomically, under a
+/// progress spinner (a gzip-compressed mesh of millions of faces takes seconds).
 pub fn write_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
-    surftopo_io::write_path(path, soup, &WriteOptions::default()).map_err(|e| match e {
+    let written = crate::progress::step(&writing(path), || {
+        surftopo_io::write_path(path, soup, &WriteOptions::default())
+    });
+    written.map_err(|e| match e {
         // The soup is surftopo's own: an inconsistent one is an internal failure.
         surftopo_io::IoError::InvalidSoup { .. } => anyhow::Error::new(e),
         surftopo_io::IoError::Io { source, .. } => crate::failure::unwritable(path, &source),
@@ -63,7 +67,7 @@ pub fn format_seconds(seconds: f64) -> String {
     } else {
         (seconds, "s")
     };
-    // Rounded first, so that 999.7 µs reads `1000 µs` rather than a fourth digit after the point.
+    // The thresholds are those of the rounded value, so that 9.996 ms reads `10.0 ms`, not `10.00 ms`.
     let decimals = if value >= 99.95 {
         0
     } else if value >= 9.995 {
@@ -99,24 +103,31 @@ pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
     })
 }
 
-/// Writes a file atomically (temporary sibling, then rename) with `fill` writing its contents. Any
-/// failure (missing folder, read-only or full disk) is an unwritable output: exit code 2, like
-/// mesh outputs.
+/// A progress message naming the output.
+fn writing(path: &Path) -> String {
+    format!("writing {}", crate::failure::shown(path))
+}
+
+/// Writes a file atomically (temporary sibling, then rename) with `fill` writing its contents,
+/// under a progress spinner. Any failure (missing folder, read-only or full disk) is an
+/// unwritable output: exit code 2, like mesh outputs.
 pub fn write_file(
     path: &Path,
     fill: impl FnOnce(&mut std::io::BufWriter<&mut std::fs::File>) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
     use std::io::Write;
     let mut failure = None;
-    let result = surftopo_io::atomic_write(path, |mut file| {
-        let mut writer = std::io::BufWriter::new(&mut file);
-        if let Err(e) = fill(&mut writer) {
-            failure = Some(e);
-            return Err(std::io::Error::other("writing failed"));
-        }
-        writer.flush()?;
-        drop(writer);
-        Ok(file)
+    let result = crate::progress::step(&writing(path), || {
+        surftopo_io::atomic_write(path, |mut file| {
+            let mut writer = std::io::BufWriter::new(&mut file);
+            if let Err(e) = fill(&mut writer) {
+                failure = Some(e);
+                return Err(std::io::Error::other("writing failed"));
+            }
+            writer.flush()?;
+            drop(writer);
+            Ok(file)
+        })
     });
     match (failure, result) {
         (Some(e), _) => Err(crate::failure::unwritable(

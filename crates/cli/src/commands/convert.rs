@@ -5,7 +5,7 @@ use std::path::Path;
 
 /// Converts `input` to `output`, welding exactly coincident positions when asked.
 pub fn run(input: &Path, output: &Path, weld: bool) -> anyhow::Result<()> {
-    let (soup, welded) = read_soup(input, weld)?;
+    let (soup, welded) = crate::progress::step("reading", || read_soup(input, weld))?;
     crate::output::write_soup(output, &soup)?;
     crate::output::emit(&format!(
         "wrote {} ({} vertices, {} faces{})\n",

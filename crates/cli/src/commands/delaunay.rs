@@ -243,7 +243,9 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
         Ok(tri.write_json(w, TriangleStyle::Lengths)?)
     })?;
     if let Some(path) = &options.tessellation {
-        let tessellation = delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE);
+        let tessellation = crate::progress::step("merging co-circular triangles", || {
+            delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE)
+        });
         write_file(path, |w| {
             Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
         })?;
@@ -256,13 +258,13 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
 fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
-        let laplacian = cotan_laplacian(tri);
+        let laplacian = crate::progress::step("building the Laplacian", || cotan_laplacian(tri));
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
         write_file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
-        let mass = lumped_mass(tri);
+        let mass = crate::progress::step("building the mass matrix", || lumped_mass(tri));
         check_matrix(&mass, "the mass matrix", true)?;
         write_file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
     }

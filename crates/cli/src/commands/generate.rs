@@ -336,8 +336,9 @@ pub fn run(kind: &Kind, modifiers: &Modifiers) -> anyhow::Result<()> {
     let generated = crate::progress::step("generating", || generate_any(kind, modifiers.seed))?;
     let (mesh, what) = match generated {
         Generated::Surface(surface) => {
-            let surface = modify(surface, modifiers)?;
-            crate::progress::step("writing", || crate::output::write_surface(output, &surface))?;
+            let surface =
+                crate::progress::step("applying the modifiers", || modify(surface, modifiers))?;
+            crate::output::write_surface(output, &surface)?;
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
