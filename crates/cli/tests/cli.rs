@@ -1141,3 +1141,92 @@ fn delaunay_writes_the_reduced_triangulation() {
         .assert()
         .code(2);
 }
+
+/// The `seconds` figures of `--json` are rounded to the microsecond (no `0.0012000300000000002`)
+/// and the summary lines give times with a unit (µs, ms, s), never `0.000 s`.
+#[test]
+fn times_are_short_decimals_in_json_and_carry_a_unit_in_summaries() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::generated_genus_surface(dir.path(), "g2.off", 2);
+    let output = dir.path().join("out.obj");
+    for command in ["irreducible", "quad"] {
+        let out = surftopo()
+            .arg(command)
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .arg("--json")
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stdout).unwrap();
+        let mut times = 0;
+        for line in text.lines().filter(|l| l.contains("seconds\": ")) {
+            let number = line.split("\": ").nth(1).unwrap().trim_end_matches(',');
+            let decimals = number.split('.').nth(1).map_or(0, str::len);
+            assert!(decimals <= 6 && !number.contains('e'), "{command}: {line}");
+            times += 1;
+        }
+        assert!(times >= 1, "{command}: no time in {text}");
+
+        let out = surftopo()
+            .arg(command)
+            .arg(&input)
+            .arg("-o")
+            .arg(&output)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let summary = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            [" µs", " ms", " s"]
+                .iter()
+                .any(|unit| summary.contains(unit))
+                && !summary.contains("0.000 s"),
+            "{command}: {summary}"
+        );
+    }
+}
+
+/// Every command's summary is on stdout, `generate` and `convert` included; stderr stays free
+/// for notes and progress.
+#[test]
+fn generate_and_convert_print_their_summary_on_stdout() {
+    let dir = tempfile::tempdir().unwrap();
+    let mesh = dir.path().join("t.off");
+    let out = surftopo()
+        .args(["generate", "torus", "--m", "6", "--n", "4", "-o"])
+        .arg(&mesh)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
+        "{stdout}"
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+
+    let converted = dir.path().join("t.obj");
+    let out = surftopo()
+        .arg("convert")
+        .arg(&mesh)
+        .arg(&converted)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
+        "{stdout}"
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -1,7 +1,7 @@
 //! surftopo-intrinsic: portalgons and intrinsic Delaunay triangulations.
 //!
 //! Paper: L. Dubois, "Computing the Intrinsic Delaunay Triangulation of a Closed Polyhedral
-//! Surface" (2025) — Sections 1–2 (portalgons, aspect ratio), Section 9 (the flat torus T_x),
+//! Surface", 2025, arXiv:2601.03954 — Sections 1–2 (portalgons, aspect ratio), Section 9 (the flat torus T_x),
 //! Appendix A (Corollary 2, the isometry test), Appendix C (the Delaunay tessellation of Bobenko &
 //! Springborn). This crate holds the portalgon model and the classical edge-flip algorithm the
 //! paper contrasts with its own; the paper's algorithm (Sections 3–8) builds on [`Portalgon`]'s

@@ -1,7 +1,7 @@
 //! The shared real meshes (SURFTOPO_MESHES): every one up to 30k faces ends Delaunay (checked
 //! independently), keeps its area and angle sums, and gets a well-formed Laplacian and
-//! tessellation; random re-triangulations of a few are found isometric to them. Without the
-//! variable these tests print that they are skipped.
+//! tessellation; random re-triangulations of a few are found isometric to them. Built without the
+//! variable, these tests are ignored.
 
 mod common;
 
@@ -17,12 +17,14 @@ fn triangulation(mesh: &surftopo_testkit::SharedMesh) -> IntrinsicTriangulation 
     IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap()
 }
 
-#[test]
+surftopo_testkit::shared_mesh_tests!(
+    shared_meshes_end_delaunay,
+    random_retriangulations_of_shared_meshes_are_isometric
+);
+
 fn shared_meshes_end_delaunay() {
     let meshes = shared_meshes_up_to(30_000);
-    if meshes.is_empty() {
-        return;
-    }
+    assert!(!meshes.is_empty());
     for m in &meshes {
         let mut tri = triangulation(m);
         let area = common::area(&tri);
@@ -79,7 +81,6 @@ fn shared_meshes_end_delaunay() {
     }
 }
 
-#[test]
 fn random_retriangulations_of_shared_meshes_are_isometric() {
     let wanted = [
         "fandisk.obj.gz",
@@ -91,9 +92,6 @@ fn random_retriangulations_of_shared_meshes_are_isometric() {
         .into_iter()
         .filter(|m| wanted.contains(&m.file.as_str()))
         .collect();
-    if meshes.is_empty() {
-        return;
-    }
     assert_eq!(meshes.len(), wanted.len(), "missing shared meshes");
     for m in &meshes {
         let a = triangulation(m);

@@ -1,18 +1,13 @@
 //! Reads every mesh of `$SURFTOPO_MESHES/manifest.json` and checks its
-//! counts. Skipped (with a message) when the variable is not set.
-
-use std::path::PathBuf;
+//! counts. Ignored when the tests are built without the variable.
 
 use serde_json::Value;
 use surftopo_io::read_path;
 
-#[test]
+surftopo_testkit::shared_mesh_tests!(manifest_meshes_have_expected_counts);
+
 fn manifest_meshes_have_expected_counts() {
-    let Some(dir) = std::env::var_os("SURFTOPO_MESHES") else {
-        eprintln!("SURFTOPO_MESHES is not set: real-mesh tests skipped");
-        return;
-    };
-    let dir = resolve(PathBuf::from(dir));
+    let dir = surftopo_testkit::shared_meshes_dir().expect("SURFTOPO_MESHES is set");
     let manifest = std::fs::read_to_string(dir.join("manifest.json"))
         .unwrap_or_else(|e| panic!("{}/manifest.json: {e}", dir.display()));
     let manifest: Value = serde_json::from_str(&manifest).expect("manifest.json is not JSON");
@@ -44,21 +39,4 @@ fn manifest_meshes_have_expected_counts() {
         checked += 1;
     }
     eprintln!("read {checked} real meshes from {}", dir.display());
-}
-
-/// A relative path is taken from the current directory or, failing that,
-/// from the workspace root (CI gives it relative to the checkout).
-fn resolve(dir: PathBuf) -> PathBuf {
-    if dir.is_absolute() || dir.join("manifest.json").exists() {
-        return dir;
-    }
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let from_root = root.join(&dir);
-    assert!(
-        from_root.join("manifest.json").exists(),
-        "SURFTOPO_MESHES={} has no manifest.json (also tried {})",
-        dir.display(),
-        from_root.display()
-    );
-    from_root
 }

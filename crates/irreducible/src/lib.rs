@@ -1,7 +1,13 @@
 //! surftopo-irreducible: irreducible triangulations of closed orientable surfaces by edge contractions.
 //!
-//! Paper: S. Ramaswami, M. Siqueira, "A fast algorithm for computing irreducible triangulations of
-//! closed surfaces in E^d" (`irreducible-triangulations.txt`). A triangulation is *irreducible* when
+//! Paper: S. Ramaswami and M. Siqueira, "A fast algorithm for computing irreducible
+//! triangulations of closed surfaces in E^d", preprint (Rutgers University, Camden, and
+//! Universidade Federal do Rio Grande do Norte; no DOI or arXiv identifier could be verified).
+//! Schipper's algorithm: H. Schipper, "Generating triangulations of 2-manifolds", in Computational
+//! Geometry: Methods, Algorithms and Applications, LNCS 553, Springer, 1991, pp. 237–248,
+//! doi:10.1007/3-540-54891-2_18.
+//!
+//! A triangulation is *irreducible* when
 //! every edge fails the link condition (Section 2); the only irreducible triangulation of the sphere
 //! is the tetrahedron boundary T4, the torus has 21 (7 to 10 vertices), and an irreducible
 //! triangulation of genus g > 0 has at most 26g − 4 vertices (Theorem 4).

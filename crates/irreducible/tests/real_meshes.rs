@@ -7,12 +7,10 @@ mod support;
 use support::{all_algorithms, run_and_verify};
 use surftopo_irreducible::Algorithm;
 
-#[test]
+surftopo_testkit::shared_mesh_tests!(every_shared_mesh);
+
 fn every_shared_mesh() {
     let meshes = surftopo_testkit::shared_meshes();
-    if meshes.is_empty() {
-        return;
-    }
     assert_eq!(meshes.len(), 47, "expected the 47 shared meshes");
     for (i, shared) in meshes.iter().enumerate() {
         let mesh = surftopo_testkit::load(shared).mesh;

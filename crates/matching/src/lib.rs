@@ -1,7 +1,16 @@
 //! Perfect matchings of the dual graphs of closed triangle meshes: connected, bridgeless, 3-regular
-//! multigraphs, paired by the algorithms of the quadrangulation paper
-//! (`tri-quad-conversion-long.txt`, Section 3), each result checked by an independent verifier
-//! ([`verify_perfect_pairing`], the only way to a [`PerfectPairing`]).
+//! multigraphs, paired by the algorithms of the quadrangulation paper (Section 3 of its long
+//! version), each result checked by an independent verifier ([`verify_perfect_pairing`], the only
+//! way to a [`PerfectPairing`]).
+//!
+//! Paper: T. Lemos, S. Ramaswami and M. Siqueira, "An experimental comparison of algorithms
+//! for converting triangulations of closed surfaces into quadrangulations", 24th International
+//! Meshing Roundtable (IMR24), research note, Elsevier, 2015, and its long version (2015,
+//! <http://clam.rutgers.edu/~rsuneeta/hpc/research/imr15_long.pdf>, as the note cites it; no
+//! DOI or arXiv identifier could be verified for either).
+//! Diks–Stanczyk: K. Diks and P. Stanczyk, "Perfect matching for biconnected cubic graphs in
+//! O(n log² n) time", SOFSEM 2010, LNCS 5901, Springer, pp. 321–333,
+//! doi:10.1007/978-3-642-11266-9_27.
 //!
 //! * Graphs: the [`DualGraph`] interface every pairing algorithm is generic over, implemented by
 //!   the implicit dual of a [`surftopo_mesh::SurfaceMesh`], by [`CubicGraph`] (a validated edge

@@ -1,8 +1,10 @@
 //! surftopo-quad: quadrangulations of closed triangle meshes by triangle pairing.
 //!
-//! Paper: T. Lemos, S. Ramaswami, M. Siqueira, "An experimental comparison of algorithms for
-//! converting triangulations of closed surfaces into quadrangulations" (long version
-//! `tri-quad-conversion-long.txt`, IMR 2015 note `tri-quad-conversion-imr.txt`).
+//! Paper: T. Lemos, S. Ramaswami and M. Siqueira, "An experimental comparison of algorithms
+//! for converting triangulations of closed surfaces into quadrangulations", 24th International
+//! Meshing Roundtable (IMR24), research note, Elsevier, 2015, and its long version (2015,
+//! <http://clam.rutgers.edu/~rsuneeta/hpc/research/imr15_long.pdf>, as the note cites it; no
+//! DOI or arXiv identifier could be verified for either).
 //!
 //! - [`quadrangulate`] / [`quadrangulate_with`]: the pipeline for every algorithm ([`QuadAlgorithm`]:
 //!   SG, PS, LRS, DS): initial pairing, augmenting paths until the pairing is perfect, one quad per

@@ -385,12 +385,15 @@ fn shared_meshes(keep: impl Fn(usize) -> bool) {
     }
 }
 
-#[test]
+surftopo_testkit::shared_mesh_tests!(
+    every_shared_mesh_up_to_60k_faces,
+    every_shared_mesh_above_60k_faces
+);
+
 fn every_shared_mesh_up_to_60k_faces() {
     shared_meshes(|faces| faces <= 60_000);
 }
 
-#[test]
 fn every_shared_mesh_above_60k_faces() {
     shared_meshes(|faces| faces > 60_000);
 }

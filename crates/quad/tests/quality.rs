@@ -242,8 +242,9 @@ fn exact_and_fast_on_generated_families() {
     }
 }
 
+surftopo_testkit::shared_mesh_tests!(exact_and_fast_on_a_sample_of_shared_meshes);
+
 /// A sample of the shared meshes up to 50k triangles (every third, smallest first).
-#[test]
 fn exact_and_fast_on_a_sample_of_shared_meshes() {
     for mesh in surftopo_testkit::shared_meshes_up_to(50_000)
         .iter()
@@ -257,8 +258,9 @@ fn exact_and_fast_on_a_sample_of_shared_meshes() {
 /// Every shared mesh and larger generated families, high genus included (release:
 /// `cargo test --release -p surftopo-quad --test quality -- --ignored`).
 #[test]
-#[ignore]
+#[ignore = "every shared mesh (needs SURFTOPO_MESHES) and large families: run in release"]
 fn exact_and_fast_on_every_shared_mesh_and_large_families() {
+    surftopo_testkit::require_shared_meshes();
     for mesh in surftopo_testkit::shared_meshes() {
         let surface = surftopo_testkit::load(&mesh);
         let (exact, fast) = check_surface(&mesh.file, &surface, true);

@@ -51,6 +51,68 @@ pub fn shared_meshes_dir() -> Option<PathBuf> {
     Some(dir)
 }
 
+/// Panics unless `SURFTOPO_MESHES` is set: the first step of every test `shared_mesh_tests!`
+/// declares, so that a test binary built with the variable but run without it fails instead of
+/// passing over an empty list.
+pub fn require_shared_meshes() {
+    assert!(
+        std::env::var_os("SURFTOPO_MESHES").is_some(),
+        "SURFTOPO_MESHES is not set, but this test was built with it: set it, or rebuild the \
+         tests without it to have them listed as ignored"
+    );
+}
+
+/// Declares the tests that need the shared meshes: for each named function `f`, a test
+/// `shared_mesh_tests::f` that calls [`require_shared_meshes`] then `f()`.
+///
+/// libtest has no runtime skip, so the choice is made when the tests are built: when
+/// `SURFTOPO_MESHES` was not set while this crate was built (its build script sets the cfg
+/// `surftopo_meshes` otherwise, and reruns when the variable changes), the tests are
+/// `#[ignore = "needs SURFTOPO_MESHES"]` and `cargo test` lists them as ignored. The functions
+/// stay ordinary functions of the test file (formatted and linted as such).
+///
+/// ```ignore
+/// surftopo_testkit::shared_mesh_tests!(every_shared_mesh, a_sample_of_shared_meshes);
+///
+/// fn every_shared_mesh() {
+///     for mesh in surftopo_testkit::shared_meshes() { /* ... */ }
+/// }
+/// ```
+#[cfg(surftopo_meshes)]
+#[macro_export]
+macro_rules! shared_mesh_tests {
+    ($($name:ident),+ $(,)?) => {
+        mod shared_mesh_tests {
+            $(
+                #[test]
+                fn $name() {
+                    $crate::require_shared_meshes();
+                    super::$name()
+                }
+            )+
+        }
+    };
+}
+
+/// Declares the tests that need the shared meshes (see the other definition): built without
+/// `SURFTOPO_MESHES`, so every one is ignored, with the reason.
+#[cfg(not(surftopo_meshes))]
+#[macro_export]
+macro_rules! shared_mesh_tests {
+    ($($name:ident),+ $(,)?) => {
+        mod shared_mesh_tests {
+            $(
+                #[test]
+                #[ignore = "needs SURFTOPO_MESHES"]
+                fn $name() {
+                    $crate::require_shared_meshes();
+                    super::$name()
+                }
+            )+
+        }
+    };
+}
+
 /// Every mesh listed in the manifest (empty when `SURFTOPO_MESHES` is unset), smallest first.
 pub fn shared_meshes() -> Vec<SharedMesh> {
     let Some(dir) = shared_meshes_dir() else {

@@ -19,10 +19,10 @@ pub struct Args {
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.input.as_path(), args.output.as_path());
     crate::output::check_outputs(&[("OUTPUT", output, crate::output::OutputKind::Mesh)])?;
-    let (soup, welded) = read_soup(input, args.weld.weld)?;
+    let (soup, welded) = crate::progress::step("reading", || read_soup(input, args.weld.weld))?;
     crate::output::write_soup(output, &soup)?;
-    eprintln!(
-        "wrote {} ({} vertices, {} faces{})",
+    crate::output::emit(&format!(
+        "wrote {} ({} vertices, {} faces{})\n",
         crate::failure::shown(output),
         soup.positions.len(),
         soup.face_count(),
@@ -31,6 +31,6 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         } else {
             String::new()
         }
-    );
+    ))?;
     Ok(())
 }

@@ -345,7 +345,9 @@ fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<(
         outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
     }
     if let Some(path) = &options.tessellation {
-        let tessellation = delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE);
+        let tessellation = crate::progress::step("merging co-circular triangles", || {
+            delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE)
+        });
         outputs.file(path, |w| {
             Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
         })?;
@@ -363,13 +365,13 @@ fn write_matrices(
 ) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
-        let laplacian = cotan_laplacian(tri);
+        let laplacian = crate::progress::step("building the Laplacian", || cotan_laplacian(tri));
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
         outputs.file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
-        let mass = lumped_mass(tri);
+        let mass = crate::progress::step("building the mass matrix", || lumped_mass(tri));
         check_matrix(&mass, "the mass matrix", true)?;
         outputs.file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
     }
@@ -551,7 +553,7 @@ fn report(
         })?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {:.3} s ({})\n",
+            "{}: {} vertices, {} edges, {} faces; {} flips, {} non-Delaunay edges, {} loops, {} multi-edges, {} ({})\n",
             crate::failure::shown(options.output.as_deref().unwrap_or(&options.input)),
             stats.vertices,
             stats.edges,
@@ -560,7 +562,7 @@ fn report(
             stats.non_delaunay_edges,
             stats.loops,
             stats.multi_edges,
-            stats.seconds,
+            crate::output::format_seconds(stats.seconds),
             crate::args::value_name(&method)
         ))?;
     }

@@ -61,7 +61,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     crate::output::write_surface(&irreducible_path, &irreducible)?;
     writeln!(
         summary,
-        "  irreducible   {}: {} vertices, {} edges, {} faces, genus {} (RS: {} contractions, {} link tests, {} edges tested twice, {:.4} s)",
+        "  irreducible   {}: {} vertices, {} edges, {} faces, genus {} (RS: {} contractions, {} link tests, {} edges tested twice, {})",
         crate::failure::shown(&irreducible_path),
         report.output.vertices,
         report.output.edges,
@@ -70,7 +70,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         report.contractions,
         report.link_tests,
         report.edges_tested_more_than_once,
-        report.seconds
+        crate::output::format_seconds(report.seconds)
     )?;
 
     for algorithm in [QuadAlgorithm::KarpSipser, QuadAlgorithm::Lrs] {
@@ -81,13 +81,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         let stats = &result.stats;
         writeln!(
             summary,
-            "  quad ({label:<3})    {}: {} quads; initial pairing {:.1}% ({} unpaired), {} flipped edges, {:.4} s in all",
+            "  quad ({label:<3})    {}: {} quads; initial pairing {:.1}% ({} unpaired), {} flipped edges, {} in all",
             crate::failure::shown(&path),
             result.quads.len(),
             stats.paired_percent,
             stats.unpaired,
             stats.flipped_edges,
-            stats.total_seconds
+            crate::output::format_seconds(stats.total_seconds)
         )?;
     }
 
@@ -100,13 +100,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     crate::output::write_soup(&path, &quad_soup(&surface, &quality.result))?;
     writeln!(
         summary,
-        "  quad (quality) {}: {} quads of least total cost 1 - quality ({:.3}, optimum certified); quality median {:.3}, {:.2}% bad quads, {:.4} s",
+        "  quad (quality) {}: {} quads of least total cost 1 - quality ({:.3}, optimum certified); quality median {:.3}, {:.2}% bad quads, {}",
         path.display(),
         quality.result.quads.len(),
         quality.cost,
         quality.report.median,
         quality.report.bad_quads_percent,
-        quality.result.stats.total_seconds
+        crate::output::format_seconds(quality.result.stats.total_seconds)
     )?;
 
     let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;
@@ -126,12 +126,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     })?;
     writeln!(
         summary,
-        "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {:.3} s; Laplacian in {}",
+        "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {}; Laplacian in {}",
         crate::failure::shown(&delaunay),
         stats.flips,
         stats.non_delaunay_edges,
         stats.multi_edges,
-        stats.seconds,
+        crate::output::format_seconds(stats.seconds),
         crate::failure::shown(&laplacian)
     )?;
     emit(&summary)

@@ -166,10 +166,10 @@ fn write_exact_flat_torus(
     let (faces, edges) = (exact.polygon_count(), exact.side_count() / 2);
     let vertices = exact.vertex_classes().1;
     let genus = (2 + edges as i64 - vertices as i64 - faces as i64) / 2;
-    eprintln!(
-        "wrote {} (intrinsic, exact corners): {vertices} vertices, {edges} edges, {faces} faces, genus {genus}",
+    crate::output::emit(&format!(
+        "wrote {} (intrinsic, exact corners): {vertices} vertices, {edges} edges, {faces} faces, genus {genus}\n",
         crate::failure::shown(output),
-    );
+    ))?;
     Ok(())
 }
 
@@ -353,8 +353,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let generated = crate::progress::step("generating", || generate_any(kind, modifiers.seed))?;
     let (mesh, what) = match generated {
         Generated::Surface(surface) => {
-            let surface = modify(surface, modifiers)?;
-            crate::progress::step("writing", || crate::output::write_surface(output, &surface))?;
+            let surface =
+                crate::progress::step("applying the modifiers", || modify(surface, modifiers))?;
+            crate::output::write_surface(output, &surface)?;
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
@@ -373,13 +374,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             (tri.into_parts().0, " (intrinsic)")
         }
     };
-    eprintln!(
-        "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}",
+    crate::output::emit(&format!(
+        "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}\n",
         crate::failure::shown(output),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),
         mesh.genus()
-    );
+    ))?;
     Ok(())
 }

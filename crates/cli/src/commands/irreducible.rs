@@ -128,7 +128,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {:.3} s ({})\n",
+            "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
             crate::failure::shown(output),
             report.output.vertices,
             report.output.edges,
@@ -138,7 +138,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             report.contractions,
             report.link_tests,
             report.edges_tested_more_than_once,
-            report.seconds,
+            crate::output::format_seconds(report.seconds),
             report.algorithm
         ))?;
     }

@@ -150,16 +150,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             String::new()
         };
         crate::output::emit(&format!(
-            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {:.3} s, {} unpaired, augmentation {:.3} s, total {:.3} s, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
+            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
             crate::failure::shown(output),
             result.quads.len(),
             stats.faces,
             stats.algorithm,
             stats.paired_percent,
-            stats.initial_pairing_seconds,
+            crate::output::format_seconds(stats.initial_pairing_seconds),
             stats.unpaired,
-            stats.augmentation_seconds,
-            stats.total_seconds,
+            crate::output::format_seconds(stats.augmentation_seconds),
+            crate::output::format_seconds(stats.total_seconds),
             stats.flipped_edges,
             report.median,
             report.bad_quads_percent
