@@ -553,7 +553,7 @@ impl PortalgonDoc {
 
     /// The document of a portalgon: live polygons in id order (renumbered densely) with their
     /// corners, labels if every corner has one, and the matching.
-    /// Exact corners are written exactly ([`Number::from_scalar`]).
+    /// Exact corners are written exactly (`Number::from_scalar`).
     pub fn from_portalgon<S: Scalar>(p: &Portalgon<S>) -> Self {
         let (dense, _) = p.compacted();
         let labelled = dense.sides().all(|s| dense.vertex_label(s).is_some());

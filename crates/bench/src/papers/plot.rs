@@ -53,7 +53,7 @@ impl<'a> Gallery<'a> {
         }
     }
 
-    /// Writes `plot` as `file` (see [`write`]) and lists it if anything was drawn.
+    /// Writes `plot` as `file` (see [`write()`]) and lists it if anything was drawn.
     pub fn add(&mut self, file: &str, plot: &Plot, series: &[Series]) -> anyhow::Result<()> {
         if write(&self.out.join(file), plot, series)? {
             self.written

@@ -5,7 +5,7 @@
 //! 1. *Greedy*: the live non-loop edges in increasing `(cost, edge id)` order; an edge whose two
 //!    ends are free is matched (the greedy of Remacle et al. 2012, Section 3, before their exact
 //!    step).
-//! 2. *Completion*: [`crate::augment_to_perfect`] (the blossom searches of [`crate::augment`],
+//! 2. *Completion*: [`crate::augment_to_perfect`] (the blossom searches of `augment`,
 //!    Forest strategy) pairs the nodes the greedy left exposed; it ignores costs.
 //! 3. *Improvement*: an alternating cycle `C` (matched and unmatched edges in turn) whose unmatched
 //!    edges cost less than its matched ones is exchanged (`M ← M △ C`), which keeps the matching
@@ -16,7 +16,7 @@
 //!    A perfect matching is optimal iff no negative alternating cycle exists (of any length), so
 //!    the result is optimal only with respect to these short exchanges.
 //!
-//! Complexity: O(m log m) for the sort, the completion as in [`crate::augment`], and
+//! Complexity: O(m log m) for the sort, the completion as in `augment`, and
 //! O(2^K) per examined edge for K = [`MAX_CYCLE_PAIRS`] on a cubic graph (each exchange adds O(K)
 //! edges to the worklist).
 
