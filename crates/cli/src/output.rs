@@ -20,6 +20,67 @@ pub fn write_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
     })
 }
 
+/// How a matrix output is written, by its extension: `.npz` (SciPy's `save_npz` layout,
+/// `scipy.sparse.load_npz` reads it), `.npy` (the diagonal as a vector, for diagonal matrices),
+/// Matrix Market otherwise (symmetric storage: every matrix surftopo writes is symmetric).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MatrixFile {
+    /// `.npz`.
+    Npz,
+    /// `.npy`: the diagonal.
+    NpyDiagonal,
+    /// Matrix Market, `symmetric`.
+    MatrixMarket,
+}
+
+impl MatrixFile {
+    /// The format of `path`; `diagonal` says whether the matrix is diagonal, and a `.npy` for a
+    /// matrix that is not is refused (exit 2) before any work.
+    pub fn of(path: &Path, diagonal: bool) -> anyhow::Result<Self> {
+        let ext = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("npz") => Ok(MatrixFile::Npz),
+            Some("npy") if diagonal => Ok(MatrixFile::NpyDiagonal),
+            Some("npy") => Err(crate::failure::invalid(format!(
+                "{}: a .npy file holds a vector (the diagonal mass matrix); write a sparse matrix \
+                 to .npz or .mtx",
+                crate::failure::shown(path)
+            ))),
+            _ => Ok(MatrixFile::MatrixMarket),
+        }
+    }
+}
+
+/// Writes a symmetric matrix atomically in the format [`MatrixFile::of`] gives for `path`.
+pub fn write_matrix(
+    path: &Path,
+    matrix: &surftopo_intrinsic::SparseMatrix,
+    comment: &str,
+) -> anyhow::Result<()> {
+    let diagonal = matrix
+        .cols
+        .iter()
+        .enumerate()
+        .all(|(i, &c)| c as usize == i)
+        && matrix.nnz() == matrix.n;
+    let format = MatrixFile::of(path, diagonal)?;
+    write_file(path, |w| {
+        match format {
+            MatrixFile::Npz => surftopo_intrinsic::write_npz(w, matrix)?,
+            MatrixFile::NpyDiagonal => surftopo_intrinsic::write_npy(w, &matrix.values)?,
+            MatrixFile::MatrixMarket => surftopo_intrinsic::write_matrix_market(
+                w,
+                matrix,
+                comment,
+                surftopo_intrinsic::MatrixStorage::Symmetric,
+            )?,
+        }
+        Ok(())
+    })
+}
+
 /// Prints a value as pretty JSON on stdout.
 pub fn print_json(value: &impl serde::Serialize) -> anyhow::Result<()> {
     let mut text = serde_json::to_string_pretty(value)?;

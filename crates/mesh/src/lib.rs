@@ -11,6 +11,7 @@
 mod build;
 mod compact;
 mod contract;
+pub mod decimal;
 mod error;
 mod flip;
 pub mod generators;

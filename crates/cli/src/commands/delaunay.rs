@@ -4,7 +4,7 @@
 //! one vertex), its tessellation, the cotan Laplacian and the lumped mass matrix.
 
 use crate::failure::invalid;
-use crate::output::write_file;
+use crate::output::{MatrixFile, write_file, write_matrix};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{
     DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
@@ -15,7 +15,6 @@ use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
     DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, SparseMatrix,
     TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats, lumped_mass,
-    write_matrix_market,
 };
 
 /// Options of `delaunay`.
@@ -29,10 +28,12 @@ pub struct Options {
     /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON.
     #[arg(long)]
     pub tessellation: Option<PathBuf>,
-    /// The cotan Laplacian (positive semidefinite: positive diagonal), Matrix Market.
+    /// The cotan Laplacian (positive semidefinite: positive diagonal): Matrix Market (symmetric
+    /// storage), or `.npz` (scipy.sparse.load_npz reads it).
     #[arg(long)]
     pub laplacian: Option<PathBuf>,
-    /// The lumped (barycentric) mass matrix, Matrix Market.
+    /// The lumped (barycentric) mass matrix: Matrix Market (symmetric storage), `.npz`, or `.npy`
+    /// (its diagonal as a vector).
     #[arg(long)]
     pub mass: Option<PathBuf>,
     /// Stop with an error after this many flips.
@@ -219,6 +220,7 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
 /// Runs `delaunay`.
 pub fn run(options: &Options) -> anyhow::Result<()> {
     options.method.check()?;
+    check_matrix_outputs(options)?;
     if options.method.method != Method::Flip {
         return run_voronoi(options);
     }
@@ -252,19 +254,32 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     report(options, &stats, None)
 }
 
-/// Writes `--laplacian` and `--mass` of a Delaunay triangulation.
+/// Writes `--laplacian` and `--mass` of a Delaunay triangulation (format by extension:
+/// [`crate::output::MatrixFile`]).
 fn write_matrices(options: &Options, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         let laplacian = cotan_laplacian(tri);
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
-        write_file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
+        write_matrix(path, &laplacian, comment)?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
         let mass = lumped_mass(tri);
         check_matrix(&mass, "the mass matrix", true)?;
-        write_file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
+        write_matrix(path, &mass, comment)?;
+    }
+    Ok(())
+}
+
+/// Refuses matrix outputs whose extension cannot hold the matrix (a `.npy` Laplacian) before
+/// any work.
+fn check_matrix_outputs(options: &Options) -> anyhow::Result<()> {
+    if let Some(path) = &options.laplacian {
+        MatrixFile::of(path, false)?;
+    }
+    if let Some(path) = &options.mass {
+        MatrixFile::of(path, true)?;
     }
     Ok(())
 }

@@ -8,7 +8,6 @@ use std::fmt::Write as _;
 use std::path::Path;
 use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, TriangleStyle, cotan_laplacian, delaunay_with_stats,
-    write_matrix_market,
 };
 
 /// Generates a surface (a genus-2 brick with irregular connectivity), runs every capability on it,
@@ -106,13 +105,11 @@ pub fn run(out_dir: &Path) -> anyhow::Result<()> {
         |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?),
     )?;
     let laplacian = out_dir.join("laplacian.mtx");
-    write_file(&laplacian, |w| {
-        Ok(write_matrix_market(
-            w,
-            &cotan_laplacian(&tri),
-            "cotan Laplacian (positive semidefinite)",
-        )?)
-    })?;
+    crate::output::write_matrix(
+        &laplacian,
+        &cotan_laplacian(&tri),
+        "cotan Laplacian (positive semidefinite)",
+    )?;
     writeln!(
         summary,
         "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {:.3} s; Laplacian in {}",
