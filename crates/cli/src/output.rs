@@ -15,8 +15,10 @@ pub enum OutputKind {
     /// An intrinsic triangulation or tessellation: portalgon JSON, `.json` (a mesh file cannot
     /// hold its loops and multi-edges).
     Portalgon,
-    /// A sparse matrix: Matrix Market, `.mtx`.
-    MatrixMarket,
+    /// A sparse matrix: Matrix Market (`.mtx`) or SciPy's sparse `.npz`.
+    Matrix,
+    /// A diagonal matrix: as [`OutputKind::Matrix`], or its diagonal as a NumPy `.npy` vector.
+    DiagonalMatrix,
 }
 
 /// Whether the file name of `path` ends in `.ext` (case-insensitive).
@@ -42,8 +44,19 @@ fn check_extension(option: &str, path: &Path, kind: OutputKind) -> anyhow::Resul
             "an intrinsic triangulation is written as portalgon JSON (.json): a mesh file cannot \
              hold its loops and multi-edges",
         ),
-        OutputKind::MatrixMarket if has_extension(path, "mtx") => Ok(()),
-        OutputKind::MatrixMarket => refuse("a matrix is written as Matrix Market (.mtx)"),
+        OutputKind::Matrix | OutputKind::DiagonalMatrix
+            if has_extension(path, "mtx") || has_extension(path, "npz") =>
+        {
+            Ok(())
+        }
+        OutputKind::DiagonalMatrix if has_extension(path, "npy") => Ok(()),
+        OutputKind::Matrix if has_extension(path, "npy") => refuse(
+            "a .npy file holds a vector (the diagonal mass matrix); write a sparse matrix to .npz \
+             or .mtx",
+        ),
+        OutputKind::Matrix | OutputKind::DiagonalMatrix => {
+            refuse("a matrix is written as Matrix Market (.mtx) or SciPy sparse (.npz)")
+        }
     }
 }
 
@@ -165,6 +178,74 @@ fn stage_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<StagedFile> {
         surftopo_io::IoError::Io { source, .. } => crate::failure::unwritable(path, &source),
         other => crate::failure::invalid(other.to_string()),
     })
+}
+
+/// How a matrix output is written, by its extension: `.npz` (SciPy's `save_npz` layout,
+/// `scipy.sparse.load_npz` reads it), `.npy` (the diagonal as a vector, for diagonal matrices),
+/// Matrix Market otherwise (symmetric storage: every matrix surftopo writes is symmetric).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MatrixFile {
+    /// `.npz`.
+    Npz,
+    /// `.npy`: the diagonal.
+    NpyDiagonal,
+    /// Matrix Market, `symmetric`.
+    MatrixMarket,
+}
+
+impl MatrixFile {
+    /// The format of `path`; `diagonal` says whether the matrix is diagonal, and a `.npy` for a
+    /// matrix that is not is refused (exit 2) before any work.
+    pub fn of(path: &Path, diagonal: bool) -> anyhow::Result<Self> {
+        let ext = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("npz") => Ok(MatrixFile::Npz),
+            Some("npy") if diagonal => Ok(MatrixFile::NpyDiagonal),
+            Some("npy") => Err(crate::failure::invalid(format!(
+                "{}: a .npy file holds a vector (the diagonal mass matrix); write a sparse matrix \
+                 to .npz or .mtx",
+                crate::failure::shown(path)
+            ))),
+            _ => Ok(MatrixFile::MatrixMarket),
+        }
+    }
+}
+
+/// Writes a symmetric matrix atomically in the format [`MatrixFile::of`] gives for `path`.
+pub fn write_matrix(
+    path: &Path,
+    matrix: &surftopo_intrinsic::SparseMatrix,
+    comment: &str,
+) -> anyhow::Result<()> {
+    write_file(path, |w| fill_matrix(w, path, matrix, comment))
+}
+
+/// Writes a symmetric matrix to `w` in the format [`MatrixFile::of`] gives for `path`.
+pub fn fill_matrix(
+    w: &mut impl std::io::Write,
+    path: &Path,
+    matrix: &surftopo_intrinsic::SparseMatrix,
+    comment: &str,
+) -> anyhow::Result<()> {
+    let diagonal = matrix
+        .cols
+        .iter()
+        .enumerate()
+        .all(|(i, &c)| c as usize == i)
+        && matrix.nnz() == matrix.n;
+    match MatrixFile::of(path, diagonal)? {
+        MatrixFile::Npz => surftopo_intrinsic::write_npz(w, matrix)?,
+        MatrixFile::NpyDiagonal => surftopo_intrinsic::write_npy(w, &matrix.values)?,
+        MatrixFile::MatrixMarket => surftopo_intrinsic::write_matrix_market(
+            w,
+            matrix,
+            comment,
+            surftopo_intrinsic::MatrixStorage::Symmetric,
+        )?,
+    }
+    Ok(())
 }
 
 /// Prints a value as pretty JSON on stdout, every time (a number under a key ending in

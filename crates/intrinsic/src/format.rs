@@ -52,6 +52,7 @@ use crate::trig;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
 use surftopo_mesh::Side;
+use surftopo_mesh::decimal::{push_f64, push_u64};
 
 /// A JSON syntax or schema error; the message quotes the input (field names, strings), so
 /// control characters are escaped ([`surftopo_mesh::printable`]).
@@ -236,20 +237,28 @@ impl PortalgonDoc {
         Ok(doc)
     }
 
-    /// Writes JSON (compact, or pretty-printed).
+    /// Writes JSON (compact, or pretty-printed). Compact output is written by hand
+    /// ([`JsonOut`]), with the bytes `serde_json::to_writer` gives for the document.
     ///
     /// # Errors
     /// [`PortalgonError::Io`]; [`PortalgonError::NonFinite`] if a number is NaN or infinite (JSON
     /// cannot hold it).
     pub fn write<W: Write>(&self, writer: W, pretty: bool) -> Result<(), PortalgonError> {
         self.check_finite()?;
+        if !pretty {
+            let mut json = JsonOut::new(writer, self.comment.as_deref())?;
+            for p in &self.polygons {
+                json.polygon(
+                    p.corners.as_deref(),
+                    p.lengths.as_deref(),
+                    p.vertices.as_deref(),
+                )?;
+            }
+            return json.finish(self.matching.iter().copied());
+        }
         let mut w = std::io::BufWriter::new(writer);
-        let result = if pretty {
-            serde_json::to_writer_pretty(&mut w, self)
-        } else {
-            serde_json::to_writer(&mut w, self)
-        };
-        result.map_err(|e| PortalgonError::Io(e.to_string()))?;
+        serde_json::to_writer_pretty(&mut w, self)
+            .map_err(|e| PortalgonError::Io(e.to_string()))?;
         w.write_all(b"\n")
             .and_then(|()| w.flush())
             .map_err(|e| PortalgonError::Io(e.to_string()))
@@ -598,10 +607,8 @@ impl PortalgonDoc {
     pub fn from_triangulation(tri: &IntrinsicTriangulation, style: TriangleStyle) -> Self {
         let mesh = tri.mesh();
         let (dense, _) = dense_vertex_index(tri);
-        let mut rank = vec![u32::MAX; mesh.face_slots()];
         let mut polygons = Vec::with_capacity(mesh.face_count());
-        for (k, f) in mesh.faces().enumerate() {
-            rank[f.idx()] = k as u32;
+        for f in mesh.faces() {
             let vertices = Some(
                 mesh.face_halfedges(f)
                     .iter()
@@ -631,19 +638,7 @@ impl PortalgonDoc {
                 },
             });
         }
-        let side = |h: surftopo_mesh::HalfedgeId| {
-            let f = mesh.face(h);
-            let i = mesh
-                .face_halfedges(f)
-                .iter()
-                .position(|&g| g == h)
-                .expect("h is in its face");
-            [rank[f.idx()] as usize, i]
-        };
-        let matching = mesh
-            .edges()
-            .map(|e| [side(e.halfedge()), side(e.halfedge().twin())])
-            .collect();
+        let matching = triangulation_matching(tri).collect();
         Self {
             format: format_name(),
             version: FORMAT_VERSION,
@@ -652,6 +647,149 @@ impl PortalgonDoc {
             matching,
         }
     }
+}
+
+/// The matching of a triangulation's document: pair `k` = the `k`-th live edge, its half-edge
+/// `2k` first, each side as `[face rank among live faces, index in face_halfedges]`.
+fn triangulation_matching(
+    tri: &IntrinsicTriangulation,
+) -> impl Iterator<Item = [[usize; 2]; 2]> + '_ {
+    let mesh = tri.mesh();
+    let mut rank = vec![u32::MAX; mesh.face_slots()];
+    for (k, f) in mesh.faces().enumerate() {
+        rank[f.idx()] = k as u32;
+    }
+    let side = move |h: surftopo_mesh::HalfedgeId| {
+        let f = mesh.face(h);
+        let i = mesh
+            .face_halfedges(f)
+            .iter()
+            .position(|&g| g == h)
+            .expect("h is in its face");
+        [rank[f.idx()] as usize, i]
+    };
+    mesh.edges()
+        .map(move |e| [side(e.halfedge()), side(e.halfedge().twin())])
+}
+
+/// The compact JSON of a portalgon document written by hand into a buffer handed on in chunks:
+/// the header, each polygon as it comes, then the matching. Bytes are those of
+/// `serde_json::to_writer` on the [`PortalgonDoc`] (numbers by the same shortest round-trip
+/// formatting, [`surftopo_mesh::decimal`]); callers check finiteness first.
+struct JsonOut<W: Write> {
+    out: W,
+    buf: Vec<u8>,
+    polygons: usize,
+}
+
+impl<W: Write> JsonOut<W> {
+    const CHUNK: usize = 1 << 16;
+
+    fn new(out: W, comment: Option<&str>) -> Result<Self, PortalgonError> {
+        let mut buf = Vec::with_capacity(Self::CHUNK + 4096);
+        buf.extend_from_slice(b"{\"format\":");
+        serde_json::to_writer(&mut buf, FORMAT_NAME).map_err(|e| json_error(&e))?;
+        buf.extend_from_slice(b",\"version\":");
+        push_u64(&mut buf, u64::from(FORMAT_VERSION));
+        if let Some(c) = comment {
+            buf.extend_from_slice(b",\"comment\":");
+            serde_json::to_writer(&mut buf, c).map_err(|e| json_error(&e))?;
+        }
+        buf.extend_from_slice(b",\"polygons\":[");
+        Ok(Self {
+            out,
+            buf,
+            polygons: 0,
+        })
+    }
+
+    fn number(&mut self, x: &Number) {
+        match x {
+            Number::Double(v) => push_f64(&mut self.buf, *v),
+            Number::Exact(r) => {
+                self.buf.push(b'"');
+                self.buf.extend_from_slice(r.to_string().as_bytes());
+                self.buf.push(b'"');
+            }
+        }
+    }
+
+    fn list<T>(&mut self, items: &[T], mut item: impl FnMut(&mut Self, &T)) {
+        self.buf.push(b'[');
+        for (i, x) in items.iter().enumerate() {
+            if i > 0 {
+                self.buf.push(b',');
+            }
+            item(self, x);
+        }
+        self.buf.push(b']');
+    }
+
+    fn flush_if_full(&mut self) -> Result<(), PortalgonError> {
+        if self.buf.len() >= Self::CHUNK {
+            self.out.write_all(&self.buf).map_err(io_error)?;
+            self.buf.clear();
+        }
+        Ok(())
+    }
+
+    fn polygon(
+        &mut self,
+        corners: Option<&[[Number; 2]]>,
+        lengths: Option<&[Number]>,
+        vertices: Option<&[u32]>,
+    ) -> Result<(), PortalgonError> {
+        if self.polygons > 0 {
+            self.buf.push(b',');
+        }
+        self.polygons += 1;
+        self.buf.push(b'{');
+        let mut first = true;
+        let mut key = |buf: &mut Vec<u8>, name: &[u8]| {
+            if !first {
+                buf.push(b',');
+            }
+            first = false;
+            buf.extend_from_slice(name);
+        };
+        if let Some(c) = corners {
+            key(&mut self.buf, b"\"corners\":");
+            self.list(c, |json, p| json.list(p, |json, x| json.number(x)));
+        }
+        if let Some(l) = lengths {
+            key(&mut self.buf, b"\"lengths\":");
+            self.list(l, |json, x| json.number(x));
+        }
+        if let Some(v) = vertices {
+            key(&mut self.buf, b"\"vertices\":");
+            self.list(v, |json, &x| push_u64(&mut json.buf, u64::from(x)));
+        }
+        self.buf.push(b'}');
+        self.flush_if_full()
+    }
+
+    fn finish(
+        mut self,
+        matching: impl Iterator<Item = [[usize; 2]; 2]>,
+    ) -> Result<(), PortalgonError> {
+        self.buf.extend_from_slice(b"],\"matching\":[");
+        for (k, pair) in matching.enumerate() {
+            if k > 0 {
+                self.buf.push(b',');
+            }
+            self.list(&pair, |json, side| {
+                json.list(side, |json, &x| push_u64(&mut json.buf, x as u64));
+            });
+            self.flush_if_full()?;
+        }
+        self.buf.extend_from_slice(b"]}\n");
+        self.out.write_all(&self.buf).map_err(io_error)?;
+        self.out.flush().map_err(io_error)
+    }
+}
+
+fn io_error(e: std::io::Error) -> PortalgonError {
+    PortalgonError::Io(e.to_string())
 }
 
 /// The corners of polygon `polygon` in the scalar type `S`.
@@ -679,7 +817,9 @@ impl IntrinsicTriangulation {
         PortalgonDoc::read(reader)?.to_triangulation(tolerance)
     }
 
-    /// Writes this triangulation as a portalgon file ([`PortalgonDoc::from_triangulation`]).
+    /// Writes this triangulation as a portalgon file: the bytes of
+    /// [`PortalgonDoc::from_triangulation`]'s compact JSON; by lengths streamed from the mesh
+    /// without building the document.
     ///
     /// # Errors
     /// [`PortalgonError::Io`], [`PortalgonError::NonFinite`].
@@ -688,6 +828,95 @@ impl IntrinsicTriangulation {
         writer: W,
         style: TriangleStyle,
     ) -> Result<(), PortalgonError> {
-        PortalgonDoc::from_triangulation(self, style).write(writer, false)
+        if style == TriangleStyle::Corners {
+            return PortalgonDoc::from_triangulation(self, style).write(writer, false);
+        }
+        let mesh = self.mesh();
+        if let Some((polygon, sides)) = mesh
+            .faces()
+            .map(|f| self.face_sides(f))
+            .enumerate()
+            .find(|(_, l)| !l.iter().all(|x| x.is_finite()))
+        {
+            let index = sides.iter().position(|x| !x.is_finite()).unwrap_or(0);
+            return Err(PortalgonError::NonFinite { polygon, index });
+        }
+        let (dense, _) = dense_vertex_index(self);
+        let mut json = JsonOut::new(writer, None)?;
+        for f in mesh.faces() {
+            let vertices = mesh.face_halfedges(f).map(|h| dense[mesh.origin(h).idx()]);
+            let lengths = self.face_sides(f).map(Number::Double);
+            json.polygon(None, Some(&lengths), Some(&vertices))?;
+        }
+        json.finish(triangulation_matching(self))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generators::{flat_torus, random_flips};
+
+    /// The reference: serde_json's compact serialization of the document.
+    fn serde_bytes(doc: &PortalgonDoc) -> Vec<u8> {
+        let mut bytes = serde_json::to_vec(doc).unwrap();
+        bytes.push(b'\n');
+        bytes
+    }
+
+    #[test]
+    fn hand_written_json_is_serde_json_byte_for_byte() {
+        let mut tri = flat_torus(1.3, 5).unwrap();
+        random_flips(&mut tri, 40, 7);
+        for style in [TriangleStyle::Lengths, TriangleStyle::Corners] {
+            let mut streamed = Vec::new();
+            tri.write_json(&mut streamed, style).unwrap();
+            let doc = PortalgonDoc::from_triangulation(&tri, style);
+            assert_eq!(streamed, serde_bytes(&doc));
+            let back = IntrinsicTriangulation::read_json(&streamed[..], 1e-9).unwrap();
+            assert_eq!(back.mesh().face_count(), tri.mesh().face_count());
+        }
+        let mut doc = PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths);
+        doc.comment = Some("a \"quoted\"\nline\u{1}, é".into());
+        doc.polygons[0].lengths = None;
+        doc.polygons[0].corners = Some(vec![
+            [Number::Double(0.0), Number::Double(-0.0)],
+            [Number::Exact("1/3".parse().unwrap()), Number::Double(1e300)],
+            [
+                Number::Double(5e-324),
+                Number::Exact("-7/3".parse().unwrap()),
+            ],
+        ]);
+        doc.polygons[1].vertices = None;
+        let mut written = Vec::new();
+        doc.write(&mut written, false).unwrap();
+        assert_eq!(written, serde_bytes(&doc));
+        assert_eq!(
+            PortalgonDoc::from_json(std::str::from_utf8(&written).unwrap()).unwrap(),
+            doc
+        );
+    }
+
+    #[test]
+    fn non_finite_lengths_are_refused_before_writing() {
+        let doc = PortalgonDoc {
+            format: format_name(),
+            version: FORMAT_VERSION,
+            comment: None,
+            polygons: vec![PolygonDoc {
+                lengths: Some(vec![1.0.into(), f64::NAN.into(), 1.0.into()]),
+                ..PolygonDoc::default()
+            }],
+            matching: Vec::new(),
+        };
+        let mut out = Vec::new();
+        assert!(matches!(
+            doc.write(&mut out, false),
+            Err(PortalgonError::NonFinite {
+                polygon: 0,
+                index: 1
+            })
+        ));
+        assert!(out.is_empty());
     }
 }

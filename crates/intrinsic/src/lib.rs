@@ -68,6 +68,7 @@ mod laplacian;
 mod matrix_market;
 pub mod method_choice;
 mod mollify;
+mod numpy;
 mod portalgon;
 mod portalgon_edits;
 mod quality;
@@ -95,8 +96,9 @@ pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry}
 pub use laplacian::{
     SparseMatrix, cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass,
 };
-pub use matrix_market::{read_matrix_market, write_matrix_market};
+pub use matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
 pub use mollify::{MAX_MOLLIFY, mollify};
+pub use numpy::{write_npy, write_npz};
 pub use portalgon::{
     DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
     signed_area,

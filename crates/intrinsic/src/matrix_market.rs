@@ -1,29 +1,103 @@
 //! Matrix Market coordinate format (NIST), written and read by hand.
 //!
-//! Written as `%%MatrixMarket matrix coordinate real general`, every stored entry on its own line
-//! with 1-based indices and the value in Rust's shortest round-trip exponent form (`{:e}`), so
-//! reading the file back gives bit-identical values. The reader accepts `general` and `symmetric`
-//! real coordinate files (SciPy's `mmwrite` output included) and is used by the tests and the
+//! Written as `%%MatrixMarket matrix coordinate real general` (every stored entry) or `... real
+//! symmetric` (the entries on and below the diagonal only, as the format defines; about half the
+//! bytes for a Laplacian), one entry per line with 1-based indices and the value as the shortest
+//! decimal that reads back to the same double ([`surftopo_mesh::decimal::push_f64`]), so reading
+//! the file back gives bit-identical values. The reader accepts `general` and `symmetric` real
+//! coordinate files (SciPy's `mmwrite` output included) and is used by the tests and the
 //! benchmark's comparison with libigl.
 
 use crate::laplacian::SparseMatrix;
 use std::io::{self, BufRead, Write};
+use surftopo_mesh::decimal::{push_f64, push_u64};
 
-/// Writes `m` in Matrix Market coordinate format with a `%` comment line.
+/// How [`write_matrix_market`] stores a matrix.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MatrixStorage {
+    /// Every stored entry (`general`).
+    #[default]
+    General,
+    /// The entries on and below the diagonal (`symmetric`); the matrix must be symmetric.
+    Symmetric,
+}
+
+/// Writes `m` in Matrix Market coordinate format with `%` comment lines, stored as `storage`
+/// says. [`MatrixStorage::Symmetric`] is for matrices symmetric by construction (the cotan
+/// Laplacian and the mass matrix of this crate, whose tests check
+/// [`SparseMatrix::is_symmetric`]): the entries above the diagonal are not written, and checking
+/// them would cost more than writing (a debug assertion does).
 ///
 /// # Errors
 /// Any I/O error of the writer.
-pub fn write_matrix_market<W: Write>(out: W, m: &SparseMatrix, comment: &str) -> io::Result<()> {
-    let mut out = io::BufWriter::new(out);
-    writeln!(out, "%%MatrixMarket matrix coordinate real general")?;
+pub fn write_matrix_market<W: Write>(
+    mut out: W,
+    m: &SparseMatrix,
+    comment: &str,
+    storage: MatrixStorage,
+) -> io::Result<()> {
+    let symmetric = storage == MatrixStorage::Symmetric;
+    debug_assert!(
+        !symmetric || m.is_symmetric(),
+        "symmetric storage of an asymmetric matrix"
+    );
+    let mut buf = Vec::with_capacity(1 << 17);
+    buf.extend_from_slice(b"%%MatrixMarket matrix coordinate real ");
+    buf.extend_from_slice(if symmetric {
+        b"symmetric\n"
+    } else {
+        b"general\n"
+    });
     for line in comment.lines() {
-        writeln!(out, "% {line}")?;
+        buf.extend_from_slice(b"% ");
+        buf.extend_from_slice(line.as_bytes());
+        buf.push(b'\n');
     }
-    writeln!(out, "{} {} {}", m.n, m.n, m.nnz())?;
-    for (i, j, v) in m.triplets() {
-        writeln!(out, "{} {} {:e}", i + 1, j + 1, v)?;
+    let lower = |i: usize| {
+        let row = m.row_start[i]..m.row_start[i + 1];
+        let end = if symmetric {
+            row.start + m.cols[row.clone()].partition_point(|&j| j as usize <= i)
+        } else {
+            row.end
+        };
+        row.start..end
+    };
+    let stored: usize = (0..m.n).map(|i| lower(i).len()).sum();
+    for (k, v) in [m.n, m.n, stored].into_iter().enumerate() {
+        if k > 0 {
+            buf.push(b' ');
+        }
+        push_u64(&mut buf, v as u64);
     }
+    buf.push(b'\n');
+    for i in 0..m.n {
+        for k in lower(i) {
+            push_u64(&mut buf, i as u64 + 1);
+            buf.push(b' ');
+            push_u64(&mut buf, u64::from(m.cols[k]) + 1);
+            buf.push(b' ');
+            push_f64(&mut buf, m.values[k]);
+            buf.push(b'\n');
+        }
+        if buf.len() >= 1 << 16 {
+            out.write_all(&buf)?;
+            buf.clear();
+        }
+    }
+    out.write_all(&buf)?;
     out.flush()
+}
+
+impl SparseMatrix {
+    /// Whether every stored entry `(i, j)` equals `(j, i)` bit for bit (absent counts as 0).
+    /// O(nnz log d), with random access to the rows: the writers do not call it in release
+    /// builds.
+    pub fn is_symmetric(&self) -> bool {
+        (0..self.n).all(|i| {
+            (self.row_start[i]..self.row_start[i + 1])
+                .all(|k| self.get(self.cols[k] as usize, i).to_bits() == self.values[k].to_bits())
+        })
+    }
 }
 
 /// Reads a real square Matrix Market coordinate matrix (`general` or `symmetric`; duplicate
@@ -112,12 +186,36 @@ mod tests {
                 (2, 2, 0.1),
             ],
         );
-        let mut bytes = Vec::new();
-        write_matrix_market(&mut bytes, &m, "test\nsecond line").unwrap();
-        let text = String::from_utf8(bytes.clone()).unwrap();
-        assert!(text.starts_with("%%MatrixMarket matrix coordinate real general\n% test\n"));
-        let back = read_matrix_market(&bytes[..]).unwrap();
-        assert_eq!(back, m);
+        for storage in [MatrixStorage::General, MatrixStorage::Symmetric] {
+            let mut bytes = Vec::new();
+            write_matrix_market(&mut bytes, &m, "test\nsecond line", storage).unwrap();
+            let text = String::from_utf8(bytes.clone()).unwrap();
+            let kind = if storage == MatrixStorage::General {
+                "general"
+            } else {
+                "symmetric"
+            };
+            let header = format!("%%MatrixMarket matrix coordinate real {kind}\n% test\n");
+            assert!(text.starts_with(&header), "{text}");
+            let entries = if storage == MatrixStorage::General {
+                5
+            } else {
+                4
+            };
+            assert!(text.contains(&format!("\n3 3 {entries}\n")), "{text}");
+            let back = read_matrix_market(&bytes[..]).unwrap();
+            assert_eq!(back, m);
+        }
+    }
+
+    #[test]
+    fn symmetry_is_bit_exact() {
+        let m = SparseMatrix::from_triplets(2, &[(0, 1, 1.0), (1, 0, 1.0 + f64::EPSILON)]);
+        assert!(!m.is_symmetric());
+        let m = SparseMatrix::from_triplets(2, &[(0, 1, 1.0), (1, 1, 2.0)]);
+        assert!(!m.is_symmetric());
+        let m = SparseMatrix::from_triplets(2, &[(0, 1, 1.0), (1, 0, 1.0), (1, 1, 2.0)]);
+        assert!(m.is_symmetric());
     }
 
     #[test]

@@ -9,8 +9,8 @@ use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation};
 use std::collections::HashMap;
 use surftopo_intrinsic::generators::{flat_torus, random_flips};
 use surftopo_intrinsic::{
-    DelaunayOptions, IntrinsicTriangulation, SparseMatrix, cotan_laplacian, cotan_weights,
-    flip_to_delaunay, lumped_mass, read_matrix_market, write_matrix_market,
+    DelaunayOptions, IntrinsicTriangulation, MatrixStorage, SparseMatrix, cotan_laplacian,
+    cotan_weights, flip_to_delaunay, lumped_mass, read_matrix_market, write_matrix_market,
 };
 use surftopo_mesh::{Side, SurfaceMesh};
 
@@ -202,8 +202,11 @@ fn matrix_market_files_read_back_identically() {
     let (mut tri, _, _) = jittered_torus(5, 9);
     flip_to_delaunay(&mut tri, &DelaunayOptions::default()).unwrap();
     for m in [cotan_laplacian(&tri), lumped_mass(&tri)] {
-        let mut bytes = Vec::new();
-        write_matrix_market(&mut bytes, &m, "surftopo test").unwrap();
-        assert_eq!(read_matrix_market(&bytes[..]).unwrap(), m);
+        assert!(m.is_symmetric());
+        for storage in [MatrixStorage::General, MatrixStorage::Symmetric] {
+            let mut bytes = Vec::new();
+            write_matrix_market(&mut bytes, &m, "surftopo test", storage).unwrap();
+            assert_eq!(read_matrix_market(&bytes[..]).unwrap(), m);
+        }
     }
 }

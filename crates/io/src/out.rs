@@ -45,13 +45,12 @@ impl<W: Write> Out<W> {
         self.buf.push(b);
     }
 
-    /// Shortest decimal that reads back to the same bits (`-0` and
-    /// subnormals included); exponent form for very large or small values.
+    /// Shortest decimal that reads back to the same bits (`-0` and subnormals included;
+    /// [`surftopo_mesh::decimal::push_f64`]) without a trailing `.0`; exponent form for very
+    /// large or small values.
     #[inline]
     pub fn f64(&mut self, x: f64) {
-        // Debug is shortest-round-trip like Display but switches to exponent
-        // notation for large/small magnitudes (1e308 instead of 309 digits).
-        let _ = write!(self.buf, "{x:?}");
+        surftopo_mesh::decimal::push_f64(&mut self.buf, x);
         if self.buf.ends_with(b".0") {
             self.buf.truncate(self.buf.len() - 2);
         }
@@ -82,18 +81,8 @@ impl<W: Write> Out<W> {
     }
 
     #[inline]
-    pub fn u64(&mut self, mut v: u64) {
-        let mut tmp = [0u8; 20];
-        let mut i = tmp.len();
-        loop {
-            i -= 1;
-            tmp[i] = b'0' + (v % 10) as u8;
-            v /= 10;
-            if v == 0 {
-                break;
-            }
-        }
-        self.buf.extend_from_slice(&tmp[i..]);
+    pub fn u64(&mut self, v: u64) {
+        surftopo_mesh::decimal::push_u64(&mut self.buf, v);
     }
 }
 
@@ -112,7 +101,7 @@ mod tests {
         assert_eq!(fmt(1.0), "1");
         assert_eq!(fmt(-0.0), "-0");
         assert_eq!(fmt(0.1), "0.1");
-        assert_eq!(fmt(1e308), "1e308");
+        assert_eq!(fmt(1e308), "1e+308");
         assert_eq!(fmt(5e-324), "5e-324");
         let mut o = Out::new(Vec::new());
         o.u64(0);

@@ -12,6 +12,7 @@
 mod build;
 mod compact;
 mod contract;
+pub mod decimal;
 mod error;
 mod flip;
 pub mod generators;

@@ -20,7 +20,7 @@ use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
     DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError,
     SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats,
-    lumped_mass, write_matrix_market,
+    lumped_mass,
 };
 
 /// The arguments of `delaunay`.
@@ -35,10 +35,12 @@ pub struct Args {
     /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON (.json).
     #[arg(long)]
     pub tessellation: Option<PathBuf>,
-    /// The cotan Laplacian (positive semidefinite: positive diagonal), Matrix Market (.mtx).
+    /// The cotan Laplacian (positive semidefinite: positive diagonal): Matrix Market (.mtx,
+    /// symmetric storage), or `.npz` (scipy.sparse.load_npz reads it).
     #[arg(long)]
     pub laplacian: Option<PathBuf>,
-    /// The lumped (barycentric) mass matrix, Matrix Market (.mtx).
+    /// The lumped (barycentric) mass matrix: Matrix Market (.mtx, symmetric storage), `.npz`, or
+    /// `.npy` (its diagonal as a vector).
     #[arg(long)]
     pub mass: Option<PathBuf>,
     /// Stop with an error after this many flips.
@@ -261,7 +263,7 @@ fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> a
 }
 
 /// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o`,
-/// `--tessellation` and `--reduced`, Matrix Market for `--laplacian` and `--mass`), a file named twice, and a run
+/// `--tessellation` and `--reduced`, Matrix Market or .npz for `--laplacian`, and .npy too for `--mass`), a file named twice, and a run
 /// with nothing to write and no `--json`.
 fn check_outputs(options: &Args) -> anyhow::Result<()> {
     let named = [
@@ -272,8 +274,8 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
             OutputKind::Portalgon,
         ),
         ("--reduced", &options.reduced, OutputKind::Portalgon),
-        ("--laplacian", &options.laplacian, OutputKind::MatrixMarket),
-        ("--mass", &options.mass, OutputKind::MatrixMarket),
+        ("--laplacian", &options.laplacian, OutputKind::Matrix),
+        ("--mass", &options.mass, OutputKind::DiagonalMatrix),
     ];
     let outputs: Vec<_> = named
         .iter()
@@ -367,13 +369,17 @@ fn write_matrices(
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         let laplacian = crate::progress::step("building the Laplacian", || cotan_laplacian(tri));
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
-        outputs.file(path, |w| Ok(write_matrix_market(w, &laplacian, comment)?))?;
+        outputs.file(path, |w| {
+            crate::output::fill_matrix(w, path, &laplacian, comment)
+        })?;
     }
     if let Some(path) = &options.mass {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
         let mass = crate::progress::step("building the mass matrix", || lumped_mass(tri));
         check_matrix(&mass, "the mass matrix", true)?;
-        outputs.file(path, |w| Ok(write_matrix_market(w, &mass, comment)?))?;
+        outputs.file(path, |w| {
+            crate::output::fill_matrix(w, path, &mass, comment)
+        })?;
     }
     Ok(())
 }

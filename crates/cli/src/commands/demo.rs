@@ -8,7 +8,6 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, TriangleStyle, cotan_laplacian, delaunay_with_stats,
-    write_matrix_market,
 };
 use surftopo_irreducible::Algorithm;
 use surftopo_quad::QuadAlgorithm;
@@ -117,13 +116,11 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?),
     )?;
     let laplacian = out_dir.join("laplacian.mtx");
-    write_file(&laplacian, |w| {
-        Ok(write_matrix_market(
-            w,
-            &cotan_laplacian(&tri),
-            "cotan Laplacian (positive semidefinite)",
-        )?)
-    })?;
+    crate::output::write_matrix(
+        &laplacian,
+        &cotan_laplacian(&tri),
+        "cotan Laplacian (positive semidefinite)",
+    )?;
     writeln!(
         summary,
         "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {}; Laplacian in {}",
