@@ -251,6 +251,8 @@ pub fn fill_matrix(
 /// Prints a value as pretty JSON on stdout, every time (a number under a key ending in
 /// `seconds`) rounded to the microsecond: a clock's last digits are noise, and
 /// `0.0012000300000000002` is not a figure anyone reads.
+/// Keys keep the order the value serialises them in (serde_json's `preserve_order`: a struct's
+/// field order, not sorted by name).
 pub fn print_json(value: &impl serde::Serialize) -> anyhow::Result<()> {
     let mut value = serde_json::to_value(value)?;
     round_times(&mut value);
