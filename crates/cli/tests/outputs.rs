@@ -26,10 +26,12 @@ fn refused(dir: &Path, args: &[&str], message: &str) {
     assert!(stderr.contains(message), "{args:?}: {stderr}");
 }
 
-/// The entries (row, column, value) of a coordinate Matrix Market file, 0-based, and its size.
+/// The entries (row, column, value) of a coordinate Matrix Market file, 0-based, and its size;
+/// `symmetric` storage (the lower triangle) is expanded to both triangles.
 fn matrix_market(path: &Path) -> (usize, Vec<(usize, usize, f64)>) {
     let text = std::fs::read_to_string(path).unwrap();
     assert!(text.starts_with("%%MatrixMarket matrix coordinate real"));
+    let symmetric = text.lines().next().unwrap().ends_with("symmetric");
     let mut lines = text.lines().filter(|l| !l.starts_with('%'));
     let size: Vec<usize> = lines
         .next()
@@ -46,7 +48,12 @@ fn matrix_market(path: &Path) -> (usize, Vec<(usize, usize, f64)>) {
         .collect();
     assert_eq!(size[0], size[1]);
     assert_eq!(size[2], entries.len());
-    (size[0], entries)
+    let mirrored: Vec<_> = entries
+        .iter()
+        .filter(|&&(i, j, _)| symmetric && i != j)
+        .map(|&(i, j, v)| (j, i, v))
+        .collect();
+    (size[0], [entries, mirrored].concat())
 }
 
 #[test]
