@@ -407,7 +407,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
 ) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
-    if first_cone_point(t, options.angle_tolerance).is_none() {
+    let Some((label, class, _)) = first_cone_point(t, options.angle_tolerance) else {
         let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
             FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
             FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
@@ -422,10 +422,8 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             cap_triangles: 0,
             reduced: flat.reduced,
         });
-    }
+    };
     if !S::EXACT {
-        let (label, class, _) =
-            first_cone_point(t, options.angle_tolerance).expect("a cone point was found above");
         return Err(CapsError::ConePointInDoublePrecision {
             vertex: label.unwrap_or(class),
         });
