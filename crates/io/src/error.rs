@@ -50,7 +50,7 @@ pub enum IoError {
     /// The content matches no mesh format ([`crate::sniff_format`]): an input whose name does
     /// not say its format (standard input, no mesh extension).
     #[error(
-        "{file}: cannot tell the mesh format from the content: {reason}; name the file with its \
+        "{file}: cannot tell the mesh format from the content: {reason}; give the input a file name with its \
          extension (.obj, .off, .ply or .stl, optionally followed by .gz)"
     )]
     UnknownContent {
