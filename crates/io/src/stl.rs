@@ -221,39 +221,3 @@ fn normal([a, b, c]: [[f64; 3]; 3]) -> [f64; 3] {
         [0.0; 3]
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn written_stl_reads_back_as_binary_with_fans_and_normals() {
-        let mut soup = PolygonSoup::new();
-        for p in [
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0],
-            [0.0, 1.0, 0.0],
-        ] {
-            soup.push_vertex(p);
-        }
-        soup.push_face(&[0, 1, 2, 3]);
-        let bytes = write(Vec::new(), &soup).unwrap();
-        assert_eq!(bytes.len(), 84 + 2 * 50);
-        assert!(!bytes.starts_with(b"solid"));
-        let back = read(&bytes, Ctx { name: "m.stl" }).unwrap();
-        assert_eq!(back.face_count(), 2);
-        assert_eq!(back.face(1).len(), 3);
-        let corners: Vec<_> = back
-            .faces()
-            .flatten()
-            .map(|&v| back.positions[v as usize])
-            .collect();
-        assert_eq!(
-            corners[3..6],
-            [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
-        );
-        let normal_z = f32::from_le_bytes([bytes[92], bytes[93], bytes[94], bytes[95]]);
-        assert_eq!(normal_z, 1.0);
-    }
-}
