@@ -490,3 +490,44 @@ fn delaunay_isometric_and_intrinsic_flips_read_stdin() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0), "an isometric re-triangulation");
 }
+
+#[test]
+fn ascii_stl_on_stdin_is_welded_and_stdin_obeys_the_input_limit() {
+    let corners = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]];
+    let mut stl = String::from("solid tetra\n");
+    for face in [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] {
+        stl.push_str("facet normal 0 0 0\nouter loop\n");
+        for v in face {
+            let [x, y, z] = corners[v];
+            stl.push_str(&format!("vertex {x} {y} {z}\n"));
+        }
+        stl.push_str("endloop\nendfacet\n");
+    }
+    stl.push_str("endsolid tetra\n");
+    let (code, stdout, stderr) = run(&["info", "-", "--json", "--strict"], stl.as_bytes());
+    assert_eq!(code, Some(0), "{stderr}");
+    let info: serde_json::Value = serde_json::from_slice(&stdout).unwrap();
+    assert_eq!(
+        (info["vertices"].as_u64(), info["faces"].as_u64()),
+        (Some(4), Some(4))
+    );
+    assert_eq!(info["welded_vertices"], 8);
+    let (code, stdout, stderr) = run(
+        &[
+            "convert",
+            "-",
+            "-",
+            "--format",
+            "obj",
+            "--max-input-bytes",
+            "100",
+        ],
+        stl.as_bytes(),
+    );
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        stderr.contains("<stdin>") && stderr.contains("--max-input-bytes"),
+        "{stderr}"
+    );
+    assert!(stdout.is_empty());
+}

@@ -110,3 +110,19 @@ fn binary_stl_rounds_coordinates_to_f32_and_gives_unit_normals() {
     assert_eq!(normal(1), [0.0, 0.0, 1.0]);
     assert_eq!(normal(2), [0.0, 0.0, 0.0]);
 }
+
+proptest::proptest! {
+    /// Any bytes after each format's opening: sniffing and reading what it decides never panic,
+    /// and every outcome is a soup with faces or a typed error naming the input.
+    #[test]
+    fn any_bytes_are_sniffed_without_panicking(
+        opening in proptest::sample::select(vec!["", "ply\n", "OFF\n", "solid x\nfacet ", "v 0 0 0\n"]),
+        tail in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..400),
+    ) {
+        let bytes = [opening.as_bytes(), &tail].concat();
+        match read_bytes_detected(&bytes, "fuzz") {
+            Ok((soup, _)) => proptest::prop_assert!(soup.face_count() > 0),
+            Err(e) => proptest::prop_assert!(e.to_string().starts_with("fuzz"), "{}", e),
+        }
+    }
+}
