@@ -26,7 +26,8 @@ use surftopo_intrinsic::{
 /// The arguments of `delaunay`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md).
+    /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md);
+    /// `-` for standard input (JSON when it starts with `{`, else a mesh told by its content).
     pub input: PathBuf,
     /// The Delaunay triangulation, as portalgon JSON (.json). Optional: at least one output
     /// (this, --tessellation, --reduced, --laplacian, --mass) or --json is needed.
@@ -128,23 +129,20 @@ impl MethodOptions {
 /// An invalid-input error naming the file: not JSON, not closed, or not given by corners (a mesh
 /// or a portalgon given by lengths: their lengths are square roots).
 pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
-    let is_json = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    if !is_json {
+    if !is_json_input(path)? {
         return Err(invalid(format!(
             "{}: --exact needs a portalgon JSON file given by exact corners (a mesh's lengths are \
              square roots)",
             path.display()
         )));
     }
-    let file =
-        std::fs::File::open(path).map_err(|e| invalid(format!("{}: {e}", path.display())))?;
-    let p = PortalgonDoc::read(std::io::BufReader::new(file))
+    let name = crate::input::name(path);
+    let bytes = crate::input::input_bytes(path)?;
+    let p = PortalgonDoc::read(&bytes[..])
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
-        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+        .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
-        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+        .map_err(|e| invalid(format!("{name}: {e}")))?;
     Ok(p)
 }
 
@@ -203,17 +201,23 @@ fn tessellate<S: Scalar>(
     Ok((v, figures, reduced))
 }
 
+/// Whether an input is portalgon JSON: a `.json` file, or standard input starting with `{`.
+fn is_json_input(path: &Path) -> anyhow::Result<bool> {
+    if crate::input::is_stdio(path) {
+        return crate::input::stdin_is_json();
+    }
+    Ok(path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json")))
+}
+
 /// Reads a mesh file or a portalgon JSON file (a triangulation, or a tessellation whose polygons
 /// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
-    let is_json = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let name = crate::failure::shown(path);
-    if is_json {
-        let bytes = surftopo_io::load_path(path, &crate::limits::read_limits())
-            .map_err(crate::input::explain_limit)?;
+    let name = crate::input::name(path);
+    if is_json_input(path)? {
+        let bytes = crate::input::input_bytes(path)?;
         let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;

@@ -1,6 +1,6 @@
 //! `surftopo irreducible`: an irreducible triangulation by topology-preserving edge contractions.
 
-use crate::args::{JsonArg, SeedArg, WeldArg, names};
+use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
 use serde::Serialize;
 use std::path::PathBuf;
@@ -11,11 +11,15 @@ use surftopo_mesh::SurfaceMesh;
 /// The arguments of `irreducible`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
+    /// .gz), `-` for standard input (format from the extension, else the content).
     pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
+    /// --format).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub format: FormatArg,
     #[command(flatten)]
     pub seed: SeedArg,
     #[command(flatten)]
@@ -116,20 +120,21 @@ pub fn reduce_surface(
 /// Runs `irreducible`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
+    let kind = crate::output::mesh_kind(args.format.format);
+    crate::output::check_outputs(&[("-o", output, kind)])?;
     let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
     let (irreducible, report) =
         crate::progress::step("contracting", || reduce_surface(&loaded.surface, algorithm))
-            .map_err(|e| e.context(crate::failure::shown(input)))?;
-    crate::output::write_surface(output, &irreducible)?;
+            .map_err(|e| e.context(crate::input::name(input)))?;
+    crate::output::write_surface_as(output, &irreducible, args.format.format)?;
     if args.json.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
-            crate::failure::shown(output),
+            crate::output::name(output),
             report.output.vertices,
             report.output.edges,
             report.output.faces,

@@ -1,6 +1,6 @@
 //! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
 
-use crate::args::{JsonArg, SeedArg, WeldArg, names};
+use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
 use std::path::PathBuf;
 use surftopo_io::PolygonSoup;
@@ -14,11 +14,15 @@ use surftopo_quad::{
 /// The arguments of `quad`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
+    /// .gz), `-` for standard input (format from the extension, else the content).
     pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
+    /// --format).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub format: FormatArg,
     #[command(flatten)]
     pub seed: SeedArg,
     #[command(flatten)]
@@ -119,7 +123,8 @@ fn pair(
 /// Runs `quad`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
+    let kind = crate::output::mesh_kind(args.format.format);
+    crate::output::check_outputs(&[("-o", output, kind)])?;
     let algorithm = algorithm_named(&args.algorithm, args.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
@@ -131,9 +136,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let paired = crate::progress::step("pairing triangles", || {
         pair(&loaded.surface, algorithm, objective)
     })
-    .map_err(|e| e.context(crate::failure::shown(input)))?;
+    .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    crate::output::write_soup(output, &quad_soup(&loaded.surface, result))?;
+    crate::output::write_soup_as(
+        output,
+        &quad_soup(&loaded.surface, result),
+        args.format.format,
+    )?;
     let stats = &result.stats;
     if args.json.json {
         crate::output::print_json(&paired.figures(&args.objective))?;
@@ -151,7 +160,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         };
         crate::output::emit(&format!(
             "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
-            crate::failure::shown(output),
+            crate::output::name(output),
             result.quads.len(),
             stats.faces,
             stats.algorithm,
