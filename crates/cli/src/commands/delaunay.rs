@@ -13,14 +13,14 @@ use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{DuboisReport, FlatDelaunayOptions, delaunay_tessellation_dubois};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::method_choice::{
-    Method as Choice, choose_method, choose_method_for_triangulation,
+    Method as Choice, choose_method, choose_method_for_needle,
 };
 use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
     DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError,
     SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats,
-    lumped_mass,
+    delaunay_with_stats_unless_needle, lumped_mass,
 };
 
 /// The arguments of `delaunay`.
@@ -316,7 +316,7 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     let method = match requested {
         Method::Auto if options.reduced.is_some() => Method::Dubois,
         Method::Auto if flip_options_given => Method::Flip,
-        Method::Auto => Method::chosen(choose_method_for_triangulation(&tri), false),
+        Method::Auto => return run_auto(options, tri),
         m => m,
     };
     if method == Method::Flip {
@@ -326,26 +326,61 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     }
 }
 
-/// `--method flip`.
-fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
-    if options.reduced.is_some() {
-        return Err(invalid("--reduced applies to --method dubois only"));
+/// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test in its first pass
+/// ([`delaunay_with_stats_unless_needle`]); at a needle, nothing is flipped and the rule goes on
+/// from there ([`choose_method_for_needle`]).
+fn run_auto(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+    let flipped = crate::progress::step("flipping to Delaunay", || {
+        delaunay_with_stats_unless_needle(&mut tri, &flip_options(options))
+    })
+    .map_err(|e| flip_error(options, e))?;
+    match flipped {
+        Some(stats) => write_flipped(options, tri, &stats),
+        None => match Method::chosen(choose_method_for_needle(&tri), false) {
+            Method::Flip => run_flip(options, tri),
+            method => run_wave(options, tri, method),
+        },
     }
-    let flip_options = DelaunayOptions {
+}
+
+/// The [`DelaunayOptions`] of `--max-flips` and `--mollify`.
+fn flip_options(options: &Args) -> DelaunayOptions {
+    DelaunayOptions {
         max_flips: options.max_flips,
         mollify: options.mollify,
         ..DelaunayOptions::default()
-    };
-    let stats = crate::progress::step("flipping to Delaunay", || {
-        delaunay_with_stats(&mut tri, &flip_options)
-    })
-    .map_err(|e| match e {
+    }
+}
+
+/// A flipping failure: a numerical breakdown as itself (exit 4), anything else as invalid input.
+fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
+    match e {
         DelaunayError::NumericalBreakdown { .. } => anyhow::Error::new(e),
         other => invalid(format!(
             "{}: {other}",
             crate::failure::shown(&options.input)
         )),
-    })?;
+    }
+}
+
+/// `--method flip`.
+fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+    if options.reduced.is_some() {
+        return Err(invalid("--reduced applies to --method dubois only"));
+    }
+    let stats = crate::progress::step("flipping to Delaunay", || {
+        delaunay_with_stats(&mut tri, &flip_options(options))
+    })
+    .map_err(|e| flip_error(options, e))?;
+    write_flipped(options, tri, &stats)
+}
+
+/// The outputs and the report of a flipped triangulation.
+fn write_flipped(
+    options: &Args,
+    tri: IntrinsicTriangulation,
+    stats: &DelaunayStats,
+) -> anyhow::Result<()> {
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
         outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
@@ -360,7 +395,7 @@ fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<(
     }
     write_matrices(options, &tri, &mut outputs)?;
     outputs.commit()?;
-    report(options, Method::Flip, &stats, None)
+    report(options, Method::Flip, stats, None)
 }
 
 /// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).
