@@ -10,7 +10,7 @@
 //!    (its tessellation must be the unit square).
 //! 3. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
 //!    (`flip_to_delaunay_unless_needle`: the needle test inside flipping's first pass), alternated,
-//!    best of 7.
+//!    best of 25.
 //!
 //! ```text
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
@@ -36,6 +36,10 @@ use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, Portalgon, flip_to_delaunay,
     flip_to_delaunay_unless_needle,
 };
+
+/// Alternated runs of `flip` and `auto` per shared mesh (their best is compared: the two differ by
+/// a test per face, far below this machine's run-to-run noise, so many runs are needed).
+const AUTO_RUNS: usize = 25;
 
 fn q(s: &str) -> Rational {
     s.parse().expect("a rational")
@@ -241,8 +245,8 @@ fn main() {
             "\n## `auto` against `flip` on the ~100k-face shared meshes\n\n\
              `auto` = `flip_to_delaunay_unless_needle` (flipping with the needle test in its first pass \
              over the faces), as `surftopo delaunay` runs it; runs alternated (flip, auto, flip, auto, …), \
-             best of 7. `choice / flip` is what the rule's test costs as a pass of its own \
-             (`choose_method_for_triangulation`, best of 7) against flipping; `auto / flip` compares \
+             best of 25. `choice / flip` is what the rule's test costs as a pass of its own \
+             (`choose_method_for_triangulation`, best of 25) against flipping; `auto / flip` compares \
              the two whole runs (noisy on a shared machine).\n\n\
              | mesh | F | auto chose | choice ms | flip ms | auto ms | choice / flip | auto / flip |\n|---|---:|---|---:|---:|---:|---:|---:|\n",
         );
@@ -252,7 +256,7 @@ fn main() {
             let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
             let (mut flip_best, mut auto_best) = (f64::INFINITY, f64::INFINITY);
             let mut chosen = Method::Flip;
-            for _ in 0..7 {
+            for _ in 0..AUTO_RUNS {
                 let mut t = tri.clone();
                 let start = Instant::now();
                 flip_to_delaunay(&mut t, &flip_options).expect("flips");
@@ -266,7 +270,7 @@ fn main() {
                 };
                 auto_best = auto_best.min(start.elapsed().as_secs_f64());
             }
-            let (_, choice_seconds) = best_of(7, || choose_method_for_triangulation(&tri));
+            let (_, choice_seconds) = best_of(AUTO_RUNS, || choose_method_for_triangulation(&tri));
             writeln!(
                 md,
                 "| {} | {} | {chosen:?} | {:.2} | {:.1} | {:.1} | {:.3} | {:.3} |",
