@@ -18,8 +18,19 @@ pub struct Loaded {
 
 /// Reads a polygon soup, welding exactly coincident positions when asked (always for STL).
 pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)> {
+    read_soup_with(path, weld, surftopo_io::NonFinite::Refuse)
+}
+
+/// [`read_soup`], keeping or refusing NaN and infinite coordinates (`info` keeps them to list
+/// them among its problems; every other command refuses them, naming file, line and vertex).
+pub fn read_soup_with(
+    path: &Path,
+    weld: bool,
+    non_finite: surftopo_io::NonFinite,
+) -> anyhow::Result<(PolygonSoup, usize)> {
+    let limits = crate::limits::read_limits();
     let mut soup =
-        surftopo_io::read_path_with(path, &crate::limits::read_limits()).map_err(explain_limit)?;
+        surftopo_io::read_path_with_non_finite(path, &limits, non_finite).map_err(explain_limit)?;
     let source = crate::failure::shown(path);
     crate::limits::check_elements(&source, soup.vertex_count() as u64, "vertices")?;
     crate::limits::check_elements(&source, soup.face_count() as u64, "faces")?;
@@ -57,7 +68,8 @@ fn face_of(error: &mut BuildError) -> Option<&mut usize> {
         | BuildError::NonManifoldEdge { face, .. }
         | BuildError::NonOrientable { face, .. }
         | BuildError::Disconnected { face, .. }
-        | BuildError::NotTriangle { face, .. } => Some(face),
+        | BuildError::NotTriangle { face, .. }
+        | BuildError::ZeroArea { face } => Some(face),
         _ => None,
     }
 }

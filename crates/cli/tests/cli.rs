@@ -560,7 +560,10 @@ fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
             is_irreducible_soup(&triangles),
             "{algorithm}: output is not irreducible"
         );
-        let info = info_json(&output, &["--strict"]);
+        // Surviving vertices keep their positions, so collinear corners of the brick can make
+        // zero-area faces: every other problem class must be empty.
+        let info = info_json(&output, &[]);
+        assert_eq!(info["problems_total"], info["zero_area_faces"], "{info}");
         assert_eq!(info["genus"], 3);
         assert_eq!(info["vertices"], v["output"]["vertices"]);
         assert!(info["vertices"].as_i64().unwrap() <= 26 * 3 - 4);

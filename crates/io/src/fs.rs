@@ -51,11 +51,24 @@ pub fn read_path(path: &Path) -> Result<PolygonSoup, IoError> {
 /// # Errors
 /// As [`read_path`]; [`IoError::InputTooLarge`] beyond `limits.max_bytes`.
 pub fn read_path_with(path: &Path, limits: &ReadLimits) -> Result<PolygonSoup, IoError> {
+    read_path_with_non_finite(path, limits, crate::NonFinite::Refuse)
+}
+
+/// [`read_path_with`], with `non_finite` saying whether NaN and infinite coordinates are
+/// refused or kept ([`crate::read_bytes_with`]).
+///
+/// # Errors
+/// As [`read_path_with`].
+pub fn read_path_with_non_finite(
+    path: &Path,
+    limits: &ReadLimits,
+    non_finite: crate::NonFinite,
+) -> Result<PolygonSoup, IoError> {
     let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
     let bytes = load_path(path, limits)?;
-    crate::read_bytes(&bytes, format, &name)
+    crate::read_bytes_with(&bytes, format, &name, non_finite)
 }
 
 /// A path as error messages show it (control characters escaped).
@@ -71,7 +84,7 @@ fn path_name(path: &Path) -> String {
 /// [`IoError::OutOfMemory`].
 pub fn load_path(path: &Path, limits: &ReadLimits) -> Result<Vec<u8>, IoError> {
     let name = path_name(path);
-    let ctx = Ctx { name: &name };
+    let ctx = Ctx::new(&name);
     let mut file = File::open(path).map_err(|e| ctx.io(e))?;
     let len = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut bytes = Vec::new();
@@ -115,7 +128,7 @@ pub fn decompress_gzip(
     name: &str,
 ) -> Result<Vec<u8>, IoError> {
     let mut bytes = Vec::new();
-    gunzip_into(reader, limits, &mut bytes).map_err(|e| e.into_error(Ctx { name }, limits))?;
+    gunzip_into(reader, limits, &mut bytes).map_err(|e| e.into_error(Ctx::new(name), limits))?;
     Ok(bytes)
 }
 
@@ -251,12 +264,9 @@ fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result
 /// `path` is left as it was.
 pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Result<(), IoError> {
     let staged = stage_path(path, soup, options)?;
-    staged.commit().map_err(|e| {
-        Ctx {
-            name: &path_name(path),
-        }
-        .io(e)
-    })
+    staged
+        .commit()
+        .map_err(|e| Ctx::new(&path_name(path)).io(e))
 }
 
 /// [`write_path`] up to the rename: the mesh file written and synced under its temporary name,
@@ -281,7 +291,7 @@ pub fn stage_path(
             crate::write_unchecked(file, soup, format, options)
         }
     })
-    .map_err(|e| Ctx { name: &name }.io(e))
+    .map_err(|e| Ctx::new(&name).io(e))
 }
 
 /// Counter making temporary names unique within the process.
