@@ -86,12 +86,33 @@ impl Serialize for Counts {
 }
 
 /// Runs `info`; with `--strict`, any problem makes it fail with exit code 2.
+pub fn run(args: &Args) -> anyhow::Result<()> {
+    let (path, json, strict) = (args.mesh.as_path(), args.json.json, args.strict);
+    let info = inspect_path(path, args.weld.weld)?;
+    if json {
+        crate::output::print_json(&info)?;
+    } else {
+        crate::output::emit(&text(path, &info))?;
+    }
+    if strict && !info.valid {
+        return Err(invalid(format!(
+            "{}: {} problem(s) found",
+            crate::failure::shown(path),
+            info.problems_total
+        )));
+    }
+    Ok(())
+}
+
+/// What `info` reports on the mesh file `path` (welded first when asked).
 ///
 /// The file is read keeping NaN and infinite coordinates ([`surftopo_io::NonFinite::Keep`]), so
 /// that they are listed problems here while every other command refuses them.
-pub fn run(args: &Args) -> anyhow::Result<()> {
-    let (path, json, strict) = (args.mesh.as_path(), args.json.json, args.strict);
-    let (soup, welded) = read_soup_with(path, args.weld.weld, surftopo_io::NonFinite::Keep)?;
+///
+/// # Errors
+/// A file that cannot be read or parsed (exit 2).
+pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
+    let (soup, welded) = read_soup_with(path, weld, surftopo_io::NonFinite::Keep)?;
     // Polygon meshes are inspected through their fan triangulation (see `fan_triangles`).
     let (triangles, polygon_of) = fan_triangles(&soup);
     let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);
@@ -109,7 +130,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 
     let simplicial = all_triangles && !inspection.has_degenerate_faces();
     let valid = inspection.is_valid();
-    let info = Info {
+    Ok(Info {
         vertices: inspection.vertices,
         edges: inspection.edges,
         faces: inspection.faces,
@@ -131,20 +152,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             .iter()
             .map(|p| locate(path, &soup, p))
             .collect(),
-    };
-    if json {
-        crate::output::print_json(&info)?;
-    } else {
-        crate::output::emit(&text(path, &info))?;
-    }
-    if strict && !valid {
-        return Err(invalid(format!(
-            "{}: {} problem(s) found",
-            crate::failure::shown(path),
-            info.problems_total
-        )));
-    }
-    Ok(())
+    })
 }
 
 /// The text report: one line per fact, labelled with its JSON key's words (`_` read as a space).
