@@ -1,6 +1,6 @@
 //! `surftopo demo`: every capability on built-in examples, needing no file.
 //!
-//! The examples are generated: a genus-2 brick with irregular connectivity (about 1,200
+//! The examples are generated: a genus-2 brick with irregular connectivity (816
 //! triangles, small enough for the brute force and the exact quality pairing to stay quick),
 //! a small broken mesh for `info`'s problem classes, and Dubois' flat tori T_x, T_{x+1} and
 //! T_{x+1/3} (x = 10^9, exact corners). Each step calls the command's own code (its `run`, or the
