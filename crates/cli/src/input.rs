@@ -105,10 +105,20 @@ pub fn input_bytes(path: &Path) -> anyhow::Result<Vec<u8>> {
 /// format comes from the extension, else from the content (`-`: standard input; see
 /// [`surftopo_io::sniff_format`]).
 pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)> {
+    read_soup_with(path, weld, surftopo_io::NonFinite::Refuse)
+}
+
+/// [`read_soup`], keeping or refusing NaN and infinite coordinates (`info` keeps them to list
+/// them among its problems; every other command refuses them, naming file, line and vertex).
+pub fn read_soup_with(
+    path: &Path,
+    weld: bool,
+    non_finite: surftopo_io::NonFinite,
+) -> anyhow::Result<(PolygonSoup, usize)> {
     let (soup, format) = if is_stdio(path) {
-        surftopo_io::read_bytes_detected(&stdin_bytes()?, STDIN_NAME)
+        surftopo_io::read_bytes_detected(&stdin_bytes()?, STDIN_NAME, non_finite)
     } else {
-        surftopo_io::read_path_detected(path, &crate::limits::read_limits())
+        surftopo_io::read_path_detected(path, &crate::limits::read_limits(), non_finite)
     }
     .map_err(explain_limit)?;
     weld_soup(
@@ -160,7 +170,8 @@ fn face_of(error: &mut BuildError) -> Option<&mut usize> {
         | BuildError::NonManifoldEdge { face, .. }
         | BuildError::NonOrientable { face, .. }
         | BuildError::Disconnected { face, .. }
-        | BuildError::NotTriangle { face, .. } => Some(face),
+        | BuildError::NotTriangle { face, .. }
+        | BuildError::ZeroArea { face } => Some(face),
         _ => None,
     }
 }

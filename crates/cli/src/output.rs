@@ -408,15 +408,6 @@ impl MatrixFile {
     }
 }
 
-/// Writes a symmetric matrix atomically in the format [`MatrixFile::of`] gives for `path`.
-pub fn write_matrix(
-    path: &Path,
-    matrix: &surftopo_intrinsic::SparseMatrix,
-    comment: &str,
-) -> anyhow::Result<()> {
-    write_file(path, |w| fill_matrix(w, path, matrix, comment))
-}
-
 /// Writes a symmetric matrix to `w` in the format [`MatrixFile::of`] gives for `path`.
 pub fn fill_matrix(
     w: &mut impl std::io::Write,

@@ -108,12 +108,14 @@ pub enum IoError {
         vertex_count: u64,
     },
     /// A coordinate is NaN or infinite (or overflows to infinity).
-    #[error("{file}:{at}: non-finite coordinate {value}")]
+    #[error("{file}:{at}: non-finite coordinate {value} of vertex {vertex}")]
     NonFinite {
         /// File name.
         file: String,
         /// Where.
         at: Location,
+        /// The vertex (0-based, in file order; for STL, corner `3t + k` of facet `t`).
+        vertex: u64,
         /// The value read.
         value: f64,
     },
@@ -212,9 +214,36 @@ impl IoError {
 #[derive(Clone, Copy)]
 pub(crate) struct Ctx<'n> {
     pub name: &'n str,
+    /// What to do with a NaN or infinite coordinate.
+    pub non_finite: crate::NonFinite,
 }
 
-impl Ctx<'_> {
+impl<'n> Ctx<'n> {
+    /// A context refusing non-finite coordinates.
+    pub fn new(name: &'n str) -> Self {
+        Ctx {
+            name,
+            non_finite: crate::NonFinite::Refuse,
+        }
+    }
+
+    /// Whether non-finite coordinates are kept rather than refused.
+    #[inline]
+    pub fn keeps_non_finite(self) -> bool {
+        self.non_finite == crate::NonFinite::Keep
+    }
+
+    /// `value`, the coordinate of vertex `vertex` read at `at`, unless it is non-finite and
+    /// such coordinates are refused.
+    #[inline]
+    pub fn coordinate(self, at: Location, vertex: usize, value: f64) -> Result<f64, IoError> {
+        if value.is_finite() || self.keeps_non_finite() {
+            Ok(value)
+        } else {
+            Err(self.non_finite(at, vertex, value))
+        }
+    }
+
     #[cold]
     pub fn bad_header(self, at: Location, message: impl Into<String>) -> IoError {
         IoError::BadHeader {
@@ -253,10 +282,11 @@ impl Ctx<'_> {
     }
 
     #[cold]
-    pub fn non_finite(self, at: Location, value: f64) -> IoError {
+    pub fn non_finite(self, at: Location, vertex: usize, value: f64) -> IoError {
         IoError::NonFinite {
             file: self.name.to_owned(),
             at,
+            vertex: vertex as u64,
             value,
         }
     }

@@ -51,15 +51,28 @@ pub fn read_path(path: &Path) -> Result<PolygonSoup, IoError> {
 /// # Errors
 /// As [`read_path`]; [`IoError::InputTooLarge`] beyond `limits.max_bytes`.
 pub fn read_path_with(path: &Path, limits: &ReadLimits) -> Result<PolygonSoup, IoError> {
+    read_path_with_non_finite(path, limits, crate::NonFinite::Refuse)
+}
+
+/// [`read_path_with`], with `non_finite` saying whether NaN and infinite coordinates are
+/// refused or kept ([`crate::read_bytes_with`]).
+///
+/// # Errors
+/// As [`read_path_with`].
+pub fn read_path_with_non_finite(
+    path: &Path,
+    limits: &ReadLimits,
+    non_finite: crate::NonFinite,
+) -> Result<PolygonSoup, IoError> {
     let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
     let bytes = load_path(path, limits)?;
-    crate::read_bytes(&bytes, format, &name)
+    crate::read_bytes_with(&bytes, format, &name, non_finite)
 }
 
-/// Reads a mesh file within `limits`, its format from the extension when it has one (as
-/// [`read_path_with`]) and otherwise from the content ([`crate::sniff_format`], after
+/// Reads a mesh file within `limits` (non-finite coordinates as `non_finite` says), its format
+/// from the extension when it has one (as [`read_path_with`]) and otherwise from the content ([`crate::sniff_format`], after
 /// decompressing gzip data told by its magic); returns the soup and the format read.
 ///
 /// # Errors
@@ -68,17 +81,21 @@ pub fn read_path_with(path: &Path, limits: &ReadLimits) -> Result<PolygonSoup, I
 pub fn read_path_detected(
     path: &Path,
     limits: &ReadLimits,
+    non_finite: crate::NonFinite,
 ) -> Result<(PolygonSoup, Format), IoError> {
     let name = path_name(path);
     let bytes = load_path(path, limits)?;
     match Format::from_path(path) {
-        Some(format) => Ok((crate::read_bytes(&bytes, format, &name)?, format)),
+        Some(format) => Ok((
+            crate::read_bytes_with(&bytes, format, &name, non_finite)?,
+            format,
+        )),
         None if crate::is_gzip(&bytes) && !is_gzip_path(path) => {
             let inner = decompress_gzip(&bytes[..], limits, &name)?;
             drop(bytes);
-            read_bytes_detected(&inner, &name)
+            read_bytes_detected(&inner, &name, non_finite)
         }
-        None => read_bytes_detected(&bytes, &name),
+        None => read_bytes_detected(&bytes, &name, non_finite),
     }
 }
 
@@ -88,9 +105,16 @@ pub fn read_path_detected(
 ///
 /// # Errors
 /// [`IoError::UnknownContent`], or the reader's errors as [`crate::read_bytes`].
-pub fn read_bytes_detected(bytes: &[u8], name: &str) -> Result<(PolygonSoup, Format), IoError> {
+pub fn read_bytes_detected(
+    bytes: &[u8],
+    name: &str,
+    non_finite: crate::NonFinite,
+) -> Result<(PolygonSoup, Format), IoError> {
     let format = crate::sniff_format(bytes, name)?;
-    Ok((crate::read_bytes(bytes, format, name)?, format))
+    Ok((
+        crate::read_bytes_with(bytes, format, name, non_finite)?,
+        format,
+    ))
 }
 
 /// The whole of a stream (standard input) within `limits`, decompressed when it starts with the
@@ -103,7 +127,7 @@ pub fn load_reader(
     limits: &ReadLimits,
     name: &str,
 ) -> Result<Vec<u8>, IoError> {
-    let ctx = Ctx { name };
+    let ctx = Ctx::new(name);
     let mut bytes = Vec::new();
     read_limited(&mut reader, limits.max_bytes, &mut bytes)
         .map_err(|e| e.into_error(ctx, limits))?;
@@ -127,7 +151,7 @@ fn path_name(path: &Path) -> String {
 /// [`IoError::OutOfMemory`].
 pub fn load_path(path: &Path, limits: &ReadLimits) -> Result<Vec<u8>, IoError> {
     let name = path_name(path);
-    let ctx = Ctx { name: &name };
+    let ctx = Ctx::new(&name);
     let mut file = File::open(path).map_err(|e| ctx.io(e))?;
     let len = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut bytes = Vec::new();
@@ -171,7 +195,7 @@ pub fn decompress_gzip(
     name: &str,
 ) -> Result<Vec<u8>, IoError> {
     let mut bytes = Vec::new();
-    gunzip_into(reader, limits, &mut bytes).map_err(|e| e.into_error(Ctx { name }, limits))?;
+    gunzip_into(reader, limits, &mut bytes).map_err(|e| e.into_error(Ctx::new(name), limits))?;
     Ok(bytes)
 }
 
@@ -307,12 +331,9 @@ fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result
 /// `path` is left as it was.
 pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Result<(), IoError> {
     let staged = stage_path(path, soup, options)?;
-    staged.commit().map_err(|e| {
-        Ctx {
-            name: &path_name(path),
-        }
-        .io(e)
-    })
+    staged
+        .commit()
+        .map_err(|e| Ctx::new(&path_name(path)).io(e))
 }
 
 /// [`write_path`] up to the rename: the mesh file written and synced under its temporary name,
@@ -342,10 +363,7 @@ pub fn stage_path_as(
 ) -> Result<StagedFile, IoError> {
     crate::check_writable(soup, format)?;
     stage_write(path, |file| encode(file, soup, format, gzip, options)).map_err(|e| {
-        Ctx {
-            name: &path_name(path),
-        }
-        .io(e)
+        Ctx::new(&path_name(path)).io(e)
     })
 }
 
@@ -364,7 +382,7 @@ pub fn write_encoded(
     crate::check_writable(soup, format)?;
     encode(writer, soup, format, gzip, options)
         .map(drop)
-        .map_err(|e| Ctx { name: "<writer>" }.io(e))
+        .map_err(|e| Ctx::new("<writer>").io(e))
 }
 
 /// Writes a checked soup, through gzip when `gzip`; returns the writer.

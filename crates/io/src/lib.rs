@@ -44,7 +44,8 @@ pub use format::{Format, is_gzip_path};
 pub use fs::{
     DEFAULT_MAX_INPUT_BYTES, ReadLimits, StagedFile, atomic_write, decompress_gzip, load_path,
     load_reader, read_bytes_detected, read_path, read_path_detected, read_path_with,
-    remove_temporaries_then, stage_path, stage_path_as, stage_write, write_encoded, write_path,
+    read_path_with_non_finite, remove_temporaries_then, stage_path, stage_path_as, stage_write,
+    write_encoded, write_path,
 };
 pub use sniff::{is_gzip, sniff_format};
 pub use soup::{NotTriangles, PolygonSoup};
@@ -103,7 +104,30 @@ impl WriteOptions {
 /// offset (binary) of the problem; an input without a single face (empty,
 /// another format, binary data in a text format) is [`IoError::NoFaces`].
 pub fn read_bytes(bytes: &[u8], format: Format, name: &str) -> Result<PolygonSoup, IoError> {
-    let ctx = Ctx { name };
+    read_bytes_with(bytes, format, name, NonFinite::Refuse)
+}
+
+/// What a reader does with a coordinate that is NaN or infinite (or overflows to infinity).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum NonFinite {
+    /// Stop with [`IoError::NonFinite`], naming the file, the line or byte offset and the
+    /// vertex (the default: no algorithm can use such a vertex).
+    #[default]
+    Refuse,
+    /// Keep the value in the soup, for a caller that reports such vertices among other problems
+    /// (`surftopo info`); what consumes the soup must check the coordinates itself.
+    Keep,
+}
+
+/// [`read_bytes`], with `non_finite` saying whether NaN and infinite coordinates are refused
+/// or kept.
+pub fn read_bytes_with(
+    bytes: &[u8],
+    format: Format,
+    name: &str,
+    non_finite: NonFinite,
+) -> Result<PolygonSoup, IoError> {
+    let ctx = Ctx { name, non_finite };
     let soup = match format {
         Format::Obj => obj::read(bytes, ctx),
         Format::Off => off::read(bytes, ctx),
@@ -140,7 +164,7 @@ pub fn read(reader: impl Read, format: Format, name: &str) -> Result<PolygonSoup
     reader
         .take(DEFAULT_MAX_INPUT_BYTES + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| Ctx { name }.io(e))?;
+        .map_err(|e| Ctx::new(name).io(e))?;
     if bytes.len() as u64 > DEFAULT_MAX_INPUT_BYTES {
         return Err(IoError::InputTooLarge {
             file: name.to_owned(),
@@ -167,7 +191,7 @@ pub fn write(
     check_writable(soup, format)?;
     write_unchecked(writer, soup, format, options)
         .map(drop)
-        .map_err(|e| Ctx { name: "<writer>" }.io(e))
+        .map_err(|e| Ctx::new("<writer>").io(e))
 }
 
 fn check_writable(soup: &PolygonSoup, format: Format) -> Result<(), IoError> {

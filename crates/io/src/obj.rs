@@ -56,26 +56,28 @@ fn read_vertex(lx: &mut Lexer<'_>, soup: &mut PolygonSoup, ctx: Ctx<'_>) -> Resu
     let y = lx.f64();
     let z = lx.f64();
     match (x, y, z) {
-        (Ok(x), Ok(y), Ok(z)) if x.is_finite() && y.is_finite() && z.is_finite() => {
+        (Ok(x), Ok(y), Ok(z))
+            if ctx.keeps_non_finite() || (x.is_finite() && y.is_finite() && z.is_finite()) =>
+        {
             if soup.positions.len() >= u32::MAX as usize {
                 return Err(ctx.too_large(lx.at(), "more than 2^32-1 vertices"));
             }
             soup.positions.push([x, y, z]);
             Ok(())
         }
-        _ => Err(vertex_error(lx.buf, start, line, ctx)),
+        _ => Err(vertex_error(lx.buf, start, line, soup.positions.len(), ctx)),
     }
 }
 
 /// Re-reads a vertex statement's coordinates to name the first bad one.
 #[cold]
-fn vertex_error(buf: &[u8], start: usize, line: u64, ctx: Ctx<'_>) -> IoError {
+fn vertex_error(buf: &[u8], start: usize, line: u64, vertex: usize, ctx: Ctx<'_>) -> IoError {
     let mut lx = Lexer::new(buf).with_continuation();
     lx.pos = start;
     lx.line = line;
     for axis in ["x", "y", "z"] {
         match lx.f64() {
-            Ok(v) if !v.is_finite() => return ctx.non_finite(lx.at(), v),
+            Ok(v) if !v.is_finite() => return ctx.non_finite(lx.at(), vertex, v),
             Ok(_) => {}
             Err(e) => return lx.num_error(ctx, e, &format!("{axis} coordinate")),
         }

@@ -42,8 +42,7 @@ fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> 
         for (axis, c) in p.iter_mut().enumerate() {
             lx.skip_space(COMMENT);
             *c = match lx.f64() {
-                Ok(v) if v.is_finite() => v,
-                Ok(v) => return Err(ctx.non_finite(lx.at(), v)),
+                Ok(v) => ctx.coordinate(lx.at(), i, v)?,
                 Err(e) => {
                     let what = format!("{} coordinate of vertex {} of {nv}", AXES[axis], i + 1);
                     return Err(lx.num_error(ctx, e, &what));

@@ -483,10 +483,8 @@ fn read_binary<const BE: bool>(
                         if let Role::Vertex(xyz) = role
                             && let Some(axis) = xyz.iter().position(|&k| k == pi)
                         {
-                            p3[axis] = load_f64::<BE>(t, b);
-                            if !p3[axis].is_finite() {
-                                return Err(ctx.non_finite(off(pos), p3[axis]));
-                            }
+                            let v = load_f64::<BE>(t, b);
+                            p3[axis] = ctx.coordinate(off(pos), soup.positions.len(), v)?;
                         }
                         pos += t.size();
                     }
@@ -623,9 +621,11 @@ fn vertex_loop(
         let y = load(1, &rec[offs[1]..]);
         let z = load(2, &rec[offs[2]..]);
         let p = [x, y, z];
-        if !(x.is_finite() && y.is_finite() && z.is_finite()) {
+        let finite = x.is_finite() && y.is_finite() && z.is_finite();
+        if !(finite || ctx.keeps_non_finite()) {
             let axis = p.iter().position(|c| !c.is_finite()).unwrap_or(0);
-            return Err(ctx.non_finite(off(base + i * stride + offs[axis]), p[axis]));
+            let at = off(base + i * stride + offs[axis]);
+            return Err(ctx.non_finite(at, soup.positions.len(), p[axis]));
         }
         soup.positions.push(p);
     }
@@ -771,8 +771,7 @@ fn read_ascii(
                         };
                         if let Some(axis) = axis {
                             p3[axis] = match lx.f64() {
-                                Ok(v) if v.is_finite() => v,
-                                Ok(v) => return Err(ctx.non_finite(lx.at(), v)),
+                                Ok(v) => ctx.coordinate(lx.at(), soup.positions.len(), v)?,
                                 Err(e) => {
                                     let what = format!("vertex {}", show(&p.name));
                                     return Err(lx.num_error(ctx, e, &what));

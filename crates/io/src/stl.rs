@@ -72,11 +72,12 @@ fn read_binary(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
             for (axis, c) in p.iter_mut().enumerate() {
                 let o = 12 + 12 * k + 4 * axis;
                 let v = f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]);
-                if !v.is_finite() {
-                    let at = Location::Offset((HEADER + t * RECORD + o) as u64);
-                    return Err(ctx.non_finite(at, f64::from(v)));
-                }
-                *c = f64::from(v);
+                let at = || Location::Offset((HEADER + t * RECORD + o) as u64);
+                *c = if v.is_finite() {
+                    f64::from(v)
+                } else {
+                    ctx.coordinate(at(), soup.positions.len(), f64::from(v))?
+                };
             }
             soup.positions.push(p);
         }
@@ -107,8 +108,7 @@ fn read_ascii(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
             let mut p = [0.0f64; 3];
             for (axis, c) in p.iter_mut().enumerate() {
                 *c = match lx.f64() {
-                    Ok(v) if v.is_finite() => v,
-                    Ok(v) => return Err(ctx.non_finite(lx.at(), v)),
+                    Ok(v) => ctx.coordinate(lx.at(), soup.positions.len(), v)?,
                     Err(e) => {
                         let what = format!("{} coordinate", ["x", "y", "z"][axis]);
                         return Err(lx.num_error(ctx, e, &what));

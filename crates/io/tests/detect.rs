@@ -6,7 +6,7 @@ mod common;
 use common::{assert_same, cube_quads, mixed, torus};
 use surftopo_io::{
     Format, IoError, PolygonSoup, ReadLimits, WriteOptions, load_reader, read_bytes,
-    read_bytes_detected, read_path_detected, write_encoded,
+    NonFinite, read_bytes_detected, read_path_detected, write_encoded,
 };
 
 /// The triangles of a soup's fans, as corner positions rounded to `f32` (what STL holds).
@@ -41,7 +41,7 @@ fn every_written_format_is_told_from_a_file_without_extension_plain_and_gzip() {
             for gzip in [false, true] {
                 let path = dir.path().join(format!("mesh-{format}-{gzip}"));
                 std::fs::write(&path, encoded(&soup, format, gzip)).unwrap();
-                let (back, told) = read_path_detected(&path, &ReadLimits::default()).unwrap();
+                let (back, told) = read_path_detected(&path, &ReadLimits::default(), NonFinite::Refuse).unwrap();
                 assert_eq!(told, format, "{}", path.display());
                 check_same(&soup, &back, format);
             }
@@ -57,7 +57,7 @@ fn a_stream_is_decompressed_by_its_magic_and_sniffed() {
         assert!(gz.starts_with(&[0x1f, 0x8b]));
         let bytes = load_reader(&gz[..], &ReadLimits::default(), "<stdin>").unwrap();
         assert_eq!(bytes, encoded(&soup, format, false));
-        let (back, told) = read_bytes_detected(&bytes, "<stdin>").unwrap();
+        let (back, told) = read_bytes_detected(&bytes, "<stdin>", NonFinite::Refuse).unwrap();
         assert_eq!(told, format);
         check_same(&soup, &back, format);
     }
@@ -72,7 +72,7 @@ fn a_name_with_an_extension_is_believed_and_undecidable_content_is_a_typed_error
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("mesh.data");
     std::fs::write(&path, b"hello\nworld\n").unwrap();
-    let e = read_path_detected(&path, &ReadLimits::default()).unwrap_err();
+    let e = read_path_detected(&path, &ReadLimits::default(), NonFinite::Refuse).unwrap_err();
     assert!(matches!(e, IoError::UnknownContent { .. }), "{e:?}");
     assert!(e.to_string().contains("mesh.data: cannot tell"), "{e}");
     assert!(e.to_string().contains("line 1"), "{e}");

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use surftopo_io::{Format, IoError, Location, read_bytes, read_path};
+use surftopo_io::{Format, IoError, Location, NonFinite, read_bytes, read_bytes_with, read_path};
 
 fn err(data: &[u8], format: Format, name: &str) -> IoError {
     match read_bytes(data, format, name) {
@@ -426,7 +426,7 @@ fn non_finite_coordinates() {
         );
         assert_eq!(
             e.to_string(),
-            format!("m.obj:2: non-finite coordinate {value}")
+            format!("m.obj:2: non-finite coordinate {value} of vertex 1")
         );
     }
     let e = err(b"OFF\n1 0 0\n0 nan 0\n", Format::Off, "m.off");
@@ -469,6 +469,52 @@ fn non_finite_coordinates() {
         ),
         "{e:?}"
     );
+}
+
+/// `NonFinite::Keep` keeps NaN and infinite coordinates in every reader (text and binary
+/// paths), where `Refuse` names the vertex.
+#[test]
+fn non_finite_coordinates_are_kept_on_request() {
+    let mut ply = binary_ply_header(3, 1);
+    for c in [0.0, 0.0, 0.0, 1.0, f64::NAN, 0.0, 0.0, 1.0, f64::INFINITY] {
+        ply.extend_from_slice(&c.to_le_bytes());
+    }
+    ply.extend_from_slice(&[3, 0, 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0]);
+    let mut stl = vec![0u8; 80];
+    stl.extend_from_slice(&1u32.to_le_bytes());
+    let mut rec = [0u8; 50];
+    rec[28..32].copy_from_slice(&f32::NAN.to_le_bytes());
+    rec[44..48].copy_from_slice(&f32::INFINITY.to_le_bytes());
+    stl.extend_from_slice(&rec);
+    let ascii_ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+                     property float z\nelement face 1\nproperty list uchar int vertex_indices\n\
+                     end_header\n0 0 0\n1 nan 0\n0 1 inf\n3 0 1 2\n";
+    let ascii_stl = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 nan 0\n\
+                     vertex 0 1 inf\nendloop\nendfacet\nendsolid s\n";
+    let cases: [(&[u8], Format); 6] = [
+        (b"v 0 0 0\nv 1 nan 0\nv 0 1 inf\nf 1 2 3\n", Format::Obj),
+        (
+            b"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 inf\n3 0 1 2\n",
+            Format::Off,
+        ),
+        (&ply, Format::Ply),
+        (ascii_ply.as_bytes(), Format::Ply),
+        (&stl, Format::Stl),
+        (ascii_stl.as_bytes(), Format::Stl),
+    ];
+    for (bytes, format) in cases {
+        let soup = read_bytes_with(bytes, format, "m", NonFinite::Keep).unwrap();
+        assert_eq!(soup.positions.len(), 3, "{format:?}");
+        assert!(soup.positions[1][1].is_nan(), "{format:?}");
+        assert_eq!(soup.positions[2][2], f64::INFINITY, "{format:?}");
+        assert_eq!(soup.face(0), &[0, 1, 2], "{format:?}");
+        let e = read_bytes(bytes, format, "m").unwrap_err();
+        assert!(
+            matches!(e, IoError::NonFinite { vertex: 1, .. }),
+            "{format:?}: {e:?}"
+        );
+        assert!(e.to_string().ends_with("of vertex 1"), "{e}");
+    }
 }
 
 #[test]

@@ -52,6 +52,93 @@ pub struct Inspection {
     pub problems: Vec<BuildError>,
     /// Total number of problems found.
     pub problem_count: usize,
+    /// The problems found, counted by class (they sum to `problem_count`).
+    pub counts: ProblemCounts,
+}
+
+/// The problems of an [`Inspection`] counted by class, one count per kind of [`BuildError`]
+/// that [`inspect`] and the geometric checks ([`crate::geometry::problems`]) report. The field
+/// names are the keys of `surftopo info --json` and, read with spaces for `_`, its text labels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ProblemCounts {
+    /// Coordinates that are NaN or infinite, one per coordinate (a vertex `nan nan nan` counts
+    /// three): [`BuildError::NonFinite`].
+    pub non_finite_coordinates: usize,
+    /// Faces of exactly zero area (collinear vertices): [`BuildError::ZeroArea`].
+    pub zero_area_faces: usize,
+    /// Faces repeating a vertex: [`BuildError::RepeatedVertex`].
+    pub degenerate_faces: usize,
+    /// Faces on the same vertices as an earlier face: [`BuildError::DuplicateFace`].
+    pub duplicate_faces: usize,
+    /// Edges in one face: [`BuildError::BoundaryEdge`].
+    pub boundary_edges: usize,
+    /// Edges in more than two faces: [`BuildError::NonManifoldEdge`].
+    pub non_manifold_edges: usize,
+    /// Vertices whose faces form several fans: [`BuildError::NonManifoldVertex`].
+    pub non_manifold_vertices: usize,
+    /// 1 when no consistent orientation exists ([`BuildError::NonOrientable`], reported once, at
+    /// the first conflict found).
+    pub non_orientable: usize,
+    /// 1 when the faces form several connected components ([`BuildError::Disconnected`],
+    /// reported once; [`Inspection::components`] says how many).
+    pub disconnected: usize,
+    /// Any other problem: a vertex index out of range, no face at all, more elements than
+    /// `u32` ids address (none of which comes from a file: the readers refuse such files, and
+    /// `surftopo info` with them).
+    pub other_problems: usize,
+}
+
+impl ProblemCounts {
+    /// Counts one problem in its class.
+    pub fn add(&mut self, problem: &BuildError) {
+        let count = match problem {
+            BuildError::NonFinite { .. } => &mut self.non_finite_coordinates,
+            BuildError::ZeroArea { .. } => &mut self.zero_area_faces,
+            BuildError::RepeatedVertex { .. } => &mut self.degenerate_faces,
+            BuildError::DuplicateFace { .. } => &mut self.duplicate_faces,
+            BuildError::BoundaryEdge { .. } => &mut self.boundary_edges,
+            BuildError::NonManifoldEdge { .. } => &mut self.non_manifold_edges,
+            BuildError::NonManifoldVertex { .. } => &mut self.non_manifold_vertices,
+            BuildError::NonOrientable { .. } => &mut self.non_orientable,
+            BuildError::Disconnected { .. } => &mut self.disconnected,
+            BuildError::IndexOutOfRange { .. }
+            | BuildError::Empty
+            | BuildError::TooLarge { .. }
+            | BuildError::SideUnglued { .. }
+            | BuildError::SideGluedTwice { .. }
+            | BuildError::NotAsGiven { .. }
+            | BuildError::NotTriangle { .. } => &mut self.other_problems,
+        };
+        *count += 1;
+    }
+
+    /// `(key, count)` per class, in the order `surftopo info` prints them; the key is the
+    /// field's name.
+    pub fn entries(&self) -> [(&'static str, usize); 10] {
+        [
+            ("non_finite_coordinates", self.non_finite_coordinates),
+            ("zero_area_faces", self.zero_area_faces),
+            ("degenerate_faces", self.degenerate_faces),
+            ("duplicate_faces", self.duplicate_faces),
+            ("boundary_edges", self.boundary_edges),
+            ("non_manifold_edges", self.non_manifold_edges),
+            ("non_manifold_vertices", self.non_manifold_vertices),
+            ("non_orientable", self.non_orientable),
+            ("disconnected", self.disconnected),
+            ("other_problems", self.other_problems),
+        ]
+    }
+
+    /// The problems of the geometry (non-finite coordinates, zero-area faces); the others are
+    /// of the combinatorics.
+    pub fn geometric(&self) -> usize {
+        self.non_finite_coordinates + self.zero_area_faces
+    }
+
+    /// All problems, every class.
+    pub fn total(&self) -> usize {
+        self.entries().iter().map(|&(_, n)| n).sum()
+    }
 }
 
 impl Inspection {
@@ -68,9 +155,16 @@ impl Inspection {
     pub fn is_valid(&self) -> bool {
         self.problem_count == 0
     }
-    /// The genus `(2 - χ) / 2` when the soup is valid ([`Self::is_valid`]), `None` otherwise.
+    /// Whether the combinatorics are those of a closed, connected, orientable surface: no
+    /// problem but the geometric ones ([`ProblemCounts::geometric`]: non-finite coordinates,
+    /// zero-area faces), which leave the topology defined.
+    pub fn is_combinatorially_valid(&self) -> bool {
+        self.problem_count == self.counts.geometric()
+    }
+    /// The genus `(2 - χ) / 2` when the combinatorics are valid
+    /// ([`Self::is_combinatorially_valid`]), `None` otherwise.
     pub fn genus(&self) -> Option<i64> {
-        self.is_valid()
+        self.is_combinatorially_valid()
             .then(|| (2 - self.euler_characteristic()) / 2)
     }
     /// Whether a problem makes the faces a non-simplicial complex: a face repeating a vertex, or
@@ -83,14 +177,25 @@ impl Inspection {
             )
         })
     }
-    /// Counts a problem found outside the soup's combinatorics (e.g. a non-finite coordinate)
-    /// and lists it first.
-    pub fn add_problem_first(&mut self, e: BuildError) {
-        self.problem_count += 1;
-        self.problems.insert(0, e);
+    /// Whether more problems were found than [`Self::problems`] lists (at most
+    /// [`MAX_LISTED_PROBLEMS`]).
+    pub fn is_truncated(&self) -> bool {
+        self.problem_count > self.problems.len()
+    }
+    /// Counts problems found outside the soup's combinatorics (non-finite coordinates, zero-area
+    /// faces: [`crate::geometry::problems`]) and lists them before the others, the list still
+    /// cut at [`MAX_LISTED_PROBLEMS`].
+    pub fn add_problems_first(&mut self, problems: impl IntoIterator<Item = BuildError>) {
+        let later = std::mem::take(&mut self.problems);
+        for e in problems {
+            self.push(e);
+        }
+        let room = MAX_LISTED_PROBLEMS - self.problems.len();
+        self.problems.extend(later.into_iter().take(room));
     }
     fn push(&mut self, e: BuildError) {
         self.problem_count += 1;
+        self.counts.add(&e);
         if self.problems.len() < MAX_LISTED_PROBLEMS {
             self.problems.push(e);
         }

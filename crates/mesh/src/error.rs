@@ -91,6 +91,13 @@ pub enum BuildError {
         /// The value, as text (`NaN`, `inf`, `-inf`).
         value: String,
     },
+    /// A face of exactly zero area: its vertices lie on one line
+    /// ([`crate::geometry::is_zero_area_face`]).
+    #[error("face {face}: zero area (its vertices are collinear)")]
+    ZeroArea {
+        /// Input face index.
+        face: usize,
+    },
     /// More elements than `u32` ids can address.
     #[error("too large: {what} exceeds the u32 id range")]
     TooLarge {

@@ -26,6 +26,70 @@ pub fn check_finite(positions: &[Point3]) -> Result<(), BuildError> {
     Ok(())
 }
 
+/// Every NaN or infinite coordinate, one [`BuildError::NonFinite`] per coordinate, in vertex
+/// then axis order.
+pub fn non_finite_coordinates(positions: &[Point3]) -> impl Iterator<Item = BuildError> + '_ {
+    positions.iter().enumerate().flat_map(|(vertex, p)| {
+        (0..3)
+            .filter(|&axis| !p[axis].is_finite())
+            .map(move |axis| BuildError::NonFinite {
+                vertex: vertex as u32,
+                axis,
+                value: format!("{}", p[axis]),
+            })
+    })
+}
+
+/// Whether the triangle `a, b, c` has exactly zero area: its cross product `(b - a) × (c - a)`
+/// is zero, i.e. the orientations of its projections on the three coordinate planes (the
+/// cross product's components) all vanish. Each is decided exactly by Shewchuk's adaptive
+/// `orient2d` (the `robust` crate), so no tolerance is involved and rounding neither hides nor
+/// invents a zero; this holds while the predicates' products neither overflow nor underflow
+/// (coordinate differences between about 1e-140 and 1e140 in magnitude).
+pub fn is_zero_area_triangle(a: Point3, b: Point3, c: Point3) -> bool {
+    let on = |i: usize, j: usize| {
+        let p = |q: Point3| robust::Coord { x: q[i], y: q[j] };
+        robust::orient2d(p(a), p(b), p(c)) == 0.0
+    };
+    on(0, 1) && on(1, 2) && on(2, 0)
+}
+
+/// Whether a face (a polygon given by vertex indices into `positions`) has exactly zero area:
+/// every triangle of its fan from the first vertex has ([`is_zero_area_triangle`]); for a
+/// triangle, its three vertices are collinear. The caller checks that indices are in range.
+pub fn is_zero_area_face(positions: &[Point3], face: &[u32]) -> bool {
+    let at = |k: usize| positions[face[k] as usize];
+    face.len() >= 3 && (1..face.len() - 1).all(|k| is_zero_area_triangle(at(0), at(k), at(k + 1)))
+}
+
+/// The geometric problems of a soup: every non-finite coordinate
+/// ([`non_finite_coordinates`]), then every face of exactly zero area ([`is_zero_area_face`],
+/// [`BuildError::ZeroArea`], `face` its index in `faces`). A face with a vertex index out of
+/// range, a repeated vertex or a non-finite vertex is not tested for zero area: it is a
+/// problem of its own kind already ([`crate::inspect`], or the first list). No relative
+/// threshold ("near-zero" area) is applied: a zero-area test with a tolerance would depend on
+/// the scale chosen, and exactly zero is what makes the intrinsic triangle degenerate.
+pub fn problems<'a>(
+    positions: &[Point3],
+    faces: impl IntoIterator<Item = &'a [u32]>,
+) -> Vec<BuildError> {
+    let mut found: Vec<BuildError> = non_finite_coordinates(positions).collect();
+    let testable = |face: &[u32]| {
+        face.iter().enumerate().all(|(k, &v)| {
+            positions
+                .get(v as usize)
+                .is_some_and(|p| p.iter().all(|c| c.is_finite()))
+                && !face[..k].contains(&v)
+        })
+    };
+    for (face, indices) in faces.into_iter().enumerate() {
+        if testable(indices) && is_zero_area_face(positions, indices) {
+            found.push(BuildError::ZeroArea { face });
+        }
+    }
+    found
+}
+
 /// Euclidean distance. When the sum of squares overflows or falls below the normal range (points
 /// beyond about 1e154 or closer than about 1e-154), the differences are scaled by their largest
 /// magnitude first, so the distance is finite and non-zero whenever it is representable.

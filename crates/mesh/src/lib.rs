@@ -25,7 +25,9 @@ mod surface;
 mod topology;
 mod union_find;
 
-pub use build::{BuildReport, Inspection, MAX_LISTED_PROBLEMS, build, build_topology, inspect};
+pub use build::{
+    BuildReport, Inspection, MAX_LISTED_PROBLEMS, ProblemCounts, build, build_topology, inspect,
+};
 pub use compact::Renumbering;
 pub use contract::{Contraction, LinkScratch};
 pub use error::{BuildError, EditError, InvariantError};

@@ -164,9 +164,8 @@ pub fn info<'py>(
     }
     let inspection = py.detach(|| {
         let mut inspection = surftopo_mesh::inspect(positions.len(), &triangles);
-        if let Err(e) = geometry::check_finite(&positions) {
-            inspection.add_problem_first(e);
-        }
+        let faces = triangles.iter().map(|t| &t[..]);
+        inspection.add_problems_first(geometry::problems(&positions, faces));
         inspection
     });
     let d = PyDict::new(py);
@@ -180,13 +179,14 @@ pub fn info<'py>(
     d.set_item("orientable", inspection.orientable)?;
     d.set_item("simplicial", !inspection.has_degenerate_faces())?;
     d.set_item("valid", inspection.is_valid())?;
-    d.set_item("boundary_edges", inspection.boundary_edges)?;
-    d.set_item("non_manifold_edges", inspection.non_manifold_edges)?;
-    d.set_item("non_manifold_vertices", inspection.non_manifold_vertices)?;
     d.set_item("reoriented_faces", inspection.reoriented_faces)?;
-    d.set_item("dropped_vertices", inspection.dropped_vertices)?;
+    d.set_item("unreferenced_vertices", inspection.dropped_vertices)?;
     d.set_item("welded_vertices", welded)?;
-    d.set_item("problem_count", inspection.problem_count)?;
+    for (key, count) in inspection.counts.entries() {
+        d.set_item(key, count)?;
+    }
+    d.set_item("problems_total", inspection.problem_count)?;
+    d.set_item("problems_truncated", inspection.is_truncated())?;
     let problems: Vec<String> = inspection
         .problems
         .iter()

@@ -18,7 +18,7 @@ def mesh(request, shared_meshes):
     if not path.is_file():
         pytest.skip(f"{path} is missing from SURFTOPO_MESHES")
     V, F = surftopo.read_mesh(path)
-    assert surftopo.info(V, F)["dropped_vertices"] == 0
+    assert surftopo.info(V, F)["unreferenced_vertices"] == 0
     return path, V, F
 
 

@@ -111,15 +111,16 @@ def test_info():
     info = surftopo.info(V, F)
     assert list(info) == [
         "vertices", "edges", "faces", "genus", "euler_characteristic", "components", "closed",
-        "orientable", "simplicial", "valid", "boundary_edges", "non_manifold_edges",
-        "non_manifold_vertices", "reoriented_faces", "dropped_vertices", "welded_vertices",
-        "problem_count", "problems",
+        "orientable", "simplicial", "valid", "reoriented_faces", "unreferenced_vertices",
+        "welded_vertices", "non_finite_coordinates", "zero_area_faces", "degenerate_faces", "duplicate_faces", "boundary_edges", "non_manifold_edges",
+        "non_manifold_vertices", "non_orientable", "disconnected", "other_problems",
+        "problems_total", "problems_truncated", "problems",
     ]
     assert (info["vertices"], info["edges"], info["faces"], info["genus"]) == (24, 72, 48, 1)
     assert info["valid"] and info["problems"] == []
     broken = surftopo.info(V, F[1:])
     assert not broken["valid"] and broken["genus"] is None and not broken["closed"]
-    assert broken["boundary_edges"] == 3 and broken["problem_count"] >= 1
+    assert broken["boundary_edges"] == 3 and broken["problems_total"] >= 1
     assert broken["problems"][0].startswith("boundary edge")
     # Welding: the same torus with one vertex duplicated in place.
     W = np.vstack([V, V[:1]])
@@ -174,4 +175,4 @@ def test_unreferenced_vertices_keep_input_indices():
     V2, F2, stats = surftopo.irreducible(W, G)
     assert 3 not in stats["vertex_indices"].tolist()
     assert np.array_equal(V2, W[stats["vertex_indices"]])
-    assert surftopo.info(W, G)["dropped_vertices"] == 1
+    assert surftopo.info(W, G)["unreferenced_vertices"] == 1

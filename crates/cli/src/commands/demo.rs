@@ -1,136 +1,471 @@
-//! `surftopo demo`: the main job on a built-in example, needing no file.
+//! `surftopo demo`: every capability on built-in examples, needing no file.
+//!
+//! The examples are generated: a genus-2 brick with irregular connectivity (816
+//! triangles, small enough for the brute force and the exact quality pairing to stay quick),
+//! a small broken mesh for `info`'s problem classes, and Dubois' flat tori T_x, T_{x+1} and
+//! T_{x+1/3} (x = 10^9, exact corners). Each step calls the command's own code (its `run`, or the
+//! library functions it calls) and prints one line: what was run, the result and its time.
 
-use crate::commands::generate::{self, Kind, Modifiers};
-use crate::commands::irreducible::reduce_surface;
-use crate::commands::quad::{quad_soup, quadrangulate_surface};
-use crate::output::{emit, write_file};
-use std::fmt::Write as _;
-use std::path::PathBuf;
-use surftopo_intrinsic::{
-    DelaunayOptions, IntrinsicTriangulation, TriangleStyle, cotan_laplacian, delaunay_with_stats,
-};
+use crate::commands::{delaunay, generate, info, irreducible, isometric};
+use crate::output::{emit, format_seconds};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
 use surftopo_irreducible::Algorithm;
-use surftopo_quad::QuadAlgorithm;
+use surftopo_quad::{QuadAlgorithm, QualityObjective, QualityQuads};
 
 /// The arguments of `demo`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Folder for the results.
-    #[arg(long, default_value = "surftopo-demo")]
-    pub out: PathBuf,
+    /// Folder for the results (created if needed); by default a new folder in the system's
+    /// temporary directory, kept and named in the summary.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
 }
 
-/// Generates a surface (a genus-2 brick with irregular connectivity), runs every capability on it,
-/// writes the results into `--out` and prints a summary.
+/// The parameter x of the flat tori T_x (Section 9 of the intrinsic-Delaunay paper): large
+/// enough that flipping in double precision could not reach D_x.
+const FLAT_TORUS_X: &str = "1000000000";
+/// x + 1.
+const FLAT_TORUS_X_PLUS_1: &str = "1000000001";
+/// x + 1/3.
+const FLAT_TORUS_X_PLUS_THIRD: &str = "3000000001/3";
+
+/// Runs every capability on the built-in examples, writing the results into `--out` (or a new
+/// temporary folder) and printing one line per step.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let out_dir = args.out.as_path();
-    std::fs::create_dir_all(out_dir).map_err(|e| crate::failure::unwritable(out_dir, &e))?;
-    let mut summary = String::new();
-    let kind = Kind::Genus { genus: 2, size: 2 };
-    let modifiers = Modifiers {
+    let dir = match &args.out {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).map_err(|e| crate::failure::unwritable(dir, &e))?;
+            dir.clone()
+        }
+        None => new_temporary_folder()?,
+    };
+    let started = Instant::now();
+    emit(&format!(
+        "surftopo demo: every capability on built-in examples; results in {}\n",
+        crate::failure::shown(&dir)
+    ))?;
+    let demo = Demo { dir };
+    let input = demo.generate_input()?;
+    demo.info(&input)?;
+    demo.convert(&input)?;
+    demo.irreducible(&input)?;
+    demo.quad(&input)?;
+    let tori = demo.flat_tori()?;
+    demo.delaunay(&input, &tori)?;
+    demo.isometric(&input, &tori)?;
+    emit(&format!(
+        "done in {}\n",
+        format_seconds(started.elapsed().as_secs_f64())
+    ))
+}
+
+/// The demo's output folder and its steps.
+struct Demo {
+    dir: PathBuf,
+}
+
+/// The flat tori of the demo, as portalgon JSON files by exact corners.
+struct FlatTori {
+    /// T_x.
+    x: PathBuf,
+    /// T_{x+1}: isometric to T_x.
+    x_plus_1: PathBuf,
+    /// T_{x+1/3}: not isometric to T_x.
+    x_plus_third: PathBuf,
+}
+
+impl Demo {
+    fn path(&self, name: &str) -> PathBuf {
+        self.dir.join(name)
+    }
+
+    fn shown(&self, name: &str) -> String {
+        crate::failure::shown(&self.path(name))
+    }
+
+    /// One line: the step, the result, the time.
+    fn line(label: &str, result: &str, seconds: f64) -> anyhow::Result<()> {
+        emit(&format!(
+            "  {label:<34} {result} ({})\n",
+            format_seconds(seconds)
+        ))
+    }
+
+    /// The label of a step whose command prints its own line (with its time) after it.
+    fn label(label: &str) -> anyhow::Result<()> {
+        emit(&format!("  {label:<34} "))
+    }
+
+    /// `generate genus --genus 2 --size 2 --flips 1000 --seed 7`: the main input.
+    fn generate_input(&self) -> anyhow::Result<PathBuf> {
+        let input = self.path("input.obj");
+        let start = Instant::now();
+        let kind = generate::Kind::Genus { genus: 2, size: 2 };
+        let surface = generate::modify(generate::generate(&kind)?, &modifiers(1000))?;
+        crate::output::write_surface(&input, &surface)?;
+        let mesh = &surface.mesh;
+        Self::line(
+            "generate genus --genus 2 --flips 1000",
+            &format!(
+                "{}: a brick with 2 through-holes, 1000 random flips: {} vertices, {} edges, {} faces, genus {}",
+                crate::failure::shown(&input),
+                mesh.vertex_count(),
+                mesh.edge_count(),
+                mesh.face_count(),
+                mesh.genus()
+            ),
+            start.elapsed().as_secs_f64(),
+        )?;
+        Ok(input)
+    }
+
+    /// `info` on the input, and on a small broken mesh with one problem of several classes.
+    fn info(&self, input: &Path) -> anyhow::Result<()> {
+        let start = Instant::now();
+        let report = info::inspect_path(input, false)?;
+        Self::line(
+            "info",
+            &format!(
+                "{}: {} vertices, {} edges, {} faces, genus {}, closed {}, orientable {}, {} problems",
+                crate::failure::shown(input),
+                report.vertices,
+                report.edges,
+                report.faces,
+                report.genus.map_or("-".to_string(), |g| g.to_string()),
+                report.closed,
+                report.orientable,
+                report.problems_total
+            ),
+            start.elapsed().as_secs_f64(),
+        )?;
+        // A tetrahedron with a NaN coordinate, a zero-area face (vertices 1, 2, 3 on the x axis)
+        // and a duplicate face: info lists them, every other command refuses the file.
+        let broken = self.path("broken.obj");
+        let text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 0 1\nv nan 0 0\n\
+                    f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\nf 1 2 4\n";
+        std::fs::write(&broken, text).map_err(|e| crate::failure::unwritable(&broken, &e))?;
+        let start = Instant::now();
+        let report = info::inspect_path(&broken, false)?;
+        let classes: Vec<String> = report
+            .counts
+            .0
+            .entries()
+            .iter()
+            .filter(|&&(_, n)| n > 0)
+            .map(|&(key, n)| format!("{n} {}", key.replace('_', " ")))
+            .collect();
+        Self::line(
+            "info (a broken mesh)",
+            &format!(
+                "{}: {} problems: {}",
+                crate::failure::shown(&broken),
+                report.problems_total,
+                classes.join(", ")
+            ),
+            start.elapsed().as_secs_f64(),
+        )
+    }
+
+    /// `convert` to binary PLY and gzipped OFF, each read back and compared.
+    fn convert(&self, input: &Path) -> anyhow::Result<()> {
+        let (original, _) = crate::input::read_soup(input, false)?;
+        for name in ["input.ply", "input.off.gz"] {
+            let start = Instant::now();
+            crate::output::write_soup(&self.path(name), &original)?;
+            let (back, _) = crate::input::read_soup(&self.path(name), false)?;
+            if back.positions != original.positions || back.face_indices != original.face_indices {
+                return Err(anyhow::anyhow!(
+                    "{}: read back differently from {}",
+                    self.shown(name),
+                    crate::failure::shown(input)
+                ));
+            }
+            Self::line(
+                &format!("convert input.obj {name}"),
+                &format!(
+                    "{}: {} vertices, {} faces, read back with the same positions (bit for bit) and faces",
+                    self.shown(name),
+                    back.positions.len(),
+                    back.face_count()
+                ),
+                start.elapsed().as_secs_f64(),
+            )?;
+        }
+        Ok(())
+    }
+
+    /// `irreducible` with each algorithm of the irreducible-triangulations paper.
+    fn irreducible(&self, input: &Path) -> anyhow::Result<()> {
+        let surface = crate::input::load_surface(input, false)?.surface;
+        for algorithm in Algorithm::all(1) {
+            let (reduced, report) = irreducible::reduce_surface(&surface, algorithm)?;
+            let name = format!("irreducible-{}.obj", algorithm.name());
+            crate::output::write_surface(&self.path(&name), &reduced)?;
+            Self::line(
+                &format!("irreducible --algorithm {}", algorithm.name()),
+                &format!(
+                    "{}: {} vertices, {} faces, genus {} (at most 26g - 4 = 48 vertices); {} contractions, {} link tests, {} edges tested twice",
+                    self.shown(&name),
+                    report.output.vertices,
+                    report.output.faces,
+                    report.output.genus,
+                    report.contractions,
+                    report.link_tests,
+                    report.edges_tested_more_than_once
+                ),
+                report.seconds,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// `quad` with each algorithm of the quadrangulation paper, Karp–Sipser, and both quality
+    /// objectives.
+    fn quad(&self, input: &Path) -> anyhow::Result<()> {
+        let surface = crate::input::load_surface(input, false)?.surface;
+        let fail =
+            |e: surftopo_quad::QuadError| anyhow::anyhow!("{}: {e}", self.shown("input.obj"));
+        let mut runs: Vec<(String, QualityQuads)> = Vec::new();
+        for algorithm in QuadAlgorithm::all(1) {
+            let quads = surftopo_quad::quadrangulate_with_quality(
+                &surface.mesh,
+                &surface.positions,
+                algorithm,
+            )
+            .map_err(fail)?;
+            runs.push((format!("--algorithm {}", algorithm.name()), quads));
+        }
+        for objective in QualityObjective::ALL {
+            let quads = surftopo_quad::quadrangulate_by_quality(
+                &surface.mesh,
+                &surface.positions,
+                objective,
+            )
+            .map_err(fail)?;
+            runs.push((format!("--objective {}", objective.name()), quads));
+        }
+        for (how, q) in &runs {
+            let name = format!("quads-{}.obj", q.result.stats.algorithm);
+            crate::output::write_soup(
+                &self.path(&name),
+                &crate::commands::quad::quad_soup(&surface, &q.result),
+            )?;
+            let stats = &q.result.stats;
+            Self::line(
+                &format!("quad {how}"),
+                &format!(
+                    "{}: {} quads; initial pairing {:.1}%, {} flipped edges; cost {:.3}, quality median {:.3}",
+                    self.shown(&name),
+                    q.result.quads.len(),
+                    stats.paired_percent,
+                    stats.flipped_edges,
+                    q.cost,
+                    q.report.median
+                ),
+                stats.total_seconds,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// `generate flat-torus` for T_x, T_{x+1} and T_{x+1/3}, by exact corners.
+    fn flat_tori(&self) -> anyhow::Result<FlatTori> {
+        let tori = FlatTori {
+            x: self.path("tx.json"),
+            x_plus_1: self.path("tx-plus-1.json"),
+            x_plus_third: self.path("tx-plus-third.json"),
+        };
+        let start = Instant::now();
+        for (value, path) in [
+            (FLAT_TORUS_X, &tori.x),
+            (FLAT_TORUS_X_PLUS_1, &tori.x_plus_1),
+            (FLAT_TORUS_X_PLUS_THIRD, &tori.x_plus_third),
+        ] {
+            let x: surftopo_intrinsic::geometry::Rational = value.parse()?;
+            let exact = surftopo_intrinsic::generators::flat_torus_portalgon(&x, 1)?;
+            crate::output::write_file(path, |w| {
+                Ok(surftopo_intrinsic::PortalgonDoc::from_portalgon(&exact).write(w, false)?)
+            })?;
+        }
+        Self::line(
+            "generate flat-torus --x X",
+            &format!(
+                "{}, {}, {}: T_x, T_{{x+1}}, T_{{x+1/3}} for x = {FLAT_TORUS_X} (Section 9 of the intrinsic-Delaunay paper), 1 vertex, 2 triangles, exact corners",
+                crate::failure::shown(&tori.x),
+                crate::failure::shown(&tori.x_plus_1),
+                crate::failure::shown(&tori.x_plus_third)
+            ),
+            start.elapsed().as_secs_f64(),
+        )?;
+        Ok(tori)
+    }
+
+    /// `delaunay` with each method, writing the Laplacian, the mass matrix, the tessellation and
+    /// Dubois' reduced triangulation.
+    fn delaunay(&self, input: &Path, tori: &FlatTori) -> anyhow::Result<()> {
+        use delaunay::Method;
+        let runs: [(&str, &Path, Method, bool, [&str; 5]); 5] = [
+            (
+                "delaunay --method flip",
+                input,
+                Method::Flip,
+                false,
+                [
+                    "delaunay-flip.json",
+                    "tessellation-flip.json",
+                    "laplacian.mtx",
+                    "mass.mtx",
+                    "",
+                ],
+            ),
+            (
+                "delaunay --method voronoi",
+                input,
+                Method::Voronoi,
+                false,
+                [
+                    "delaunay-voronoi.json",
+                    "tessellation-voronoi.json",
+                    "",
+                    "",
+                    "",
+                ],
+            ),
+            (
+                "delaunay --method dubois --exact",
+                &tori.x,
+                Method::Dubois,
+                true,
+                ["dx.json", "dx-tessellation.json", "", "", "dx-reduced.json"],
+            ),
+            (
+                "delaunay --method auto --exact",
+                &tori.x,
+                Method::Auto,
+                true,
+                ["dx-auto.json", "", "dx-laplacian.mtx", "dx-mass.mtx", ""],
+            ),
+            (
+                "delaunay --method auto",
+                input,
+                Method::Auto,
+                false,
+                ["delaunay-auto.json", "", "", "", ""],
+            ),
+        ];
+        for (label, source, method, exact, [out, tessellation, laplacian, mass, reduced]) in runs {
+            let file = |name: &str| (!name.is_empty()).then(|| self.path(name));
+            let written: Vec<&str> = [
+                ("-o", out),
+                ("--tessellation", tessellation),
+                ("--laplacian", laplacian),
+                ("--mass", mass),
+                ("--reduced", reduced),
+            ]
+            .into_iter()
+            .filter(|(_, name)| !name.is_empty())
+            .map(|(option, _)| option)
+            .collect();
+            Self::label(label)?;
+            emit(&format!("[{}] ", written.join(" ")))?;
+            delaunay::run(&delaunay::Args {
+                input: source.to_path_buf(),
+                output: file(out),
+                tessellation: file(tessellation),
+                laplacian: file(laplacian),
+                mass: file(mass),
+                max_flips: None,
+                mollify: None,
+                weld: crate::args::WeldArg { weld: false },
+                json: crate::args::JsonArg { json: false },
+                reduced: file(reduced),
+                method: delaunay::MethodOptions { method, exact },
+            })?;
+        }
+        Ok(())
+    }
+
+    /// `isometric` on an isometric and a non-isometric pair of flat tori (exact, Dubois'
+    /// Theorem 1), and on the input against its intrinsic Delaunay triangulation (flipping).
+    fn isometric(&self, input: &Path, tori: &FlatTori) -> anyhow::Result<()> {
+        use delaunay::Method;
+        let delaunay = self.path("delaunay-flip.json");
+        let pairs: [(&str, &Path, &Path, Method, bool); 3] = [
+            (
+                "T_x, T_{x+1}",
+                &tori.x,
+                &tori.x_plus_1,
+                Method::Dubois,
+                true,
+            ),
+            (
+                "T_x, T_{x+1/3}",
+                &tori.x,
+                &tori.x_plus_third,
+                Method::Dubois,
+                true,
+            ),
+            (
+                "input.obj, delaunay-flip.json",
+                input,
+                &delaunay,
+                Method::Flip,
+                false,
+            ),
+        ];
+        for (what, a, b, method, exact) in pairs {
+            let start = Instant::now();
+            let decision = isometric::decide_args(&isometric::Args {
+                a: a.to_path_buf(),
+                b: b.to_path_buf(),
+                weld: crate::args::WeldArg { weld: false },
+                method: delaunay::MethodOptions { method, exact },
+                tolerance: surftopo_intrinsic::ISOMETRY_LENGTH_TOLERANCE,
+                json: crate::args::JsonArg { json: false },
+            })?;
+            let method = crate::args::value_name(&method);
+            Self::line(
+                &format!(
+                    "isometric --method {method}{}",
+                    if exact { " --exact" } else { "" }
+                ),
+                &format!("{what}: {decision}"),
+                start.elapsed().as_secs_f64(),
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// A new folder `surftopo-demo-<pid>[-k]` in the system's temporary directory (created, never
+/// one that exists already).
+fn new_temporary_folder() -> anyhow::Result<PathBuf> {
+    let base = std::env::temp_dir().join(format!("surftopo-demo-{}", std::process::id()));
+    let mut k = 0u32;
+    loop {
+        let dir = if k == 0 {
+            base.clone()
+        } else {
+            PathBuf::from(format!("{}-{k}", base.display()))
+        };
+        match std::fs::create_dir(&dir) {
+            Ok(()) => return Ok(dir),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && k < 1000 => k += 1,
+            Err(e) => return Err(crate::failure::unwritable(&dir, &e)),
+        }
+    }
+}
+
+/// The modifiers of `generate`: `flips` random flips, seed 7.
+fn modifiers(flips: usize) -> generate::Modifiers {
+    generate::Modifiers {
         output: None,
-        format: None,
-        subdivide: 1,
+        subdivide: 0,
         simplify: None,
-        flips: 2000,
+        flips,
         splits: 0,
         shuffle_faces: false,
         seed: 7,
-    };
-    let surface = generate::modify(generate::generate(&kind)?, &modifiers)?;
-    let input = out_dir.join("input.obj");
-    crate::output::write_surface(&input, &surface)?;
-    let mesh = &surface.mesh;
-    writeln!(
-        summary,
-        "surftopo demo: results in {}",
-        crate::failure::shown(out_dir)
-    )?;
-    writeln!(
-        summary,
-        "  input         {}: genus-2 brick, subdivided, 2000 random flips: {} vertices, {} edges, {} faces, genus {}",
-        crate::failure::shown(&input),
-        mesh.vertex_count(),
-        mesh.edge_count(),
-        mesh.face_count(),
-        mesh.genus()
-    )?;
-
-    let (irreducible, report) = reduce_surface(&surface, Algorithm::RamaswamiSiqueira)?;
-    let irreducible_path = out_dir.join("irreducible.obj");
-    crate::output::write_surface(&irreducible_path, &irreducible)?;
-    writeln!(
-        summary,
-        "  irreducible   {}: {} vertices, {} edges, {} faces, genus {} (RS: {} contractions, {} link tests, {} edges tested twice, {})",
-        crate::failure::shown(&irreducible_path),
-        report.output.vertices,
-        report.output.edges,
-        report.output.faces,
-        report.output.genus,
-        report.contractions,
-        report.link_tests,
-        report.edges_tested_more_than_once,
-        crate::output::format_seconds(report.seconds)
-    )?;
-
-    for algorithm in [QuadAlgorithm::KarpSipser, QuadAlgorithm::Lrs] {
-        let result = quadrangulate_surface(&surface, algorithm)?;
-        let label = result.stats.algorithm.clone();
-        let path = out_dir.join(format!("quads-{label}.obj"));
-        crate::output::write_soup(&path, &quad_soup(&surface, &result))?;
-        let stats = &result.stats;
-        writeln!(
-            summary,
-            "  quad ({label:<3})    {}: {} quads; initial pairing {:.1}% ({} unpaired), {} flipped edges, {} in all",
-            crate::failure::shown(&path),
-            result.quads.len(),
-            stats.paired_percent,
-            stats.unpaired,
-            stats.flipped_edges,
-            crate::output::format_seconds(stats.total_seconds)
-        )?;
     }
-
-    let quality = surftopo_quad::quadrangulate_by_quality(
-        &surface.mesh,
-        &surface.positions,
-        surftopo_quad::QualityObjective::Exact,
-    )?;
-    let path = out_dir.join("quads-quality.obj");
-    crate::output::write_soup(&path, &quad_soup(&surface, &quality.result))?;
-    writeln!(
-        summary,
-        "  quad (quality) {}: {} quads of least total cost 1 - quality ({:.3}, optimum certified); quality median {:.3}, {:.2}% bad quads, {}",
-        path.display(),
-        quality.result.quads.len(),
-        quality.cost,
-        quality.report.median,
-        quality.report.bad_quads_percent,
-        crate::output::format_seconds(quality.result.stats.total_seconds)
-    )?;
-
-    let mut tri = IntrinsicTriangulation::from_positions(surface.mesh.clone(), &surface.positions)?;
-    let stats = delaunay_with_stats(&mut tri, &DelaunayOptions::default())?;
-    let delaunay = out_dir.join("delaunay.json");
-    write_file(
-        &delaunay,
-        |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?),
-    )?;
-    let laplacian = out_dir.join("laplacian.mtx");
-    crate::output::write_matrix(
-        &laplacian,
-        &cotan_laplacian(&tri),
-        "cotan Laplacian (positive semidefinite)",
-    )?;
-    writeln!(
-        summary,
-        "  delaunay      {}: {} flips, {} non-Delaunay edges left, {} multi-edges, {}; Laplacian in {}",
-        crate::failure::shown(&delaunay),
-        stats.flips,
-        stats.non_delaunay_edges,
-        stats.multi_edges,
-        crate::output::format_seconds(stats.seconds),
-        crate::failure::shown(&laplacian)
-    )?;
-    emit(&summary)
 }

@@ -7,9 +7,10 @@
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
-use crate::input::{fan_triangles, locate, read_soup, renumber_face};
+use crate::input::{fan_triangles, locate, read_soup_with, renumber_face};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
+use surftopo_mesh::ProblemCounts;
 
 /// The arguments of `info`.
 #[derive(clap::Args, Debug)]
@@ -26,7 +27,7 @@ pub struct Args {
     pub strict: bool,
 }
 
-/// The facts `info` reports (JSON keys as named).
+/// The facts `info` reports (JSON keys as named; the text labels are the same words).
 #[derive(Serialize)]
 pub struct Info {
     /// Referenced vertices.
@@ -35,7 +36,8 @@ pub struct Info {
     pub edges: usize,
     /// Faces.
     pub faces: usize,
-    /// Genus, when the mesh is a closed connected orientable manifold.
+    /// Genus, when the faces form a closed connected orientable surface (whatever the
+    /// coordinates: non-finite ones and zero-area faces leave it defined).
     pub genus: Option<i64>,
     /// V - E + F.
     pub euler_characteristic: i64,
@@ -47,30 +49,71 @@ pub struct Info {
     pub orientable: bool,
     /// All faces triangles, none degenerate or duplicate (a simplicial complex).
     pub simplicial: bool,
-    /// A closed connected orientable surface surftopo accepts.
+    /// A closed connected orientable surface surftopo accepts: no problem found.
     pub valid: bool,
-    /// Edges in one face.
-    pub boundary_edges: usize,
-    /// Edges in more than two faces.
-    pub non_manifold_edges: usize,
-    /// Vertices whose faces form several fans.
-    pub non_manifold_vertices: usize,
-    /// Faces that would be reversed for a consistent orientation.
+    /// Faces that would be reversed for a consistent orientation (not a problem: commands
+    /// reorient them).
     pub reoriented_faces: usize,
-    /// Unreferenced vertices in the file.
-    pub dropped_vertices: usize,
+    /// Vertices no face uses (not a problem: commands drop them).
+    pub unreferenced_vertices: usize,
     /// Vertices merged by `--weld`.
     pub welded_vertices: usize,
-    /// Total number of problems.
-    pub problem_count: usize,
+    /// The problems counted by class, one key per class (`non_finite_coordinates`,
+    /// `zero_area_faces`, ...: [`surftopo_mesh::ProblemCounts`]).
+    #[serde(flatten)]
+    pub counts: Counts,
+    /// Total number of problems (the sum of the class counts).
+    pub problems_total: usize,
+    /// Whether `problems` lists fewer than `problems_total` (it stops at
+    /// [`surftopo_mesh::MAX_LISTED_PROBLEMS`]).
+    pub problems_truncated: bool,
     /// The problems (at most 100), each saying where and what.
     pub problems: Vec<String>,
 }
 
-/// Runs `info`; with `--strict`, problems make it fail with exit code 2.
+/// The class counts, serialised as one key per class in [`ProblemCounts::entries`] order.
+pub struct Counts(pub ProblemCounts);
+
+impl Serialize for Counts {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let entries = self.0.entries();
+        let mut map = serializer.serialize_map(Some(entries.len()))?;
+        for (key, count) in entries {
+            map.serialize_entry(key, &count)?;
+        }
+        map.end()
+    }
+}
+
+/// Runs `info`; with `--strict`, any problem makes it fail with exit code 2.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (path, json, strict) = (args.mesh.as_path(), args.json.json, args.strict);
-    let (soup, welded) = read_soup(path, args.weld.weld)?;
+    let info = inspect_path(path, args.weld.weld)?;
+    if json {
+        crate::output::print_json(&info)?;
+    } else {
+        crate::output::emit(&text(path, &info))?;
+    }
+    if strict && !info.valid {
+        return Err(invalid(format!(
+            "{}: {} problem(s) found",
+            crate::input::name(path),
+            info.problems_total
+        )));
+    }
+    Ok(())
+}
+
+/// What `info` reports on the mesh file `path` (welded first when asked).
+///
+/// The file is read keeping NaN and infinite coordinates ([`surftopo_io::NonFinite::Keep`]), so
+/// that they are listed problems here while every other command refuses them.
+///
+/// # Errors
+/// A file that cannot be read or parsed (exit 2).
+pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
+    let (soup, welded) = read_soup_with(path, weld, surftopo_io::NonFinite::Keep)?;
     // Polygon meshes are inspected through their fan triangulation (see `fan_triangles`).
     let (triangles, polygon_of) = fan_triangles(&soup);
     let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);
@@ -83,13 +126,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .into_iter()
         .map(|p| renumber_face(p, &polygon_of))
         .collect();
+    let faces = (0..soup.face_count()).map(|k| soup.face(k));
+    inspection.add_problems_first(surftopo_mesh::geometry::problems(&soup.positions, faces));
 
-    if let Err(e) = surftopo_mesh::geometry::check_finite(&soup.positions) {
-        inspection.add_problem_first(e);
-    }
     let simplicial = all_triangles && !inspection.has_degenerate_faces();
     let valid = inspection.is_valid();
-    let info = Info {
+    Ok(Info {
         vertices: inspection.vertices,
         edges: inspection.edges,
         faces: inspection.faces,
@@ -100,79 +142,72 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         orientable: inspection.orientable,
         simplicial,
         valid,
-        boundary_edges: inspection.boundary_edges,
-        non_manifold_edges: inspection.non_manifold_edges,
-        non_manifold_vertices: inspection.non_manifold_vertices,
         reoriented_faces: inspection.reoriented_faces,
-        dropped_vertices: inspection.dropped_vertices,
+        unreferenced_vertices: inspection.dropped_vertices,
         welded_vertices: welded,
-        problem_count: inspection.problem_count,
+        counts: Counts(inspection.counts),
+        problems_total: inspection.problem_count,
+        problems_truncated: inspection.is_truncated(),
         problems: inspection
             .problems
             .iter()
             .map(|p| locate(path, &soup, p))
             .collect(),
-    };
-    if json {
-        crate::output::print_json(&info)?;
-    } else {
-        crate::output::emit(&text(path, &info))?;
-    }
-    if strict && !valid {
-        return Err(invalid(format!(
-            "{}: {} problem(s) found",
-            crate::input::name(path),
-            info.problem_count
-        )));
-    }
-    Ok(())
+    })
 }
 
+/// The text report: one line per fact, labelled with its JSON key's words (`_` read as a space).
 fn text(path: &Path, info: &Info) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let yes = |b: bool| if b { "yes" } else { "no" };
-    writeln!(s, "{}", crate::input::name(path)).ok();
-    writeln!(s, "  vertices              {}", info.vertices).ok();
-    writeln!(s, "  edges                 {}", info.edges).ok();
-    writeln!(s, "  faces                 {}", info.faces).ok();
+    let mut line = |key: &str, value: &dyn std::fmt::Display| {
+        writeln!(s, "  {:<24}{value}", key.replace('_', " ")).ok();
+    };
+    line("vertices", &info.vertices);
+    line("edges", &info.edges);
+    line("faces", &info.faces);
     match info.genus {
-        Some(g) => writeln!(s, "  genus                 {g}"),
-        None => writeln!(
-            s,
-            "  genus                 - (not a closed connected orientable surface)"
+        Some(g) => line("genus", &g),
+        None => line(
+            "genus",
+            &"- (the faces do not form a closed connected orientable surface)",
         ),
     }
-    .ok();
-    writeln!(s, "  euler characteristic  {}", info.euler_characteristic).ok();
-    writeln!(s, "  components            {}", info.components).ok();
-    writeln!(s, "  closed                {}", yes(info.closed)).ok();
-    writeln!(s, "  orientable            {}", yes(info.orientable)).ok();
-    writeln!(s, "  simplicial            {}", yes(info.simplicial)).ok();
-    if info.reoriented_faces > 0 {
-        writeln!(s, "  faces to reorient     {}", info.reoriented_faces).ok();
+    line("euler_characteristic", &info.euler_characteristic);
+    line("components", &info.components);
+    line("closed", &yes(info.closed));
+    line("orientable", &yes(info.orientable));
+    line("simplicial", &yes(info.simplicial));
+    line("valid", &yes(info.valid));
+    for (key, n) in [
+        ("reoriented_faces", info.reoriented_faces),
+        ("unreferenced_vertices", info.unreferenced_vertices),
+        ("welded_vertices", info.welded_vertices),
+    ] {
+        if n > 0 {
+            line(key, &n);
+        }
     }
-    if info.dropped_vertices > 0 {
-        writeln!(s, "  unreferenced vertices {}", info.dropped_vertices).ok();
+    for (key, n) in info.counts.0.entries() {
+        if n > 0 {
+            line(key, &n);
+        }
     }
-    if info.welded_vertices > 0 {
-        writeln!(s, "  welded vertices       {}", info.welded_vertices).ok();
-    }
-    if info.problem_count == 0 {
-        writeln!(s, "  problems              none").ok();
+    if info.problems_total == 0 {
+        line("problems_total", &"0 (none)");
     } else {
-        writeln!(s, "  problems              {}", info.problem_count).ok();
-        for p in &info.problems {
-            writeln!(s, "    {p}").ok();
-        }
-        if info.problem_count > info.problems.len() {
-            writeln!(
-                s,
-                "    ... and {} more",
-                info.problem_count - info.problems.len()
-            )
-            .ok();
-        }
+        line("problems_total", &info.problems_total);
+    }
+    if info.problems_truncated {
+        line(
+            "problems_truncated",
+            &format!("yes (the first {} listed)", info.problems.len()),
+        );
+    }
+    let mut s = format!("{}\n{s}", crate::input::name(path));
+    for p in &info.problems {
+        writeln!(s, "    {p}").ok();
     }
     s
 }

@@ -233,6 +233,32 @@ fn decide(
 /// Runs `isometric`: prints `isometric`, `not isometric` or `undecidable in double precision` on
 /// stdout and the reason on stderr (`--json`: both as JSON on stdout).
 pub fn run(args: &Args) -> anyhow::Result<Verdict> {
+    let decision = decide_args(args)?;
+    let (isometric, verdict, reason) = match &decision {
+        IsometryDecision::Isometric(reason) => (Some(true), "isometric", reason),
+        IsometryDecision::NotIsometric(reason) => (Some(false), "not isometric", reason),
+        IsometryDecision::Undecidable(reason) => (None, "undecidable in double precision", reason),
+    };
+    if args.json.json {
+        crate::output::print_json(&Report {
+            isometric,
+            verdict,
+            reason,
+            method: crate::args::value_name(&args.method.method),
+            tolerance: args.tolerance,
+        })?;
+    } else {
+        crate::output::emit(&format!("{verdict}\n"))?;
+        eprintln!("{decision}");
+    }
+    Ok(Verdict(decision))
+}
+
+/// The decision of `isometric` on `args`, printing nothing.
+///
+/// # Errors
+/// Invalid input or options (exit 2), an internal failure.
+pub fn decide_args(args: &Args) -> anyhow::Result<IsometryDecision> {
     let (a, b, weld, method) = (&args.a, &args.b, args.weld.weld, &args.method);
     method.check()?;
     if !(args.tolerance > 0.0 && args.tolerance < 1.0) {
@@ -245,28 +271,10 @@ pub fn run(args: &Args) -> anyhow::Result<Verdict> {
         length_tolerance: args.tolerance,
         ..IsometryOptions::default()
     };
-    let decision = if method.method == Method::Flip {
+    if method.method == Method::Flip {
         let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
-        decide(a, b, &first, &second, &options)?
+        decide(a, b, &first, &second, &options)
     } else {
-        decide_by_tessellations(a, b, weld, method.method, method.exact, &options)?
-    };
-    let (isometric, verdict, reason) = match &decision {
-        IsometryDecision::Isometric(reason) => (Some(true), "isometric", reason),
-        IsometryDecision::NotIsometric(reason) => (Some(false), "not isometric", reason),
-        IsometryDecision::Undecidable(reason) => (None, "undecidable in double precision", reason),
-    };
-    if args.json.json {
-        crate::output::print_json(&Report {
-            isometric,
-            verdict,
-            reason,
-            method: crate::args::value_name(&method.method),
-            tolerance: args.tolerance,
-        })?;
-    } else {
-        crate::output::emit(&format!("{verdict}\n"))?;
-        eprintln!("{decision}");
+        decide_by_tessellations(a, b, weld, method.method, method.exact, &options)
     }
-    Ok(Verdict(decision))
 }

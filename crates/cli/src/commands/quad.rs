@@ -7,7 +7,7 @@ use surftopo_io::PolygonSoup;
 use surftopo_mesh::Surface;
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate, quadrangulate_by_quality,
+    QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate_by_quality,
     quadrangulate_with_quality,
 };
 
@@ -70,17 +70,6 @@ fn objective_named(name: &str) -> anyhow::Result<Option<QualityObjective>> {
         .find(|o| o.name() == name)
         .map(Some)
         .ok_or_else(|| anyhow::anyhow!("no quad objective is called {name}"))
-}
-
-/// Quadrangulates `surface`; quads use its vertex ids.
-pub fn quadrangulate_surface(
-    surface: &Surface,
-    algorithm: QuadAlgorithm,
-) -> anyhow::Result<QuadResult> {
-    quadrangulate(&surface.mesh, algorithm).map_err(|e| match e {
-        QuadError::Internal(_) => anyhow::Error::new(e),
-        other => invalid(other.to_string()),
-    })
 }
 
 /// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions).

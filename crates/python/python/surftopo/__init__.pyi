@@ -104,10 +104,13 @@ def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, An
 
     The keys of ``surftopo info --json``: ``vertices``, ``edges``, ``faces``, ``genus`` (``None``
     unless valid), ``euler_characteristic``, ``components``, ``closed``, ``orientable``,
-    ``simplicial``, ``valid``, ``boundary_edges``, ``non_manifold_edges``,
-    ``non_manifold_vertices``, ``reoriented_faces``, ``dropped_vertices``, ``welded_vertices``,
-    ``problem_count`` and ``problems`` (at most 100 messages, each naming the face, edge or
-    vertex). ``weld=True`` first merges vertices with exactly equal positions.
+    ``simplicial``, ``valid``, ``reoriented_faces``, ``unreferenced_vertices``,
+    ``welded_vertices``, one count per problem class (``non_finite_coordinates``,
+    ``zero_area_faces``, ``degenerate_faces``, ``duplicate_faces``,
+    ``boundary_edges``, ``non_manifold_edges``, ``non_manifold_vertices``, ``non_orientable``,
+    ``disconnected``, ``other_problems``), ``problems_total``, ``problems_truncated`` and
+    ``problems`` (at most 100 messages, each naming the face, edge or vertex). ``weld=True``
+    first merges vertices with exactly equal positions.
 
     >>> V, F = surftopo.torus(24, 12)
     >>> d = surftopo.info(V, F)
