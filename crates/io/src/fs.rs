@@ -362,9 +362,8 @@ pub fn stage_path_as(
     options: &WriteOptions,
 ) -> Result<StagedFile, IoError> {
     crate::check_writable(soup, format)?;
-    stage_write(path, |file| encode(file, soup, format, gzip, options)).map_err(|e| {
-        Ctx::new(&path_name(path)).io(e)
-    })
+    stage_write(path, |file| encode(file, soup, format, gzip, options))
+        .map_err(|e| Ctx::new(&path_name(path)).io(e))
 }
 
 /// [`crate::write()`], gzip-compressed (at `options.gzip_level`) when `gzip`: for a stream such as

@@ -5,8 +5,8 @@ mod common;
 
 use common::{assert_same, cube_quads, mixed, torus};
 use surftopo_io::{
-    Format, IoError, PolygonSoup, ReadLimits, WriteOptions, load_reader, read_bytes,
-    NonFinite, read_bytes_detected, read_path_detected, write_encoded,
+    Format, IoError, NonFinite, PolygonSoup, ReadLimits, WriteOptions, load_reader, read_bytes,
+    read_bytes_detected, read_path_detected, write_encoded,
 };
 
 /// The triangles of a soup's fans, as corner positions rounded to `f32` (what STL holds).
@@ -41,7 +41,8 @@ fn every_written_format_is_told_from_a_file_without_extension_plain_and_gzip() {
             for gzip in [false, true] {
                 let path = dir.path().join(format!("mesh-{format}-{gzip}"));
                 std::fs::write(&path, encoded(&soup, format, gzip)).unwrap();
-                let (back, told) = read_path_detected(&path, &ReadLimits::default(), NonFinite::Refuse).unwrap();
+                let (back, told) =
+                    read_path_detected(&path, &ReadLimits::default(), NonFinite::Refuse).unwrap();
                 assert_eq!(told, format, "{}", path.display());
                 check_same(&soup, &back, format);
             }
@@ -79,7 +80,7 @@ fn a_name_with_an_extension_is_believed_and_undecidable_content_is_a_typed_error
     // An OFF file named .obj is read as OBJ (no face: an error), not sniffed.
     let off = dir.path().join("m.obj");
     std::fs::write(&off, encoded(&cube_quads(), Format::Off, false)).unwrap();
-    let e = read_path_detected(&off, &ReadLimits::default()).unwrap_err();
+    let e = read_path_detected(&off, &ReadLimits::default(), NonFinite::Refuse).unwrap_err();
     assert!(matches!(e, IoError::NoFaces { .. }), "{e:?}");
 }
 
@@ -120,7 +121,7 @@ proptest::proptest! {
         tail in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..400),
     ) {
         let bytes = [opening.as_bytes(), &tail].concat();
-        match read_bytes_detected(&bytes, "fuzz") {
+        match read_bytes_detected(&bytes, "fuzz", NonFinite::Refuse) {
             Ok((soup, _)) => proptest::prop_assert!(soup.face_count() > 0),
             Err(e) => proptest::prop_assert!(e.to_string().starts_with("fuzz"), "{}", e),
         }

@@ -461,6 +461,7 @@ fn new_temporary_folder() -> anyhow::Result<PathBuf> {
 fn modifiers(flips: usize) -> generate::Modifiers {
     generate::Modifiers {
         output: None,
+        format: None,
         subdivide: 0,
         simplify: None,
         flips,
