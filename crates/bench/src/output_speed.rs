@@ -2,7 +2,7 @@
 //!
 //! For each input mesh: reading it as `surftopo delaunay` does (file, gzip, parse, half-edge
 //! build, edge lengths), flipping to Delaunay, then writing every output to a file next to the
-//! others (atomically, synced, as the CLI writes): the triangulation as portalgon JSON (the
+//! others (atomically, temporary name then rename, as the CLI writes): the triangulation as portalgon JSON (the
 //! streamed writer `IntrinsicTriangulation::write_json`, and the serde writer of a
 //! `PortalgonDoc` for comparison), the Laplacian and the mass matrix as Matrix Market (symmetric
 //! storage, general storage, and general storage formatted by `std::fmt` as a reference), as
@@ -80,7 +80,7 @@ fn read_intrinsic(path: &Path) -> anyhow::Result<IntrinsicTriangulation> {
     Ok(IntrinsicTriangulation::from_positions(mesh, &positions)?)
 }
 
-/// Writes a file as the CLI does (temporary sibling, synced, renamed) and returns its size.
+/// Writes a file as the CLI does (temporary sibling, renamed) and returns its size.
 fn write(
     path: &Path,
     fill: impl FnOnce(&mut dyn Write) -> anyhow::Result<()>,
@@ -291,7 +291,7 @@ fn report(rows: &[Row], repeat: usize) -> String {
     md.push_str(&format!(
         "{repeat} runs, all in one run on a shared, loaded machine: compare the ratios. Reading is \
          what `delaunay` does before flipping (gzip, parse, half-edge build, edge lengths); \
-         writing is to files synced and renamed as the CLI writes them.\n\n\
+         writing is to files written under a temporary name and renamed as the CLI writes them.\n\n\
          | input | faces | read s | outputs | write s | write / read |\n|---|---|---|---|---|---|\n"
     ));
     for input in &inputs {
