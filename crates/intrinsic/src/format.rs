@@ -742,10 +742,16 @@ fn write_compact<W: Write>(
         .map_err(io_error)
 }
 
-/// `[[p,i],[q,j]]`.
+/// `[[p,i],[q,j]]`; the side indices of triangles (below 10) with the punctuation around them.
 fn push_pair(buf: &mut Vec<u8>, [p, i]: [usize; 2], [q, j]: [usize; 2]) {
     buf.extend_from_slice(b"[[");
     push_u64(buf, p as u64);
+    if i < 10 && j < 10 {
+        buf.extend_from_slice(&[b',', b'0' + i as u8, b']', b',', b'[']);
+        push_u64(buf, q as u64);
+        buf.extend_from_slice(&[b',', b'0' + j as u8, b']', b']']);
+        return;
+    }
     buf.push(b',');
     push_u64(buf, i as u64);
     buf.extend_from_slice(b"],[");
