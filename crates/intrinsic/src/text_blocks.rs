@@ -82,10 +82,16 @@ fn format_blocks(
     filled: &SyncSender<Vec<u8>>,
     to_reuse: &Receiver<Vec<u8>>,
 ) {
+    // A new buffer is given the size of the largest block so far and a quarter, so that it
+    // seldom grows (each growth copies it).
+    let mut largest = 0;
     for k in (first..blocks).step_by(step) {
-        let mut buf = to_reuse.try_recv().unwrap_or_default();
+        let mut buf = to_reuse
+            .try_recv()
+            .unwrap_or_else(|_| Vec::with_capacity(largest + largest / 4));
         buf.clear();
         format(k, &mut buf);
+        largest = largest.max(buf.len());
         if filled.send(buf).is_err() {
             return;
         }
