@@ -47,6 +47,7 @@ use crate::error::PortalgonError;
 use crate::geometry::{Point, Rational, Scalar};
 use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, check_polygon};
+use crate::text_blocks::{block_count, block_range, write_blocks};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::trig;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -238,7 +239,7 @@ impl PortalgonDoc {
     }
 
     /// Writes JSON (compact, or pretty-printed). Compact output is written by hand
-    /// ([`JsonOut`]), with the bytes `serde_json::to_writer` gives for the document.
+    /// ([`write_compact`], on several threads), with the bytes `serde_json::to_writer` gives for the document.
     ///
     /// # Errors
     /// [`PortalgonError::Io`]; [`PortalgonError::NonFinite`] if a number is NaN or infinite (JSON
@@ -246,15 +247,14 @@ impl PortalgonDoc {
     pub fn write<W: Write>(&self, writer: W, pretty: bool) -> Result<(), PortalgonError> {
         self.check_finite()?;
         if !pretty {
-            let mut json = JsonOut::new(writer, self.comment.as_deref())?;
-            for p in &self.polygons {
-                json.polygon(
-                    p.corners.as_deref(),
-                    p.lengths.as_deref(),
-                    p.vertices.as_deref(),
-                )?;
-            }
-            return json.finish(self.matching.iter().copied());
+            return write_compact(
+                writer,
+                self.comment.as_deref(),
+                self.polygons.len(),
+                |p, buf| push_polygon(buf, &self.polygons[p]),
+                self.matching.len(),
+                |k| self.matching[k],
+            );
         }
         let mut w = std::io::BufWriter::new(writer);
         serde_json::to_writer_pretty(&mut w, self)
@@ -638,7 +638,8 @@ impl PortalgonDoc {
                 },
             });
         }
-        let matching = triangulation_matching(tri).collect();
+        let sides = TriangulationSides::new(tri);
+        let matching = (0..sides.edges.len()).map(|k| sides.pair(k)).collect();
         Self {
             format: format_name(),
             version: FORMAT_VERSION,
@@ -649,143 +650,182 @@ impl PortalgonDoc {
     }
 }
 
-/// The matching of a triangulation's document: pair `k` = the `k`-th live edge, its half-edge
-/// `2k` first, each side as `[face rank among live faces, index in face_halfedges]`.
-fn triangulation_matching(
-    tri: &IntrinsicTriangulation,
-) -> impl Iterator<Item = [[usize; 2]; 2]> + '_ {
-    let mesh = tri.mesh();
-    let mut rank = vec![u32::MAX; mesh.face_slots()];
-    for (k, f) in mesh.faces().enumerate() {
-        rank[f.idx()] = k as u32;
-    }
-    let side = move |h: surftopo_mesh::HalfedgeId| {
-        let f = mesh.face(h);
-        let i = mesh
-            .face_halfedges(f)
-            .iter()
-            .position(|&g| g == h)
-            .expect("h is in its face");
-        [rank[f.idx()] as usize, i]
-    };
-    mesh.edges()
-        .map(move |e| [side(e.halfedge()), side(e.halfedge().twin())])
+/// The live faces and edges of a triangulation in id order, and the side of its document each
+/// half-edge is (`[face rank among live faces, index in face_halfedges]`, by half-edge id): the
+/// numbering of [`PortalgonDoc::from_triangulation`]'s polygons and pairs.
+struct TriangulationSides {
+    faces: Vec<surftopo_mesh::FaceId>,
+    edges: Vec<surftopo_mesh::EdgeId>,
+    side: Vec<[u32; 2]>,
 }
 
-/// The compact JSON of a portalgon document written by hand into a buffer handed on in chunks:
-/// the header, each polygon as it comes, then the matching. Bytes are those of
+impl TriangulationSides {
+    fn new(tri: &IntrinsicTriangulation) -> Self {
+        let mesh = tri.mesh();
+        let faces: Vec<_> = mesh.faces().collect();
+        let mut side = vec![[u32::MAX; 2]; mesh.halfedge_slots()];
+        for (k, &f) in faces.iter().enumerate() {
+            for (i, h) in mesh.face_halfedges(f).into_iter().enumerate() {
+                side[h.idx()] = [k as u32, i as u32];
+            }
+        }
+        Self {
+            faces,
+            edges: mesh.edges().collect(),
+            side,
+        }
+    }
+
+    /// Pair `k` of the matching: the `k`-th live edge, its half-edge `2k` first.
+    fn pair(&self, k: usize) -> [[usize; 2]; 2] {
+        let h = self.edges[k].halfedge();
+        [h, h.twin()].map(|h| self.side[h.idx()].map(|x| x as usize))
+    }
+}
+
+/// Polygons per block of the JSON writers ([`crate::text_blocks`]): about half a megabyte of
+/// triangles by lengths.
+const POLYGONS_PER_BLOCK: usize = 4096;
+/// Pairs of the matching per block: about a quarter of a megabyte.
+const PAIRS_PER_BLOCK: usize = 8192;
+
+/// Writes the compact JSON of a portalgon document by hand, polygons and pairs formatted in
+/// blocks on several threads ([`crate::text_blocks`]): the header, `polygon(p, buf)` appending
+/// polygon `p`'s object for each `p < polygons`, then the pairs `pair(k)`. Bytes are those of
 /// `serde_json::to_writer` on the [`PortalgonDoc`] (numbers by the same shortest round-trip
 /// formatting, [`surftopo_mesh::decimal`]); callers check finiteness first.
-struct JsonOut<W: Write> {
-    out: W,
-    buf: Vec<u8>,
+fn write_compact<W: Write>(
+    mut out: W,
+    comment: Option<&str>,
     polygons: usize,
+    polygon: impl Fn(usize, &mut Vec<u8>) + Sync,
+    pairs: usize,
+    pair: impl Fn(usize) -> [[usize; 2]; 2] + Sync,
+) -> Result<(), PortalgonError> {
+    let mut head = Vec::new();
+    head.extend_from_slice(b"{\"format\":");
+    serde_json::to_writer(&mut head, FORMAT_NAME).map_err(|e| json_error(&e))?;
+    head.extend_from_slice(b",\"version\":");
+    push_u64(&mut head, u64::from(FORMAT_VERSION));
+    if let Some(c) = comment {
+        head.extend_from_slice(b",\"comment\":");
+        serde_json::to_writer(&mut head, c).map_err(|e| json_error(&e))?;
+    }
+    head.extend_from_slice(b",\"polygons\":[");
+    out.write_all(&head).map_err(io_error)?;
+    let polygon_blocks = block_count(polygons, POLYGONS_PER_BLOCK);
+    let pair_blocks = block_count(pairs, PAIRS_PER_BLOCK);
+    // Block `polygon_blocks` is the text between the polygons and the pairs.
+    write_blocks(&mut out, polygon_blocks + 1 + pair_blocks, |k, buf| {
+        if k < polygon_blocks {
+            for p in block_range(k, POLYGONS_PER_BLOCK, polygons) {
+                if p > 0 {
+                    buf.push(b',');
+                }
+                polygon(p, buf);
+            }
+        } else if k == polygon_blocks {
+            buf.extend_from_slice(b"],\"matching\":[");
+        } else {
+            for e in block_range(k - polygon_blocks - 1, PAIRS_PER_BLOCK, pairs) {
+                if e > 0 {
+                    buf.push(b',');
+                }
+                let [a, b] = pair(e);
+                push_pair(buf, a, b);
+            }
+        }
+    })
+    .map_err(io_error)?;
+    out.write_all(b"]}\n")
+        .and_then(|()| out.flush())
+        .map_err(io_error)
 }
 
-impl<W: Write> JsonOut<W> {
-    const CHUNK: usize = 1 << 16;
-
-    fn new(out: W, comment: Option<&str>) -> Result<Self, PortalgonError> {
-        let mut buf = Vec::with_capacity(Self::CHUNK + 4096);
-        buf.extend_from_slice(b"{\"format\":");
-        serde_json::to_writer(&mut buf, FORMAT_NAME).map_err(|e| json_error(&e))?;
-        buf.extend_from_slice(b",\"version\":");
-        push_u64(&mut buf, u64::from(FORMAT_VERSION));
-        if let Some(c) = comment {
-            buf.extend_from_slice(b",\"comment\":");
-            serde_json::to_writer(&mut buf, c).map_err(|e| json_error(&e))?;
-        }
-        buf.extend_from_slice(b",\"polygons\":[");
-        Ok(Self {
-            out,
-            buf,
-            polygons: 0,
-        })
+/// `[[p,i],[q,j]]`; the side indices of triangles (below 10) with the punctuation around them.
+fn push_pair(buf: &mut Vec<u8>, [p, i]: [usize; 2], [q, j]: [usize; 2]) {
+    buf.extend_from_slice(b"[[");
+    push_u64(buf, p as u64);
+    if i < 10 && j < 10 {
+        buf.extend_from_slice(&[b',', b'0' + i as u8, b']', b',', b'[']);
+        push_u64(buf, q as u64);
+        buf.extend_from_slice(&[b',', b'0' + j as u8, b']', b']']);
+        return;
     }
+    buf.push(b',');
+    push_u64(buf, i as u64);
+    buf.extend_from_slice(b"],[");
+    push_u64(buf, q as u64);
+    buf.push(b',');
+    push_u64(buf, j as u64);
+    buf.extend_from_slice(b"]]");
+}
 
-    fn number(&mut self, x: &Number) {
-        match x {
-            Number::Double(v) => push_f64(&mut self.buf, *v),
-            Number::Exact(r) => {
-                self.buf.push(b'"');
-                self.buf.extend_from_slice(r.to_string().as_bytes());
-                self.buf.push(b'"');
-            }
+/// A [`Number`]: a JSON number for a double, a string for an exact rational.
+fn push_number(buf: &mut Vec<u8>, x: &Number) {
+    match x {
+        Number::Double(v) => push_f64(buf, *v),
+        Number::Exact(r) => {
+            buf.push(b'"');
+            buf.extend_from_slice(r.to_string().as_bytes());
+            buf.push(b'"');
         }
     }
+}
 
-    fn list<T>(&mut self, items: &[T], mut item: impl FnMut(&mut Self, &T)) {
-        self.buf.push(b'[');
-        for (i, x) in items.iter().enumerate() {
-            if i > 0 {
-                self.buf.push(b',');
-            }
-            item(self, x);
+/// `[a,b,...]`, `item` writing each element.
+fn push_list<T>(buf: &mut Vec<u8>, items: &[T], mut item: impl FnMut(&mut Vec<u8>, &T)) {
+    buf.push(b'[');
+    for (i, x) in items.iter().enumerate() {
+        if i > 0 {
+            buf.push(b',');
         }
-        self.buf.push(b']');
+        item(buf, x);
     }
+    buf.push(b']');
+}
 
-    fn flush_if_full(&mut self) -> Result<(), PortalgonError> {
-        if self.buf.len() >= Self::CHUNK {
-            self.out.write_all(&self.buf).map_err(io_error)?;
-            self.buf.clear();
+/// The object of one polygon, its fields in the order serde writes them.
+fn push_polygon(buf: &mut Vec<u8>, polygon: &PolygonDoc) {
+    buf.push(b'{');
+    let mut first = true;
+    let mut key = |buf: &mut Vec<u8>, name: &[u8]| {
+        if !first {
+            buf.push(b',');
         }
-        Ok(())
+        first = false;
+        buf.extend_from_slice(name);
+    };
+    if let Some(c) = &polygon.corners {
+        key(buf, b"\"corners\":");
+        push_list(buf, c, |buf, p| push_list(buf, p, push_number));
     }
+    if let Some(l) = &polygon.lengths {
+        key(buf, b"\"lengths\":");
+        push_list(buf, l, push_number);
+    }
+    if let Some(v) = &polygon.vertices {
+        key(buf, b"\"vertices\":");
+        push_list(buf, v, |buf, &x| push_u64(buf, u64::from(x)));
+    }
+    buf.push(b'}');
+}
 
-    fn polygon(
-        &mut self,
-        corners: Option<&[[Number; 2]]>,
-        lengths: Option<&[Number]>,
-        vertices: Option<&[u32]>,
-    ) -> Result<(), PortalgonError> {
-        if self.polygons > 0 {
-            self.buf.push(b',');
-        }
-        self.polygons += 1;
-        self.buf.push(b'{');
-        let mut first = true;
-        let mut key = |buf: &mut Vec<u8>, name: &[u8]| {
-            if !first {
-                buf.push(b',');
-            }
-            first = false;
-            buf.extend_from_slice(name);
-        };
-        if let Some(c) = corners {
-            key(&mut self.buf, b"\"corners\":");
-            self.list(c, |json, p| json.list(p, |json, x| json.number(x)));
-        }
-        if let Some(l) = lengths {
-            key(&mut self.buf, b"\"lengths\":");
-            self.list(l, |json, x| json.number(x));
-        }
-        if let Some(v) = vertices {
-            key(&mut self.buf, b"\"vertices\":");
-            self.list(v, |json, &x| push_u64(&mut json.buf, u64::from(x)));
-        }
-        self.buf.push(b'}');
-        self.flush_if_full()
-    }
-
-    fn finish(
-        mut self,
-        matching: impl Iterator<Item = [[usize; 2]; 2]>,
-    ) -> Result<(), PortalgonError> {
-        self.buf.extend_from_slice(b"],\"matching\":[");
-        for (k, pair) in matching.enumerate() {
-            if k > 0 {
-                self.buf.push(b',');
-            }
-            self.list(&pair, |json, side| {
-                json.list(side, |json, &x| push_u64(&mut json.buf, x as u64));
-            });
-            self.flush_if_full()?;
-        }
-        self.buf.extend_from_slice(b"]}\n");
-        self.out.write_all(&self.buf).map_err(io_error)?;
-        self.out.flush().map_err(io_error)
-    }
+/// The object of a triangle by lengths with its vertex labels, as [`push_polygon`] writes it.
+fn push_triangle(buf: &mut Vec<u8>, lengths: [f64; 3], vertices: [u32; 3]) {
+    buf.extend_from_slice(b"{\"lengths\":[");
+    push_f64(buf, lengths[0]);
+    buf.push(b',');
+    push_f64(buf, lengths[1]);
+    buf.push(b',');
+    push_f64(buf, lengths[2]);
+    buf.extend_from_slice(b"],\"vertices\":[");
+    push_u64(buf, u64::from(vertices[0]));
+    buf.push(b',');
+    push_u64(buf, u64::from(vertices[1]));
+    buf.push(b',');
+    push_u64(buf, u64::from(vertices[2]));
+    buf.extend_from_slice(b"]}");
 }
 
 fn io_error(e: std::io::Error) -> PortalgonError {
@@ -818,8 +858,8 @@ impl IntrinsicTriangulation {
     }
 
     /// Writes this triangulation as a portalgon file: the bytes of
-    /// [`PortalgonDoc::from_triangulation`]'s compact JSON; by lengths streamed from the mesh
-    /// without building the document.
+    /// [`PortalgonDoc::from_triangulation`]'s compact JSON; by lengths formatted from the mesh
+    /// (in blocks, on several threads) without building the document.
     ///
     /// # Errors
     /// [`PortalgonError::Io`], [`PortalgonError::NonFinite`].
@@ -832,23 +872,30 @@ impl IntrinsicTriangulation {
             return PortalgonDoc::from_triangulation(self, style).write(writer, false);
         }
         let mesh = self.mesh();
-        if let Some((polygon, sides)) = mesh
-            .faces()
-            .map(|f| self.face_sides(f))
+        let sides = TriangulationSides::new(self);
+        if let Some((polygon, lengths)) = sides
+            .faces
+            .iter()
+            .map(|&f| self.face_sides(f))
             .enumerate()
             .find(|(_, l)| !l.iter().all(|x| x.is_finite()))
         {
-            let index = sides.iter().position(|x| !x.is_finite()).unwrap_or(0);
+            let index = lengths.iter().position(|x| !x.is_finite()).unwrap_or(0);
             return Err(PortalgonError::NonFinite { polygon, index });
         }
         let (dense, _) = dense_vertex_index(self);
-        let mut json = JsonOut::new(writer, None)?;
-        for f in mesh.faces() {
-            let vertices = mesh.face_halfedges(f).map(|h| dense[mesh.origin(h).idx()]);
-            let lengths = self.face_sides(f).map(Number::Double);
-            json.polygon(None, Some(&lengths), Some(&vertices))?;
-        }
-        json.finish(triangulation_matching(self))
+        write_compact(
+            writer,
+            None,
+            sides.faces.len(),
+            |p, buf| {
+                let f = sides.faces[p];
+                let vertices = mesh.face_halfedges(f).map(|h| dense[mesh.origin(h).idx()]);
+                push_triangle(buf, self.face_sides(f), vertices);
+            },
+            sides.edges.len(),
+            |k| sides.pair(k),
+        )
     }
 }
 
@@ -866,6 +913,16 @@ mod tests {
 
     #[test]
     fn hand_written_json_is_serde_json_byte_for_byte() {
+        // 70: 9,800 triangles and 14,700 pairs, several blocks of each.
+        let mut big = flat_torus(1.3, 70).unwrap();
+        random_flips(&mut big, 3000, 11);
+        let mut streamed = Vec::new();
+        big.write_json(&mut streamed, TriangleStyle::Lengths)
+            .unwrap();
+        let doc = PortalgonDoc::from_triangulation(&big, TriangleStyle::Lengths);
+        assert!(doc.polygons.len() > 2 * POLYGONS_PER_BLOCK);
+        assert!(doc.matching.len() > PAIRS_PER_BLOCK);
+        assert_eq!(streamed, serde_bytes(&doc));
         let mut tri = flat_torus(1.3, 5).unwrap();
         random_flips(&mut tri, 40, 7);
         for style in [TriangleStyle::Lengths, TriangleStyle::Corners] {

@@ -74,6 +74,7 @@ mod portalgon_edits;
 mod quality;
 mod stats;
 mod tessellation;
+mod text_blocks;
 mod triangulation;
 mod trig;
 mod tube;

@@ -9,8 +9,13 @@
 //! benchmark's comparison with libigl.
 
 use crate::laplacian::SparseMatrix;
+use crate::text_blocks::{block_count, block_range, write_blocks};
 use std::io::{self, BufRead, Write};
 use surftopo_mesh::decimal::{push_f64, push_u64};
+
+/// Matrix rows per block of the writer ([`crate::text_blocks`]): a few hundred kilobytes of a
+/// Laplacian.
+const ROWS_PER_BLOCK: usize = 4096;
 
 /// How [`write_matrix_market`] stores a matrix.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -26,7 +31,8 @@ pub enum MatrixStorage {
 /// says. [`MatrixStorage::Symmetric`] is for matrices symmetric by construction (the cotan
 /// Laplacian and the mass matrix of this crate, whose tests check
 /// [`SparseMatrix::is_symmetric`]): the entries above the diagonal are not written, and checking
-/// them would cost more than writing (a debug assertion does).
+/// them would cost more than writing (a debug assertion does). Rows are formatted in blocks on
+/// several threads and written in order.
 ///
 /// # Errors
 /// Any I/O error of the writer.
@@ -41,50 +47,50 @@ pub fn write_matrix_market<W: Write>(
         !symmetric || m.is_symmetric(),
         "symmetric storage of an asymmetric matrix"
     );
-    let mut buf = Vec::with_capacity(1 << 17);
-    buf.extend_from_slice(b"%%MatrixMarket matrix coordinate real ");
-    buf.extend_from_slice(if symmetric {
+    let mut head = Vec::new();
+    head.extend_from_slice(b"%%MatrixMarket matrix coordinate real ");
+    head.extend_from_slice(if symmetric {
         b"symmetric\n"
     } else {
         b"general\n"
     });
     for line in comment.lines() {
-        buf.extend_from_slice(b"% ");
-        buf.extend_from_slice(line.as_bytes());
-        buf.push(b'\n');
+        head.extend_from_slice(b"% ");
+        head.extend_from_slice(line.as_bytes());
+        head.push(b'\n');
     }
-    let lower = |i: usize| {
-        let row = m.row_start[i]..m.row_start[i + 1];
-        let end = if symmetric {
-            row.start + m.cols[row.clone()].partition_point(|&j| j as usize <= i)
-        } else {
-            row.end
-        };
-        row.start..end
-    };
-    let stored: usize = (0..m.n).map(|i| lower(i).len()).sum();
+    // The end of the entries written of each row: all of them, or those up to the diagonal.
+    let ends: Vec<usize> = (0..m.n)
+        .map(|i| {
+            let row = m.row_start[i]..m.row_start[i + 1];
+            if symmetric {
+                row.start + m.cols[row].partition_point(|&j| j as usize <= i)
+            } else {
+                row.end
+            }
+        })
+        .collect();
+    let stored: usize = (0..m.n).map(|i| ends[i] - m.row_start[i]).sum();
     for (k, v) in [m.n, m.n, stored].into_iter().enumerate() {
         if k > 0 {
-            buf.push(b' ');
+            head.push(b' ');
         }
-        push_u64(&mut buf, v as u64);
+        push_u64(&mut head, v as u64);
     }
-    buf.push(b'\n');
-    for i in 0..m.n {
-        for k in lower(i) {
-            push_u64(&mut buf, i as u64 + 1);
-            buf.push(b' ');
-            push_u64(&mut buf, u64::from(m.cols[k]) + 1);
-            buf.push(b' ');
-            push_f64(&mut buf, m.values[k]);
-            buf.push(b'\n');
+    head.push(b'\n');
+    out.write_all(&head)?;
+    write_blocks(&mut out, block_count(m.n, ROWS_PER_BLOCK), |block, buf| {
+        for i in block_range(block, ROWS_PER_BLOCK, m.n) {
+            for k in m.row_start[i]..ends[i] {
+                push_u64(buf, i as u64 + 1);
+                buf.push(b' ');
+                push_u64(buf, u64::from(m.cols[k]) + 1);
+                buf.push(b' ');
+                push_f64(buf, m.values[k]);
+                buf.push(b'\n');
+            }
         }
-        if buf.len() >= 1 << 16 {
-            out.write_all(&buf)?;
-            buf.clear();
-        }
-    }
-    out.write_all(&buf)?;
+    })?;
     out.flush()
 }
 
@@ -205,6 +211,46 @@ mod tests {
             assert!(text.contains(&format!("\n3 3 {entries}\n")), "{text}");
             let back = read_matrix_market(&bytes[..]).unwrap();
             assert_eq!(back, m);
+        }
+    }
+
+    #[test]
+    fn rows_written_in_blocks_are_the_text_of_one_pass() {
+        // A symmetric band matrix of 3 blocks of rows and a part.
+        let n = 3 * ROWS_PER_BLOCK + 17;
+        let mut triplets = Vec::new();
+        for i in 0..n {
+            let x = (i as f64 + 0.5).sqrt() * 1e-3;
+            triplets.push((i as u32, i as u32, 1.0 / x));
+            if i + 3 < n {
+                triplets.push((i as u32, i as u32 + 3, -x));
+                triplets.push((i as u32 + 3, i as u32, -x));
+            }
+        }
+        let m = SparseMatrix::from_triplets(n, &triplets);
+        for storage in [MatrixStorage::General, MatrixStorage::Symmetric] {
+            let mut written = Vec::new();
+            write_matrix_market(&mut written, &m, "c", storage).unwrap();
+            let kind = if storage == MatrixStorage::General {
+                "general"
+            } else {
+                "symmetric"
+            };
+            let entries: Vec<_> = m
+                .triplets()
+                .filter(|&(i, j, _)| storage == MatrixStorage::General || j <= i)
+                .collect();
+            let mut expected = format!(
+                "%%MatrixMarket matrix coordinate real {kind}\n% c\n{n} {n} {}\n",
+                entries.len()
+            )
+            .into_bytes();
+            for (i, j, v) in entries {
+                expected.extend_from_slice(format!("{} {} ", i + 1, j + 1).as_bytes());
+                push_f64(&mut expected, v);
+                expected.push(b'\n');
+            }
+            assert_eq!(written, expected, "{kind}");
         }
     }
 

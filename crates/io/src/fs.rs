@@ -326,9 +326,9 @@ fn read_limited(reader: &mut impl Read, limit: u64, out: &mut Vec<u8>) -> Result
 /// `.ply`) and a trailing `.gz` compresses; `soup`: what to write (checked
 /// first, see [`PolygonSoup::validate`]); `options`: PLY encoding (binary
 /// little endian by default) and gzip level. The data goes to a temporary
-/// file `.name.tmp-<pid>-<n>` in the same directory, which is synced and then
-/// renamed over `path`; on any error the temporary file is removed and
-/// `path` is left as it was.
+/// file `.name.tmp-<pid>-<n>` in the same directory, which is then renamed
+/// over `path` (see [`StagedFile`] on why it is not synced); on any error the
+/// temporary file is removed and `path` is left as it was.
 pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Result<(), IoError> {
     let staged = stage_path(path, soup, options)?;
     staged
@@ -336,7 +336,7 @@ pub fn write_path(path: &Path, soup: &PolygonSoup, options: &WriteOptions) -> Re
         .map_err(|e| Ctx::new(&path_name(path)).io(e))
 }
 
-/// [`write_path`] up to the rename: the mesh file written and synced under its temporary name,
+/// [`write_path`] up to the rename: the mesh file written under its temporary name,
 /// to be renamed over `path` by [`StagedFile::commit`] (or removed when dropped), so that several
 /// outputs are renamed only once all are written.
 pub fn stage_path(
@@ -465,17 +465,27 @@ pub fn remove_temporaries_then<T>(last: impl FnOnce() -> T) -> T {
     last()
 }
 
-/// Runs `fill` on a new temporary file next to `path`, syncs it and renames
-/// it over `path`; removes the temporary file on any error. The temporary file is registered
+/// Runs `fill` on a new temporary file next to `path` and renames it over
+/// `path` ([`StagedFile`]); removes the temporary file on any error. The temporary file is registered
 /// for [`remove_temporaries_then`] while it exists.
 pub fn atomic_write(path: &Path, fill: impl FnOnce(File) -> io::Result<File>) -> io::Result<()> {
     stage_write(path, fill)?.commit()
 }
 
-/// A file written and synced under a temporary name beside its target, not yet renamed over it.
+/// A file written under a temporary name beside its target, not yet renamed over it.
 /// [`StagedFile::commit`] renames it; dropping it uncommitted removes the temporary file. While
 /// it exists the temporary file is registered for [`remove_temporaries_then`], so a signal
 /// between writing and renaming leaves nothing behind.
+///
+/// What this guarantees is atomicity against a failure of the process (an error, a signal, a
+/// crash, a full disk): the target is either left as it was or replaced by the complete new
+/// file, never half written, because the rename happens only once every byte has been handed to
+/// the kernel, which keeps them whatever becomes of the process. Neither the file nor its folder
+/// is synced (`fsync`): that would add durability against a crash of the operating system or a
+/// power cut, at a cost of the order of the writing itself (the disk's write-back, waited for),
+/// and surftopo's outputs are derived data that a rerun gives again. After such a crash a file
+/// committed just before may therefore be missing or empty, as with most command-line tools
+/// (compilers, `numpy.save`); callers that need more sync the target themselves.
 #[derive(Debug)]
 pub struct StagedFile {
     tmp: PathBuf,
@@ -484,7 +494,7 @@ pub struct StagedFile {
 }
 
 /// Runs `fill` on a new temporary file next to `path` (keeping the permissions of a file `path`
-/// replaces) and syncs it; the rename is [`StagedFile::commit`]. On any error the temporary file
+/// replaces), not synced ([`StagedFile`]); the rename is [`StagedFile::commit`]. On any error the temporary file
 /// is removed.
 pub fn stage_write(
     path: &Path,
@@ -509,7 +519,6 @@ pub fn stage_write(
     }
     let mut file = fill(file)?;
     file.flush()?;
-    file.sync_all()?;
     Ok(staged)
 }
 
@@ -519,7 +528,7 @@ impl StagedFile {
         &self.target
     }
 
-    /// Renames the temporary file over the target (then syncs the folder, best effort).
+    /// Renames the temporary file over the target (not synced: see [`StagedFile`]).
     ///
     /// # Errors
     /// The rename's error; the temporary file is then removed and the target left as it was.
@@ -529,14 +538,6 @@ impl StagedFile {
             fs::rename(&self.tmp, &self.target)?;
             open.retain(|p| p != &self.tmp);
             self.committed = true;
-        }
-        // Make the rename durable; best effort.
-        let dir = match self.target.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        if let Ok(d) = File::open(dir) {
-            let _ = d.sync_all();
         }
         Ok(())
     }

@@ -10,23 +10,41 @@
 /// check first).
 #[inline]
 pub fn push_f64(out: &mut Vec<u8>, x: f64) {
-    out.extend_from_slice(zmij::Buffer::new().format(x).as_bytes());
+    push_short(out, zmij::Buffer::new().format(x).as_bytes());
 }
 
-/// Appends the decimal digits of `v`.
+/// Appends the decimal digits of `v` (`0`, `42`).
 #[inline]
-pub fn push_u64(out: &mut Vec<u8>, mut v: u64) {
-    let mut tmp = [0u8; 20];
-    let mut i = tmp.len();
-    loop {
-        i -= 1;
-        tmp[i] = b'0' + (v % 10) as u8;
-        v /= 10;
-        if v == 0 {
-            break;
-        }
+pub fn push_u64(out: &mut Vec<u8>, v: u64) {
+    push_short(out, itoa::Buffer::new().format(v).as_bytes());
+}
+
+/// Appends `s` (at most 32 bytes: a formatted number) by copies of known sizes: `s` into a
+/// 32-byte array by two overlapping copies, the whole array onto `out`, then `out` truncated. A
+/// copy of a known size is a few moves, where one of a variable size is a call to `memcpy` that
+/// costs about as much as formatting the number.
+#[inline]
+fn push_short(out: &mut Vec<u8>, s: &[u8]) {
+    let n = s.len();
+    let mut text = [0u8; 32];
+    if n >= 16 {
+        text[..16].copy_from_slice(&s[..16]);
+        text[n - 16..n].copy_from_slice(&s[n - 16..]);
+    } else if n >= 8 {
+        text[..8].copy_from_slice(&s[..8]);
+        text[n - 8..n].copy_from_slice(&s[n - 8..]);
+    } else if n >= 4 {
+        text[..4].copy_from_slice(&s[..4]);
+        text[n - 4..n].copy_from_slice(&s[n - 4..]);
+    } else if n > 0 {
+        // One to three bytes: the first, the middle and the last cover them.
+        text[0] = s[0];
+        text[n / 2] = s[n / 2];
+        text[n - 1] = s[n - 1];
     }
-    out.extend_from_slice(&tmp[i..]);
+    let start = out.len();
+    out.extend_from_slice(&text);
+    out.truncate(start + n);
 }
 
 #[cfg(test)]
@@ -76,5 +94,18 @@ mod tests {
         out.push(b' ');
         push_u64(&mut out, u64::MAX);
         assert_eq!(out, b"0 18446744073709551615");
+        out.extend_from_slice(b"kept");
+        push_u64(&mut out, 7);
+        assert_eq!(&out[out.len() - 5..], b"kept7");
+        for v in (0..100_000u64)
+            .chain((0..64).map(|k| 1 << k))
+            .chain([u64::MAX - 1])
+        {
+            for v in [v, v.saturating_sub(1)] {
+                out.clear();
+                push_u64(&mut out, v);
+                assert_eq!(out, v.to_string().as_bytes());
+            }
+        }
     }
 }
