@@ -270,7 +270,7 @@ pub fn stage_path(
     let name = path_name(path);
     let format =
         Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
-    crate::check_writable(soup, format)?;
+    crate::check_writable(soup, format, options)?;
     let gz = is_gzip_path(path);
     let level = Compression::new(options.gzip_level.min(9));
     stage_write(path, |file| {

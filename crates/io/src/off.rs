@@ -27,7 +27,7 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
 /// One pass; `lines`: skip the rest of each element's last line.
 fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> {
     let mut lx = Lexer::new(buf);
-    let (nv, nf) = header(&mut lx, ctx, lines)?;
+    let (nv, nf, prefix) = header(&mut lx, ctx, lines)?;
     let remaining = buf.len().saturating_sub(lx.pos);
     let mut soup = PolygonSoup::new();
     // Cap reservations by what the rest of the input could hold.
@@ -56,6 +56,16 @@ fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> 
         }
     }
 
+    for (letters, what) in [
+        ("C", "colours"),
+        ("N", "normals"),
+        ("ST", "texture coordinates"),
+    ] {
+        if prefix.contains(letters) {
+            let what = format!("OFF vertex {what} ({prefix}OFF)");
+            soup.attributes.not_kept.push(what);
+        }
+    }
     for j in 0..nf {
         lx.skip_space(COMMENT);
         let line = lx.line_u32();
@@ -93,17 +103,24 @@ fn parse(buf: &[u8], ctx: Ctx<'_>, lines: bool) -> Result<PolygonSoup, IoError> 
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
-/// Reads the keyword (optional) and the counts; returns (vertices, faces).
-fn header(lx: &mut Lexer<'_>, ctx: Ctx<'_>, lines: bool) -> Result<(usize, usize), IoError> {
+/// Reads the keyword (optional) and the counts; returns (vertices, faces, the keyword's letters
+/// before `OFF`).
+fn header(
+    lx: &mut Lexer<'_>,
+    ctx: Ctx<'_>,
+    lines: bool,
+) -> Result<(usize, usize, String), IoError> {
     lx.skip_space(COMMENT);
     let tok = lx.peek_token();
     let mut dimension_follows = false;
+    let mut letters = String::new();
     if tok.len() >= 3 && tok[tok.len() - 3..].eq_ignore_ascii_case(b"OFF") {
         let prefix = &tok[..tok.len() - 3];
         if !prefix.iter().all(u8::is_ascii_alphanumeric) {
             return Err(ctx.bad_header(lx.at(), format!("unknown keyword '{}'", show(tok))));
         }
         dimension_follows = prefix.last() == Some(&b'n');
+        letters = String::from_utf8_lossy(prefix).into_owned();
         lx.pos += tok.len();
         if lx.peek_token().eq_ignore_ascii_case(b"BINARY") {
             return Err(ctx.bad_header(lx.at(), "binary OFF is not supported"));
@@ -139,7 +156,7 @@ fn header(lx: &mut Lexer<'_>, ctx: Ctx<'_>, lines: bool) -> Result<(usize, usize
         return Err(ctx.too_large(lx.at(), format!("{nv} vertices (at most 2^32-1)")));
     }
     let nf = usize::try_from(nf).map_err(|_| ctx.too_large(lx.at(), format!("{nf} faces")))?;
-    Ok((nv as usize, nf))
+    Ok((nv as usize, nf, letters))
 }
 
 fn count(lx: &mut Lexer<'_>, ctx: Ctx<'_>, what: &str) -> Result<u64, IoError> {

@@ -13,6 +13,12 @@ pub fn push_f64(out: &mut Vec<u8>, x: f64) {
     out.extend_from_slice(zmij::Buffer::new().format(x).as_bytes());
 }
 
+/// Appends the shortest decimal that reads back (as an `f32`) to the same bits of a finite `x`.
+#[inline]
+pub fn push_f32(out: &mut Vec<u8>, x: f32) {
+    out.extend_from_slice(zmij::Buffer::new().format(x).as_bytes());
+}
+
 /// Appends the decimal digits of `v`.
 #[inline]
 pub fn push_u64(out: &mut Vec<u8>, mut v: u64) {
