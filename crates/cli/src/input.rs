@@ -14,6 +14,9 @@ pub struct Loaded {
     pub report: BuildReport,
     /// Vertices merged by welding.
     pub welded: usize,
+    /// The input's attributes, per-vertex ones on the surface's vertex ids
+    /// ([`crate::attributes::on_mesh`]).
+    pub attributes: surftopo_io::Attributes,
 }
 
 /// Reads a polygon soup, welding exactly coincident positions when asked (always for STL).
@@ -27,12 +30,15 @@ pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)
     let is_stl = surftopo_io::Format::from_path(path) == Some(surftopo_io::Format::Stl);
     let mut welded = 0;
     if weld || is_stl {
-        let (positions, map) = geometry::weld_exact(&soup.positions);
-        welded = soup.positions.len() - positions.len();
-        for i in &mut soup.face_indices {
-            *i = map[*i as usize];
+        let weld = soup.weld_exact();
+        welded = weld.merged;
+        if weld.conflicting > 0 {
+            eprintln!(
+                "warning: {source}: welding merged {} vertices whose per-vertex attributes differ \
+                 from those of the vertex they were merged into; theirs are dropped",
+                weld.conflicting
+            );
         }
-        soup.positions = positions;
     }
     Ok((soup, welded))
 }
@@ -118,10 +124,12 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
             positions[new.idx()] = soup.positions[old];
         }
     }
+    let attributes = crate::attributes::on_mesh(&soup, &report, mesh.vertex_slots());
     Ok(Loaded {
         surface: Surface { mesh, positions },
         report,
         welded,
+        attributes,
     })
 }
 

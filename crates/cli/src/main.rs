@@ -7,6 +7,7 @@
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
 mod args;
+mod attributes;
 mod commands;
 mod failure;
 mod input;

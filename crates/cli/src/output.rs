@@ -124,7 +124,8 @@ pub struct Outputs {
 impl Outputs {
     /// Writes a polygon soup as a mesh file (format from the extension) under a temporary name.
     pub fn soup(&mut self, path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
-        self.staged.push(stage_soup(path, soup)?);
+        self.staged
+            .push(stage_soup(path, soup, &WriteOptions::default())?);
         Ok(())
     }
 
@@ -167,10 +168,25 @@ pub fn write_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
     outputs.commit()
 }
 
+/// [`write_soup`] with the given write options (PLY encoding and precision).
+pub fn write_soup_with(
+    path: &Path,
+    soup: &PolygonSoup,
+    options: &WriteOptions,
+) -> anyhow::Result<()> {
+    let mut outputs = Outputs::default();
+    outputs.staged.push(stage_soup(path, soup, options)?);
+    outputs.commit()
+}
+
 /// A polygon soup written as a mesh file under a temporary name ([`StagedFile`]).
-fn stage_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<StagedFile> {
+fn stage_soup(
+    path: &Path,
+    soup: &PolygonSoup,
+    options: &WriteOptions,
+) -> anyhow::Result<StagedFile> {
     let staged = crate::progress::step(&writing(path), || {
-        surftopo_io::stage_path(path, soup, &WriteOptions::default())
+        surftopo_io::stage_path(path, soup, options)
     });
     staged.map_err(|e| match e {
         // The soup is surftopo's own: an inconsistent one is an internal failure.

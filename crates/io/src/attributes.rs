@@ -249,6 +249,22 @@ impl Attributes {
         Some(columns)
     }
 
+    /// The per-vertex properties OFF writes as a colour (`red green blue [alpha]`, all of one
+    /// type: integers 0 to 255 or floats).
+    pub(crate) fn off_colour_columns(&self) -> Option<Vec<usize>> {
+        let mut columns = Vec::new();
+        for name in ["red", "green", "blue"] {
+            columns.push(self.vertex_property(name)?);
+        }
+        columns.extend(self.vertex_property("alpha"));
+        let scalar = self.vertex[columns[0]].scalar;
+        let uniform = columns.iter().all(|&c| {
+            let s = self.vertex[c].scalar;
+            s == scalar && matches!(s, ScalarType::U8 | ScalarType::F32 | ScalarType::F64)
+        });
+        uniform.then_some(columns)
+    }
+
     /// The per-vertex properties OBJ writes as `vn` (when there is no per-corner table).
     pub(crate) fn obj_vn_columns(&self) -> Option<[usize; 3]> {
         if self.corner_normals.is_some() {
@@ -391,7 +407,8 @@ impl Attributes {
                 kept
             }
             Format::Ply => (0..self.vertex.len()).collect(),
-            Format::Off | Format::Stl => Vec::new(),
+            Format::Off => self.off_colour_columns().unwrap_or_default(),
+            Format::Stl => Vec::new(),
         };
         let dropped: Vec<&VertexProperty> = (0..self.vertex.len())
             .filter(|i| !kept.contains(i))

@@ -221,17 +221,9 @@ impl PolygonSoup {
     }
 
     /// What a writer of `format` leaves out of this soup's attributes, one description each
-    /// (empty: nothing is lost). Descriptions of what the reader skipped
-    /// ([`Attributes::not_kept`]) come first.
+    /// (empty: nothing is lost; what the reader skipped is [`Attributes::not_kept`]).
     pub fn unwritable(&self, format: Format) -> Vec<String> {
-        let mut out: Vec<String> = self
-            .attributes
-            .not_kept
-            .iter()
-            .map(|what| format!("{what}: not read"))
-            .collect();
-        out.extend(self.attributes.unwritable(format));
-        out
+        self.attributes.unwritable(format)
     }
 
     /// Merges vertices of exactly equal positions (`-0` equal to `0`;
