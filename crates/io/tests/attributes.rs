@@ -313,7 +313,7 @@ fn rich_soup() -> PolygonSoup {
     soup.attributes.vertex = vec![
         column("nx", ScalarType::F64, [-0.5, 1.0, 0.0, 0.1]),
         column("ny", ScalarType::F64, [-0.5, 0.0, 1.0, 0.2]),
-        column("nz", ScalarType::F64, [-0.7071067811865476, 0.0, 0.0, 0.3]),
+        column("nz", ScalarType::F64, [-0.7071067811865475, 0.0, 0.0, 0.3]),
         column("s", ScalarType::F32, [0.0, 1.0, 0.0, 0.5]),
         column("t", ScalarType::F32, [0.0, 0.0, 1.0, 0.25]),
         column("red", ScalarType::U8, [255.0, 0.0, 10.0, 128.0]),
@@ -436,7 +436,7 @@ fn ply_to_obj_keeps_normals_and_texcoords_and_says_what_it_drops() {
     let vn = obj_lines(&text, "vn");
     assert_eq!((vt.len(), vn.len()), (4, 4));
     assert_eq!(numbers(&vt[3]), [0.5, 0.25]);
-    assert_eq!(numbers(&vn[0]), [-0.5, -0.5, -0.7071067811865476]);
+    assert_eq!(numbers(&vn[0]), [-0.5, -0.5, -0.7071067811865475]);
     assert!(
         obj_corners(&text)
             .iter()
