@@ -188,6 +188,12 @@ impl CornerTable {
     }
 }
 
+/// True when `name` can name a vertex property in every writer: not empty, no blank or control
+/// character.
+pub(crate) fn is_valid_name(name: &str) -> bool {
+    !name.is_empty() && !name.chars().any(|c| c.is_whitespace() || c.is_control())
+}
+
 /// The attributes of a polygon soup (see the module documentation).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Attributes {
@@ -338,7 +344,7 @@ impl Attributes {
                     p.values.len()
                 ));
             }
-            if p.name.is_empty() || p.name.bytes().any(|b| b.is_ascii_whitespace() || b < 0x20) {
+            if !is_valid_name(&p.name) {
                 return Err(format!("vertex property {i} has the name {:?}", p.name));
             }
             if matches!(&p.name[..], "x" | "y" | "z")

@@ -102,7 +102,8 @@ fn vertex_columns(hdr: &Header, roles: &[Role], soup: &mut PolygonSoup) -> Vec<u
                     let column = match p.kind {
                         _ if xyz.contains(&i) => NO_COLUMN,
                         Kind::Scalar(scalar)
-                            if !matches!(&prop[..], "x" | "y" | "z")
+                            if crate::attributes::is_valid_name(&prop)
+                                && !matches!(&prop[..], "x" | "y" | "z")
                                 && attributes.vertex_property(&prop).is_none() =>
                         {
                             attributes.vertex.push(VertexProperty {
@@ -113,10 +114,12 @@ fn vertex_columns(hdr: &Header, roles: &[Role], soup: &mut PolygonSoup) -> Vec<u
                             attributes.vertex.len() - 1
                         }
                         Kind::Scalar(_) => {
-                            let what = format!(
-                                "PLY vertex property '{}' (a repeated name)",
-                                show(&p.name)
-                            );
+                            let why = if crate::attributes::is_valid_name(&prop) {
+                                "a repeated name"
+                            } else {
+                                "a name with control characters"
+                            };
+                            let what = format!("PLY vertex property '{}' ({why})", show(&p.name));
                             attributes.not_kept.push(what);
                             NO_COLUMN
                         }
@@ -130,7 +133,13 @@ fn vertex_columns(hdr: &Header, roles: &[Role], soup: &mut PolygonSoup) -> Vec<u
                 }
             }
             Role::Faces(k) | Role::Strips(k) => {
-                for (_, p) in el.props.iter().enumerate().filter(|&(i, _)| i != k) {
+                for p in el
+                    .props
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| i != k)
+                    .map(|(_, p)| p)
+                {
                     attributes.not_kept.push(format!(
                         "PLY {name} property '{}' ({} records)",
                         show(&p.name),
