@@ -1,7 +1,10 @@
 //! Readers and writers for polygon soups (positions + faces, no topology).
 //!
 //! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
-//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY.
+//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY (ascii or binary,
+//! `double` or `float`: [`WriteOptions`]). Texture coordinates, normals, colours and other
+//! vertex properties are kept beside positions ([`Attributes`]); a writer writes what its
+//! format holds and [`PolygonSoup::unwritable`] says what it leaves out.
 //! Paths ending in `.gz` are read and written through gzip. Errors name the
 //! file and the line (text) or byte offset (binary), with control characters
 //! of quoted input escaped; no input makes a reader panic, loop forever or

@@ -26,13 +26,14 @@ pub struct Args {
 }
 
 /// What `convert --help` says about attributes and PLY variants.
-const ATTRIBUTES_HELP: &str = "Attributes: OBJ texture coordinates (vt) and normals (vn) and PLY \
+const ATTRIBUTES_HELP: &str = "Attributes: OBJ texture coordinates (vt) and normals (vn), PLY \
 vertex properties (nx ny nz, u v / s t / texture_u texture_v, red green blue alpha, any other \
-scalar, with its type) are kept where the output format holds them: OBJ writes texture \
-coordinates and normals (per vertex or per face corner), PLY every per-vertex property (OBJ \
-texture coordinates as u v), OFF none. What cannot be kept (per-corner texture coordinates to \
-PLY, colours to OBJ, anything to OFF, what the reader skips) is named in a warning on stderr. \
-PLY is written binary little-endian with double positions unless --ascii or --float.";
+scalar, with its type) and COFF colours are kept where the output format holds them: OBJ writes \
+texture coordinates and normals (per vertex or per face corner), PLY every per-vertex property \
+(OBJ texture coordinates as u v), OFF colours. What cannot be kept (per-corner texture \
+coordinates to PLY, colours to OBJ, normals to OFF, what the reader skips, differing attributes \
+of welded vertices) is named in a warning on stderr. PLY is written binary little-endian with \
+double positions unless --ascii or --float.";
 
 /// The write options of the flags, refused (exit 2) when the output is not PLY.
 fn write_options(args: &Args) -> anyhow::Result<WriteOptions> {
