@@ -8,31 +8,7 @@ use common::{surftopo, write};
 use std::collections::HashMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};
-
-/// The OBJ statements starting with `keyword `, split into words.
-fn lines<'a>(text: &'a str, keyword: &str) -> Vec<Vec<&'a str>> {
-    text.lines()
-        .filter_map(|l| l.strip_prefix(keyword).and_then(|r| r.strip_prefix(' ')))
-        .map(|r| r.split_whitespace().collect())
-        .collect()
-}
-
-/// For each face corner: (vertex, vt, vn), 0-based.
-fn corners(text: &str) -> Vec<(usize, Option<usize>, Option<usize>)> {
-    let part = |s: Option<&str>| {
-        s.filter(|s| !s.is_empty())
-            .map(|s| s.parse::<usize>().unwrap() - 1)
-    };
-    lines(text, "f")
-        .into_iter()
-        .flatten()
-        .map(|c| {
-            let mut parts = c.split('/');
-            let v = part(parts.next()).unwrap();
-            (v, part(parts.next()), part(parts.next()))
-        })
-        .collect()
-}
+use surftopo_testkit::obj_text::{corners, statements as lines};
 
 /// A generated genus-1 OBJ whose vertex `i` has `vt` (i/1000, i/500) and `vn` (1, 0, i):
 /// per-vertex attributes, written `f a/a/a`. Returns its path and its text.
@@ -263,62 +239,49 @@ fn convert_writes_ascii_and_float_ply() {
             .args(flags)
             .assert()
             .success();
-        let bytes = std::fs::read(&output).unwrap();
-        let end = bytes
-            .windows(11)
-            .position(|w| w == b"end_header\n")
-            .unwrap()
-            + 11;
-        let header = std::str::from_utf8(&bytes[..end]).unwrap();
+        let parsed = surftopo_testkit::ply_parse::parse(&std::fs::read(&output).unwrap());
         let ascii = flags.contains(&"--ascii");
         let format = if ascii {
             "ascii"
         } else {
             "binary_little_endian"
         };
+        assert_eq!(parsed.format, format);
+        assert_eq!(parsed.names, ["x", "y", "z", "u", "v", "nx", "ny", "nz"]);
         assert!(
-            header.contains(&format!("format {format} 1.0\n")),
-            "{header}"
+            parsed.types.iter().all(|t| t == kind),
+            "{flags:?}: {:?}",
+            parsed.types
         );
-        for name in ["x", "y", "z", "u", "v", "nx", "ny", "nz"] {
-            assert!(
-                header.contains(&format!("property {kind} {name}\n")),
-                "{flags:?}: {header}"
-            );
-        }
-        let soup = surftopo_io::read_path(&output).unwrap();
-        assert_eq!(soup.vertex_count(), positions.len());
-        if ascii {
-            // Independently: the vertex lines hold x y z u v nx ny nz as decimals.
-            let body = std::str::from_utf8(&bytes[end..]).unwrap();
-            for (i, line) in body.lines().take(positions.len()).enumerate() {
-                let w: Vec<f64> = line.split(' ').map(|x| x.parse().unwrap()).collect();
-                assert_eq!(w.len(), 8);
-                let expected = [
-                    positions[i][0],
-                    positions[i][1],
-                    positions[i][2],
-                    i as f64 / 1000.0,
-                    i as f64 / 500.0,
-                    1.0,
-                    0.0,
-                    i as f64,
-                ];
-                for (k, (&a, &b)) in w.iter().zip(&expected).enumerate() {
-                    if kind == "float" {
-                        assert_eq!(a as f32, b as f32, "vertex {i} value {k}");
-                    } else {
-                        assert_eq!(a, b, "vertex {i} value {k}");
-                    }
+        assert_eq!(parsed.rows.len(), positions.len());
+        for (i, row) in parsed.rows.iter().enumerate() {
+            let expected = [
+                positions[i][0],
+                positions[i][1],
+                positions[i][2],
+                i as f64 / 1000.0,
+                i as f64 / 500.0,
+                1.0,
+                0.0,
+                i as f64,
+            ];
+            for (k, (&a, &b)) in row.iter().zip(&expected).enumerate() {
+                if kind == "float" {
+                    assert_eq!(a as f32, b as f32, "{flags:?}: vertex {i} value {k}");
+                } else {
+                    assert_eq!(a, b, "{flags:?}: vertex {i} value {k}");
                 }
             }
-        } else {
-            // Binary float: 8 floats per vertex, then the faces.
-            let record = &bytes[end + 4 * 8 * 7..end + 4 * 8 * 8];
-            let value = |k: usize| f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().unwrap());
-            assert_eq!(value(0), positions[7][0] as f32);
-            assert_eq!(value(4), (7.0f64 / 500.0) as f32);
-            assert_eq!(value(7), 7.0);
+        }
+        // Our reader agrees.
+        let soup = surftopo_io::read_path(&output).unwrap();
+        let [u, _] = soup.attributes.vertex_texcoords().unwrap();
+        for (i, row) in parsed.rows.iter().enumerate() {
+            assert_eq!(
+                soup.positions[i].map(|c| c as f32),
+                [0, 1, 2].map(|k| row[k] as f32)
+            );
+            assert_eq!(soup.attributes.vertex[u].values[i] as f32, row[3] as f32);
         }
     }
     // The flags are for PLY only: refused before any work, nothing written.

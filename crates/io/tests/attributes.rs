@@ -6,6 +6,8 @@ use surftopo_io::{
     CornerTable, Format, IoError, PlyEncoding, PlyPrecision, PolygonSoup, ScalarType,
     VertexProperty, WriteOptions, read_bytes,
 };
+use surftopo_testkit::obj_text::{corners as obj_corners, statements as obj_lines};
+use surftopo_testkit::ply_parse::parse as parse_ply;
 
 fn read(text: &[u8], format: Format) -> PolygonSoup {
     read_bytes(text, format, "test").unwrap()
@@ -23,31 +25,6 @@ fn column<'a>(soup: &'a PolygonSoup, name: &str) -> &'a [f64] {
         .vertex_property(name)
         .unwrap_or_else(|| panic!("no vertex property {name}"));
     &soup.attributes.vertex[i].values
-}
-
-/// The lines of an OBJ text starting with `keyword `, split into words.
-fn obj_lines<'a>(text: &'a str, keyword: &str) -> Vec<Vec<&'a str>> {
-    text.lines()
-        .filter_map(|l| l.strip_prefix(keyword).and_then(|r| r.strip_prefix(' ')))
-        .map(|r| r.split_whitespace().collect())
-        .collect()
-}
-
-/// For each face corner of an OBJ text: (vertex, vt, vn) 0-based, as written.
-fn obj_corners(text: &str) -> Vec<(usize, Option<usize>, Option<usize>)> {
-    let part = |s: Option<&str>| {
-        s.filter(|s| !s.is_empty())
-            .map(|s| s.parse::<usize>().unwrap() - 1)
-    };
-    obj_lines(text, "f")
-        .into_iter()
-        .flatten()
-        .map(|corner| {
-            let mut parts = corner.split('/');
-            let v = part(parts.next()).unwrap();
-            (v, part(parts.next()), part(parts.next()))
-        })
-        .collect()
 }
 
 fn numbers(words: &[&str]) -> Vec<f64> {
@@ -191,107 +168,6 @@ fn obj_skipped_statements_are_listed() {
             "OBJ 'usemtl' statements (2)"
         ]
     );
-}
-
-/// A PLY file parsed independently: vertex property names (with types) and vertex rows.
-struct ParsedPly {
-    names: Vec<String>,
-    types: Vec<String>,
-    rows: Vec<Vec<f64>>,
-    faces: Vec<Vec<u32>>,
-}
-
-/// A minimal PLY reader for what our writer emits: one vertex element of scalars, then a face
-/// element of one list.
-fn parse_ply(bytes: &[u8]) -> ParsedPly {
-    let end = bytes
-        .windows(11)
-        .position(|w| w == b"end_header\n")
-        .unwrap()
-        + 11;
-    let header = std::str::from_utf8(&bytes[..end]).unwrap();
-    let mut format = "";
-    let (mut nv, mut nf) = (0, 0);
-    let (mut names, mut types) = (Vec::new(), Vec::new());
-    let mut list = (String::new(), String::new());
-    for line in header.lines() {
-        let w: Vec<&str> = line.split_whitespace().collect();
-        match w[..] {
-            ["format", f, _] => format = f,
-            ["element", "vertex", n] => nv = n.parse().unwrap(),
-            ["element", "face", n] => nf = n.parse().unwrap(),
-            ["property", "list", c, i, _] => list = (c.to_owned(), i.to_owned()),
-            ["property", t, name] => {
-                types.push(t.to_owned());
-                names.push(name.to_owned());
-            }
-            _ => {}
-        }
-    }
-    let body = &bytes[end..];
-    let mut rows = Vec::new();
-    let mut faces = Vec::new();
-    if format == "ascii" {
-        let text = std::str::from_utf8(body).unwrap();
-        let mut lines = text.lines();
-        for _ in 0..nv {
-            rows.push(numbers(
-                &lines.next().unwrap().split_whitespace().collect::<Vec<_>>(),
-            ));
-        }
-        for _ in 0..nf {
-            let w: Vec<u32> = lines
-                .next()
-                .unwrap()
-                .split_whitespace()
-                .map(|w| w.parse().unwrap())
-                .collect();
-            assert_eq!(w[0] as usize, w.len() - 1);
-            faces.push(w[1..].to_vec());
-        }
-        return ParsedPly {
-            names,
-            types,
-            rows,
-            faces,
-        };
-    }
-    let be = format == "binary_big_endian";
-    let mut pos = 0;
-    let mut take = |n: usize| {
-        let mut b = body[pos..pos + n].to_vec();
-        if be {
-            b.reverse();
-        }
-        pos += n;
-        b
-    };
-    let mut value = |t: &str| -> f64 {
-        match t {
-            "char" => f64::from(take(1)[0] as i8),
-            "uchar" => f64::from(take(1)[0]),
-            "short" => f64::from(i16::from_le_bytes(take(2).try_into().unwrap())),
-            "ushort" => f64::from(u16::from_le_bytes(take(2).try_into().unwrap())),
-            "int" => f64::from(i32::from_le_bytes(take(4).try_into().unwrap())),
-            "uint" => f64::from(u32::from_le_bytes(take(4).try_into().unwrap())),
-            "float" => f64::from(f32::from_le_bytes(take(4).try_into().unwrap())),
-            "double" => f64::from_le_bytes(take(8).try_into().unwrap()),
-            other => panic!("type {other}"),
-        }
-    };
-    for _ in 0..nv {
-        rows.push(types.iter().map(|t| value(t)).collect());
-    }
-    for _ in 0..nf {
-        let n = value(&list.0) as usize;
-        faces.push((0..n).map(|_| value(&list.1) as u32).collect());
-    }
-    ParsedPly {
-        names,
-        types,
-        rows,
-        faces,
-    }
 }
 
 /// A tetrahedron with normals, `s t`, RGBA colours, a float `quality` and an int `flags`.
