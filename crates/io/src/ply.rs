@@ -77,6 +77,26 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
         .map_or(0, |(e, _)| e.count);
     let mut soup = PolygonSoup::new();
     let columns = vertex_columns(&hdr, &roles, &mut soup);
+    // Every property of a record takes at least a byte, so no column grows beyond this
+    // reservation (and all of them take at most 8 bytes per input byte); failing to reserve is
+    // an error, not an abort.
+    let per_record = hdr
+        .elements
+        .iter()
+        .zip(&roles)
+        .find(|(_, r)| matches!(r, Role::Vertex(_)))
+        .map_or(1, |(e, _)| e.props.len().max(1));
+    let records = usize::try_from(nv)
+        .unwrap_or(usize::MAX)
+        .min(buf.len() / per_record);
+    for column in &mut soup.attributes.vertex {
+        if column.values.try_reserve_exact(records).is_err() {
+            return Err(IoError::OutOfMemory {
+                file: ctx.name.to_owned(),
+                bytes: records as u64 * 8,
+            });
+        }
+    }
     match hdr.encoding {
         Encoding::Ascii => read_ascii(buf, &hdr, &roles, &columns, nv, soup, ctx),
         Encoding::LittleEndian => read_binary::<false>(buf, &hdr, &roles, &columns, nv, soup, ctx),
@@ -614,7 +634,6 @@ fn read_columns_fixed<const BE: bool>(
     for (p, &column) in el.props.iter().zip(columns) {
         let size = prop_min_size(p.kind);
         if let (Kind::Scalar(t), Some(column)) = (p.kind, soup.attributes.vertex.get_mut(column)) {
-            let _ = column.values.try_reserve_exact(data.len() / stride);
             column.values.extend(
                 data.chunks_exact(stride)
                     .map(|rec| load_f64::<BE>(t, &rec[offset..])),

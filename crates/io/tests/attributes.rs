@@ -410,3 +410,19 @@ fn inconsistent_attributes_are_refused_before_writing() {
     let err = surftopo_io::write(&mut out, &soup, Format::Ply, &WriteOptions::default());
     assert!(err.unwrap_err().to_string().contains("256 is not a uchar"));
 }
+
+#[test]
+fn many_properties_and_a_huge_count_fail_without_a_huge_reservation() {
+    let mut ply = String::from("ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n");
+    for axis in ["x", "y", "z"] {
+        ply += &format!("property float {axis}\n");
+    }
+    for k in 0..2000 {
+        ply += &format!("property uchar p{k}\n");
+    }
+    ply += "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    let mut bytes = ply.into_bytes();
+    bytes.extend([0u8; 5000]);
+    let err = read_bytes(&bytes, Format::Ply, "huge.ply").unwrap_err();
+    assert!(matches!(err, IoError::UnexpectedEof { .. }), "{err}");
+}
