@@ -29,6 +29,8 @@ struct Tables {
     max_vn: Option<(u32, u32)>,
     /// Skipped statements: keyword and count.
     skipped: Vec<(Vec<u8>, u64)>,
+    /// `v` statements with something after x y z (a colour, a weight), which is skipped.
+    vertex_extras: u64,
 }
 
 /// Reads an OBJ file held in memory.
@@ -57,6 +59,10 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
             b'v' if lx.ends_token_at(1) => {
                 lx.pos += 1;
                 read_vertex(&mut lx, &mut soup, ctx)?;
+                lx.skip_blank();
+                if !lx.at_eol() && lx.peek() != Some(b'#') {
+                    tables.vertex_extras += 1;
+                }
                 lx.skip_line();
             }
             b'f' if lx.ends_token_at(1) => {
@@ -183,6 +189,12 @@ fn attach_tables(soup: &mut PolygonSoup, tables: Tables, ctx: Ctx<'_>) -> Result
             None if what == "vt" => soup.attributes.corner_texcoords = Some(table),
             None => soup.attributes.corner_normals = Some(table),
         }
+    }
+    if tables.vertex_extras > 0 {
+        soup.attributes.not_kept.push(format!(
+            "OBJ numbers after x y z (colours or weights) on {} 'v' statements",
+            tables.vertex_extras
+        ));
     }
     for (keyword, n) in tables.skipped {
         soup.attributes

@@ -157,12 +157,12 @@ fn obj_bad_texcoord_index_names_the_line() {
 
 #[test]
 fn obj_skipped_statements_are_listed() {
-    let obj =
-        "mtllib a.mtl\no thing\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl blue\nf 1 2 3\n";
+    let obj = "mtllib a.mtl\no thing\nusemtl red\nv 0 0 0 1 0 0\nv 1 0 0 # c\nv 0 1 0 0.5\nusemtl blue\nf 1 2 3\n";
     let soup = read(obj.as_bytes(), Format::Obj);
     assert_eq!(
         soup.attributes.not_kept,
         [
+            "OBJ numbers after x y z (colours or weights) on 2 'v' statements",
             "OBJ 'mtllib' statements (1)",
             "OBJ 'o' statements (1)",
             "OBJ 'usemtl' statements (2)"
