@@ -43,6 +43,16 @@ pub struct WeldArg {
     pub weld: bool,
 }
 
+/// `--format` of a command's mesh output.
+#[derive(clap::Args, Clone, Copy, Debug)]
+pub struct FormatArg {
+    /// The output mesh's format: obj, off, ply or stl, optionally followed by .gz (e.g. ply.gz,
+    /// gzip-compressed). Needed when the output is `-` (standard output) or its name has no mesh
+    /// extension; a name whose extension says another format is refused.
+    #[arg(long, value_name = "FORMAT", value_parser = crate::output::MeshFormat::parse)]
+    pub format: Option<crate::output::MeshFormat>,
+}
+
 /// `--seed` of the randomised algorithms.
 #[derive(clap::Args, Clone, Copy, Debug)]
 pub struct SeedArg {

@@ -3,6 +3,7 @@
 //! that cannot be kept is said on stderr, with how much of it: what the reader skipped, the
 //! per-corner tables of a command that makes new faces, what the output format cannot hold.
 
+use crate::output::MeshFormat;
 use std::path::Path;
 use surftopo_io::{Attributes, Format, PolygonSoup};
 use surftopo_mesh::{BuildReport, VertexId};
@@ -37,8 +38,8 @@ pub fn warn_not_read(input: &Path, output: &Path, attributes: &Attributes) {
     for what in &attributes.not_kept {
         eprintln!(
             "warning: {}: {what}: not read, so not in {}",
-            crate::failure::shown(input),
-            crate::failure::shown(output)
+            crate::input::name(input),
+            crate::output::name(output)
         );
     }
 }
@@ -49,20 +50,25 @@ pub fn warn_new_faces(command: &str, output: &Path, attributes: &Attributes) {
     for what in attributes.corner_descriptions() {
         eprintln!(
             "warning: {}: {what}: dropped ({command} makes new faces; per-vertex attributes are kept)",
-            crate::failure::shown(output)
+            crate::output::name(output)
         );
     }
 }
 
-/// Warns about everything of `soup`'s attributes the writer of `output`'s format leaves out.
-pub fn warn_unwritable(output: &Path, soup: &PolygonSoup) {
-    let Some(format) = Format::from_path(output) else {
+/// The format `output` is written in: `--format`'s, else the extension's.
+pub fn target_format(output: &Path, format: Option<MeshFormat>) -> Option<Format> {
+    format
+        .map(|f| f.format)
+        .or_else(|| Format::from_path(output))
+}
+
+/// Warns about everything of `soup`'s attributes the writer of `output`'s format (`--format`'s,
+/// else the extension's) leaves out.
+pub fn warn_unwritable(output: &Path, format: Option<MeshFormat>, soup: &PolygonSoup) {
+    let Some(format) = target_format(output, format) else {
         return;
     };
     for what in soup.unwritable(format) {
-        eprintln!(
-            "warning: {}: {what}; dropped",
-            crate::failure::shown(output)
-        );
+        eprintln!("warning: {}: {what}; dropped", crate::output::name(output));
     }
 }

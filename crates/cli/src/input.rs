@@ -2,6 +2,7 @@
 
 use crate::failure::invalid;
 use std::path::Path;
+use std::sync::Mutex;
 use surftopo_io::PolygonSoup;
 use surftopo_mesh::Surface;
 use surftopo_mesh::{BuildError, BuildReport, geometry};
@@ -19,17 +20,119 @@ pub struct Loaded {
     pub attributes: surftopo_io::Attributes,
 }
 
-/// Reads a polygon soup, welding exactly coincident positions when asked (always for STL).
+/// The name of standard input in messages.
+pub const STDIN_NAME: &str = "<stdin>";
+
+/// Whether a path is `-`: standard input as an input, standard output as an output.
+pub fn is_stdio(path: &Path) -> bool {
+    path.as_os_str() == "-"
+}
+
+/// An input path as messages show it: [`STDIN_NAME`] for `-`, else [`crate::failure::shown`].
+pub fn name(path: &Path) -> String {
+    if is_stdio(path) {
+        STDIN_NAME.to_owned()
+    } else {
+        crate::failure::shown(path)
+    }
+}
+
+/// Standard input: not read yet, read into memory (peeked at, not yet handed over), or handed
+/// over to the one input that names it.
+enum Stdin {
+    Unread,
+    Buffered(Vec<u8>),
+    Taken,
+}
+
+static STDIN: Mutex<Stdin> = Mutex::new(Stdin::Unread);
+
+fn stdin_state() -> std::sync::MutexGuard<'static, Stdin> {
+    STDIN
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// All of standard input within the read limits, decompressed when it starts with the gzip magic.
+fn load_stdin() -> anyhow::Result<Vec<u8>> {
+    surftopo_io::load_reader(
+        std::io::stdin().lock(),
+        &crate::limits::read_limits(),
+        STDIN_NAME,
+    )
+    .map_err(explain_limit)
+}
+
+/// `-` named for a second input.
+fn read_once() -> anyhow::Error {
+    invalid(format!(
+        "{STDIN_NAME}: standard input can be read once: give `-` for one input only"
+    ))
+}
+
+/// The whole of standard input ([`load_stdin`]), handed over to the one input that names it;
+/// a second call is refused (exit 2).
+pub fn stdin_bytes() -> anyhow::Result<Vec<u8>> {
+    match std::mem::replace(&mut *stdin_state(), Stdin::Taken) {
+        Stdin::Unread => load_stdin(),
+        Stdin::Buffered(bytes) => Ok(bytes),
+        Stdin::Taken => Err(read_once()),
+    }
+}
+
+/// Whether standard input holds JSON (its first byte after blanks is `{`): portalgon JSON, not
+/// a mesh. The bytes read stay for [`stdin_bytes`].
+pub fn stdin_is_json() -> anyhow::Result<bool> {
+    let mut state = stdin_state();
+    if let Stdin::Unread = *state {
+        *state = Stdin::Buffered(load_stdin()?);
+    }
+    match &*state {
+        Stdin::Buffered(bytes) => {
+            Ok(bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{'))
+        }
+        _ => Err(read_once()),
+    }
+}
+
+/// The bytes of an input that is not a mesh (portalgon JSON): standard input for `-`, else the
+/// file (decompressed when its name ends in `.gz`), within the read limits.
+pub fn input_bytes(path: &Path) -> anyhow::Result<Vec<u8>> {
+    if is_stdio(path) {
+        return stdin_bytes();
+    }
+    surftopo_io::load_path(path, &crate::limits::read_limits()).map_err(explain_limit)
+}
+
+/// Reads a polygon soup, welding exactly coincident positions when asked (always for STL). The
+/// format comes from the extension, else from the content (`-`: standard input; see
+/// [`surftopo_io::sniff_format`]).
 pub fn read_soup(path: &Path, weld: bool) -> anyhow::Result<(PolygonSoup, usize)> {
-    let mut soup =
-        surftopo_io::read_path_with(path, &crate::limits::read_limits()).map_err(explain_limit)?;
-    let source = crate::failure::shown(path);
-    crate::limits::check_elements(&source, soup.vertex_count() as u64, "vertices")?;
-    crate::limits::check_elements(&source, soup.face_count() as u64, "faces")?;
-    crate::limits::check_elements(&source, soup.face_indices.len() as u64 / 3, "triangles")?;
-    let is_stl = surftopo_io::Format::from_path(path) == Some(surftopo_io::Format::Stl);
+    let (soup, format) = if is_stdio(path) {
+        surftopo_io::read_bytes_detected(&stdin_bytes()?, STDIN_NAME)
+    } else {
+        surftopo_io::read_path_detected(path, &crate::limits::read_limits())
+    }
+    .map_err(explain_limit)?;
+    weld_soup(
+        &name(path),
+        soup,
+        weld || format == surftopo_io::Format::Stl,
+    )
+}
+
+/// Checks a soup read from `source` against the element limits and welds exactly coincident
+/// positions when `weld`; returns it with the number of vertices welded away.
+fn weld_soup(
+    source: &str,
+    mut soup: PolygonSoup,
+    weld: bool,
+) -> anyhow::Result<(PolygonSoup, usize)> {
+    crate::limits::check_elements(source, soup.vertex_count() as u64, "vertices")?;
+    crate::limits::check_elements(source, soup.face_count() as u64, "faces")?;
+    crate::limits::check_elements(source, soup.face_indices.len() as u64 / 3, "triangles")?;
     let mut welded = 0;
-    if weld || is_stl {
+    if weld {
         let weld = soup.weld_exact();
         welded = weld.merged;
         if weld.conflicting > 0 {
@@ -97,7 +200,7 @@ pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
         .and_then(|f| soup.face_lines.get(*f))
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
-    format!("{}: {line}{error}", crate::failure::shown(path))
+    format!("{}: {line}{error}", name(path))
 }
 
 /// The soup's triangles, or an invalid-input error naming the first non-triangular face.
@@ -135,7 +238,7 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
 
 /// Notes on stderr what building changed (reoriented faces, dropped or welded vertices).
 pub fn log_report(path: &Path, loaded: &Loaded) {
-    let name = crate::failure::shown(path);
+    let name = name(path);
     if loaded.welded > 0 {
         eprintln!("note: {name}: welded {} coincident vertices", loaded.welded);
     }

@@ -2,8 +2,8 @@
 //!
 //! A thin layer over the surftopo libraries. Exit codes (see [`failure`]): 0 on success, 2 on
 //! invalid input, usage or an unwritable output (message on stderr starting with `error:`), 1 on
-//! an internal failure, 4 on a numerical failure of double precision; `isometric` has its own (0, 1, 2, 3 undecidable, 4). Results go to stdout,
-//! progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
+//! an internal failure, 4 on a numerical failure of double precision; `isometric` has its own (0, 1, 2, 3 undecidable, 4). Results go to stdout (to
+//! stderr when stdout carries a mesh, `-`), progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
 mod args;

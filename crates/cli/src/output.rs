@@ -1,17 +1,66 @@
 //! Writing results: output paths checked before any work ([`check_outputs`]), files written
 //! atomically through surftopo-io (several outputs of one command together: [`Outputs`]), JSON
-//! to stdout.
+//! to stdout. A mesh output `-` is standard output (its format from `--format`, [`MeshFormat`]);
+//! summaries then go to stderr ([`emit`]).
 
 use crate::failure::{invalid, shown};
 use std::path::{Component, Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use surftopo_io::{Format, PolygonSoup, StagedFile, WriteOptions};
 use surftopo_mesh::Surface;
+
+/// A mesh output's format as `--format` gives it: `obj`, `off`, `ply` or `stl`, optionally
+/// followed by `.gz` (gzip-compressed), as a file name would end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MeshFormat {
+    /// The format.
+    pub format: Format,
+    /// gzip-compressed.
+    pub gzip: bool,
+}
+
+impl MeshFormat {
+    /// The format a file name's ending gives, if it names one (`m.ply.gz`: PLY, gzip).
+    pub fn of_path(path: &Path) -> Option<Self> {
+        Format::from_path(path).map(|format| MeshFormat {
+            format,
+            gzip: surftopo_io::is_gzip_path(path),
+        })
+    }
+
+    /// Parses `--format`'s value (case-insensitive).
+    ///
+    /// # Errors
+    /// The accepted values, for clap's message (exit 2).
+    pub fn parse(value: &str) -> Result<Self, String> {
+        let lower = value.to_ascii_lowercase();
+        let (name, gzip) = match lower.strip_suffix(".gz") {
+            Some(name) => (name, true),
+            None => (lower.as_str(), false),
+        };
+        Format::from_extension(name)
+            .map(|format| MeshFormat { format, gzip })
+            .ok_or_else(|| {
+                "expected obj, off, ply or stl, optionally followed by .gz (e.g. ply.gz)".to_owned()
+            })
+    }
+}
+
+impl std::fmt::Display for MeshFormat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let gz = if self.gzip { ".gz" } else { "" };
+        write!(f, "{}{gz}", self.format.extension())
+    }
+}
 
 /// What an output file holds, and so the extensions it may have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OutputKind {
-    /// A mesh: `.obj`, `.off` or `.ply`, optionally `.gz`.
+    /// A mesh: `.obj`, `.off`, `.ply` or `.stl`, optionally `.gz`.
     Mesh,
+    /// A mesh in the format `--format` gives: written to standard output for `-`, to a file of
+    /// any name otherwise (a name whose extension says another format is refused).
+    MeshIn(MeshFormat),
     /// An intrinsic triangulation or tessellation: portalgon JSON, `.json` (a mesh file cannot
     /// hold its loops and multi-edges).
     Portalgon,
@@ -20,6 +69,23 @@ pub enum OutputKind {
     /// A diagonal matrix: as [`OutputKind::Matrix`], or its diagonal as a NumPy `.npy` vector.
     DiagonalMatrix,
 }
+
+/// The kind of a mesh output, given `--format` or not.
+pub fn mesh_kind(format: Option<MeshFormat>) -> OutputKind {
+    format.map_or(OutputKind::Mesh, OutputKind::MeshIn)
+}
+
+/// An output path as messages show it: `<stdout>` for `-`, else [`shown`].
+pub fn name(path: &Path) -> String {
+    if crate::input::is_stdio(path) {
+        "<stdout>".to_owned()
+    } else {
+        shown(path)
+    }
+}
+
+/// Set once an output is standard output: summaries and JSON figures then go to stderr.
+static STDOUT_CARRIES_OUTPUT: AtomicBool = AtomicBool::new(false);
 
 /// Whether the file name of `path` ends in `.ext` (case-insensitive).
 fn has_extension(path: &Path, ext: &str) -> bool {
@@ -30,15 +96,30 @@ fn has_extension(path: &Path, ext: &str) -> bool {
 /// Refuses an output whose extension does not fit what it will hold (exit 2); `option` names the
 /// option that gave it (`-o`, `--laplacian`, ...).
 fn check_extension(option: &str, path: &Path, kind: OutputKind) -> anyhow::Result<()> {
-    let refuse = |what: &str| Err(invalid(format!("{}: {option}: {what}", shown(path))));
+    let refuse = |what: &str| Err(invalid(format!("{}: {option}: {what}", name(path))));
+    let stdio = crate::input::is_stdio(path);
     match kind {
+        OutputKind::Mesh if stdio => refuse(
+            "a mesh written to standard output needs --format obj, off, ply or stl (optionally \
+             .gz, e.g. --format ply.gz)",
+        ),
         OutputKind::Mesh => match Format::from_path(path) {
-            Some(format) if format.can_write() => Ok(()),
-            Some(format) => refuse(&format!(
-                "{format} is read only; write .obj, .off or .ply (optionally .gz)"
-            )),
-            None => refuse("not a mesh file name; write .obj, .off or .ply (optionally .gz)"),
+            Some(_) => Ok(()),
+            None => refuse(
+                "not a mesh file name; write .obj, .off, .ply or .stl (optionally .gz), or give \
+                 --format",
+            ),
         },
+        OutputKind::MeshIn(_) if stdio => Ok(()),
+        OutputKind::MeshIn(format) => match MeshFormat::of_path(path) {
+            Some(named) if named != format => refuse(&format!(
+                "the name says {named}, --format says {format}: give one format"
+            )),
+            _ => Ok(()),
+        },
+        _ if stdio => {
+            refuse("standard output (`-`) takes a mesh only; write this output to a file")
+        }
         OutputKind::Portalgon if has_extension(path, "json") => Ok(()),
         OutputKind::Portalgon => refuse(
             "an intrinsic triangulation is written as portalgon JSON (.json): a mesh file cannot \
@@ -88,14 +169,19 @@ fn identity(path: &Path) -> PathBuf {
     normal
 }
 
-/// Checks a command's outputs before any work: each extension fits its kind, and no file is
-/// named by two options (compared by [`identity`]). `outputs`: (option, path, kind).
+/// Checks a command's outputs before any work: each extension fits its kind (`-`, standard
+/// output, only for a mesh with `--format`), and no file is named by two options (compared by
+/// [`identity`]). `outputs`: (option, path, kind). Once an output is `-`, [`emit`] writes to
+/// stderr.
 ///
 /// # Errors
 /// An invalid-input error (exit 2) naming the path and the option(s).
 pub fn check_outputs(outputs: &[(&str, &Path, OutputKind)]) -> anyhow::Result<()> {
     for &(option, path, kind) in outputs {
         check_extension(option, path, kind)?;
+    }
+    if outputs.iter().any(|o| crate::input::is_stdio(o.1)) {
+        STDOUT_CARRIES_OUTPUT.store(true, Ordering::Relaxed);
     }
     let identities: Vec<PathBuf> = outputs.iter().map(|o| identity(o.1)).collect();
     for (j, id) in identities.iter().enumerate() {
@@ -115,17 +201,41 @@ pub fn check_outputs(outputs: &[(&str, &Path, OutputKind)]) -> anyhow::Result<()
 /// targets by [`Outputs::commit`] only once every one is written: a failure before that (an
 /// error, or a signal: the temporary files are registered with surftopo-io) leaves no output
 /// behind. The renames follow one another; a rename failing midway (rare: same folder, already
-/// written) leaves the outputs committed before it.
+/// written) leaves the outputs committed before it. A mesh for standard output (`-`) is encoded
+/// in memory and written by [`Outputs::commit`], before the renames (stdout cannot be staged).
 #[derive(Default)]
 pub struct Outputs {
     staged: Vec<StagedFile>,
+    stdout: Option<Vec<u8>>,
 }
 
 impl Outputs {
-    /// Writes a polygon soup as a mesh file (format from the extension) under a temporary name.
-    pub fn soup(&mut self, path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
-        self.staged
-            .push(stage_soup(path, soup, &WriteOptions::default())?);
+    /// Writes a polygon soup as a mesh in `format` (`--format`; else the extension's) with
+    /// `options` (PLY encoding and precision) under a temporary name, or into memory for
+    /// standard output (`-`).
+    pub fn soup_with(
+        &mut self,
+        path: &Path,
+        soup: &PolygonSoup,
+        format: Option<MeshFormat>,
+        options: &WriteOptions,
+    ) -> anyhow::Result<()> {
+        let format = format
+            .or_else(|| MeshFormat::of_path(path))
+            .ok_or_else(|| invalid(format!("{}: not a mesh file name", name(path))))?;
+        if format.format == Format::Stl {
+            note_stl_losses(path, soup);
+        }
+        if crate::input::is_stdio(path) {
+            let mut bytes = Vec::new();
+            crate::progress::step(&writing(path), || {
+                surftopo_io::write_encoded(&mut bytes, soup, format.format, format.gzip, options)
+            })
+            .map_err(|e| write_error(path, e))?;
+            self.stdout = Some(bytes);
+        } else {
+            self.staged.push(stage_soup(path, soup, format, options)?);
+        }
         Ok(())
     }
 
@@ -144,6 +254,9 @@ impl Outputs {
     /// # Errors
     /// An unwritable-output error (exit 2) naming the file whose rename failed.
     pub fn commit(self) -> anyhow::Result<()> {
+        if let Some(bytes) = &self.stdout {
+            write_stdout(bytes)?;
+        }
         for staged in self.staged {
             let target = staged.target().to_path_buf();
             staged
@@ -156,44 +269,115 @@ impl Outputs {
 
 /// Writes a surface's live faces (dense vertex ids) to a mesh file, atomically.
 pub fn write_surface(path: &Path, surface: &Surface) -> anyhow::Result<()> {
+    write_surface_as(path, surface, None)
+}
+
+/// [`write_surface`] in `format` (`--format`; else the extension's), `-` to standard output.
+pub fn write_surface_as(
+    path: &Path,
+    surface: &Surface,
+    format: Option<MeshFormat>,
+) -> anyhow::Result<()> {
     let (positions, triangles) = surface.to_triangles();
-    write_soup(path, &PolygonSoup::from_triangles(positions, &triangles))
+    write_soup_as(
+        path,
+        &PolygonSoup::from_triangles(positions, &triangles),
+        format,
+    )
 }
 
 /// Writes a polygon soup to a mesh file (format from the extension), atomically, under a
 /// progress spinner (a gzip-compressed mesh of millions of faces takes seconds).
 pub fn write_soup(path: &Path, soup: &PolygonSoup) -> anyhow::Result<()> {
-    let mut outputs = Outputs::default();
-    outputs.soup(path, soup)?;
-    outputs.commit()
+    write_soup_as(path, soup, None)
 }
 
-/// [`write_soup`] with the given write options (PLY encoding and precision).
+/// [`write_soup`] in `format` (`--format`; else the extension's), `-` to standard output.
+pub fn write_soup_as(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: Option<MeshFormat>,
+) -> anyhow::Result<()> {
+    write_soup_with(path, soup, format, &WriteOptions::default())
+}
+
+/// [`write_soup_as`] with the given write options (PLY encoding and precision).
 pub fn write_soup_with(
     path: &Path,
     soup: &PolygonSoup,
+    format: Option<MeshFormat>,
     options: &WriteOptions,
 ) -> anyhow::Result<()> {
     let mut outputs = Outputs::default();
-    outputs.staged.push(stage_soup(path, soup, options)?);
+    outputs.soup_with(path, soup, format, options)?;
     outputs.commit()
 }
 
-/// A polygon soup written as a mesh file under a temporary name ([`StagedFile`]).
+/// A polygon soup written as a mesh file in `format` under a temporary name ([`StagedFile`]).
 fn stage_soup(
     path: &Path,
     soup: &PolygonSoup,
+    format: MeshFormat,
     options: &WriteOptions,
 ) -> anyhow::Result<StagedFile> {
-    let staged = crate::progress::step(&writing(path), || {
-        surftopo_io::stage_path(path, soup, options)
-    });
-    staged.map_err(|e| match e {
+    crate::progress::step(&writing(path), || {
+        surftopo_io::stage_path_as(path, soup, format.format, format.gzip, options)
+    })
+    .map_err(|e| write_error(path, e))
+}
+
+/// A writer's error as the CLI reports it.
+fn write_error(path: &Path, e: surftopo_io::IoError) -> anyhow::Error {
+    match e {
         // The soup is surftopo's own: an inconsistent one is an internal failure.
         surftopo_io::IoError::InvalidSoup { .. } => anyhow::Error::new(e),
         surftopo_io::IoError::Io { source, .. } => crate::failure::unwritable(path, &source),
         other => crate::failure::invalid(other.to_string()),
-    })
+    }
+}
+
+/// Notes on stderr what an STL file cannot hold of `soup`: coordinates that single precision
+/// rounds, polygons (cut into triangles). Shared vertices are not noted: STL never has them, and
+/// reading it back welds exactly coincident corners.
+fn note_stl_losses(path: &Path, soup: &PolygonSoup) {
+    let rounded = soup
+        .positions
+        .iter()
+        .flatten()
+        .filter(|&&c| f64::from(c as f32) != c)
+        .count();
+    if rounded > 0 {
+        eprintln!(
+            "note: {}: STL holds single precision: {rounded} coordinates rounded",
+            name(path)
+        );
+    }
+    let polygons = soup.faces().filter(|f| f.len() > 3).count();
+    if polygons > 0 {
+        eprintln!(
+            "note: {}: STL holds triangles: {polygons} polygons cut into triangle fans",
+            name(path)
+        );
+    }
+}
+
+/// Writes a mesh's bytes to standard output; failures as [`emit`]'s.
+fn write_stdout(bytes: &[u8]) -> anyhow::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    out.write_all(bytes)
+        .and_then(|()| out.flush())
+        .map_err(stdout_error)
+}
+
+/// A failed write to stdout: a closed pipe passes through (see [`is_broken_pipe`]), anything else
+/// names stdout (exit 2).
+fn stdout_error(e: std::io::Error) -> anyhow::Error {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        anyhow::Error::new(e)
+    } else {
+        crate::failure::invalid(format!("stdout: not written: {e}"))
+    }
 }
 
 /// How a matrix output is written, by its extension: `.npz` (SciPy's `save_npz` layout,
@@ -320,20 +504,15 @@ pub fn format_seconds(seconds: f64) -> String {
     format!("{value:.decimals$} {unit}")
 }
 
-/// Writes results to stdout. A closed pipe (`surftopo info x | head`) is not an error: see
+/// Writes results to stdout, or to stderr when stdout carries an output (`-`, see
+/// [`check_outputs`]). A closed pipe (`surftopo info x | head`) is not an error: see
 /// [`is_broken_pipe`]; any other failure (a full disk) names stdout, exit code 2.
 pub fn emit(text: &str) -> anyhow::Result<()> {
-    use std::io::Write;
-    let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|()| out.flush())
-        .map_err(|e| {
-            if e.kind() == std::io::ErrorKind::BrokenPipe {
-                anyhow::Error::new(e)
-            } else {
-                crate::failure::invalid(format!("stdout: not written: {e}"))
-            }
-        })
+    if STDOUT_CARRIES_OUTPUT.load(Ordering::Relaxed) {
+        eprint!("{text}");
+        return Ok(());
+    }
+    write_stdout(text.as_bytes())
 }
 
 /// Whether an error is stdout's reader having gone away.
@@ -347,7 +526,7 @@ pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
 
 /// A progress message naming the output.
 fn writing(path: &Path) -> String {
-    format!("writing {}", crate::failure::shown(path))
+    format!("writing {}", name(path))
 }
 
 /// Writes a file atomically (temporary sibling, then rename) with `fill` writing its contents,

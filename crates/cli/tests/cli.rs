@@ -237,7 +237,7 @@ fn generate_convert_and_read_back() {
         .arg(&obj)
         .assert()
         .success();
-    for ext in ["off", "ply", "obj.gz", "ply.gz"] {
+    for ext in ["off", "ply", "obj.gz", "ply.gz", "stl"] {
         let out = dir.path().join(format!("torus.{ext}"));
         surftopo()
             .arg("convert")
@@ -258,7 +258,7 @@ fn generate_convert_and_read_back() {
 fn a_failed_write_leaves_no_file_behind() {
     let dir = tempfile::tempdir().unwrap();
     let obj = write(dir.path(), "t.obj", TETRA);
-    let target = dir.path().join("out.stl");
+    let target = dir.path().join("missing").join("out.obj");
     surftopo()
         .arg("convert")
         .arg(&obj)

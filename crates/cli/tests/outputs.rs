@@ -76,8 +76,8 @@ fn an_output_whose_extension_does_not_fit_is_refused_before_any_work() {
             "L.txt: --laplacian: a matrix is written as Matrix Market (.mtx)",
         ),
         (
-            &["quad", "absent.off", "-o", "q.stl"],
-            "q.stl: -o: STL is read only",
+            &["quad", "absent.off", "-o", "q.ply", "--format", "stl"],
+            "q.ply: -o: the name says ply, --format says stl",
         ),
         (
             &["irreducible", "absent.off", "-o", "i.json"],

@@ -102,6 +102,35 @@ pub(crate) fn flip_keeping_tan_half_sq(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
 ) -> Result<(FlipReport, Vec<f64>), DelaunayError> {
+    let flipped = flip_unless(tri, options, |_| false)?;
+    Ok(flipped.expect("no face is refused"))
+}
+
+/// [`flip_to_delaunay`] for `--method auto` ([`crate::method_choice`]): `Ok(None)`, before any
+/// flip and with the triangulation unchanged (mollified first when `options.mollify` asks), when
+/// some triangle's aspect ratio exceeds [`crate::method_choice::AUTO_ASPECT_LIMIT`] (a degenerate
+/// one counts). The needle test runs in flipping's own first pass over the faces, on the lengths
+/// that pass loads, so `auto` costs flipping next to nothing on the inputs it flips.
+///
+/// # Errors
+/// As [`flip_to_delaunay`].
+pub fn flip_to_delaunay_unless_needle(
+    tri: &mut IntrinsicTriangulation,
+    options: &DelaunayOptions,
+) -> Result<Option<FlipReport>, DelaunayError> {
+    let flipped = flip_unless(tri, options, |[a, b, c]| {
+        crate::method_choice::is_needle(a, b, c)
+    })?;
+    Ok(flipped.map(|(report, _)| report))
+}
+
+/// The flip algorithm; `Ok(None)` when `refuse` holds for the sides of some face in the first
+/// pass (before any flip).
+fn flip_unless(
+    tri: &mut IntrinsicTriangulation,
+    options: &DelaunayOptions,
+    refuse: impl Fn([f64; 3]) -> bool,
+) -> Result<Option<(FlipReport, Vec<f64>)>, DelaunayError> {
     let tol = options.tolerance;
     if !(tol.is_finite() && tol >= 0.0) {
         return Err(DelaunayError::InvalidTolerance(tol));
@@ -119,7 +148,12 @@ pub(crate) fn flip_keeping_tan_half_sq(
     }
     let mut t2 = vec![f64::NAN; tri.mesh().halfedge_slots()];
     for f in tri.mesh().faces() {
-        let smallest = tri.store_face_tan_half_sq(f, &mut t2);
+        let halfedges = tri.mesh().face_halfedges(f);
+        let sides = halfedges.map(|h| tri.halfedge_length(h));
+        if refuse(sides) {
+            return Ok(None);
+        }
+        let smallest = store_tan_half_sq(halfedges, sides, &mut t2);
         if smallest.is_nan() || smallest <= 0.0 {
             tri.validate()?;
         }
@@ -203,5 +237,5 @@ pub(crate) fn flip_keeping_tan_half_sq(
             (p.is_nan() || p > bound) && mesh.face(h) != mesh.face(h.twin())
         })
         .count();
-    Ok((report, t2))
+    Ok(Some((report, t2)))
 }

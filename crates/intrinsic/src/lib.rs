@@ -82,6 +82,7 @@ pub mod voronoi;
 pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
 pub use delaunay::{
     DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
+    flip_to_delaunay_unless_needle,
 };
 pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
@@ -105,7 +106,7 @@ pub use portalgon::{
 };
 pub use portalgon_edits::{Component, EditError, VertexInfo};
 pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
-pub use stats::{DelaunayStats, delaunay_with_stats};
+pub use stats::{DelaunayStats, delaunay_with_stats, delaunay_with_stats_unless_needle};
 pub use tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };

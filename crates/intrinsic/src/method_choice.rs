@@ -9,7 +9,9 @@
 //!   `x = 10³` (aspect 5·10⁵), wrong from `x = 3·10³` (aspect 4.5·10⁶). [`AUTO_ASPECT_LIMIT`]
 //!   = 10⁵ leaves a margin of 45 below the first failure.
 //! - Aspect at most the limit: [`Method::Flip`] (on the shared meshes flipping is the fastest
-//!   method, and this pass is all `auto` adds to it).
+//!   method). The CLI runs the test inside flipping's first pass over the faces
+//!   ([`crate::delaunay::flip_to_delaunay_unless_needle`], leaving before any flip at the first
+//!   needle), so on the inputs it flips `auto` adds nothing but the test itself.
 //! - Above the limit, no cone point: [`Method::Dubois`] (Theorem 1: time polylogarithmic in the
 //!   aspect ratio, exact in exact mode).
 //! - Above the limit with a cone point: [`Method::Dubois`] when [`DUBOIS_TAKES_CONE_POINTS`]
@@ -91,7 +93,7 @@ pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
 /// Whether the triangle of sides `a, b, c` has aspect ratio `ℓ²/(2A)` above
 /// [`AUTO_ASPECT_LIMIT`] (a degenerate one counts): `4ℓ⁴ > K²·16A²` with Heron's
 /// `16A² = (a+b+c)(−a+b+c)(a−b+c)(a+b−c)`, no square root.
-fn is_needle(a: f64, b: f64, c: f64) -> bool {
+pub(crate) fn is_needle(a: f64, b: f64, c: f64) -> bool {
     let longest = a.max(b).max(c);
     let sixteen_area2 = (a + b + c) * (-a + b + c) * (a - b + c) * (a + b - c);
     let l4 = longest * longest * longest * longest;
@@ -110,9 +112,20 @@ pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
         let [a, b, c] = tri.face_sides(f);
         is_needle(a, b, c)
     });
-    method_for(needle, || {
-        tri.mesh()
-            .vertices()
-            .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
-    })
+    method_for(needle, || is_flat(tri))
+}
+
+/// [`method_for`] a triangulation known to have a needle (e.g. from
+/// [`crate::delaunay::flip_to_delaunay_unless_needle`]): flatness decided from its angle sums as
+/// in [`choose_method_for_triangulation`].
+pub fn choose_method_for_needle(tri: &IntrinsicTriangulation) -> Method {
+    method_for(true, || is_flat(tri))
+}
+
+/// Whether every vertex's angle sum is 2π within the default angle tolerance (stopping at the
+/// first cone point).
+fn is_flat(tri: &IntrinsicTriangulation) -> bool {
+    tri.mesh()
+        .vertices()
+        .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
 }

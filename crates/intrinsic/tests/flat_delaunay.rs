@@ -190,3 +190,33 @@ fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
     assert_eq!(by_lengths(&pillow), expected);
     assert_eq!(by_lengths(&needle_pillow(&q("3"))), Method::Flip);
 }
+
+#[test]
+fn flipping_unless_a_needle_leaves_needles_untouched_and_flips_the_rest_like_flipping() {
+    use surftopo_intrinsic::method_choice::{Method, choose_method_for_triangulation};
+    use surftopo_intrinsic::{DelaunayOptions, flip_to_delaunay, flip_to_delaunay_unless_needle};
+    let options = DelaunayOptions::default();
+    for (x, needle) in [("10", false), ("447", false), ("448", true), ("1000", true)] {
+        let tri = surftopo_intrinsic::PortalgonDoc::from_portalgon(&t_x(&q(x)))
+            .to_triangulation(1e-9)
+            .unwrap();
+        // The rule's own pass decides the same as the test inside flipping.
+        assert_eq!(
+            choose_method_for_triangulation(&tri) == Method::Dubois,
+            needle,
+            "x = {x}"
+        );
+        let mut fused = tri.clone();
+        let report = flip_to_delaunay_unless_needle(&mut fused, &options).unwrap();
+        if needle {
+            assert!(report.is_none(), "x = {x}");
+            assert_eq!(fused.lengths(), tri.lengths(), "x = {x}: nothing flipped");
+        } else {
+            let mut flipped = tri.clone();
+            let expected = flip_to_delaunay(&mut flipped, &options).unwrap();
+            assert_eq!(report, Some(expected), "x = {x}");
+            assert!(expected.flips > 0);
+            assert_eq!(fused.lengths(), flipped.lengths(), "x = {x}");
+        }
+    }
+}

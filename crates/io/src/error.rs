@@ -47,6 +47,18 @@ pub enum IoError {
         /// The path as given.
         path: String,
     },
+    /// The content matches no mesh format ([`crate::sniff_format`]): an input whose name does
+    /// not say its format (standard input, no mesh extension).
+    #[error(
+        "{file}: cannot tell the mesh format from the content: {reason}; give the input a file name with its \
+         extension (.obj, .off, .ply or .stl, optionally followed by .gz)"
+    )]
+    UnknownContent {
+        /// The input's name.
+        file: String,
+        /// Why no format's test matched.
+        reason: String,
+    },
     /// The format can be read but not written.
     #[error("writing {format} files is not supported")]
     UnsupportedWrite {
@@ -181,7 +193,8 @@ impl IoError {
             | IoError::TooLarge { file, .. }
             | IoError::InputTooLarge { file, .. }
             | IoError::OutOfMemory { file, .. }
-            | IoError::NoFaces { file, .. } => Some(file),
+            | IoError::NoFaces { file, .. }
+            | IoError::UnknownContent { file, .. } => Some(file),
             IoError::UnsupportedFormat { path } => Some(path),
             IoError::UnsupportedWrite { .. }
             | IoError::InvalidSoup { .. }

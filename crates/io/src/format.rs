@@ -12,7 +12,7 @@ pub enum Format {
     Off,
     /// Stanford PLY, ascii or binary (read and write).
     Ply,
-    /// STL, ascii or binary (read only).
+    /// STL, ascii or binary (read; written binary).
     Stl,
 }
 
@@ -50,9 +50,9 @@ impl Format {
         }
     }
 
-    /// True when [`crate::write()`] supports the format.
+    /// True when [`crate::write()`] supports the format: every format (STL is written binary).
     pub fn can_write(self) -> bool {
-        !matches!(self, Format::Stl)
+        true
     }
 }
 

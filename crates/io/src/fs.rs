@@ -58,6 +58,62 @@ pub fn read_path_with(path: &Path, limits: &ReadLimits) -> Result<PolygonSoup, I
     crate::read_bytes(&bytes, format, &name)
 }
 
+/// Reads a mesh file within `limits`, its format from the extension when it has one (as
+/// [`read_path_with`]) and otherwise from the content ([`crate::sniff_format`], after
+/// decompressing gzip data told by its magic); returns the soup and the format read.
+///
+/// # Errors
+/// As [`read_path_with`]; [`IoError::UnknownContent`] when neither the name nor the content says
+/// the format.
+pub fn read_path_detected(
+    path: &Path,
+    limits: &ReadLimits,
+) -> Result<(PolygonSoup, Format), IoError> {
+    let name = path_name(path);
+    let bytes = load_path(path, limits)?;
+    match Format::from_path(path) {
+        Some(format) => Ok((crate::read_bytes(&bytes, format, &name)?, format)),
+        None if crate::is_gzip(&bytes) && !is_gzip_path(path) => {
+            let inner = decompress_gzip(&bytes[..], limits, &name)?;
+            drop(bytes);
+            read_bytes_detected(&inner, &name)
+        }
+        None => read_bytes_detected(&bytes, &name),
+    }
+}
+
+/// Parses an uncompressed mesh file held in memory, its format told by its content
+/// ([`crate::sniff_format`]); returns the soup and the format read. `name`: the input's name in
+/// error messages.
+///
+/// # Errors
+/// [`IoError::UnknownContent`], or the reader's errors as [`crate::read_bytes`].
+pub fn read_bytes_detected(bytes: &[u8], name: &str) -> Result<(PolygonSoup, Format), IoError> {
+    let format = crate::sniff_format(bytes, name)?;
+    Ok((crate::read_bytes(bytes, format, name)?, format))
+}
+
+/// The whole of a stream (standard input) within `limits`, decompressed when it starts with the
+/// gzip magic. `name`: the input's name in error messages.
+///
+/// # Errors
+/// [`IoError::Io`] (read, corrupt gzip), [`IoError::InputTooLarge`], [`IoError::OutOfMemory`].
+pub fn load_reader(
+    mut reader: impl Read,
+    limits: &ReadLimits,
+    name: &str,
+) -> Result<Vec<u8>, IoError> {
+    let ctx = Ctx { name };
+    let mut bytes = Vec::new();
+    read_limited(&mut reader, limits.max_bytes, &mut bytes)
+        .map_err(|e| e.into_error(ctx, limits))?;
+    if crate::is_gzip(&bytes) {
+        let raw = std::mem::take(&mut bytes);
+        return decompress_gzip(&raw[..], limits, name);
+    }
+    Ok(bytes)
+}
+
 /// A path as error messages show it (control characters escaped).
 fn path_name(path: &Path) -> String {
     surftopo_mesh::printable(&path.display().to_string()).into_owned()
@@ -267,21 +323,64 @@ pub fn stage_path(
     soup: &PolygonSoup,
     options: &WriteOptions,
 ) -> Result<StagedFile, IoError> {
-    let name = path_name(path);
-    let format =
-        Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat { path: name.clone() })?;
+    let format = Format::from_path(path).ok_or_else(|| IoError::UnsupportedFormat {
+        path: path_name(path),
+    })?;
+    stage_path_as(path, soup, format, is_gzip_path(path), options)
+}
+
+/// [`stage_path`] in `format`, gzip-compressed when `gzip`, whatever the name of `path` says.
+///
+/// # Errors
+/// As [`stage_path`] (but never [`IoError::UnsupportedFormat`]).
+pub fn stage_path_as(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: Format,
+    gzip: bool,
+    options: &WriteOptions,
+) -> Result<StagedFile, IoError> {
     crate::check_writable(soup, format, options)?;
-    let gz = is_gzip_path(path);
-    let level = Compression::new(options.gzip_level.min(9));
-    stage_write(path, |file| {
-        if gz {
-            let enc = crate::write_unchecked(GzEncoder::new(file, level), soup, format, options)?;
-            enc.finish()
-        } else {
-            crate::write_unchecked(file, soup, format, options)
+    stage_write(path, |file| encode(file, soup, format, gzip, options)).map_err(|e| {
+        Ctx {
+            name: &path_name(path),
         }
+        .io(e)
     })
-    .map_err(|e| Ctx { name: &name }.io(e))
+}
+
+/// [`crate::write()`], gzip-compressed (at `options.gzip_level`) when `gzip`: for a stream such as
+/// standard output.
+///
+/// # Errors
+/// As [`crate::write()`].
+pub fn write_encoded(
+    writer: impl Write,
+    soup: &PolygonSoup,
+    format: Format,
+    gzip: bool,
+    options: &WriteOptions,
+) -> Result<(), IoError> {
+    crate::check_writable(soup, format, options)?;
+    encode(writer, soup, format, gzip, options)
+        .map(drop)
+        .map_err(|e| Ctx { name: "<writer>" }.io(e))
+}
+
+/// Writes a checked soup, through gzip when `gzip`; returns the writer.
+fn encode<W: Write>(
+    writer: W,
+    soup: &PolygonSoup,
+    format: Format,
+    gzip: bool,
+    options: &WriteOptions,
+) -> io::Result<W> {
+    if gzip {
+        let level = Compression::new(options.gzip_level.min(9));
+        crate::write_unchecked(GzEncoder::new(writer, level), soup, format, options)?.finish()
+    } else {
+        crate::write_unchecked(writer, soup, format, options)
+    }
 }
 
 /// Counter making temporary names unique within the process.

@@ -1,11 +1,12 @@
 //! Readers and writers for polygon soups (positions + faces, no topology).
 //!
 //! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
-//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF and PLY (ascii or binary,
-//! `double` or `float`: [`WriteOptions`]). Texture coordinates, normals, colours and other
-//! vertex properties are kept beside positions ([`Attributes`]); a writer writes what its
-//! format holds and [`PolygonSoup::unwritable`] says what it leaves out.
-//! Paths ending in `.gz` are read and written through gzip. Errors name the
+//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF, PLY (ascii or binary,
+//! `double` or `float`: [`WriteOptions`]) and binary STL. Texture coordinates, normals, colours
+//! and other vertex properties are kept beside positions ([`Attributes`]); a writer writes what
+//! its format holds and [`PolygonSoup::unwritable`] says what it leaves out. Paths ending in
+//! `.gz` are read and written through gzip; an input whose name does not say its format is told
+//! by its content ([`sniff_format`], [`read_path_detected`]). Errors name the
 //! file and the line (text) or byte offset (binary), with control characters
 //! of quoted input escaped; no input makes a reader panic, loop forever or
 //! allocate beyond what the input could hold. Files are read within
@@ -34,6 +35,7 @@ mod off;
 mod out;
 mod ply;
 mod ply_write;
+mod sniff;
 mod soup;
 mod stl;
 mod text;
@@ -47,8 +49,10 @@ pub use error::{IoError, Location};
 pub use format::{Format, is_gzip_path};
 pub use fs::{
     DEFAULT_MAX_INPUT_BYTES, ReadLimits, StagedFile, atomic_write, decompress_gzip, load_path,
-    read_path, read_path_with, remove_temporaries_then, stage_path, stage_write, write_path,
+    load_reader, read_bytes_detected, read_path, read_path_detected, read_path_with,
+    remove_temporaries_then, stage_path, stage_path_as, stage_write, write_encoded, write_path,
 };
+pub use sniff::{is_gzip, sniff_format};
 pub use soup::{NotTriangles, PolygonSoup, Weld};
 
 use error::Ctx;
@@ -176,11 +180,11 @@ pub fn read(reader: impl Read, format: Format, name: &str) -> Result<PolygonSoup
 /// Writes the soup in `format`, uncompressed.
 ///
 /// `writer`: the destination (buffered internally); `soup`: what to write;
-/// `format`: OBJ, OFF or PLY; `options`: PLY encoding (gzip level is only
-/// used by [`write_path`]). Fails with [`IoError::InvalidSoup`] before
-/// writing anything if the soup is inconsistent (see
-/// [`PolygonSoup::validate`]), with [`IoError::UnsupportedWrite`] for STL,
-/// and with [`IoError::Io`] (file `<writer>`) if the writer fails.
+/// `format`: OBJ, OFF, PLY or (binary) STL; `options`: PLY encoding (gzip
+/// level is only used by [`write_path`]). Fails with [`IoError::InvalidSoup`]
+/// before writing anything if the soup is inconsistent (see
+/// [`PolygonSoup::validate`]), and with [`IoError::Io`] (file `<writer>`) if
+/// the writer fails (or an STL would have more than 2^32 - 1 triangles).
 pub fn write(
     writer: impl Write,
     soup: &PolygonSoup,
@@ -228,6 +232,6 @@ fn write_unchecked<W: Write>(
         Format::Obj => obj::write(writer, soup),
         Format::Off => off::write(writer, soup),
         Format::Ply => ply_write::write(writer, soup, options),
-        Format::Stl => Err(io::Error::other("writing STL is not supported")),
+        Format::Stl => stl::write(writer, soup),
     }
 }

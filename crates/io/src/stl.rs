@@ -1,7 +1,10 @@
-//! STL reader, binary and ascii. Every facet gets its own 3 vertices (no
+//! STL reader, binary and ascii, and binary STL writer. Every facet gets its own 3 vertices (no
 //! welding); ascii facets with more than 3 vertices become polygons.
 
+use std::io::{self, Write};
+
 use crate::error::{Ctx, IoError, Location};
+use crate::out::Out;
 use crate::soup::PolygonSoup;
 use crate::text::{Lexer, show};
 
@@ -155,4 +158,66 @@ fn read_ascii(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
         return Err(ctx.eof(lx.at(), "'endfacet'"));
     }
     Ok(soup)
+}
+
+/// The header of written files: 80 bytes that do not start with `solid`, so no reader takes the
+/// file for ascii STL.
+const WRITTEN_HEADER: &[u8; 80] =
+    b"binary STL written by surftopo                                                  ";
+
+/// Writes binary STL: the header, the triangle count, then per triangle its unit normal (zero
+/// for a degenerate triangle), its corners as `f32` (rounded to nearest: STL holds single
+/// precision) and a zero attribute count. Polygons are cut into triangle fans (STL holds
+/// triangles only); shared vertices are not kept (each facet lists its corners).
+///
+/// # Errors
+/// `InvalidInput` before writing anything when the fans have more than 2^32 - 1 triangles (the
+/// count is a `u32`); the writer's errors.
+pub(crate) fn write<W: Write>(w: W, soup: &PolygonSoup) -> io::Result<W> {
+    let triangles: u64 = soup.faces().map(|f| f.len().saturating_sub(2) as u64).sum();
+    let count = u32::try_from(triangles).map_err(|_| {
+        io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{triangles} triangles: binary STL holds at most 2^32-1"),
+        )
+    })?;
+    let mut out = Out::new(w);
+    out.bytes(WRITTEN_HEADER);
+    out.bytes(&count.to_le_bytes());
+    for face in soup.faces() {
+        for i in 1..face.len().saturating_sub(1) {
+            let corners = [face[0], face[i], face[i + 1]].map(|v| soup.positions[v as usize]);
+            for c in normal(corners) {
+                out.bytes(&(c as f32).to_le_bytes());
+            }
+            for p in corners {
+                for c in p {
+                    out.bytes(&(c as f32).to_le_bytes());
+                }
+            }
+            out.bytes(&[0, 0]);
+            out.flush_if_full()?;
+        }
+    }
+    out.finish()
+}
+
+/// The unit normal of a triangle by the right-hand rule, zero when it is degenerate (or its
+/// cross product is not finite).
+fn normal([a, b, c]: [[f64; 3]; 3]) -> [f64; 3] {
+    let (u, v) = (
+        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+        [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+    );
+    let n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    if length > 0.0 && length.is_finite() {
+        n.map(|x| x / length)
+    } else {
+        [0.0; 3]
+    }
 }

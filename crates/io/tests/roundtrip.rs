@@ -119,22 +119,6 @@ fn writers_reject_invalid_soups_and_stl() {
     nan.positions[2][1] = f64::NAN;
     let err = write(Vec::new(), &nan, Format::Ply, &WriteOptions::default()).unwrap_err();
     assert!(matches!(err, IoError::InvalidSoup { .. }), "{err}");
-    let err = write(
-        Vec::new(),
-        &octahedron(),
-        Format::Stl,
-        &WriteOptions::default(),
-    )
-    .unwrap_err();
-    assert!(
-        matches!(
-            err,
-            IoError::UnsupportedWrite {
-                format: Format::Stl
-            }
-        ),
-        "{err}"
-    );
 }
 
 #[test]

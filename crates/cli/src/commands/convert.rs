@@ -1,7 +1,8 @@
-//! `surftopo convert`: any readable format to OBJ, OFF or PLY (polygons kept as they are, with
-//! the attributes the target format holds: see [`crate::attributes`]).
+//! `surftopo convert`: any readable format to OBJ, OFF, PLY or binary STL (polygons kept as they
+//! are, except in STL, which holds triangles; the attributes the target format holds are kept:
+//! see [`crate::attributes`]).
 
-use crate::args::WeldArg;
+use crate::args::{FormatArg, WeldArg};
 use crate::input::read_soup;
 use std::path::PathBuf;
 use surftopo_io::{Format, PlyEncoding, PlyPrecision, WriteOptions};
@@ -10,9 +11,10 @@ use surftopo_io::{Format, PlyEncoding, PlyPrecision, WriteOptions};
 #[derive(clap::Args, Debug)]
 #[command(after_help = ATTRIBUTES_HELP)]
 pub struct Args {
-    /// Input mesh file.
+    /// Input mesh file, `-` for standard input (format from the extension, else the content).
     pub input: PathBuf,
-    /// Output mesh file (.obj, .off, .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply, .stl, optionally .gz), `-` for standard output (with
+    /// --format).
     pub output: PathBuf,
     #[command(flatten)]
     pub weld: WeldArg,
@@ -23,6 +25,8 @@ pub struct Args {
     /// half the size, about 7 significant digits.
     #[arg(long)]
     pub float: bool,
+    #[command(flatten)]
+    pub format: FormatArg,
 }
 
 /// What `convert --help` says about attributes and PLY variants.
@@ -38,12 +42,13 @@ double positions unless --ascii or --float.";
 /// The write options of the flags, refused (exit 2) when the output is not PLY.
 fn write_options(args: &Args) -> anyhow::Result<WriteOptions> {
     let mut options = WriteOptions::default();
-    let is_ply = Format::from_path(&args.output) == Some(Format::Ply);
+    let target = crate::attributes::target_format(&args.output, args.format.format);
+    let is_ply = target == Some(Format::Ply);
     for (given, flag) in [(args.ascii, "--ascii"), (args.float, "--float")] {
         if given && !is_ply {
             return Err(crate::failure::invalid(format!(
                 "{}: {flag} applies to PLY output only",
-                crate::failure::shown(&args.output)
+                crate::output::name(&args.output)
             )));
         }
     }
@@ -59,15 +64,16 @@ fn write_options(args: &Args) -> anyhow::Result<WriteOptions> {
 /// Converts `input` to `output`, welding exactly coincident positions when asked.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.input.as_path(), args.output.as_path());
-    crate::output::check_outputs(&[("OUTPUT", output, crate::output::OutputKind::Mesh)])?;
+    let kind = crate::output::mesh_kind(args.format.format);
+    crate::output::check_outputs(&[("OUTPUT", output, kind)])?;
     let options = write_options(args)?;
     let (soup, welded) = crate::progress::step("reading", || read_soup(input, args.weld.weld))?;
-    crate::output::write_soup_with(output, &soup, &options)?;
+    crate::output::write_soup_with(output, &soup, args.format.format, &options)?;
     crate::attributes::warn_not_read(input, output, &soup.attributes);
-    crate::attributes::warn_unwritable(output, &soup);
+    crate::attributes::warn_unwritable(output, args.format.format, &soup);
     crate::output::emit(&format!(
         "wrote {} ({} vertices, {} faces{})\n",
-        crate::failure::shown(output),
+        crate::output::name(output),
         soup.positions.len(),
         soup.face_count(),
         if welded > 0 {

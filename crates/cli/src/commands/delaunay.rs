@@ -13,20 +13,21 @@ use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{DuboisReport, FlatDelaunayOptions, delaunay_tessellation_dubois};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::method_choice::{
-    Method as Choice, choose_method, choose_method_for_triangulation,
+    Method as Choice, choose_method, choose_method_for_needle,
 };
 use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
     DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError,
     SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats,
-    lumped_mass,
+    delaunay_with_stats_unless_needle, lumped_mass,
 };
 
 /// The arguments of `delaunay`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md).
+    /// A mesh file, or a portalgon JSON file (`.json`, see crates/intrinsic/PORTALGON_FORMAT.md);
+    /// `-` for standard input (JSON when it starts with `{`, else a mesh told by its content).
     pub input: PathBuf,
     /// The Delaunay triangulation, as portalgon JSON (.json). Optional: at least one output
     /// (this, --tessellation, --reduced, --laplacian, --mass) or --json is needed.
@@ -128,23 +129,20 @@ impl MethodOptions {
 /// An invalid-input error naming the file: not JSON, not closed, or not given by corners (a mesh
 /// or a portalgon given by lengths: their lengths are square roots).
 pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
-    let is_json = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    if !is_json {
+    if !is_json_input(path)? {
         return Err(invalid(format!(
             "{}: --exact needs a portalgon JSON file given by exact corners (a mesh's lengths are \
              square roots)",
             path.display()
         )));
     }
-    let file =
-        std::fs::File::open(path).map_err(|e| invalid(format!("{}: {e}", path.display())))?;
-    let p = PortalgonDoc::read(std::io::BufReader::new(file))
+    let name = crate::input::name(path);
+    let bytes = crate::input::input_bytes(path)?;
+    let p = PortalgonDoc::read(&bytes[..])
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
-        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+        .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
-        .map_err(|e| invalid(format!("{}: {e}", path.display())))?;
+        .map_err(|e| invalid(format!("{name}: {e}")))?;
     Ok(p)
 }
 
@@ -203,17 +201,23 @@ fn tessellate<S: Scalar>(
     Ok((v, figures, reduced))
 }
 
+/// Whether an input is portalgon JSON: a `.json` file, or standard input starting with `{`.
+fn is_json_input(path: &Path) -> anyhow::Result<bool> {
+    if crate::input::is_stdio(path) {
+        return crate::input::stdin_is_json();
+    }
+    Ok(path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json")))
+}
+
 /// Reads a mesh file or a portalgon JSON file (a triangulation, or a tessellation whose polygons
 /// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
-    let is_json = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("json"));
-    let name = crate::failure::shown(path);
-    if is_json {
-        let bytes = surftopo_io::load_path(path, &crate::limits::read_limits())
-            .map_err(crate::input::explain_limit)?;
+    let name = crate::input::name(path);
+    if is_json_input(path)? {
+        let bytes = crate::input::input_bytes(path)?;
         let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
@@ -312,7 +316,7 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     let method = match requested {
         Method::Auto if options.reduced.is_some() => Method::Dubois,
         Method::Auto if flip_options_given => Method::Flip,
-        Method::Auto => Method::chosen(choose_method_for_triangulation(&tri), false),
+        Method::Auto => return run_auto(options, tri),
         m => m,
     };
     if method == Method::Flip {
@@ -322,26 +326,61 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     }
 }
 
-/// `--method flip`.
-fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
-    if options.reduced.is_some() {
-        return Err(invalid("--reduced applies to --method dubois only"));
+/// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test in its first pass
+/// ([`delaunay_with_stats_unless_needle`]); at a needle, nothing is flipped and the rule goes on
+/// from there ([`choose_method_for_needle`]).
+fn run_auto(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+    let flipped = crate::progress::step("flipping to Delaunay", || {
+        delaunay_with_stats_unless_needle(&mut tri, &flip_options(options))
+    })
+    .map_err(|e| flip_error(options, e))?;
+    match flipped {
+        Some(stats) => write_flipped(options, tri, &stats),
+        None => match Method::chosen(choose_method_for_needle(&tri), false) {
+            Method::Flip => run_flip(options, tri),
+            method => run_wave(options, tri, method),
+        },
     }
-    let flip_options = DelaunayOptions {
+}
+
+/// The [`DelaunayOptions`] of `--max-flips` and `--mollify`.
+fn flip_options(options: &Args) -> DelaunayOptions {
+    DelaunayOptions {
         max_flips: options.max_flips,
         mollify: options.mollify,
         ..DelaunayOptions::default()
-    };
-    let stats = crate::progress::step("flipping to Delaunay", || {
-        delaunay_with_stats(&mut tri, &flip_options)
-    })
-    .map_err(|e| match e {
+    }
+}
+
+/// A flipping failure: a numerical breakdown as itself (exit 4), anything else as invalid input.
+fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
+    match e {
         DelaunayError::NumericalBreakdown { .. } => anyhow::Error::new(e),
         other => invalid(format!(
             "{}: {other}",
             crate::failure::shown(&options.input)
         )),
-    })?;
+    }
+}
+
+/// `--method flip`.
+fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+    if options.reduced.is_some() {
+        return Err(invalid("--reduced applies to --method dubois only"));
+    }
+    let stats = crate::progress::step("flipping to Delaunay", || {
+        delaunay_with_stats(&mut tri, &flip_options(options))
+    })
+    .map_err(|e| flip_error(options, e))?;
+    write_flipped(options, tri, &stats)
+}
+
+/// The outputs and the report of a flipped triangulation.
+fn write_flipped(
+    options: &Args,
+    tri: IntrinsicTriangulation,
+    stats: &DelaunayStats,
+) -> anyhow::Result<()> {
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
         outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
@@ -356,7 +395,7 @@ fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<(
     }
     write_matrices(options, &tri, &mut outputs)?;
     outputs.commit()?;
-    report(options, Method::Flip, &stats, None)
+    report(options, Method::Flip, stats, None)
 }
 
 /// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).

@@ -29,6 +29,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let kind = Kind::Genus { genus: 2, size: 2 };
     let modifiers = Modifiers {
         output: None,
+        format: None,
         subdivide: 1,
         simplify: None,
         flips: 2000,

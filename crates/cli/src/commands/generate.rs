@@ -108,9 +108,14 @@ pub enum Generated {
 /// Options common to every generator.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Modifiers {
-    /// Output mesh file (.obj, .off, .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply, .stl, optionally .gz), `-` for standard output (with
+    /// --format); portalgon JSON (.json, a file) for flat-torus and intrinsic-flips.
     #[arg(short, long, global = true)]
     pub output: Option<PathBuf>,
+    /// The output mesh's format: obj, off, ply or stl, optionally followed by .gz (e.g. ply.gz).
+    /// Needed when the output is `-` (standard output) or its name has no mesh extension.
+    #[arg(long, value_name = "FORMAT", global = true, value_parser = crate::output::MeshFormat::parse)]
+    pub format: Option<crate::output::MeshFormat>,
     /// Levels of 1-to-4 midpoint subdivision applied after generation.
     #[arg(long, default_value_t = 0, global = true)]
     pub subdivide: u32,
@@ -341,10 +346,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .output
         .as_ref()
         .ok_or_else(|| crate::failure::invalid("generate: an output file is needed (-o OUT)"))?;
-    let holds = if kind.is_intrinsic() {
-        OutputKind::Portalgon
-    } else {
-        OutputKind::Mesh
+    let holds = match (kind.is_intrinsic(), modifiers.format) {
+        (true, Some(_)) => {
+            return Err(crate::failure::invalid(
+                "--format: this generator writes portalgon JSON, not a mesh",
+            ));
+        }
+        (true, None) => OutputKind::Portalgon,
+        (false, format) => crate::output::mesh_kind(format),
     };
     crate::output::check_outputs(&[("-o", output, holds)])?;
     if let (Kind::FlatTorus { x, m }, 0) = (kind, modifiers.flips) {
@@ -355,7 +364,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         Generated::Surface(surface) => {
             let surface =
                 crate::progress::step("applying the modifiers", || modify(surface, modifiers))?;
-            crate::output::write_surface(output, &surface)?;
+            crate::output::write_surface_as(output, &surface, modifiers.format)?;
             (surface.mesh, "")
         }
         Generated::Intrinsic(mut tri) => {
@@ -376,7 +385,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     };
     crate::output::emit(&format!(
         "wrote {}{what}: {} vertices, {} edges, {} faces, genus {}\n",
-        crate::failure::shown(output),
+        crate::output::name(output),
         mesh.vertex_count(),
         mesh.edge_count(),
         mesh.face_count(),

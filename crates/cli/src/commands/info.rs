@@ -14,7 +14,8 @@ use std::path::{Path, PathBuf};
 /// The arguments of `info`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Mesh file (.obj, .off, .ply, .stl, optionally .gz).
+    /// Mesh file (.obj, .off, .ply, .stl, optionally .gz), `-` for standard input (format from
+    /// the extension, else the content).
     pub mesh: PathBuf,
     #[command(flatten)]
     pub json: JsonArg,
@@ -120,7 +121,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     if strict && !valid {
         return Err(invalid(format!(
             "{}: {} problem(s) found",
-            crate::failure::shown(path),
+            crate::input::name(path),
             info.problem_count
         )));
     }
@@ -131,7 +132,7 @@ fn text(path: &Path, info: &Info) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let yes = |b: bool| if b { "yes" } else { "no" };
-    writeln!(s, "{}", crate::failure::shown(path)).ok();
+    writeln!(s, "{}", crate::input::name(path)).ok();
     writeln!(s, "  vertices              {}", info.vertices).ok();
     writeln!(s, "  edges                 {}", info.edges).ok();
     writeln!(s, "  faces                 {}", info.faces).ok();

@@ -1,6 +1,6 @@
 //! `surftopo irreducible`: an irreducible triangulation by topology-preserving edge contractions.
 
-use crate::args::{JsonArg, SeedArg, WeldArg, names};
+use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
 use serde::Serialize;
 use std::path::PathBuf;
@@ -11,11 +11,15 @@ use surftopo_mesh::{Renumbering, SurfaceMesh};
 /// The arguments of `irreducible`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
+    /// .gz), `-` for standard input (format from the extension, else the content).
     pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
+    /// --format).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub format: FormatArg,
     #[command(flatten)]
     pub seed: SeedArg,
     #[command(flatten)]
@@ -126,14 +130,15 @@ pub fn reduce_surface_renumbered(
 /// Runs `irreducible`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
+    let kind = crate::output::mesh_kind(args.format.format);
+    crate::output::check_outputs(&[("-o", output, kind)])?;
     let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
     let (irreducible, report, renumbering) = crate::progress::step("contracting", || {
         reduce_surface_renumbered(&loaded.surface, algorithm)
     })
-    .map_err(|e| e.context(crate::failure::shown(input)))?;
+    .map_err(|e| e.context(crate::input::name(input)))?;
     // Compacted: vertex ids are dense and in order, as `to_triangles` numbers them.
     let (positions, triangles) = irreducible.to_triangles();
     let mut soup = surftopo_io::PolygonSoup::from_triangles(positions, &triangles);
@@ -142,16 +147,16 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         soup.vertex_count(),
         &renumbering.vertices,
     );
-    crate::output::write_soup(output, &soup)?;
+    crate::output::write_soup_as(output, &soup, args.format.format)?;
     crate::attributes::warn_not_read(input, output, &loaded.attributes);
     crate::attributes::warn_new_faces("irreducible", output, &loaded.attributes);
-    crate::attributes::warn_unwritable(output, &soup);
+    crate::attributes::warn_unwritable(output, args.format.format, &soup);
     if args.json.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
             "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
-            crate::failure::shown(output),
+            crate::output::name(output),
             report.output.vertices,
             report.output.edges,
             report.output.faces,

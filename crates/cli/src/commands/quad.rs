@@ -1,6 +1,6 @@
 //! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
 
-use crate::args::{JsonArg, SeedArg, WeldArg, names};
+use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
 use crate::failure::invalid;
 use std::path::PathBuf;
 use surftopo_io::PolygonSoup;
@@ -14,11 +14,15 @@ use surftopo_quad::{
 /// The arguments of `quad`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally .gz).
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
+    /// .gz), `-` for standard input (format from the extension, else the content).
     pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off or .ply, optionally .gz).
+    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
+    /// --format).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub format: FormatArg,
     #[command(flatten)]
     pub seed: SeedArg,
     #[command(flatten)]
@@ -120,7 +124,8 @@ fn pair(
 /// Runs `quad`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    crate::output::check_outputs(&[("-o", output, crate::output::OutputKind::Mesh)])?;
+    let kind = crate::output::mesh_kind(args.format.format);
+    crate::output::check_outputs(&[("-o", output, kind)])?;
     let algorithm = algorithm_named(&args.algorithm, args.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
@@ -132,14 +137,14 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let paired = crate::progress::step("pairing triangles", || {
         pair(&loaded.surface, algorithm, objective)
     })
-    .map_err(|e| e.context(crate::failure::shown(input)))?;
+    .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
     let mut soup = quad_soup(&loaded.surface, result);
     soup.attributes.vertex = loaded.attributes.vertex.clone();
-    crate::output::write_soup(output, &soup)?;
+    crate::output::write_soup_as(output, &soup, args.format.format)?;
     crate::attributes::warn_not_read(input, output, &loaded.attributes);
     crate::attributes::warn_new_faces("quad", output, &loaded.attributes);
-    crate::attributes::warn_unwritable(output, &soup);
+    crate::attributes::warn_unwritable(output, args.format.format, &soup);
     let stats = &result.stats;
     if args.json.json {
         crate::output::print_json(&paired.figures(&args.objective))?;
@@ -157,7 +162,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         };
         crate::output::emit(&format!(
             "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
-            crate::failure::shown(output),
+            crate::output::name(output),
             result.quads.len(),
             stats.faces,
             stats.algorithm,
