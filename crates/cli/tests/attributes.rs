@@ -362,3 +362,48 @@ fn shared_mesh_attributes_survive_convert() {
 }
 
 surftopo_testkit::shared_mesh_tests!(shared_mesh_attributes_survive_convert);
+
+#[test]
+fn attributes_and_ply_variants_through_standard_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let (input, text) = surface_with_attributes(dir.path());
+    let run = surftopo()
+        .arg("convert")
+        .arg(&input)
+        .args(["-", "--format", "ply", "--ascii", "--float"])
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let parsed = surftopo_testkit::ply_parse::parse(&run.stdout);
+    assert_eq!(parsed.format, "ascii");
+    assert_eq!(parsed.names, ["x", "y", "z", "u", "v", "nx", "ny", "nz"]);
+    assert_eq!(parsed.rows.len(), lines(&text, "v").len());
+    assert_eq!(parsed.rows[5][7], 5.0);
+    // To STL, which holds no attributes: said on stderr.
+    let run = surftopo()
+        .arg("convert")
+        .arg(&input)
+        .args(["-", "--format", "stl"])
+        .output()
+        .unwrap();
+    assert!(run.status.success());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(
+        stderr.contains("warning: <stdout>: per-vertex u v nx ny nz (")
+            && stderr.contains("STL cannot hold them; dropped"),
+        "{stderr}"
+    );
+    // --ascii with another format is refused.
+    let run = surftopo()
+        .arg("convert")
+        .arg(&input)
+        .args(["-", "--format", "obj", "--float"])
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(2));
+    assert!(run.stdout.is_empty());
+}
