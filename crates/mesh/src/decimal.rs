@@ -46,6 +46,24 @@ mod tests {
     }
 
     #[test]
+    fn f32_is_the_shortest_decimal_of_the_f32() {
+        for x in [0.1f32, 1.0 / 3.0, -1e-7, f32::MAX, f32::MIN_POSITIVE / 8.0] {
+            let mut out = Vec::new();
+            push_f32(&mut out, x);
+            let text = String::from_utf8(out).unwrap();
+            assert_eq!(
+                text.parse::<f32>().unwrap().to_bits(),
+                x.to_bits(),
+                "{text}"
+            );
+            // At most 9 significant digits (an f32 needs no more), not the f64's 17.
+            let mantissa = text.split('e').next().unwrap();
+            let digits = mantissa.bytes().filter(u8::is_ascii_digit).count();
+            assert!(digits <= 10, "{text}");
+        }
+    }
+
+    #[test]
     fn floats_round_trip() {
         assert_eq!(f(1.0), "1.0");
         assert_eq!(f(-0.0), "-0.0");
