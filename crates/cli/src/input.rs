@@ -15,6 +15,9 @@ pub struct Loaded {
     pub report: BuildReport,
     /// Vertices merged by welding.
     pub welded: usize,
+    /// The input's attributes, per-vertex ones on the surface's vertex ids
+    /// ([`crate::attributes::on_mesh`]).
+    pub attributes: surftopo_io::Attributes,
 }
 
 /// The name of standard input in messages.
@@ -140,12 +143,15 @@ fn weld_soup(
     crate::limits::check_elements(source, soup.face_indices.len() as u64 / 3, "triangles")?;
     let mut welded = 0;
     if weld {
-        let (positions, map) = geometry::weld_exact(&soup.positions);
-        welded = soup.positions.len() - positions.len();
-        for i in &mut soup.face_indices {
-            *i = map[*i as usize];
+        let weld = soup.weld_exact();
+        welded = weld.merged;
+        if weld.conflicting > 0 {
+            eprintln!(
+                "warning: {source}: welding merged {} vertices whose per-vertex attributes differ \
+                 from those of the vertex they were merged into; theirs are dropped",
+                weld.conflicting
+            );
         }
-        soup.positions = positions;
     }
     Ok((soup, welded))
 }
@@ -232,10 +238,12 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
             positions[new.idx()] = soup.positions[old];
         }
     }
+    let attributes = crate::attributes::on_mesh(&soup, &report, mesh.vertex_slots());
     Ok(Loaded {
         surface: Surface { mesh, positions },
         report,
         welded,
+        attributes,
     })
 }
 

@@ -7,6 +7,7 @@
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
 mod args;
+mod attributes;
 mod commands;
 mod failure;
 mod input;
@@ -43,7 +44,8 @@ enum Command {
     Info(commands::info::Args),
     /// Generate a surface.
     Generate(commands::generate::Args),
-    /// Convert between mesh formats (polygons are kept).
+    /// Convert between mesh formats (polygons are kept, and the attributes the output format
+    /// holds: texture coordinates, normals, PLY properties; a warning names what is dropped).
     Convert(commands::convert::Args),
     /// An irreducible triangulation (every edge fails the link condition) by topology-preserving
     /// edge contractions; its vertices are surviving input vertices, with their positions.

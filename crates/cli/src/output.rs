@@ -210,13 +210,15 @@ pub struct Outputs {
 }
 
 impl Outputs {
-    /// Writes a polygon soup as a mesh in `format` (`--format`; else the extension's) under a
-    /// temporary name, or into memory for standard output (`-`).
-    pub fn soup_as(
+    /// Writes a polygon soup as a mesh in `format` (`--format`; else the extension's) with
+    /// `options` (PLY encoding and precision) under a temporary name, or into memory for
+    /// standard output (`-`).
+    pub fn soup_with(
         &mut self,
         path: &Path,
         soup: &PolygonSoup,
         format: Option<MeshFormat>,
+        options: &WriteOptions,
     ) -> anyhow::Result<()> {
         let format = format
             .or_else(|| MeshFormat::of_path(path))
@@ -227,18 +229,12 @@ impl Outputs {
         if crate::input::is_stdio(path) {
             let mut bytes = Vec::new();
             crate::progress::step(&writing(path), || {
-                surftopo_io::write_encoded(
-                    &mut bytes,
-                    soup,
-                    format.format,
-                    format.gzip,
-                    &WriteOptions::default(),
-                )
+                surftopo_io::write_encoded(&mut bytes, soup, format.format, format.gzip, options)
             })
             .map_err(|e| write_error(path, e))?;
             self.stdout = Some(bytes);
         } else {
-            self.staged.push(stage_soup(path, soup, format)?);
+            self.staged.push(stage_soup(path, soup, format, options)?);
         }
         Ok(())
     }
@@ -302,21 +298,30 @@ pub fn write_soup_as(
     soup: &PolygonSoup,
     format: Option<MeshFormat>,
 ) -> anyhow::Result<()> {
+    write_soup_with(path, soup, format, &WriteOptions::default())
+}
+
+/// [`write_soup_as`] with the given write options (PLY encoding and precision).
+pub fn write_soup_with(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: Option<MeshFormat>,
+    options: &WriteOptions,
+) -> anyhow::Result<()> {
     let mut outputs = Outputs::default();
-    outputs.soup_as(path, soup, format)?;
+    outputs.soup_with(path, soup, format, options)?;
     outputs.commit()
 }
 
 /// A polygon soup written as a mesh file in `format` under a temporary name ([`StagedFile`]).
-fn stage_soup(path: &Path, soup: &PolygonSoup, format: MeshFormat) -> anyhow::Result<StagedFile> {
+fn stage_soup(
+    path: &Path,
+    soup: &PolygonSoup,
+    format: MeshFormat,
+    options: &WriteOptions,
+) -> anyhow::Result<StagedFile> {
     crate::progress::step(&writing(path), || {
-        surftopo_io::stage_path_as(
-            path,
-            soup,
-            format.format,
-            format.gzip,
-            &WriteOptions::default(),
-        )
+        surftopo_io::stage_path_as(path, soup, format.format, format.gzip, options)
     })
     .map_err(|e| write_error(path, e))
 }

@@ -75,67 +75,18 @@ fn parse_off(text: &str) -> Mesh {
     Mesh { positions, faces }
 }
 
-/// PLY, ascii or binary little endian, with `x y z` of type double or float first in the vertex
-/// element and a face element `list uchar|uint uint|int vertex_indices`.
+/// PLY, through the test kit's independent reader ([`surftopo_testkit::ply_parse`]).
 fn parse_ply(bytes: &[u8]) -> Mesh {
-    let end = bytes
-        .windows(11)
-        .position(|w| w == b"end_header\n")
-        .unwrap()
-        + 11;
-    let header = std::str::from_utf8(&bytes[..end]).unwrap();
-    let (mut vertices, mut faces, mut coordinate_size, mut count_size) = (0, 0, 8, 1);
-    let ascii = header.contains("format ascii");
-    assert!(ascii || header.contains("format binary_little_endian"));
-    for line in header.lines() {
-        let t: Vec<&str> = line.split_whitespace().collect();
-        match t[..] {
-            ["element", "vertex", n] => vertices = n.parse().unwrap(),
-            ["element", "face", n] => faces = n.parse().unwrap(),
-            ["property", "float", "x"] => coordinate_size = 4,
-            ["property", "list", "uint", ..] | ["property", "list", "int", ..] => count_size = 4,
-            _ => {}
-        }
+    let ply = surftopo_testkit::ply_parse::parse(bytes);
+    assert_eq!(ply.names[..3], ["x", "y", "z"]);
+    Mesh {
+        positions: ply.rows.iter().map(|r| [r[0], r[1], r[2]]).collect(),
+        faces: ply
+            .faces
+            .iter()
+            .map(|f| f.iter().map(|&v| v as usize).collect())
+            .collect(),
     }
-    if ascii {
-        let body = std::str::from_utf8(&bytes[end..]).unwrap();
-        let mut lines = body.lines();
-        let positions = (0..vertices)
-            .map(|_| {
-                let p: Vec<f64> = numbers(lines.next().unwrap());
-                [p[0], p[1], p[2]]
-            })
-            .collect();
-        let faces = (0..faces)
-            .map(|_| numbers::<usize>(lines.next().unwrap())[1..].to_vec())
-            .collect();
-        return Mesh { positions, faces };
-    }
-    let mut at = end;
-    let mut take = |n: usize| {
-        at += n;
-        &bytes[at - n..at]
-    };
-    let positions = (0..vertices)
-        .map(|_| {
-            [0; 3].map(|_| match coordinate_size {
-                8 => f64::from_le_bytes(take(8).try_into().unwrap()),
-                _ => f64::from(f32::from_le_bytes(take(4).try_into().unwrap())),
-            })
-        })
-        .collect();
-    let faces = (0..faces)
-        .map(|_| {
-            let k = match count_size {
-                1 => take(1)[0] as usize,
-                _ => u32::from_le_bytes(take(4).try_into().unwrap()) as usize,
-            };
-            (0..k)
-                .map(|_| u32::from_le_bytes(take(4).try_into().unwrap()) as usize)
-                .collect()
-        })
-        .collect();
-    Mesh { positions, faces }
 }
 
 /// Binary STL: 80-byte header, count, 50-byte records; each triangle's corners as its own

@@ -165,6 +165,13 @@ pub enum IoError {
         /// Offset of the first NUL or other binary control byte, if any.
         binary_at: Option<u64>,
     },
+    /// The soup cannot be written with the options asked for (a coordinate beyond the range of
+    /// `float` for [`crate::PlyPrecision::Float`]).
+    #[error("cannot write: {message}")]
+    Unrepresentable {
+        /// What.
+        message: String,
+    },
     /// The soup given to a writer is inconsistent (bad offsets, index out of
     /// range, face with fewer than 3 vertices, non-finite coordinate).
     #[error("cannot write invalid polygon soup: {message}")]
@@ -191,7 +198,9 @@ impl IoError {
             | IoError::NoFaces { file, .. }
             | IoError::UnknownContent { file, .. } => Some(file),
             IoError::UnsupportedFormat { path } => Some(path),
-            IoError::UnsupportedWrite { .. } | IoError::InvalidSoup { .. } => None,
+            IoError::UnsupportedWrite { .. }
+            | IoError::InvalidSoup { .. }
+            | IoError::Unrepresentable { .. } => None,
         }
     }
 

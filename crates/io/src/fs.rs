@@ -361,7 +361,7 @@ pub fn stage_path_as(
     gzip: bool,
     options: &WriteOptions,
 ) -> Result<StagedFile, IoError> {
-    crate::check_writable(soup, format)?;
+    crate::check_writable(soup, format, options)?;
     stage_write(path, |file| encode(file, soup, format, gzip, options))
         .map_err(|e| Ctx::new(&path_name(path)).io(e))
 }
@@ -378,7 +378,7 @@ pub fn write_encoded(
     gzip: bool,
     options: &WriteOptions,
 ) -> Result<(), IoError> {
-    crate::check_writable(soup, format)?;
+    crate::check_writable(soup, format, options)?;
     encode(writer, soup, format, gzip, options)
         .map(drop)
         .map_err(|e| Ctx::new("<writer>").io(e))

@@ -1,10 +1,12 @@
 //! Readers and writers for polygon soups (positions + faces, no topology).
 //!
 //! Reads OBJ, OFF, PLY (ascii, binary little/big endian, `face` and
-//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF, PLY and
-//! binary STL. Paths ending in `.gz` are read and written through gzip; an
-//! input whose name does not say its format is told by its content
-//! ([`sniff_format`], [`read_path_detected`]). Errors name the
+//! `tristrips` elements) and STL (ascii, binary); writes OBJ, OFF, PLY (ascii or binary,
+//! `double` or `float`: [`WriteOptions`]) and binary STL. Texture coordinates, normals, colours
+//! and other vertex properties are kept beside positions ([`Attributes`]); a writer writes what
+//! its format holds and [`PolygonSoup::unwritable`] says what it leaves out. Paths ending in
+//! `.gz` are read and written through gzip; an input whose name does not say its format is told
+//! by its content ([`sniff_format`], [`read_path_detected`]). Errors name the
 //! file and the line (text) or byte offset (binary), with control characters
 //! of quoted input escaped; no input makes a reader panic, loop forever or
 //! allocate beyond what the input could hold. Files are read within
@@ -24,6 +26,7 @@
 //! assert_eq!(back.face(0), &[0, 1, 2]);
 //! ```
 
+mod attributes;
 mod error;
 mod format;
 mod fs;
@@ -39,6 +42,9 @@ mod text;
 
 use std::io::{self, Read, Write};
 
+pub use attributes::{
+    Attributes, CornerTable, NORMAL_NAMES, ScalarType, TEXCOORD_NAMES, VertexProperty,
+};
 pub use error::{IoError, Location};
 pub use format::{Format, is_gzip_path};
 pub use fs::{
@@ -48,7 +54,7 @@ pub use fs::{
     write_encoded, write_path,
 };
 pub use sniff::{is_gzip, sniff_format};
-pub use soup::{NotTriangles, PolygonSoup};
+pub use soup::{NotTriangles, PolygonSoup, Weld};
 
 use error::Ctx;
 
@@ -64,12 +70,26 @@ pub enum PlyEncoding {
     Ascii,
 }
 
+/// Precision of the floating-point values a PLY file is written with.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum PlyPrecision {
+    /// Positions as `double`; properties with their own type (the default: reading back gives
+    /// the same bits).
+    #[default]
+    Double,
+    /// Positions and `double` properties as `float` (rounded to nearest: half the size, about
+    /// 7 significant digits).
+    Float,
+}
+
 /// Options of [`write()`] and [`write_path`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub struct WriteOptions {
     /// Encoding of PLY output.
     pub ply_encoding: PlyEncoding,
+    /// Float precision of PLY output.
+    pub ply_precision: PlyPrecision,
     /// gzip level 0..=9 for `.gz` paths (default 6).
     pub gzip_level: u32,
 }
@@ -78,6 +98,7 @@ impl Default for WriteOptions {
     fn default() -> Self {
         WriteOptions {
             ply_encoding: PlyEncoding::BinaryLittleEndian,
+            ply_precision: PlyPrecision::Double,
             gzip_level: 6,
         }
     }
@@ -87,6 +108,12 @@ impl WriteOptions {
     /// Options with the given PLY encoding.
     pub fn with_ply_encoding(mut self, encoding: PlyEncoding) -> Self {
         self.ply_encoding = encoding;
+        self
+    }
+
+    /// Options with the given PLY float precision.
+    pub fn with_ply_precision(mut self, precision: PlyPrecision) -> Self {
+        self.ply_precision = precision;
         self
     }
 
@@ -188,18 +215,35 @@ pub fn write(
     format: Format,
     options: &WriteOptions,
 ) -> Result<(), IoError> {
-    check_writable(soup, format)?;
+    check_writable(soup, format, options)?;
     write_unchecked(writer, soup, format, options)
         .map(drop)
         .map_err(|e| Ctx::new("<writer>").io(e))
 }
 
-fn check_writable(soup: &PolygonSoup, format: Format) -> Result<(), IoError> {
+fn check_writable(
+    soup: &PolygonSoup,
+    format: Format,
+    options: &WriteOptions,
+) -> Result<(), IoError> {
     if !format.can_write() {
         return Err(IoError::UnsupportedWrite { format });
     }
     soup.validate()
-        .map_err(|message| IoError::InvalidSoup { message })
+        .map_err(|message| IoError::InvalidSoup { message })?;
+    if format == Format::Ply && options.ply_precision == PlyPrecision::Float {
+        let too_large = |x: f64| x.is_finite() && (x as f32).is_infinite();
+        if let Some(v) = soup
+            .positions
+            .iter()
+            .position(|p| p.iter().any(|&c| too_large(c)))
+        {
+            return Err(IoError::Unrepresentable {
+                message: format!("vertex {v} has a coordinate beyond the range of a float"),
+            });
+        }
+    }
+    Ok(())
 }
 
 fn write_unchecked<W: Write>(
@@ -211,7 +255,7 @@ fn write_unchecked<W: Write>(
     match format {
         Format::Obj => obj::write(writer, soup),
         Format::Off => off::write(writer, soup),
-        Format::Ply => ply_write::write(writer, soup, options.ply_encoding),
+        Format::Ply => ply_write::write(writer, soup, options),
         Format::Stl => stl::write(writer, soup),
     }
 }

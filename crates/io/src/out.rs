@@ -56,6 +56,15 @@ impl<W: Write> Out<W> {
         }
     }
 
+    /// [`Self::f64`] for an `f32`: the shortest decimal reading back to the same `f32` bits.
+    #[inline]
+    pub fn f32(&mut self, x: f32) {
+        surftopo_mesh::decimal::push_f32(&mut self.buf, x);
+        if self.buf.ends_with(b".0") {
+            self.buf.truncate(self.buf.len() - 2);
+        }
+    }
+
     /// One text line `prefix x y z` of a vertex position.
     #[inline]
     pub fn point_line(&mut self, prefix: &[u8], p: [f64; 3]) -> io::Result<()> {

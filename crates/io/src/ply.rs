@@ -3,53 +3,19 @@
 //! Vertices come from the `vertex` element's `x`, `y`, `z` (any scalar
 //! type); faces from `face` elements (`vertex_indices` or `vertex_index`
 //! list) and `tristrips` elements (`vertex_indices` list, -1 restarts a
-//! strip). Other elements and properties are skipped.
+//! strip). The vertex element's other scalar properties become per-vertex attributes
+//! ([`crate::Attributes::vertex`]) with their names and types (`float` values of an ascii file
+//! rounded to `float`, integer values checked to be whole and in range); what else is skipped
+//! (list properties of vertices, properties of faces, other elements) is listed in
+//! [`crate::Attributes::not_kept`].
 
 use crate::error::{Ctx, IoError, Location};
 use crate::soup::PolygonSoup;
 use crate::text::{Lexer, NumErr, show};
 
 /// Scalar property type.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Scalar {
-    I8,
-    U8,
-    I16,
-    U16,
-    I32,
-    U32,
-    F32,
-    F64,
-}
-
-impl Scalar {
-    fn from_name(s: &[u8]) -> Option<Self> {
-        Some(match s {
-            b"char" | b"int8" => Scalar::I8,
-            b"uchar" | b"uint8" => Scalar::U8,
-            b"short" | b"int16" => Scalar::I16,
-            b"ushort" | b"uint16" => Scalar::U16,
-            b"int" | b"int32" => Scalar::I32,
-            b"uint" | b"uint32" => Scalar::U32,
-            b"float" | b"float32" => Scalar::F32,
-            b"double" | b"float64" => Scalar::F64,
-            _ => return None,
-        })
-    }
-
-    fn size(self) -> usize {
-        match self {
-            Scalar::I8 | Scalar::U8 => 1,
-            Scalar::I16 | Scalar::U16 => 2,
-            Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
-            Scalar::F64 => 8,
-        }
-    }
-
-    fn is_int(self) -> bool {
-        !matches!(self, Scalar::F32 | Scalar::F64)
-    }
-}
+use crate::attributes::ScalarType as Scalar;
+use crate::attributes::VertexProperty;
 
 #[derive(Clone, Copy, Debug)]
 enum Kind {
@@ -109,11 +75,107 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
         .zip(&roles)
         .find(|(_, r)| matches!(r, Role::Vertex(_)))
         .map_or(0, |(e, _)| e.count);
-    match hdr.encoding {
-        Encoding::Ascii => read_ascii(buf, &hdr, &roles, nv, ctx),
-        Encoding::LittleEndian => read_binary::<false>(buf, &hdr, &roles, nv, ctx),
-        Encoding::BigEndian => read_binary::<true>(buf, &hdr, &roles, nv, ctx),
+    let mut soup = PolygonSoup::new();
+    let columns = vertex_columns(&hdr, &roles, &mut soup);
+    // Every property of a record takes at least a byte, so no column grows beyond this
+    // reservation (and all of them take at most 8 bytes per input byte); failing to reserve is
+    // an error, not an abort.
+    let per_record = hdr
+        .elements
+        .iter()
+        .zip(&roles)
+        .find(|(_, r)| matches!(r, Role::Vertex(_)))
+        .map_or(1, |(e, _)| e.props.len().max(1));
+    let records = usize::try_from(nv)
+        .unwrap_or(usize::MAX)
+        .min(buf.len() / per_record);
+    for column in &mut soup.attributes.vertex {
+        if column.values.try_reserve_exact(records).is_err() {
+            return Err(IoError::OutOfMemory {
+                file: ctx.name.to_owned(),
+                bytes: records as u64 * 8,
+            });
+        }
     }
+    match hdr.encoding {
+        Encoding::Ascii => read_ascii(buf, &hdr, &roles, &columns, nv, soup, ctx),
+        Encoding::LittleEndian => read_binary::<false>(buf, &hdr, &roles, &columns, nv, soup, ctx),
+        Encoding::BigEndian => read_binary::<true>(buf, &hdr, &roles, &columns, nv, soup, ctx),
+    }
+}
+
+/// Not a column: see [`vertex_columns`].
+const NO_COLUMN: usize = usize::MAX;
+
+/// Sets up the soup's per-vertex attribute columns (the vertex element's scalar properties but
+/// x, y, z, each name once) and lists what is skipped in `not_kept`; returns, for each property
+/// of the vertex element, its column or [`NO_COLUMN`].
+fn vertex_columns(hdr: &Header, roles: &[Role], soup: &mut PolygonSoup) -> Vec<usize> {
+    let mut columns = Vec::new();
+    let attributes = &mut soup.attributes;
+    for (el, role) in hdr.elements.iter().zip(roles) {
+        let name = show(&el.name);
+        match *role {
+            Role::Vertex(xyz) => {
+                for (i, p) in el.props.iter().enumerate() {
+                    let prop = String::from_utf8_lossy(&p.name).into_owned();
+                    let column = match p.kind {
+                        _ if xyz.contains(&i) => NO_COLUMN,
+                        Kind::Scalar(scalar)
+                            if crate::attributes::is_valid_name(&prop)
+                                && !matches!(&prop[..], "x" | "y" | "z")
+                                && attributes.vertex_property(&prop).is_none() =>
+                        {
+                            attributes.vertex.push(VertexProperty {
+                                name: prop,
+                                scalar,
+                                values: Vec::new(),
+                            });
+                            attributes.vertex.len() - 1
+                        }
+                        Kind::Scalar(_) => {
+                            let why = if crate::attributes::is_valid_name(&prop) {
+                                "a repeated name"
+                            } else {
+                                "a name with control characters"
+                            };
+                            let what = format!("PLY vertex property '{}' ({why})", show(&p.name));
+                            attributes.not_kept.push(what);
+                            NO_COLUMN
+                        }
+                        Kind::List { .. } => {
+                            let what = format!("PLY vertex list property '{}'", show(&p.name));
+                            attributes.not_kept.push(what);
+                            NO_COLUMN
+                        }
+                    };
+                    columns.push(column);
+                }
+            }
+            Role::Faces(k) | Role::Strips(k) => {
+                for p in el
+                    .props
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| i != k)
+                    .map(|(_, p)| p)
+                {
+                    attributes.not_kept.push(format!(
+                        "PLY {name} property '{}' ({} records)",
+                        show(&p.name),
+                        el.count
+                    ));
+                }
+            }
+            Role::Skip if el.count > 0 && !el.props.is_empty() => {
+                attributes
+                    .not_kept
+                    .push(format!("PLY element '{name}' ({} records)", el.count));
+            }
+            Role::Skip => {}
+        }
+    }
+    columns
 }
 
 fn header(buf: &[u8], ctx: Ctx<'_>) -> Result<Header, IoError> {
@@ -215,7 +277,7 @@ fn header(buf: &[u8], ctx: Ctx<'_>) -> Result<Header, IoError> {
 }
 
 fn scalar(name: &[u8], at: Location, ctx: Ctx<'_>) -> Result<Scalar, IoError> {
-    Scalar::from_name(name)
+    Scalar::from_ply_name(name)
         .ok_or_else(|| ctx.bad_header(at, format!("unknown property type '{}'", show(name))))
 }
 
@@ -401,10 +463,11 @@ fn read_binary<const BE: bool>(
     buf: &[u8],
     hdr: &Header,
     roles: &[Role],
+    columns: &[usize],
     nv: u64,
+    mut soup: PolygonSoup,
     ctx: Ctx<'_>,
 ) -> Result<PolygonSoup, IoError> {
-    let mut soup = PolygonSoup::new();
     let mut pos = hdr.body;
     let mut strip: Vec<i64> = Vec::new();
     for (el, &role) in hdr.elements.iter().zip(roles) {
@@ -434,6 +497,7 @@ fn read_binary<const BE: bool>(
                     &mut soup,
                     ctx,
                 )?;
+                read_columns_fixed::<BE>(&buf[pos..pos + need], el, columns, stride, &mut soup);
             }
             pos += need;
             continue;
@@ -485,6 +549,10 @@ fn read_binary<const BE: bool>(
                         {
                             let v = load_f64::<BE>(t, b);
                             p3[axis] = ctx.coordinate(off(pos), soup.positions.len(), v)?;
+                        } else if let Role::Vertex(_) = role
+                            && let Some(column) = soup.attributes.vertex.get_mut(columns[pi])
+                        {
+                            column.values.push(load_f64::<BE>(t, b));
                         }
                         pos += t.size();
                     }
@@ -548,6 +616,28 @@ fn prop_min_size(k: Kind) -> usize {
     match k {
         Kind::Scalar(t) => t.size(),
         Kind::List { count, .. } => count.size(),
+    }
+}
+
+/// Decodes the attribute columns of fixed-size vertex records (`data` holds exactly `count`
+/// records), one column at a time.
+fn read_columns_fixed<const BE: bool>(
+    data: &[u8],
+    el: &Element,
+    columns: &[usize],
+    stride: usize,
+    soup: &mut PolygonSoup,
+) {
+    let mut offset = 0;
+    for (p, &column) in el.props.iter().zip(columns) {
+        let size = prop_min_size(p.kind);
+        if let (Kind::Scalar(t), Some(column)) = (p.kind, soup.attributes.vertex.get_mut(column)) {
+            column.values.extend(
+                data.chunks_exact(stride)
+                    .map(|rec| load_f64::<BE>(t, &rec[offset..])),
+            );
+        }
+        offset += size;
     }
 }
 
@@ -726,10 +816,11 @@ fn read_ascii(
     buf: &[u8],
     hdr: &Header,
     roles: &[Role],
+    columns: &[usize],
     nv: u64,
+    mut soup: PolygonSoup,
     ctx: Ctx<'_>,
 ) -> Result<PolygonSoup, IoError> {
-    let mut soup = PolygonSoup::new();
     let mut lx = Lexer::new(buf);
     lx.pos = hdr.body;
     lx.line = hdr.body_line;
@@ -764,10 +855,10 @@ fn read_ascii(
             for (pi, p) in el.props.iter().enumerate() {
                 lx.skip_space(None);
                 match p.kind {
-                    Kind::Scalar(_) => {
-                        let axis = match role {
-                            Role::Vertex(xyz) => xyz.iter().position(|&k| k == pi),
-                            _ => None,
+                    Kind::Scalar(t) => {
+                        let (axis, column) = match role {
+                            Role::Vertex(xyz) => (xyz.iter().position(|&k| k == pi), columns[pi]),
+                            _ => (None, NO_COLUMN),
                         };
                         if let Some(axis) = axis {
                             p3[axis] = match lx.f64() {
@@ -777,6 +868,19 @@ fn read_ascii(
                                     return Err(lx.num_error(ctx, e, &what));
                                 }
                             };
+                        } else if let Some(column) = soup.attributes.vertex.get_mut(column) {
+                            let what = || format!("vertex {}", show(&p.name));
+                            let value = match lx.f64() {
+                                Ok(v) if t == Scalar::F32 => f64::from(v as f32),
+                                Ok(v) if t.holds(v) => v,
+                                Ok(v) => {
+                                    let message =
+                                        format!("{} {v} is not a {}", what(), t.ply_name());
+                                    return Err(ctx.parse(lx.at(), message));
+                                }
+                                Err(e) => return Err(lx.num_error(ctx, e, &what())),
+                            };
+                            column.values.push(value);
                         } else if lx.token().is_empty() {
                             return Err(ctx.eof(lx.at(), record_name(el, r)));
                         }

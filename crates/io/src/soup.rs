@@ -1,4 +1,8 @@
-//! The polygon soup: positions plus faces as flat index lists, no topology.
+//! The polygon soup: positions plus faces as flat index lists, no topology, and the attributes
+//! read beside them ([`Attributes`]).
+
+use crate::Format;
+use crate::attributes::Attributes;
 
 /// A polygon soup: positions and faces as index lists (0-based), faces stored flat.
 #[derive(Clone, Debug, PartialEq)]
@@ -13,6 +17,19 @@ pub struct PolygonSoup {
     /// For each face, the 1-based line of the source file it came from (OBJ,
     /// ascii OFF/PLY/STL); empty when unknown (binary files, built in memory).
     pub face_lines: Vec<u32>,
+    /// Texture coordinates, normals and other properties read beside positions (empty when
+    /// none; see [`Attributes`]).
+    pub attributes: Attributes,
+}
+
+/// What [`PolygonSoup::weld_exact`] merged.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Weld {
+    /// Vertices merged into an earlier vertex of the same position.
+    pub merged: usize,
+    /// Of those, the vertices whose per-vertex attributes differed from the vertex they were
+    /// merged into (theirs are dropped: the merged vertex keeps the first one's).
+    pub conflicting: usize,
 }
 
 /// Error of [`PolygonSoup::triangles`]: a face that is not a triangle.
@@ -39,6 +56,7 @@ impl PolygonSoup {
             face_indices: Vec::new(),
             face_offsets: vec![0],
             face_lines: Vec::new(),
+            attributes: Attributes::default(),
         }
     }
 
@@ -52,6 +70,7 @@ impl PolygonSoup {
             face_indices: Vec::with_capacity(triangles.len() * 3),
             face_offsets: Vec::with_capacity(triangles.len() + 1),
             face_lines: Vec::new(),
+            attributes: Attributes::default(),
         };
         soup.face_offsets.push(0);
         for t in triangles {
@@ -197,7 +216,52 @@ impl PolygonSoup {
                 self.face_count()
             ));
         }
-        Ok(())
+        self.attributes
+            .validate(self.positions.len(), self.face_indices.len())
+    }
+
+    /// What a writer of `format` leaves out of this soup's attributes, one description each
+    /// (empty: nothing is lost; what the reader skipped is [`Attributes::not_kept`]).
+    pub fn unwritable(&self, format: Format) -> Vec<String> {
+        self.attributes.unwritable(format)
+    }
+
+    /// Merges vertices of exactly equal positions (`-0` equal to `0`;
+    /// [`surftopo_mesh::geometry::weld_exact`]): faces are renumbered, per-vertex attributes
+    /// follow their vertex, the merged vertex keeping the values of its first vertex; per-corner
+    /// tables are unchanged (they follow the corners).
+    pub fn weld_exact(&mut self) -> Weld {
+        let (positions, map) = surftopo_mesh::geometry::weld_exact(&self.positions);
+        let mut weld = Weld {
+            merged: self.positions.len() - positions.len(),
+            conflicting: 0,
+        };
+        if weld.merged == 0 {
+            return weld;
+        }
+        for i in &mut self.face_indices {
+            *i = map[*i as usize];
+        }
+        let mut first = vec![u32::MAX; positions.len()];
+        for (old, &new) in map.iter().enumerate() {
+            let slot = &mut first[new as usize];
+            if *slot == u32::MAX {
+                *slot = old as u32;
+            } else if self
+                .attributes
+                .vertex
+                .iter()
+                .any(|p| p.values[old].to_bits() != p.values[*slot as usize].to_bits())
+            {
+                weld.conflicting += 1;
+            }
+        }
+        let attributes = self.attributes.renumbered_vertices(positions.len(), |old| {
+            (first[map[old] as usize] == old as u32).then_some(map[old] as usize)
+        });
+        self.attributes.vertex = attributes.vertex;
+        self.positions = positions;
+        weld
     }
 
     /// Appends a face during parsing; `None` if the index total overflows u32.

@@ -33,6 +33,25 @@ fn seeds() -> Vec<(Format, Vec<u8>)> {
         }
     }
     out.push((Format::Ply, tristrip_ply()));
+    // Attributes: OBJ per-corner vt/vn, PLY vertex properties, COFF colours.
+    out.push((
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0 0\nvt 0 1\nvn 0 0 1\n\
+f 1/1/1 3/3/1 2/2/1\nf 1/2/1 2/2/1 4/1/1\nf 2//1 3//1 4//1\nf 3/3 1/1 4/2\n"
+            .to_vec(),
+    ));
+    out.push((
+        Format::Ply,
+        b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n\
+property float y\nproperty float z\nproperty uchar red\nproperty float nx\nproperty int q\n\
+element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 1 0.5 -3\n\
+1 0 0 2 0.25 4\n0 1 0 255 1 5\n3 0 1 2\n"
+            .to_vec(),
+    ));
+    out.push((
+        Format::Off,
+        b"COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n".to_vec(),
+    ));
     out.push((Format::Stl, b"solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid a\n".to_vec()));
     let mut stl = vec![b' '; 80];
     stl.extend_from_slice(&1u32.to_le_bytes());
@@ -150,7 +169,8 @@ proptest! {
         tokens in proptest::collection::vec(prop::sample::select(vec![
             "v", "f", "vn", " ", "  ", "\t", "\n", "\r\n", "\\\n", "#", "0", "1", "2", "3", "-1", "-4",
             "1.5", "-2e3", "nan", "/", "//", "1/2/3", "facet", "normal", "outer", "loop", "vertex",
-            "endloop", "endfacet", "endsolid", "\u{0}", "\u{ff}", "4294967296",
+            "endloop", "endfacet", "endsolid", "\u{0}", "\u{ff}", "4294967296", "vt", "1//2",
+            "1/1", "2/-1/1",
         ]), 0..64),
     ) {
         let data: Vec<u8> = header.bytes().chain(tokens.concat().bytes()).collect();

@@ -13,6 +13,12 @@ pub fn push_f64(out: &mut Vec<u8>, x: f64) {
     push_short(out, zmij::Buffer::new().format(x).as_bytes());
 }
 
+/// Appends the shortest decimal that reads back (as an `f32`) to the same bits of a finite `x`.
+#[inline]
+pub fn push_f32(out: &mut Vec<u8>, x: f32) {
+    out.extend_from_slice(zmij::Buffer::new().format(x).as_bytes());
+}
+
 /// Appends the decimal digits of `v` (`0`, `42`).
 #[inline]
 pub fn push_u64(out: &mut Vec<u8>, v: u64) {
@@ -55,6 +61,24 @@ mod tests {
         let mut out = Vec::new();
         push_f64(&mut out, x);
         String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn f32_is_the_shortest_decimal_of_the_f32() {
+        for x in [0.1f32, 1.0 / 3.0, -1e-7, f32::MAX, f32::MIN_POSITIVE / 8.0] {
+            let mut out = Vec::new();
+            push_f32(&mut out, x);
+            let text = String::from_utf8(out).unwrap();
+            assert_eq!(
+                text.parse::<f32>().unwrap().to_bits(),
+                x.to_bits(),
+                "{text}"
+            );
+            // At most 9 significant digits (an f32 needs no more), not the f64's 17.
+            let mantissa = text.split('e').next().unwrap();
+            let digits = mantissa.bytes().filter(u8::is_ascii_digit).count();
+            assert!(digits <= 10, "{text}");
+        }
     }
 
     #[test]

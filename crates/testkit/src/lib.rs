@@ -3,7 +3,11 @@
 //! - The shared real meshes: found through `SURFTOPO_MESHES` (a relative path is taken from the
 //!   workspace root, so `SURFTOPO_MESHES=../shared/meshes cargo test --workspace` works from the
 //!   checkout); listed by `manifest.json`; loaded as validated surfaces.
-//! - Independent checkers of results, written without the algorithms' code.
+//! - Independent checkers of results, written without the algorithms' code, and an independent
+//!   reading of OBJ text ([`obj_text`]) and of PLY files ([`ply_parse`]).
+
+pub mod obj_text;
+pub mod ply_parse;
 
 use std::path::{Path, PathBuf};
 use surftopo_mesh::Surface;

@@ -6,7 +6,7 @@ use serde::Serialize;
 use std::path::PathBuf;
 use surftopo_irreducible::{Algorithm, Counters, reduce};
 use surftopo_mesh::Surface;
-use surftopo_mesh::SurfaceMesh;
+use surftopo_mesh::{Renumbering, SurfaceMesh};
 
 /// The arguments of `irreducible`.
 #[derive(clap::Args, Debug)]
@@ -88,6 +88,16 @@ pub fn reduce_surface(
     surface: &Surface,
     algorithm: Algorithm,
 ) -> anyhow::Result<(Surface, Report)> {
+    reduce_surface_renumbered(surface, algorithm)
+        .map(|(irreducible, report, _)| (irreducible, report))
+}
+
+/// [`reduce_surface`], also returning the renumbering from the input's vertex ids to the
+/// irreducible triangulation's (dense) ones: the survivors' attributes follow it.
+pub fn reduce_surface_renumbered(
+    surface: &Surface,
+    algorithm: Algorithm,
+) -> anyhow::Result<(Surface, Report, Renumbering)> {
     let input = Counts::of(&surface.mesh);
     let reduction = reduce(surface.mesh.clone(), algorithm).map_err(|e| invalid(e.to_string()))?;
     let Counters {
@@ -113,8 +123,8 @@ pub fn reduce_surface(
         mesh: reduction.mesh,
         positions: surface.positions.clone(),
     };
-    irreducible.compact();
-    Ok((irreducible, report))
+    let renumbering = irreducible.compact();
+    Ok((irreducible, report, renumbering))
 }
 
 /// Runs `irreducible`.
@@ -125,10 +135,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = crate::input::read_surface(input, args.weld.weld)?;
-    let (irreducible, report) =
-        crate::progress::step("contracting", || reduce_surface(&loaded.surface, algorithm))
-            .map_err(|e| e.context(crate::input::name(input)))?;
-    crate::output::write_surface_as(output, &irreducible, args.format.format)?;
+    let (irreducible, report, renumbering) = crate::progress::step("contracting", || {
+        reduce_surface_renumbered(&loaded.surface, algorithm)
+    })
+    .map_err(|e| e.context(crate::input::name(input)))?;
+    // Compacted: vertex ids are dense and in order, as `to_triangles` numbers them.
+    let (positions, triangles) = irreducible.to_triangles();
+    let mut soup = surftopo_io::PolygonSoup::from_triangles(positions, &triangles);
+    soup.attributes = crate::attributes::renumbered(
+        &loaded.attributes,
+        soup.vertex_count(),
+        &renumbering.vertices,
+    );
+    crate::output::write_soup_as(output, &soup, args.format.format)?;
+    crate::attributes::warn_not_read(input, output, &loaded.attributes);
+    crate::attributes::warn_new_faces("irreducible", output, &loaded.attributes);
+    crate::attributes::warn_unwritable(output, args.format.format, &soup);
     if args.json.json {
         crate::output::print_json(&report)?;
     } else {

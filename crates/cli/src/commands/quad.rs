@@ -72,7 +72,8 @@ fn objective_named(name: &str) -> anyhow::Result<Option<QualityObjective>> {
         .ok_or_else(|| anyhow::anyhow!("no quad objective is called {name}"))
 }
 
-/// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions).
+/// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions; no
+/// attributes: `run` adds the input's per-vertex ones, which follow the vertex list).
 pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
     let mut soup = PolygonSoup::new();
     soup.positions = surface.positions.clone();
@@ -127,11 +128,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    crate::output::write_soup_as(
-        output,
-        &quad_soup(&loaded.surface, result),
-        args.format.format,
-    )?;
+    let mut soup = quad_soup(&loaded.surface, result);
+    soup.attributes.vertex = loaded.attributes.vertex.clone();
+    crate::output::write_soup_as(output, &soup, args.format.format)?;
+    crate::attributes::warn_not_read(input, output, &loaded.attributes);
+    crate::attributes::warn_new_faces("quad", output, &loaded.attributes);
+    crate::attributes::warn_unwritable(output, args.format.format, &soup);
     let stats = &result.stats;
     if args.json.json {
         crate::output::print_json(&paired.figures(&args.objective))?;
