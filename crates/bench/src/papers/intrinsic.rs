@@ -16,7 +16,7 @@ use surftopo_intrinsic::{DelaunayOptions, IntrinsicTriangulation, flip_to_delaun
 use super::inputs::{self, Scale};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{header, row, seconds};
-use super::{Measured, Options, finish, measured_or_rendered, preamble};
+use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
 /// One measured surface.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -149,7 +149,7 @@ pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
         rows: records,
         failures,
         load,
-    } = measured_or_rendered(options, "intrinsic", || measure_all(options, meshes))?;
+    } = measured_or_rendered(options, "intrinsic", None, || measure_all(options, meshes))?;
     let plots = write_plots(&options.out, &records)?;
     let md = markdown(options, &records, &plots, &load);
     finish(options, "intrinsic", &md, &failures)
@@ -159,7 +159,7 @@ fn markdown(
     options: &Options,
     records: &[Record],
     plots: &[(String, String)],
-    load: &str,
+    load: &RunInfo,
 ) -> String {
     let mut md = preamble(
         "Intrinsic Delaunay triangulations by edge flipping — Section 9 (T_x)",

@@ -10,12 +10,13 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 use surftopo_irreducible::{Algorithm, SurfaceMesh, check_simplicial, is_irreducible, reduce};
 
+use super::cache::Cache;
 use super::inputs::{self, Described, Input, Scale};
 use super::measure::{mean, timed};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
-use super::{Measured, Options, finish, measured_or_rendered, preamble};
+use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
 /// BF runs per input (Section 5.2).
 pub const BF_RUNS: u64 = 10;
@@ -122,7 +123,7 @@ fn measure_input(group: &str, input: &Input, scale: Scale) -> anyhow::Result<Row
 }
 
 /// Builds every input and measures it.
-fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<String>) {
+fn measure_all(options: &Options, cache: &Cache, meshes: Option<&Path>) -> (Vec<Row>, Vec<String>) {
     let scale = options.scale();
     let mut rows: Vec<Row> = Vec::new();
     let mut failures: Vec<String> = Vec::new();
@@ -157,9 +158,16 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
         .collect();
     let runs = |n: &str| options.runs_input(n);
     let groups = [("B", 3844, 0), ("C", 344, 3500)];
-    inputs::paper_inputs(scale, meshes, runs, &models, &sizes, &groups, |g, i| {
-        record(g, i, &mut rows)
-    });
+    inputs::paper_inputs(
+        scale,
+        cache,
+        meshes,
+        runs,
+        &models,
+        &sizes,
+        &groups,
+        |g, i| record(g, i, &mut rows),
+    );
     for (i, (name, _, _, f, g)) in numbers::IRREDUCIBLE_SIZES
         .iter()
         .filter(|s| s.0.starts_with('D'))
@@ -169,13 +177,13 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
             continue;
         }
         let g = value(g) as u32;
-        let (made, surface) = inputs::brick(scale, 3844 - g, g, value(f) as u64);
+        let (made, recipe) = inputs::brick(scale, 3844 - g, g, value(f) as u64);
         record(
             "D",
             Input {
                 name: name.to_string(),
                 made,
-                surface,
+                surface: cache.get(&recipe),
             },
             &mut rows,
         );
@@ -185,12 +193,14 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Row>, Vec<Strin
 
 /// Runs the suite (or, with `--render`, reads its jsonl) and writes `irreducible.md`, `irreducible.jsonl` and
 /// the plots.
-pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
+pub fn run(options: &Options, cache: &Cache, meshes: Option<&Path>) -> anyhow::Result<()> {
     let Measured {
         rows,
         failures,
         load,
-    } = measured_or_rendered(options, "irreducible", || measure_all(options, meshes))?;
+    } = measured_or_rendered(options, "irreducible", Some(cache), || {
+        measure_all(options, cache, meshes)
+    })?;
     let plots = write_plots(&options.out, &rows)?;
     let md = markdown(options, &rows, &failures, &plots, &load);
     finish(options, "irreducible", &md, &failures)
@@ -218,7 +228,7 @@ fn markdown(
     rows: &[Row],
     failures: &[String],
     plots: &[(String, String)],
-    load: &str,
+    load: &RunInfo,
 ) -> String {
     let mut md = preamble(
         "Irreducible triangulations: RS, Schipper (S) and brute force (BF) — Section 5",

@@ -10,12 +10,13 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_with};
 
+use super::cache::Cache;
 use super::inputs::{self, Described, Input, Scale};
 use super::measure::{mean, thread_cpu_seconds};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
-use super::{Measured, Options, finish, measured_or_rendered, preamble};
+use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
 /// Seeds of SG and PS (the paper: ten executions).
 pub const SEEDS: u64 = 10;
@@ -121,7 +122,11 @@ fn measure_one(
 }
 
 /// Builds every input and measures it.
-fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<String>) {
+fn measure_all(
+    options: &Options,
+    cache: &Cache,
+    meshes: Option<&Path>,
+) -> (Vec<Record>, Vec<String>) {
     let scale = options.scale();
     let mut records: Vec<Record> = Vec::new();
     let mut failures = Vec::new();
@@ -173,20 +178,29 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         .collect();
     let runs = |n: &str| options.runs_input(n);
     let groups = [("A", 3844, 0), ("B", 344, 3500)];
-    inputs::paper_inputs(scale, meshes, runs, &models, &sizes, &groups, |g, i| {
-        record(g, i, &mut records)
-    });
+    inputs::paper_inputs(
+        scale,
+        cache,
+        meshes,
+        runs,
+        &models,
+        &sizes,
+        &groups,
+        |g, i| record(g, i, &mut records),
+    );
     (records, failures)
 }
 
 /// Runs the suite (or, with `--render`, reads its jsonl) and writes `quad.md`, `quad.jsonl` and
 /// the plots.
-pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
+pub fn run(options: &Options, cache: &Cache, meshes: Option<&Path>) -> anyhow::Result<()> {
     let Measured {
         rows: records,
         failures,
         load,
-    } = measured_or_rendered(options, "quad", || measure_all(options, meshes))?;
+    } = measured_or_rendered(options, "quad", Some(cache), || {
+        measure_all(options, cache, meshes)
+    })?;
     let forest: Vec<Record> = records
         .iter()
         .filter(|r| r.augment == "forest")
@@ -322,7 +336,7 @@ fn markdown(
     records: &[Record],
     failures: &[String],
     plots: &[(String, String)],
-    load: &str,
+    load: &RunInfo,
     scale: Scale,
 ) -> String {
     let all = records;
