@@ -299,19 +299,19 @@ impl Described {
 /// (`models`: the paper's model names and triangle counts), then, for each brick group (`groups`:
 /// the group's letter, cavities, holes), the chain of its rows in `sizes` (the paper's names and
 /// triangle counts; a row belongs to the group its name starts with). `each` gets the group
-/// ("first" for the stand-ins) and the input; `runs` says which inputs are wanted; the bricks
-/// and their simplifications come from `cache`.
-#[allow(clippy::too_many_arguments)]
+/// ("first" for the stand-ins) and the input; `options` says the scale and which inputs are
+/// wanted; the bricks and their simplifications come from `cache`.
 pub fn paper_inputs(
-    scale: Scale,
+    options: &super::Options,
     cache: &Cache,
     meshes: Option<&std::path::Path>,
-    runs: impl Fn(&str) -> bool + Copy,
     models: &[(&str, u64)],
     sizes: &[(&str, u64)],
     groups: &[(&str, u32, u32)],
     mut each: impl FnMut(&str, Input),
 ) {
+    let scale = options.scale();
+    let runs = |n: &str| options.runs_input(n);
     stand_ins(scale, meshes, models, |i| each("first", i));
     for &(group, cavities, holes) in groups {
         let rows: Vec<(&str, u64)> = sizes

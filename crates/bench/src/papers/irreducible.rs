@@ -12,7 +12,7 @@ use surftopo_irreducible::{Algorithm, SurfaceMesh, check_simplicial, is_irreduci
 
 use super::cache::Cache;
 use super::inputs::{self, Described, Input, Scale};
-use super::measure::{LARGE_INPUT_FACES, LARGE_INPUT_SEEDS, mean, seeds_for, timed};
+use super::measure::{fewer_seeds, mean, seeds_for, timed};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
@@ -167,18 +167,10 @@ fn measure_all(options: &Options, cache: &Cache, meshes: Option<&Path>) -> (Vec<
         .iter()
         .map(|s| (s.0, value(s.3) as u64))
         .collect();
-    let runs = |n: &str| options.runs_input(n);
     let groups = [("B", 3844, 0), ("C", 344, 3500)];
-    inputs::paper_inputs(
-        scale,
-        cache,
-        meshes,
-        runs,
-        &models,
-        &sizes,
-        &groups,
-        |g, i| record(g, i, &mut rows),
-    );
+    inputs::paper_inputs(options, cache, meshes, &models, &sizes, &groups, |g, i| {
+        record(g, i, &mut rows)
+    });
     for (i, (name, _, _, f, g)) in numbers::IRREDUCIBLE_SIZES
         .iter()
         .filter(|s| s.0.starts_with('D'))
@@ -256,17 +248,7 @@ fn markdown(
         "RS and S: one run per input (runs under 0.5 s repeated, CPU time the mean); BF: ten \
          runs, seeds 1..=10 (each shuffles the edges), ℓ_bf, ε_bf and t_bf the means, as in \
          the paper{}. Every output is checked irreducible and of the input's genus.\n",
-        if fewer.is_empty() {
-            String::new()
-        } else {
-            format!(
-                ", except on the inputs of more than {} triangles: {} seeds (fewer than the \
-                 paper's ten, to keep the run within half an hour here) on {}",
-                number(LARGE_INPUT_FACES as f64, 0),
-                LARGE_INPUT_SEEDS,
-                fewer.join(", ")
-            )
-        }
+        fewer_seeds(&fewer)
     );
     for f in failures {
         let _ = writeln!(md, "**Failed**: {f}\n");

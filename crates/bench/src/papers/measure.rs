@@ -81,3 +81,18 @@ pub fn seeds_for(paper_seeds: u64, faces: usize) -> u64 {
         paper_seeds
     }
 }
+
+/// The clause of a report's protocol sentence naming the inputs run with [`LARGE_INPUT_SEEDS`]
+/// seeds (empty when there are none).
+pub fn fewer_seeds(inputs: &[impl AsRef<str>]) -> String {
+    if inputs.is_empty() {
+        return String::new();
+    }
+    let names: Vec<&str> = inputs.iter().map(AsRef::as_ref).collect();
+    format!(
+        ", except on the inputs of more than {} triangles: {LARGE_INPUT_SEEDS} seeds (fewer than \
+         the paper's ten, to keep the run within half an hour here) on {}",
+        super::report::number(LARGE_INPUT_FACES as f64, 0),
+        names.join(", ")
+    )
+}

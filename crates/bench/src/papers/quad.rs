@@ -12,7 +12,7 @@ use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_w
 
 use super::cache::Cache;
 use super::inputs::{self, Described, Input, Scale};
-use super::measure::{LARGE_INPUT_FACES, LARGE_INPUT_SEEDS, mean, seeds_for, thread_cpu_seconds};
+use super::measure::{fewer_seeds, mean, seeds_for, thread_cpu_seconds};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{beside, header, number, row, seconds};
@@ -127,7 +127,6 @@ fn measure_all(
     cache: &Cache,
     meshes: Option<&Path>,
 ) -> (Vec<Record>, Vec<String>) {
-    let scale = options.scale();
     let mut records: Vec<Record> = Vec::new();
     let mut failures = Vec::new();
     let mut record = |group: &str, input: Input, records: &mut Vec<Record>| {
@@ -176,18 +175,10 @@ fn measure_all(
         .iter()
         .map(|s| (s.0, value(s.3) as u64))
         .collect();
-    let runs = |n: &str| options.runs_input(n);
     let groups = [("A", 3844, 0), ("B", 344, 3500)];
-    inputs::paper_inputs(
-        scale,
-        cache,
-        meshes,
-        runs,
-        &models,
-        &sizes,
-        &groups,
-        |g, i| record(g, i, &mut records),
-    );
+    inputs::paper_inputs(options, cache, meshes, &models, &sizes, &groups, |g, i| {
+        record(g, i, &mut records)
+    });
     (records, failures)
 }
 
@@ -367,17 +358,7 @@ fn markdown(
          triangles, (d) augmentation seconds, (e) total seconds — here wall-clock seconds (the \
          paper's own measure), means over the runs (SG and PS: seeds 1..=10{}; DS and LRS: one \
          run, as in the paper); CPU seconds are in the jsonl.",
-        if fewer.is_empty() {
-            String::new()
-        } else {
-            format!(
-                ", except on the inputs of more than {} triangles: {} seeds (fewer than the \
-                 paper's ten, to keep the run within half an hour here) on {}",
-                number(LARGE_INPUT_FACES as f64, 0),
-                LARGE_INPUT_SEEDS,
-                fewer.join(", ")
-            )
-        }
+        fewer_seeds(&fewer)
     );
     md += " Augmenting paths: the \
            library's default search (`forest`); the paper's is a BFS from one unpaired triangle \
