@@ -67,7 +67,17 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         let mut tri = match flat_torus(x, 1) {
             Ok(t) => t,
             Err(e) => {
-                failures.push(format!("T_x, x = {x}: {e}"));
+                // Refused in double precision (rounded sides off the torus's areas): a measured
+                // outcome of f64 at this x, reported in the table, not a failure of the run.
+                records.push(Record {
+                    kind: "flat_torus".into(),
+                    input: format!("T_{x:e}"),
+                    parameter: x,
+                    edges: 3,
+                    expected_flips: Some(x as u64 - 1),
+                    status: format!("not built: {e}"),
+                    ..Record::default()
+                });
                 continue;
             }
         };

@@ -142,7 +142,7 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Puts the whole run's wall-clock time (the sum of the three reports' `.run.json`) into each
+/// Puts the three reports' wall-clock times added (their `.run.json`) into each
 /// report's header (nothing when one of them is missing).
 fn state_whole_run(out: &Path) -> anyhow::Result<()> {
     const SUITES: [&str; 3] = ["irreducible", "quad", "intrinsic"];
@@ -161,7 +161,7 @@ fn state_whole_run(out: &Path) -> anyhow::Result<()> {
         let md = std::fs::read_to_string(&path)?.replacen(
             RUN_SENTENCE,
             &format!(
-                "The whole run (the three reports) took {} wall-clock; {}",
+                "The three reports' runs took {} wall-clock together; {}",
                 minutes(total),
                 RUN_SENTENCE.to_lowercase()
             ),
