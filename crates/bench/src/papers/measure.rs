@@ -91,7 +91,7 @@ pub fn fewer_seeds(inputs: &[impl AsRef<str>]) -> String {
     let names: Vec<&str> = inputs.iter().map(AsRef::as_ref).collect();
     format!(
         ", except on the inputs of more than {} triangles: {LARGE_INPUT_SEEDS} seeds (fewer than \
-         the paper's ten, to keep the run within half an hour here) on {}",
+         the paper's ten, to bound the run's time on this shared 2-core machine) on {}",
         super::report::number(LARGE_INPUT_FACES as f64, 0),
         names.join(", ")
     )
