@@ -27,6 +27,7 @@ fn tiny_run_writes_every_report_with_the_papers_numbers() {
         out: dir.path().to_path_buf(),
         render: false,
         meshes: None,
+        no_cache: true,
     };
     papers::run(&options).expect("tiny run");
     for name in ["irreducible", "quad", "intrinsic"] {

@@ -18,7 +18,9 @@
 use std::path::PathBuf;
 
 use surftopo_mesh::Surface;
-use surftopo_mesh::generators::{CavityBox, simplify};
+use surftopo_mesh::generators::simplify;
+
+use super::cache::{Cache, Recipe};
 use surftopo_testkit::SharedMesh;
 
 /// Seed of every simplification.
@@ -110,9 +112,9 @@ pub struct Input {
     pub surface: Surface,
 }
 
-/// A brick: `cavities` cavities and `holes` holes (paper counts, scaled), the triangle count
-/// nearest `triangles` (scaled).
-pub fn brick(scale: Scale, cavities: u32, holes: u32, triangles: u64) -> (String, Surface) {
+/// The recipe of a brick with `cavities` cavities and `holes` holes (paper counts, scaled) and
+/// the triangle count nearest `triangles` (scaled), and its description.
+pub fn brick(scale: Scale, cavities: u32, holes: u32, triangles: u64) -> (String, Recipe) {
     let (c, h) = if holes == 0 {
         (scale.pits(cavities), 0)
     } else {
@@ -123,45 +125,52 @@ pub fn brick(scale: Scale, cavities: u32, holes: u32, triangles: u64) -> (String
     let t = scale.triangles(triangles);
     (
         format!("brick: {c} cavities, {h} holes, target {t} triangles"),
-        CavityBox::fit(c, h, t).generate(),
+        Recipe::brick(c, h, t),
     )
 }
 
 /// A chain of inputs: the first is `first`, each next one the previous simplified to the next
 /// paper triangle count (scaled). `names[i]` names the i-th; at most `scale.per_group()` of them.
+/// Only the inputs that `runs` accepts are handed to `each`; the others are built (or read from
+/// `cache`) only where a later one needs them.
 pub fn chain(
     scale: Scale,
+    cache: &Cache,
+    runs: impl Fn(&str) -> bool,
     names: &[&str],
     triangles: &[u64],
-    first: (String, Surface),
+    first: (String, Recipe),
     mut each: impl FnMut(Input),
 ) {
-    let mut previous: Option<(String, Surface)> = None;
+    let mut recipe = first.1.clone();
+    let mut previous: Option<&str> = None;
     for (i, (name, &target)) in names.iter().zip(triangles).enumerate() {
         if i >= scale.per_group() {
             break;
         }
-        let (made, surface) = match &previous {
-            None => first.clone(),
-            Some((prev_name, prev)) => (
-                format!("simplified from {prev_name} (seed {SIMPLIFY_SEED})"),
-                simplify(prev, scale.triangles(target) as usize, SIMPLIFY_SEED),
-            ),
+        let made = match previous {
+            None => first.0.clone(),
+            Some(prev_name) => {
+                recipe = recipe.simplified(scale.triangles(target) as usize, SIMPLIFY_SEED);
+                format!("simplified from {prev_name} (seed {SIMPLIFY_SEED})")
+            }
         };
-        previous = Some((name.to_string(), surface.clone()));
-        each(Input {
-            name: name.to_string(),
-            made,
-            surface,
-        });
+        previous = Some(name);
+        if runs(name) {
+            each(Input {
+                name: name.to_string(),
+                made,
+                surface: cache.get(&recipe),
+            });
+        }
     }
 }
 
 /// A group made as the papers made it: the brick nearest the first size, each next input the
-/// previous one simplified ([`chain`]); nothing is built when `runs` accepts none of the names
-/// that the scale keeps.
+/// previous one simplified ([`chain`]); `each` gets the inputs that `runs` accepts.
 pub fn brick_chain(
     scale: Scale,
+    cache: &Cache,
     runs: impl Fn(&str) -> bool,
     sizes: &[(&str, u64)],
     (cavities, holes): (u32, u32),
@@ -169,11 +178,8 @@ pub fn brick_chain(
 ) {
     let names: Vec<&str> = sizes.iter().map(|s| s.0).collect();
     let triangles: Vec<u64> = sizes.iter().map(|s| s.1).collect();
-    if !names.iter().take(scale.per_group()).any(|n| runs(n)) {
-        return;
-    }
     let first = brick(scale, cavities, holes, triangles[0]);
-    chain(scale, &names, &triangles, first, each);
+    chain(scale, cache, runs, &names, &triangles, first, each);
 }
 
 /// The shared meshes folder: `SURFTOPO_MESHES` (relative to the workspace root), else
@@ -293,16 +299,19 @@ impl Described {
 /// (`models`: the paper's model names and triangle counts), then, for each brick group (`groups`:
 /// the group's letter, cavities, holes), the chain of its rows in `sizes` (the paper's names and
 /// triangle counts; a row belongs to the group its name starts with). `each` gets the group
-/// ("first" for the stand-ins) and the input; `runs` says which inputs are wanted.
+/// ("first" for the stand-ins) and the input; `options` says the scale and which inputs are
+/// wanted; the bricks and their simplifications come from `cache`.
 pub fn paper_inputs(
-    scale: Scale,
+    options: &super::Options,
+    cache: &Cache,
     meshes: Option<&std::path::Path>,
-    runs: impl Fn(&str) -> bool + Copy,
     models: &[(&str, u64)],
     sizes: &[(&str, u64)],
     groups: &[(&str, u32, u32)],
     mut each: impl FnMut(&str, Input),
 ) {
+    let scale = options.scale();
+    let runs = |n: &str| options.runs_input(n);
     stand_ins(scale, meshes, models, |i| each("first", i));
     for &(group, cavities, holes) in groups {
         let rows: Vec<(&str, u64)> = sizes
@@ -310,6 +319,8 @@ pub fn paper_inputs(
             .copied()
             .filter(|s| s.0.starts_with(group))
             .collect();
-        brick_chain(scale, runs, &rows, (cavities, holes), |i| each(group, i));
+        brick_chain(scale, cache, runs, &rows, (cavities, holes), |i| {
+            each(group, i)
+        });
     }
 }

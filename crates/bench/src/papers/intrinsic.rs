@@ -16,7 +16,7 @@ use surftopo_intrinsic::{DelaunayOptions, IntrinsicTriangulation, flip_to_delaun
 use super::inputs::{self, Scale};
 use super::plot::{self, Axis, Plot, Series};
 use super::report::{header, row, seconds};
-use super::{Measured, Options, finish, measured_or_rendered, preamble};
+use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
 /// One measured surface.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
@@ -67,7 +67,17 @@ fn measure_all(options: &Options, meshes: Option<&Path>) -> (Vec<Record>, Vec<St
         let mut tri = match flat_torus(x, 1) {
             Ok(t) => t,
             Err(e) => {
-                failures.push(format!("T_x, x = {x}: {e}"));
+                // Refused in double precision (rounded sides off the torus's areas): a measured
+                // outcome of f64 at this x, reported in the table, not a failure of the run.
+                records.push(Record {
+                    kind: "flat_torus".into(),
+                    input: format!("T_{x:e}"),
+                    parameter: x,
+                    edges: 3,
+                    expected_flips: Some(x as u64 - 1),
+                    status: format!("not built: {e}"),
+                    ..Record::default()
+                });
                 continue;
             }
         };
@@ -149,7 +159,7 @@ pub fn run(options: &Options, meshes: Option<&Path>) -> anyhow::Result<()> {
         rows: records,
         failures,
         load,
-    } = measured_or_rendered(options, "intrinsic", || measure_all(options, meshes))?;
+    } = measured_or_rendered(options, "intrinsic", None, || measure_all(options, meshes))?;
     let plots = write_plots(&options.out, &records)?;
     let md = markdown(options, &records, &plots, &load);
     finish(options, "intrinsic", &md, &failures)
@@ -159,7 +169,7 @@ fn markdown(
     options: &Options,
     records: &[Record],
     plots: &[(String, String)],
-    load: &str,
+    load: &RunInfo,
 ) -> String {
     let mut md = preamble(
         "Intrinsic Delaunay triangulations by edge flipping — Section 9 (T_x)",

@@ -60,3 +60,39 @@ pub fn mean(values: impl IntoIterator<Item = f64>) -> f64 {
         .fold((0.0, 0usize), |(s, n), x| (s + x, n + 1));
     if n == 0 { 0.0 } else { sum / n as f64 }
 }
+
+/// Inputs with more triangles than this get [`LARGE_INPUT_SEEDS`] seeded runs of the randomised
+/// algorithms (BF; SG and PS) instead of the papers' ten.
+pub const LARGE_INPUT_FACES: usize = 1_000_000;
+
+/// Seeded runs on an input above [`LARGE_INPUT_FACES`]. Decision (fewer than the papers' ten,
+/// which average ten shuffles): at millions of triangles the spread over seeds of the counts is a
+/// small fraction of their mean, while ten runs of PS's augmentation or of BF on the papers'
+/// twenty-odd inputs of 4.2M triangles take most of an hour on a shared 2-core machine; the
+/// reports name the inputs measured with fewer runs.
+pub const LARGE_INPUT_SEEDS: u64 = 3;
+
+/// The seeded runs of an algorithm that the paper runs `paper_seeds` times, on an input of
+/// `faces` triangles: the paper's count, or [`LARGE_INPUT_SEEDS`] above [`LARGE_INPUT_FACES`].
+pub fn seeds_for(paper_seeds: u64, faces: usize) -> u64 {
+    if faces > LARGE_INPUT_FACES {
+        paper_seeds.min(LARGE_INPUT_SEEDS)
+    } else {
+        paper_seeds
+    }
+}
+
+/// The clause of a report's protocol sentence naming the inputs run with [`LARGE_INPUT_SEEDS`]
+/// seeds (empty when there are none).
+pub fn fewer_seeds(inputs: &[impl AsRef<str>]) -> String {
+    if inputs.is_empty() {
+        return String::new();
+    }
+    let names: Vec<&str> = inputs.iter().map(AsRef::as_ref).collect();
+    format!(
+        ", except on the inputs of more than {} triangles: {LARGE_INPUT_SEEDS} seeds (fewer than \
+         the paper's ten, to bound the run's time on this shared 2-core machine) on {}",
+        super::report::number(LARGE_INPUT_FACES as f64, 0),
+        names.join(", ")
+    )
+}

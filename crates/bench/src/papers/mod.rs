@@ -13,6 +13,7 @@
 //! paper); raw `.jsonl` and SVG plots are written beside them. The inputs are built in this
 //! process ([`inputs`]); the papers' numbers are data ([`numbers`]).
 
+pub mod cache;
 pub mod differences;
 pub mod inputs;
 pub mod intrinsic;
@@ -51,6 +52,10 @@ pub struct Options {
     /// Shared meshes folder (default: `SURFTOPO_MESHES`, else `../shared/meshes`).
     #[arg(long)]
     pub meshes: Option<PathBuf>,
+    /// Build every brick and simplification afresh, without reading or writing the cache of
+    /// generated inputs (`target/papers-cache`, [`cache`]).
+    #[arg(long)]
+    pub no_cache: bool,
 }
 
 impl Options {
@@ -98,6 +103,9 @@ impl Options {
         if self.tiny {
             c += " --tiny";
         }
+        if self.no_cache {
+            c += " --no-cache";
+        }
         for o in &self.only {
             c += &format!(" --only {o}");
         }
@@ -113,14 +121,18 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     let start = std::time::Instant::now();
     std::fs::create_dir_all(&options.out)?;
     let meshes = inputs::meshes_dir(options.meshes.clone());
+    let cache = cache::Cache::new((!options.no_cache).then(cache::Cache::default_dir));
     if options.runs_suite("irreducible") {
-        irreducible::run(options, meshes.as_deref())?;
+        irreducible::run(options, &cache, meshes.as_deref())?;
     }
     if options.runs_suite("quad") {
-        quad::run(options, meshes.as_deref())?;
+        quad::run(options, &cache, meshes.as_deref())?;
     }
     if options.runs_suite("intrinsic") {
         intrinsic::run(options, meshes.as_deref())?;
+    }
+    if options.only.is_empty() {
+        state_whole_run(&options.out)?;
     }
     eprintln!(
         "papers: done in {:.0} s, reports in {}",
@@ -129,6 +141,38 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     );
     Ok(())
 }
+
+/// Puts the three reports' wall-clock times added (their `.run.json`) into each
+/// report's header (nothing when one of them is missing).
+fn state_whole_run(out: &Path) -> anyhow::Result<()> {
+    const SUITES: [&str; 3] = ["irreducible", "quad", "intrinsic"];
+    let mut total = 0.0;
+    for name in SUITES {
+        let path = out.join(format!("{name}.run.json"));
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            return Ok(()); // a jsonl measured before run files were written: no total
+        };
+        let info: RunInfo =
+            serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        total += info.wall_seconds;
+    }
+    for name in SUITES {
+        let path = out.join(format!("{name}.md"));
+        let md = std::fs::read_to_string(&path)?.replacen(
+            RUN_SENTENCE,
+            &format!(
+                "The three reports' runs took {} wall-clock together; {}",
+                minutes(total),
+                RUN_SENTENCE.to_lowercase()
+            ),
+            1,
+        );
+        std::fs::write(&path, md)?;
+    }
+    Ok(())
+}
+
+const RUN_SENTENCE: &str = "This report's run took";
 
 /// Writes `rows` as JSON lines to `path`.
 pub fn write_jsonl<T: serde::Serialize>(path: &Path, rows: &[T]) -> anyhow::Result<()> {
@@ -140,33 +184,115 @@ pub fn write_jsonl<T: serde::Serialize>(path: &Path, rows: &[T]) -> anyhow::Resu
     Ok(())
 }
 
-/// A report's rows, the inputs that failed, and the machine load when the measuring started.
+/// A report's rows, the inputs that failed, and how the measuring went.
 pub struct Measured<T> {
     /// One per input (and algorithm).
     pub rows: Vec<T>,
     /// The inputs that failed, with why.
     pub failures: Vec<String>,
-    /// 1-minute load average at the start.
-    pub load: String,
+    /// Time, machine load and inputs of the measuring run.
+    pub load: RunInfo,
 }
 
-/// Measures (writing `<name>.jsonl` in `--out`) or, with `--render`, reads that jsonl back.
+/// How a report's measuring run went: written beside its jsonl (`<name>.run.json`) so that
+/// `--render` states the measured run, not the rendering.
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+pub struct RunInfo {
+    /// Wall-clock seconds of the whole suite: building or reading its inputs and measuring.
+    pub wall_seconds: f64,
+    /// 1-minute load average at the start.
+    pub load_at_start: String,
+    /// 1-minute load average at the end.
+    pub load_at_end: String,
+    /// Inputs built (bricks and simplifications, counting those only needed to make another).
+    pub inputs_built: u32,
+    /// Wall-clock seconds spent building them.
+    pub building_seconds: f64,
+    /// Inputs read from the cache.
+    pub inputs_read: u32,
+    /// Wall-clock seconds spent reading them.
+    pub reading_seconds: f64,
+}
+
+impl RunInfo {
+    /// The sentence of the report header.
+    pub fn describe(&self) -> String {
+        let mut s = format!(
+            "{RUN_SENTENCE} {} wall-clock (building or reading its inputs and measuring)",
+            minutes(self.wall_seconds)
+        );
+        if self.inputs_built + self.inputs_read > 0 {
+            s += &format!(
+                ", of which {} building {} generated inputs and {} reading {} from the cache \
+                 (`target/papers-cache`)",
+                minutes(self.building_seconds),
+                self.inputs_built,
+                minutes(self.reading_seconds),
+                self.inputs_read
+            );
+        }
+        s + &format!(
+            ". Machine load (1-minute average): {} at the start, {} at the end.",
+            self.load_at_start, self.load_at_end
+        )
+    }
+}
+
+/// `seconds` as `M min S s`.
+pub fn minutes(seconds: f64) -> String {
+    let s = seconds.round() as u64;
+    if s >= 60 {
+        format!("{} min {} s", s / 60, s % 60)
+    } else {
+        format!("{seconds:.1} s")
+    }
+}
+
+/// Measures (writing `<name>.jsonl` and `<name>.run.json` in `--out`) or, with `--render`,
+/// reads them back. `cache` is where the suite's generated inputs come from, if any.
 pub fn measured_or_rendered<T: serde::Serialize + serde::de::DeserializeOwned>(
     options: &Options,
     name: &str,
+    cache: Option<&cache::Cache>,
     measure: impl FnOnce() -> (Vec<T>, Vec<String>),
 ) -> anyhow::Result<Measured<T>> {
     let jsonl = options.out.join(format!("{name}.jsonl"));
+    let info_path = options.out.join(format!("{name}.run.json"));
     if options.render {
+        let load = match std::fs::read_to_string(&info_path) {
+            Ok(text) => serde_json::from_str(&text)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", info_path.display()))?,
+            Err(_) => RunInfo {
+                load_at_start: "not recorded".into(),
+                load_at_end: "not recorded".into(),
+                ..RunInfo::default()
+            },
+        };
         return Ok(Measured {
             rows: read_jsonl(&jsonl)?,
             failures: Vec::new(),
-            load: "not recorded (rendered from the jsonl)".into(),
+            load,
         });
     }
-    let load = measure::load_average();
+    let start = std::time::Instant::now();
+    let load_at_start = measure::load_average();
+    let before = cache.map(|c| c.counts());
     let (rows, failures) = measure();
+    let mut load = RunInfo {
+        wall_seconds: start.elapsed().as_secs_f64(),
+        load_at_start,
+        load_at_end: measure::load_average(),
+        ..RunInfo::default()
+    };
+    if let (Some(c), Some(((b0, bt0), (r0, rt0)))) = (cache, before) {
+        let ((b1, bt1), (r1, rt1)) = c.counts();
+        load.inputs_built = b1 - b0;
+        load.building_seconds = bt1 - bt0;
+        load.inputs_read = r1 - r0;
+        load.reading_seconds = rt1 - rt0;
+    }
     write_jsonl(&jsonl, &rows)?;
+    std::fs::write(&info_path, serde_json::to_string_pretty(&load)? + "\n")?;
     Ok(Measured {
         rows,
         failures,
@@ -197,14 +323,14 @@ pub fn read_jsonl<T: serde::de::DeserializeOwned>(path: &Path) -> anyhow::Result
 }
 
 /// The header every report starts with: title, command, scale and machine.
-pub fn preamble(title: &str, options: &Options, load_at_start: &str) -> String {
+pub fn preamble(title: &str, options: &Options, run: &RunInfo) -> String {
     format!(
         "# {title}\n\nGenerated by `{}` (shared meshes from `SURFTOPO_MESHES` or \
          `../shared/meshes`). Scale: {:?}{}. Each cell with a paper number reads `ours / paper \
          (×ours/paper)`; `–` where we have no figure. Times: CPU seconds of the running thread \
          (`/proc/thread-self/schedstat`), the mean over the runs, which the other processes of \
          this shared 2-core machine disturb much less than wall-clock time (the jsonl has both). \
-         Machine load (1-minute average): {load_at_start} at the start, {} at the end.\n\n",
+         {}\n\n",
         options.command(),
         options.scale(),
         match options.scale() {
@@ -220,6 +346,6 @@ pub fn preamble(title: &str, options: &Options, load_at_start: &str) -> String {
                 s.max_stand_in_faces()
             ),
         },
-        measure::load_average()
+        run.describe()
     )
 }
