@@ -446,8 +446,9 @@ pub fn intrinsic(records: &[IntrinsicRecord]) -> String {
             md,
             "On T_x at {}: the paper's model is the real RAM (exact reals); we flip in double \
              precision, whose rounding grows with the aspect ratio O(x²). This is a faithful \
-             difference of arithmetic, not of the algorithm: the exact backend \
-             (`geometry::Rational`) is not yet used by `flip_to_delaunay`.",
+             difference of arithmetic, not of the algorithm: `flip_to_delaunay` works on \
+             `f64` lengths only, while Dubois' Theorem 1 in exact arithmetic \
+             (`delaunay --method dubois --exact`) gives D_x for every x (results/dubois_bench.md).",
             wrong.join(", ")
         );
     }
