@@ -173,7 +173,15 @@ fn tessellate<S: Scalar>(
     let (v, reduction, reduced) = if method == Method::Dubois {
         let out = crate::progress::step(
             "reducing (Dubois, Sections 8 and 4) and running the wave",
-            || delaunay_tessellation_dubois(p, &FlatDelaunayOptions::default()),
+            || {
+                // V = the input's vertices, as flip and voronoi (Section 1's footnote 1), so the
+                // Laplacian has a row per input vertex; a flat surface gets Theorem 1's one.
+                let options = FlatDelaunayOptions {
+                    sources: surftopo_intrinsic::voronoi::Sources::All,
+                    ..FlatDelaunayOptions::default()
+                };
+                delaunay_tessellation_dubois(p, &options)
+            },
         )
         .map_err(|e| fail(&e))?;
         (out.delaunay, Some(out.reduction), Some(out.reduced))
