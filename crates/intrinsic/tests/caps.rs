@@ -11,6 +11,7 @@
 //! here on the exact output's corners with rational arithmetic.
 
 use surftopo_intrinsic::dubois::{FlatDelaunayOptions, cut_caps, delaunay_tessellation_dubois};
+use surftopo_intrinsic::generators::pillowcase;
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, voronoi_delaunay};
 use surftopo_intrinsic::{
@@ -24,39 +25,12 @@ fn q(s: &str) -> Rational {
 
 type P = [Rational; 2];
 
-fn add(a: &P, b: &P) -> P {
-    [a[0].clone() + b[0].clone(), a[1].clone() + b[1].clone()]
-}
-
-/// The pillowcase of `⟨u, v⟩`, sheared: `v + k·u` in place of `v`.
-fn pillowcase(u: &P, v: &P) -> Portalgon<Rational> {
-    let z = [q("0"), q("0")];
-    let u2 = add(u, u);
-    let uv = add(u, v);
-    let u2v = add(&u2, v);
-    let mut p = Portalgon::<Rational>::empty();
-    let a = p.add_polygon(&[z.clone(), u.clone(), v.clone()]).unwrap();
-    let b = p.add_polygon(&[u.clone(), uv.clone(), v.clone()]).unwrap();
-    let c = p.add_polygon(&[u.clone(), u2.clone(), uv.clone()]).unwrap();
-    let d = p.add_polygon(&[u2, u2v, uv]).unwrap();
-    for ((x, i), (y, j)) in [
-        ((a, 0), (c, 0)), // 0→u with u→2u: the half-turn about u
-        ((b, 1), (d, 1)), // u+v→v with 2u+v→u+v: the half-turn about u+v
-        ((a, 2), (d, 0)), // v→0 with 2u→2u+v: the translation by 2u
-        ((a, 1), (b, 2)),
-        ((b, 0), (c, 2)),
-        ((c, 1), (d, 2)),
-    ] {
-        p.glue(p.side(x, i), p.side(y, j), 0.0).unwrap();
-    }
-    p.check_closed().unwrap();
-    p
-}
-
 fn sheared(k: &str, p: &str) -> Portalgon<Rational> {
     let u = [q("1"), q("0")];
     let v = [q(k) + q(p), q("1")];
-    pillowcase(&u, &v)
+    let t = pillowcase(&u, &v).unwrap();
+    t.check_closed().unwrap();
+    t
 }
 
 fn len2(a: &P, b: &P) -> Rational {
