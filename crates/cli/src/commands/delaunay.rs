@@ -163,7 +163,8 @@ type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
 /// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
 /// (`--method dubois`: caps, reduction, caps back, then the wave from the singular vertices), with
 /// its figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of
-/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4).
+/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4) and any
+/// failure of dubois in `f64` on the validated input (exit 4).
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
     method: Method,
@@ -183,7 +184,18 @@ fn tessellate<S: Scalar>(
                 delaunay_tessellation_dubois(p, &options)
             },
         )
-        .map_err(|e| fail(&e))?;
+        .map_err(|e| {
+            // The input was validated: in f64 a failure is rounding breaking a check (exit 4).
+            if S::EXACT {
+                fail(&e)
+            } else {
+                crate::failure::numerical(format!(
+                    "{}: {e} (a numerical failure of double precision: try --exact on exact \
+                     input, or --method flip)",
+                    input.display()
+                ))
+            }
+        })?;
         (out.delaunay, Some(out.reduction), Some(out.reduced))
     } else {
         let v = crate::progress::step("running the Voronoi wave", || {
