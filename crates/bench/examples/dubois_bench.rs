@@ -8,7 +8,11 @@
 //!    run (the `f64` lengths of `T_x` no longer describe it from about `x = 10⁵`).
 //! 2. Lattice tori `⟨(1, 0), (s, 1)⟩`, `s = 10, 10³, …, 10¹⁸` (shears): the exact pipeline
 //!    (its tessellation must be the unit square).
-//! 3. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
+//! 3. Needles with cone points: the pillowcases of `⟨(1, 0), (s, 1)⟩`, `s = 10, …, 10¹²`
+//!    (`generators::pillowcase`, two unit squares by construction): Theorem 1 with Section 8's
+//!    caps (exact), the wave alone (exact, bounded events) and flipping (`f64`), each checked
+//!    against the known tessellation.
+//! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
 //!    (`flip_to_delaunay_unless_needle`: the needle test inside flipping's first pass), alternated,
 //!    best of 25.
 //!
@@ -26,12 +30,15 @@ use std::time::Instant;
 
 use serde_json::json;
 use surftopo_bench::papers::plot::{self, Axis, Plot, Series};
-use surftopo_intrinsic::dubois::{FlatDelaunay, FlatDelaunayOptions, delaunay_tessellation_flat};
-use surftopo_intrinsic::generators::flat_torus;
+use surftopo_intrinsic::dubois::{
+    FlatDelaunay, FlatDelaunayOptions, delaunay_tessellation_dubois, delaunay_tessellation_flat,
+};
+use surftopo_intrinsic::generators::{flat_torus, pillowcase};
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::method_choice::{
     Method, choose_method_for_needle, choose_method_for_triangulation,
 };
+use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, WaveOptions, to_f64, voronoi_delaunay};
 use surftopo_intrinsic::{
     DelaunayOptions, IntrinsicTriangulation, Portalgon, flip_to_delaunay,
     flip_to_delaunay_unless_needle,
@@ -99,39 +106,66 @@ fn dubois_cells(out: &FlatDelaunay<Rational>, seconds: f64) -> String {
 /// Whether the exact tessellation is one quadrilateral with squared sides `a, b, a, b` and right
 /// angles (the rectangle `√a × √b`).
 fn is_rectangle(t: &FlatDelaunay<Rational>, a: &str, b: &str) -> bool {
-    let tess = &t.delaunay.tessellation;
+    are_rectangles(&t.delaunay.tessellation, 1, a, b)
+}
+
+/// Whether the exact tessellation is `count` quadrilaterals, each with squared sides `a, b, a, b`
+/// and area `√(ab)` (four such sides with that area make a rectangle).
+fn are_rectangles(tess: &Portalgon<Rational>, count: usize, a: &str, b: &str) -> bool {
     let polygons: Vec<_> = tess.polygons().collect();
-    if polygons.len() != 1 || tess.polygon_sides(polygons[0]).len() != 4 {
-        return false;
-    }
-    let sides = tess.polygon_sides(polygons[0]);
-    let mut lengths: Vec<Rational> = sides.iter().map(|&s| tess.side_length2(s)).collect();
-    lengths.sort();
     let mut expected = vec![q(a), q(a), q(b), q(b)];
     expected.sort();
-    // Four sides of squared lengths a, a, b, b with area √(ab) are a rectangle.
-    let area = tess.polygon_area(polygons[0]);
-    lengths == expected && area.clone() * area == q(a) * q(b)
+    polygons.len() == count
+        && polygons.iter().all(|&p| {
+            let sides = tess.polygon_sides(p);
+            let mut lengths: Vec<Rational> = sides.iter().map(|&s| tess.side_length2(s)).collect();
+            lengths.sort();
+            let area = tess.polygon_area(p);
+            lengths == expected && area.clone() * area == q(a) * q(b)
+        })
+}
+
+/// Flipping in `f64` on the lengths of an exact portalgon whose Delaunay tessellation is unit
+/// squares: (flips, seconds, verdict).
+fn flip_to_unit_squares(p: &Portalgon<Rational>) -> (Option<u64>, Option<f64>, String) {
+    match IntrinsicTriangulation::from_portalgon(&to_f64(p), 1e-9) {
+        Ok(tri) => flip_and_check(&tri, 1, [1.0, 1.0, 2f64.sqrt()], "unit squares"),
+        Err(e) => (None, None, format!("cannot run: {e}")),
+    }
 }
 
 /// Flipping on the `f64` `T_x`: (flips, seconds, verdict).
 fn flip_t_x(x: f64) -> (Option<u64>, Option<f64>, String) {
-    let tri = match flat_torus(x, 1) {
-        Ok(t) => t,
-        Err(e) => return (None, None, format!("cannot run: {e}")),
-    };
+    match flat_torus(x, 1) {
+        Ok(tri) => flip_and_check(
+            &tri,
+            if x <= 1e4 { 3 } else { 1 },
+            [1.0, 2.0, 5f64.sqrt()],
+            "D_x",
+        ),
+        Err(e) => (None, None, format!("cannot run: {e}")),
+    }
+}
+
+/// Flips `tri` to Delaunay (best of `runs`, at most 10⁷ flips): (flips, seconds, verdict), the
+/// verdict `name` when every triangle's sorted sides are `expected` to 1e-9, else how far off.
+fn flip_and_check(
+    tri: &IntrinsicTriangulation,
+    runs: usize,
+    expected: [f64; 3],
+    name: &str,
+) -> (Option<u64>, Option<f64>, String) {
     let options = DelaunayOptions {
         max_flips: Some(10_000_000),
         ..DelaunayOptions::default()
     };
-    let ((result, tri), seconds) = best_of(if x <= 1e4 { 3 } else { 1 }, || {
+    let ((result, tri), seconds) = best_of(runs, || {
         let mut t = tri.clone();
         (flip_to_delaunay(&mut t, &options), t)
     });
     match result {
         Err(e) => (None, Some(seconds), format!("error: {e}")),
         Ok(report) => {
-            let expected = [1.0, 2.0, 5f64.sqrt()];
             let error = tri
                 .mesh()
                 .faces()
@@ -144,7 +178,7 @@ fn flip_t_x(x: f64) -> (Option<u64>, Option<f64>, String) {
                 })
                 .fold(0.0, f64::max);
             let verdict = if error <= 1e-9 {
-                "D_x".to_string()
+                name.to_string()
             } else {
                 format!("wrong: lengths off by {error:.1e}")
             };
@@ -232,6 +266,80 @@ fn main() {
             "triangles_after_reduction": rep.triangles_after_reduction, "unit_square": square,
         });
         writeln!(jsonl, "{line}").expect("write to a string");
+    }
+
+    md.push_str(
+        "\n## Needles with cone points: pillowcases of ⟨(1, 0), (s, 1)⟩ (shear s)\n\n\
+         `generators::pillowcase`: a sphere with four cone points of angle π whose four triangles \
+         are needles of aspect about s²; its Delaunay tessellation is two unit squares by \
+         construction. Dubois = Theorem 1 with Section 8's caps, exact; the wave = Proposition 3 \
+         alone on the needles from the cone points, exact, at most 10⁶ events, up to s = 10³ (its \
+         work grows like s); flipping in f64 on \
+         the lengths. One run each beyond s = 10³.\n\n\
+         | s | Dubois ms | N | inner passes (total / 350·N) | triangles after reduction | wave events | Dubois: squares | wave ms | wave events | wave: squares | flips | flip ms | flipping |\n\
+         |---|---:|---:|---:|---:|---:|---|---:|---:|---|---:|---:|---|\n",
+    );
+    for k in [1, 2, 3, 6, 9, 12] {
+        let s = format!("1{}", "0".repeat(k));
+        let t = pillowcase(&[q("1"), q("0")], &[q(&s), q("1")]).expect("a basis");
+        let runs = if k <= 3 { 3 } else { 1 };
+        let (out, seconds) = best_of(runs, || {
+            delaunay_tessellation_dubois(&t, &FlatDelaunayOptions::default()).expect("closed")
+        });
+        let rep = &out.reduction;
+        let squares = are_rectangles(&out.delaunay.tessellation, 2, "1", "1");
+        let wave_options = VoronoiOptions {
+            sources: Sources::Singular,
+            wave: WaveOptions {
+                max_events: Some(1_000_000),
+                ..WaveOptions::default()
+            },
+            ..VoronoiOptions::default()
+        };
+        // The wave alone does work growing with s (its constellations grow like the flips):
+        // run up to s = 10³ only.
+        let (wave_ms, wave_events, wave_verdict) = if k <= 3 {
+            let (wave, wave_seconds) = best_of(runs, || voronoi_delaunay(&t, &wave_options));
+            match &wave {
+                Ok(w) => {
+                    let known = are_rectangles(&w.tessellation, 2, "1", "1");
+                    let verdict = if known { "yes" } else { "NO" };
+                    (
+                        format!("{:.3}", wave_seconds * 1e3),
+                        w.wave.events.to_string(),
+                        verdict.to_string(),
+                    )
+                }
+                Err(e) => (String::new(), String::new(), format!("error: {e}")),
+            }
+        } else {
+            (String::new(), String::new(), "not run".to_string())
+        };
+        let (flips, flip_seconds, flipping) = flip_to_unit_squares(&t);
+        writeln!(
+            md,
+            "| 1e{k} | {:.3} | {} | {} / {} | {} | {} | {} | {wave_ms} | {wave_events} | {wave_verdict} | {} | {} | {flipping} |",
+            seconds * 1e3,
+            rep.outer_iterations,
+            rep.inner_passes_total,
+            rep.inner_passes_bound,
+            rep.triangles_after_reduction,
+            out.delaunay.wave.events,
+            if squares { "yes" } else { "NO" },
+            flips.map_or(String::new(), |f| f.to_string()),
+            flip_seconds.map_or(String::new(), |s| format!("{:.3}", s * 1e3)),
+        )
+        .expect("write to a string");
+        let line = json!({
+            "kind": "pillowcase", "s": s, "seconds": seconds,
+            "outer_iterations": rep.outer_iterations, "inner_passes_total": rep.inner_passes_total,
+            "triangles_after_reduction": rep.triangles_after_reduction,
+            "wave_events": out.delaunay.wave.events, "unit_squares": squares,
+            "wave_alone_ms": wave_ms, "wave_alone": wave_verdict,
+            "flips": flips, "flip_seconds": flip_seconds, "flipping": flipping,
+        });
+        writeln!(jsonl, "{line}").expect("write to a string");
+        eprintln!("pillowcase 1e{k}: {:.3} ms", seconds * 1e3);
     }
 
     let meshes: Vec<_> = surftopo_testkit::shared_meshes()

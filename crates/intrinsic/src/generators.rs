@@ -1,5 +1,6 @@
-//! Test and benchmark surfaces: the flat torus T_x (Dubois, Section 9), sheared tori, and random
-//! isometric re-triangulations by intrinsic flips.
+//! Test and benchmark surfaces: the flat torus T_x (Dubois, Section 9), sheared tori, sheared
+//! pillowcases (needles with cone points), and random isometric re-triangulations by intrinsic
+//! flips.
 
 use crate::convert::{TriangleGluing, triangulation_from_gluing};
 use crate::error::PortalgonError;
@@ -177,4 +178,42 @@ pub fn random_flips(tri: &mut IntrinsicTriangulation, count: u64, seed: u64) -> 
         }
     }
     flips
+}
+
+/// The pillowcase `R²/(2L ⋊ ±1)` of the lattice `L = ⟨u, v⟩`: a sphere with four cone points of
+/// angle π (the images of `L`), triangulated from the parallelogram `0, 2u, 2u + v, v` by the
+/// triangles `(0, u, v)`, `(u, u+v, v)`, `(u, 2u, u+v)`, `(2u, 2u+v, u+v)`: the bottom and top
+/// sides folded at `u` and `u + v` by half-turns, the left side glued to the right by `2u`.
+/// Replacing `v` by `v + k·u` gives the same surface with needles of aspect ratio about `k²`; its
+/// Delaunay tessellation is the image of the planar Delaunay tessellation of `L` (the cone points'
+/// lifts are exactly `L`), known by construction. Exact for exact `S`.
+///
+/// # Errors
+/// [`PortalgonError`] when `u, v` are not a positively oriented basis (a degenerate triangle).
+pub fn pillowcase<S: Scalar>(u: &Point<S>, v: &Point<S>) -> Result<Portalgon<S>, PortalgonError> {
+    let add =
+        |a: &Point<S>, b: &Point<S>| [a[0].clone() + b[0].clone(), a[1].clone() + b[1].clone()];
+    let z = [S::zero(), S::zero()];
+    let (u2, uv) = (add(u, u), add(u, v));
+    let u2v = add(&u2, v);
+    let mut p = Portalgon::<S>::empty();
+    let a = p.add_polygon(&[z, u.clone(), v.clone()])?;
+    let b = p.add_polygon(&[u.clone(), uv.clone(), v.clone()])?;
+    let c = p.add_polygon(&[u.clone(), u2.clone(), uv.clone()])?;
+    let d = p.add_polygon(&[u2, u2v, uv])?;
+    for ((x, i), (y, j)) in [
+        ((a, 0), (c, 0)), // 0→u with u→2u: the half-turn about u
+        ((b, 1), (d, 1)), // u+v→v with 2u+v→u+v: the half-turn about u+v
+        ((a, 2), (d, 0)), // v→0 with 2u→2u+v: the translation by 2u
+        ((a, 1), (b, 2)),
+        ((b, 0), (c, 2)),
+        ((c, 1), (d, 2)),
+    ] {
+        p.glue(
+            p.side(x, i),
+            p.side(y, j),
+            crate::portalgon::DEFAULT_LENGTH_TOLERANCE,
+        )?;
+    }
+    Ok(p)
 }

@@ -102,8 +102,8 @@ pub use matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
 pub use mollify::{MAX_MOLLIFY, mollify};
 pub use numpy::{write_npy, write_npz};
 pub use portalgon::{
-    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SideId, check_polygon,
-    signed_area,
+    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SHORTCUT_MIN_SINE, SideId,
+    check_polygon, signed_area,
 };
 pub use portalgon_edits::{Component, EditError, VertexInfo};
 pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};

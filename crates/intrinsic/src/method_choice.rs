@@ -43,8 +43,12 @@ pub enum Method {
 /// module doc for the measurement behind it).
 pub const AUTO_ASPECT_LIMIT: f64 = 1e5;
 
-/// Whether [`crate::dubois`] takes surfaces with cone points (Section 8's caps). While it does
-/// not, [`choose_method`] keeps flipping for them.
+/// Whether [`choose_method`] sends needles with cone points to [`crate::dubois`]. Section 8's
+/// caps run in both arithmetics ([`crate::dubois::delaunay_tessellation_dubois`]), but on meshes
+/// they cost orders of magnitude more than flipping (every vertex capped, `T₁` ten times the
+/// input's triangles, ALGORITHM's passes over all of it) and in `f64` not every shared mesh
+/// finishes in reasonable time (`tests/caps.rs`' release sweep; `results/dubois_bench.md`), so
+/// `auto` keeps flipping them: `false`.
 pub const DUBOIS_TAKES_CONE_POINTS: bool = false;
 
 /// The largest triangle aspect ratio `ℓ²/(2A)` of the polygons (longest side `ℓ`, area `A`; for

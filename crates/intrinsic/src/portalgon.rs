@@ -83,6 +83,36 @@ pub(crate) fn points_inside<S: Scalar>(
     }
 }
 
+/// In `f64`, the least sine of the angle between a shortcut and a side at either of its
+/// endpoints ([`Portalgon::shortcut`]): below it the arc runs along the side up to rounding.
+pub const SHORTCUT_MIN_SINE: f64 = 1e-9;
+
+/// Whether the segment from corner `i` to corner `j` of `c` makes, at `i` or at `j`, an angle of
+/// sine below [`SHORTCUT_MIN_SINE`] (and positive cosine) with one of the two sides there
+/// (evaluated in `f64`; [`Portalgon::shortcut`]).
+fn arc_leaves_along_a_side<S: Scalar>(c: &[Point<S>], i: usize, j: usize) -> bool {
+    let k = c.len();
+    let f = |x: &Point<S>| [x[0].to_f64(), x[1].to_f64()];
+    let along = |from: usize, to: usize| {
+        let o = f(&c[from]);
+        let d = |x: &Point<S>| {
+            let x = f(x);
+            [x[0] - o[0], x[1] - o[1]]
+        };
+        let arc = d(&c[to]);
+        [&c[(from + 1) % k], &c[(from + k - 1) % k]]
+            .iter()
+            .any(|&side| {
+                let s = d(side);
+                let cross = arc[0] * s[1] - arc[1] * s[0];
+                let dot = arc[0] * s[0] + arc[1] * s[1];
+                let norms = arc[0].hypot(arc[1]) * s[0].hypot(s[1]);
+                dot > 0.0 && cross.abs() < SHORTCUT_MIN_SINE * norms
+            })
+    };
+    along(i, j) || along(j, i)
+}
+
 /// Validates the corners of a polygon: at least three, finite, no zero side, counter-clockwise and
 /// simple (no two sides meet except consecutive ones at their common corner). O(k²).
 ///
@@ -577,6 +607,17 @@ impl<S: Scalar> Portalgon<S> {
     /// A shortcut of polygon `p` (Section 4.1): a shortest vertex-to-vertex arc, as its two corner
     /// indices `(i, j)` with `i < j`; `None` for triangles. Ties (of the squared lengths) go to the
     /// smallest `(i, j)`. O(k³).
+    ///
+    /// **\[decision, `f64` only\] Degenerate candidates.** In exact mode a corner of angle π (a
+    /// midpoint of INSERTVERTICES, a cap point of Section 8) is straight, and the segment across
+    /// it lies on the boundary: no arc. In `f64` the rounded corner is off the line by an ulp and
+    /// [`Self::is_arc`] (exact signs on the rounded values) accepts that segment, whose piece is a
+    /// triangle of area ~1e-16 relative to its sides (zero when evaluated in `f64`). So in `f64`
+    /// an arc that leaves one of its endpoints within [`SHORTCUT_MIN_SINE`] of a side there
+    /// (the angle's sine below it, cosine positive: a sharp piece corner) is skipped when a
+    /// non-degenerate arc exists; only when every arc is degenerate is the shortest of them
+    /// taken (a polygon that is itself a needle of aspect ratio beyond 1e9). Exact mode is the
+    /// paper's rule verbatim.
     pub fn shortcut(&self, p: PolygonId) -> Option<(usize, usize)> {
         let c = self.corners(p);
         let k = c.len();
@@ -593,10 +634,17 @@ impl<S: Scalar> Portalgon<S> {
                 .unwrap_or(Ordering::Equal)
                 .then((x.1, x.2).cmp(&(y.1, y.2)))
         });
-        pairs
-            .into_iter()
-            .find(|&(_, i, j)| self.is_arc(p, i, j))
-            .map(|(_, i, j)| (i, j))
+        let mut degenerate = None;
+        for (_, i, j) in pairs {
+            if !self.is_arc(p, i, j) {
+                continue;
+            }
+            if S::EXACT || !arc_leaves_along_a_side(&c, i, j) {
+                return Some((i, j));
+            }
+            degenerate.get_or_insert((i, j));
+        }
+        degenerate
     }
 
     /// Cuts polygon `p` along the arc between its corners `i` and `j` (INSERTEDGES' elementary

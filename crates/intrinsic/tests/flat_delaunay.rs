@@ -167,7 +167,7 @@ fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
     assert_eq!(choose_method(&t_x(&q("447"))), Method::Flip); // aspect 99906.5
     assert_eq!(choose_method(&t_x(&q("448"))), Method::Dubois); // aspect 100354
     assert_eq!(choose_method(&t_x(&q("3000000001/3"))), Method::Dubois);
-    // A needle with cone points: flipping until Section 8's caps let Dubois take it.
+    // A needle with cone points: dubois exactly when `DUBOIS_TAKES_CONE_POINTS` (see its doc).
     let pillow = needle_pillow(&q("1000"));
     assert!(largest_aspect_ratio(&pillow) > AUTO_ASPECT_LIMIT);
     let expected = if DUBOIS_TAKES_CONE_POINTS {

@@ -637,3 +637,35 @@ fn exact_flat_torus_by_corners() {
         assert_eq!(rename.len(), (m * m) as usize);
     }
 }
+
+/// `Portalgon::shortcut`'s f64 decision: a corner that should be straight (a midpoint) rounded
+/// an ulp off its line makes the segment across it an arc by exact signs, whose piece has zero
+/// area in f64; that candidate is skipped in f64, while exact mode keeps the paper's rule.
+#[test]
+fn degenerate_shortcut_candidates_are_skipped_in_f64() {
+    // a, m, b, c counter-clockwise; m is 1e-17 below the midpoint of ab (a convex corner by
+    // exact signs), so ab (length 1) is the shortest arc, shorter than mc (about 2).
+    let corners = [[0.0, 0.0], [0.5, -1e-17], [1.0, 0.0], [0.5, 2.0]];
+    let mut p = Portalgon::new();
+    let quad = p.add_polygon(&corners).unwrap();
+    assert!(p.is_arc(quad, 0, 2), "an arc by exact signs");
+    assert_eq!(p.shortcut(quad), Some((1, 3)));
+    let pieces = p.triangulate_by_shortcuts(quad).unwrap();
+    p.check_invariants().unwrap();
+    for q in pieces {
+        assert!(p.polygon_area(q) > 0.0);
+    }
+    // The same corners as exact rationals: the shortest arc, as the paper says.
+    let exact: Vec<[Rational; 2]> = corners
+        .iter()
+        .map(|c| {
+            [
+                Rational::from_f64(c[0]).unwrap(),
+                Rational::from_f64(c[1]).unwrap(),
+            ]
+        })
+        .collect();
+    let mut r = Portalgon::<Rational>::empty();
+    let quad = r.add_polygon(&exact).unwrap();
+    assert_eq!(r.shortcut(quad), Some((0, 2)));
+}

@@ -161,7 +161,8 @@ type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
 /// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
 /// (`--method dubois`: caps, reduction, caps back, then the wave from the singular vertices), with
 /// its figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of
-/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4).
+/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4) and any
+/// failure of dubois in `f64` on the validated input (exit 4).
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
     method: Method,
@@ -171,9 +172,28 @@ fn tessellate<S: Scalar>(
     let (v, reduction, reduced) = if method == Method::Dubois {
         let out = crate::progress::step(
             "reducing (Dubois, Sections 8 and 4) and running the wave",
-            || delaunay_tessellation_dubois(p, &FlatDelaunayOptions::default()),
+            || {
+                // V = the input's vertices, as flip and voronoi (Section 1's footnote 1), so the
+                // Laplacian has a row per input vertex; a flat surface gets Theorem 1's one.
+                let options = FlatDelaunayOptions {
+                    sources: surftopo_intrinsic::voronoi::Sources::All,
+                    ..FlatDelaunayOptions::default()
+                };
+                delaunay_tessellation_dubois(p, &options)
+            },
         )
-        .map_err(|e| fail(&e))?;
+        .map_err(|e| {
+            // The input was validated: in f64 a failure is rounding breaking a check (exit 4).
+            if S::EXACT {
+                fail(&e)
+            } else {
+                crate::failure::numerical(format!(
+                    "{}: {e} (a numerical failure of double precision: try --exact on exact \
+                     input, or --method flip)",
+                    input.display()
+                ))
+            }
+        })?;
         (out.delaunay, Some(out.reduction), Some(out.reduced))
     } else {
         let v = crate::progress::step("running the Voronoi wave", || {

@@ -37,6 +37,30 @@
 //! - Cone points are decided by [`crate::voronoi::is_flat_vertex`] (exactly in exact mode, within
 //!   the angle tolerance in `f64`); a surface with none goes to
 //!   [`super::delaunay_tessellation_flat`] (no caps, `s = d/2`).
+//! - **Which vertices get a cap** ([`cut_caps_at`]): in exact mode with [`Sources::Singular`]
+//!   the cone points (the paper). With [`Sources::All`] (Section 1's footnote 1: V any vertex
+//!   set containing the singularities, here every input vertex, the flip route's) every vertex,
+//!   so that ALGORITHM, which deletes flat interior vertices, keeps them; the wave then runs from
+//!   the capped vertices of `T′` ([`crate::voronoi::voronoi_delaunay_from`]). In `f64` every
+//!   vertex is capped whatever the sources: a vertex flat only within the angle tolerance is not
+//!   flat for DELETEVERTICES (its star does not close up), so none of the input's vertices is
+//!   left inside `T₁`; every interior vertex of `T₁` is then a midpoint, flat by construction.
+//! - **\[`f64` only\] Local radii.** The paper's `d` is global: one thin triangle makes every
+//!   cap tiny, and `T₁`'s pieces in fat triangles become needles of aspect `L/d` whose f64 merges
+//!   lose `log₁₀(L/d)` digits. In `f64` the radius of an edge comes from the smaller height `h`
+//!   of its two faces instead (`ρ_e ∈ (h/12, h/6]`): each cap lies within `h_f/6` of its corner
+//!   in each face `f`, and the corners of `f` are at least `h_f` apart, so caps stay disjoint and
+//!   inside their faces; radii only grow (`h ≥ d`), and `N` is still computed from the global
+//!   `d` (an upper bound).
+//! - **\[`f64` only\] Closing tolerance.** Every interior vertex of `T₁` is flat and every
+//!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
+//!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
+//!   motions of many merges; on `T₁` they use a relative tolerance of at least
+//!   [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than 1e-9. The output is checked
+//!   independently (the tests compare the Laplacian with the flip route's to 1e-9).
+//! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
+//!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
+//!   off their line by an ulp, would otherwise produce.
 //! - Order: edges in increasing side id (lower id of the pair), corners in increasing id of the
 //!   side leaving the cone point; the remaining polygons are cut in increasing polygon id.
 //! - The caps are kept as they were cut (triangles of `T₀` with their corners and labels) and
@@ -50,9 +74,10 @@
 //!   flat (within the tolerance in `f64`) is no vertex of Theorem 1's tessellation.
 //!
 //! **Guarantees.** Proposition 2's and Theorem 1's hold for exact input in exact mode (every
-//! step above is exact over the rationals). In `f64` a surface with cone points is refused
-//! ([`CapsError::ConePointInDoublePrecision`]): ALGORITHM's f64 routines on the remainder can
-//! create degenerate pieces on real meshes (a zero-area shortcut on `table.off`, 92 faces).
+//! step above is exact over the rationals). None is claimed in `f64`: the routines run with the
+//! tolerances above, and a failure is a typed [`CapsError`] (an edit's or the wave's), never a
+//! silent answer; `tests/caps.rs` compares the result with the flip route on the shared
+//! meshes.
 
 use super::{
     DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
@@ -62,7 +87,13 @@ use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, voronoi_delaunay,
+    voronoi_delaunay_from,
 };
+
+/// In `f64`, the least relative tolerance with which ALGORITHM on `T₁` and [`put_caps_back`]
+/// check their closings (a deleted vertex's corners meeting, re-glued sides of equal length):
+/// see the module doc.
+pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
 
 /// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -73,17 +104,6 @@ pub enum CapsError {
     /// Proposition 3's wave or its dual failed.
     #[error(transparent)]
     Voronoi(#[from] VoronoiError),
-    /// A cone point in double precision: Section 8 is exact-mode only, because ALGORITHM's f64
-    /// routines on the caps' remainder can produce degenerate pieces (zero-area shortcuts on the
-    /// small polygons near the caps). Give exact corners and use exact mode, or flip.
-    #[error(
-        "vertex {vertex}: a cone point; Dubois' caps (Section 8) run in exact arithmetic only \
-         (--exact on a portalgon given by exact corners), or use --method flip or voronoi"
-    )]
-    ConePointInDoublePrecision {
-        /// The cone point's label (or class index when unlabelled).
-        vertex: u32,
-    },
 }
 
 impl From<crate::error::PortalgonError> for CapsError {
@@ -115,8 +135,22 @@ pub struct CapCut<S: Scalar> {
     pub to_remainder: Vec<SideId>,
     /// The number of cone points.
     pub cone_points: usize,
+    /// The number of vertices capped (the cone points, and in `f64` or for [`Sources::All`]
+    /// every vertex: see the module doc).
+    pub capped_vertices: usize,
     /// `N = ⌈log₂(2 + L₁/s)⌉` with `s = d/(12r)` (module doc).
     pub outer_iterations: u32,
+}
+
+/// The squared smallest height `h²` of a triangle (`4A²/ℓ²_max`).
+fn smallest_height2<S: Scalar>(t: &Portalgon<S>, p: PolygonId) -> S {
+    let longest = t
+        .polygon_sides(p)
+        .iter()
+        .map(|&s| t.side_length2(s))
+        .fold(S::zero(), |m, l| if l > m { l } else { m });
+    let a = t.polygon_area(p);
+    S::from_i64(4) * a.clone() * a / longest
 }
 
 /// The squared smallest height `d²` and squared longest side `L²` of a triangular portalgon.
@@ -124,18 +158,15 @@ fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
     let mut d2: Option<S> = None;
     let mut l2 = S::zero();
     for p in t.polygons() {
-        let longest = t
-            .polygon_sides(p)
-            .iter()
-            .map(|&s| t.side_length2(s))
-            .fold(S::zero(), |m, l| if l > m { l } else { m });
-        let a = t.polygon_area(p);
-        let h2 = S::from_i64(4) * a.clone() * a / longest.clone();
+        let h2 = smallest_height2(t, p);
         if d2.as_ref().is_none_or(|d| h2 < *d) {
             d2 = Some(h2);
         }
-        if longest > l2 {
-            l2 = longest;
+        for &s in t.polygon_sides(p) {
+            let l = t.side_length2(s);
+            if l > l2 {
+                l2 = l;
+            }
         }
     }
     (d2.unwrap_or_else(S::zero), l2)
@@ -183,14 +214,8 @@ fn outer_iterations_with_caps<S: Scalar>(d2: &S, l2: &S, l1_2: &S) -> u32 {
     }
 }
 
-/// Section 8's first construction on a closed triangular portalgon `t`: a point on every
-/// directed edge leaving a cone point at the dyadic radius of the module doc, every corner at a
-/// cone point cut off along the segment joining its two points (the cap triangle), the rest of
-/// each face cut along shortcuts (`T₀`), and the caps removed (`T₁`). O(n) edits.
-///
-/// # Errors
-/// [`DuboisError::Portalgon`] for an invalid or open input, [`DuboisError::NotTriangular`].
-pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<CapCut<S>, CapsError> {
+/// Checks Section 8's input: valid, closed, triangular.
+fn check_triangular_closed<S: Scalar>(t: &Portalgon<S>) -> Result<(), CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
     if let Some(p) = t.polygons().find(|&p| t.polygon_sides(p).len() != 3) {
@@ -200,7 +225,11 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
         }
         .into());
     }
-    let (d2, l2) = heights_and_lengths(t);
+    Ok(())
+}
+
+/// Per vertex class of `t`, whether it is a cone point ([`is_flat_vertex`]).
+fn cone_points<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Vec<bool> {
     let (class, count) = t.vertex_classes();
     let mut first = vec![SideId::INVALID; count];
     for s in t.sides() {
@@ -209,11 +238,42 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
             first[c] = s;
         }
     }
-    let cone: Vec<bool> = first
+    first
         .iter()
         .map(|&s| !is_flat_vertex(t, s, angle_tolerance))
-        .collect();
-    let is_cone = |s: SideId| cone[class[s.idx()] as usize];
+        .collect()
+}
+
+/// Section 8's first construction on a closed triangular portalgon `t`: a point on every
+/// directed edge leaving a cone point at the dyadic radius of the module doc, every corner at a
+/// cone point cut off along the segment joining its two points (the cap triangle), the rest of
+/// each face cut along shortcuts (`T₀`), and the caps removed (`T₁`). O(n) edits.
+///
+/// # Errors
+/// [`DuboisError::Portalgon`] for an invalid or open input, [`DuboisError::NotTriangular`].
+pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<CapCut<S>, CapsError> {
+    check_triangular_closed(t)?;
+    let cone = cone_points(t, angle_tolerance);
+    cut_caps_at(t, &cone, &cone)
+}
+
+/// [`cut_caps`] with the vertices to cap given: `capped[c]` for each vertex class `c` of `t`
+/// ([`Portalgon::vertex_classes`]); `cone[c]` says which of them are cone points (counted in
+/// [`CapCut::cone_points`]). Every cone point must be capped (ALGORITHM takes a flat remainder);
+/// capping a flat vertex too is Section 1's footnote 1 (V containing the singularities) and, in
+/// `f64`, keeps vertices flat only within the tolerance out of DELETEVERTICES (module doc).
+///
+/// # Errors
+/// As [`cut_caps`].
+pub fn cut_caps_at<S: Scalar>(
+    t: &Portalgon<S>,
+    capped: &[bool],
+    cone: &[bool],
+) -> Result<CapCut<S>, CapsError> {
+    check_triangular_closed(t)?;
+    let (d2, l2) = heights_and_lengths(t);
+    let (class, _) = t.vertex_classes();
+    let is_cone = |s: SideId| capped.get(class[s.idx()] as usize) == Some(&true);
     let mut t0 = t.clone();
     // The sides leaving a cone point (one per corner there), before any split.
     let apex_sides: Vec<SideId> = t.sides().filter(|&s| is_cone(s)).collect();
@@ -228,7 +288,20 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
         if !at_start && !at_end {
             continue;
         }
-        let k = radius_exponent(&t.side_length2(s), &d2);
+        // Exact mode: the paper's global `d`. `f64`: the smaller height of the edge's two faces
+        // (module doc).
+        let local;
+        let d2_e = if S::EXACT {
+            &d2
+        } else {
+            let (a, b) = (
+                smallest_height2(t, t.owner(s)),
+                smallest_height2(t, t.owner(m)),
+            );
+            local = if a < b { a } else { b };
+            &local
+        };
+        let k = radius_exponent(&t.side_length2(s), d2_e);
         let lambda: S = dyadic(k);
         if at_start {
             t0.split_side(s, &lambda)?;
@@ -282,6 +355,7 @@ pub fn cut_caps<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Result<Cap
         remainder,
         to_remainder,
         cone_points: cone.iter().filter(|&&c| c).count(),
+        capped_vertices: capped.iter().filter(|&&c| c).count(),
         outer_iterations,
     })
 }
@@ -327,6 +401,15 @@ pub fn put_caps_back<S: Scalar>(
     cut: &CapCut<S>,
     tolerance: f64,
 ) -> Result<Portalgon<S>, CapsError> {
+    Ok(put_caps_back_mapped(reduced, cut, tolerance)?.0)
+}
+
+/// [`put_caps_back`], with the map from `T₀`'s cap side ids to the output's.
+fn put_caps_back_mapped<S: Scalar>(
+    reduced: &Portalgon<S>,
+    cut: &CapCut<S>,
+    tolerance: f64,
+) -> Result<(Portalgon<S>, Vec<SideId>), CapsError> {
     let t0 = &cut.t0;
     let mut out = reduced.clone();
     let mut new_side = vec![SideId::INVALID; t0.side_slots()];
@@ -354,12 +437,12 @@ pub fn put_caps_back<S: Scalar>(
             }
         }
     }
-    Ok(out)
+    Ok((out, new_side))
 }
 
-/// Proposition 2 on a closed triangular portalgon: [`cut_caps`], ALGORITHM on `T₁`
-/// ([`reduce_with_boundary`] with `N` of the module doc), [`put_caps_back`]. Returns `T′`
-/// (compacted: dense ids), ALGORITHM's report and the cut.
+/// Proposition 2 on a closed triangular portalgon: [`cut_caps_at`] (the vertices capped: see
+/// the module doc), ALGORITHM on `T₁` ([`reduce_with_boundary`] with `N` of the module doc),
+/// [`put_caps_back`]. Returns `T′` (compacted: dense ids), ALGORITHM's report and the cut.
 ///
 /// # Errors
 /// As the three steps.
@@ -367,14 +450,46 @@ pub fn proposition_2<S: Scalar>(
     t: &Portalgon<S>,
     options: &FlatDelaunayOptions,
 ) -> Result<(Portalgon<S>, DuboisReport, CapCut<S>), CapsError> {
-    let cut = cut_caps(t, options.angle_tolerance)?;
+    let (t_prime, report, cut, _) = proposition_2_with_apexes(t, options)?;
+    Ok((t_prime, report, cut))
+}
+
+/// [`proposition_2`]'s output and the vertex classes of `T′` that are capped vertices of the
+/// input (increasing, each once).
+type WithApexes<S> = (Portalgon<S>, DuboisReport, CapCut<S>, Vec<u32>);
+
+/// [`proposition_2`], with the vertex classes of `T′` that are capped vertices of `t`.
+fn proposition_2_with_apexes<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<WithApexes<S>, CapsError> {
+    check_triangular_closed(t)?;
+    let cone = cone_points(t, options.angle_tolerance);
+    let capped = if S::EXACT && options.sources == Sources::Singular {
+        cone.clone()
+    } else {
+        vec![true; cone.len()]
+    };
+    let cut = cut_caps_at(t, &capped, &cone)?;
     let mut reduce = options.reduce;
     reduce.outer_iterations = reduce.outer_iterations.or(Some(cut.outer_iterations));
+    if !S::EXACT {
+        reduce.tolerance = reduce.tolerance.max(CAPS_F64_CLOSING_TOLERANCE);
+    }
     let r = reduce_with_boundary(&cut.remainder, &reduce)?;
-    let t_prime = put_caps_back(&r.portalgon, &cut, options.reduce.tolerance)?;
+    let (t_prime, new_side) = put_caps_back_mapped(&r.portalgon, &cut, reduce.tolerance)?;
     let mut report = r.report;
     report.triangles_after_reduction = t_prime.polygon_count();
-    Ok((t_prime.compacted().0, report, cut))
+    let (t_prime, dense) = t_prime.compacted();
+    let (class, _) = t_prime.vertex_classes();
+    let mut apexes: Vec<u32> = cut
+        .apex_sides
+        .iter()
+        .map(|&x| class[dense[new_side[x.idx()].idx()].idx()])
+        .collect();
+    apexes.sort_unstable();
+    apexes.dedup();
+    Ok((t_prime, report, cut, apexes))
 }
 
 /// Theorem 1's output on a closed surface: the tessellation (with the wave's data), ALGORITHM's
@@ -397,7 +512,9 @@ pub struct ConeDelaunay<S: Scalar> {
 /// Theorem 1 on a closed triangular portalgon, with or without cone points: without, it is
 /// [`delaunay_tessellation_flat`]; with, [`proposition_2`] then
 /// [`crate::voronoi::voronoi_delaunay`] from the singular vertices of `T′` (its cone points are
-/// the input's). Labels: see the module doc. Exact on rational input in exact mode.
+/// the input's), or with [`Sources::All`] from every input vertex
+/// ([`crate::voronoi::voronoi_delaunay_from`] on the capped vertices). Labels: see the module
+/// doc. Exact on rational input in exact mode.
 ///
 /// # Errors
 /// [`CapsError`]: bad input, ALGORITHM's or the wave's errors.
@@ -407,7 +524,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
 ) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
-    let Some((label, class, _)) = first_cone_point(t, options.angle_tolerance) else {
+    if first_cone_point(t, options.angle_tolerance).is_none() {
         let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
             FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
             FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
@@ -422,21 +539,17 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             cap_triangles: 0,
             reduced: flat.reduced,
         });
-    };
-    if !S::EXACT {
-        return Err(CapsError::ConePointInDoublePrecision {
-            vertex: label.unwrap_or(class),
-        });
     }
-    let (t_prime, reduction, cut) = proposition_2(t, options)?;
-    let mut delaunay = voronoi_delaunay(
-        &t_prime,
-        &VoronoiOptions {
-            sources: Sources::Singular,
-            angle_tolerance: options.angle_tolerance,
-            wave: options.wave,
-        },
-    )?;
+    let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(t, options)?;
+    let wave_options = VoronoiOptions {
+        sources: Sources::Singular,
+        angle_tolerance: options.angle_tolerance,
+        wave: options.wave,
+    };
+    let mut delaunay = match options.sources {
+        Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
+        Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
+    };
     relabel_with_input_labels(&t_prime, &mut delaunay)?;
     Ok(ConeDelaunay {
         delaunay,

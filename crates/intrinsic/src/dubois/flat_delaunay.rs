@@ -33,6 +33,12 @@ pub struct FlatDelaunayOptions {
     /// In `f64`: a vertex is a cone point when its angle sum is more than this many radians from
     /// 2π (exact mode decides exactly).
     pub angle_tolerance: f64,
+    /// V of Proposition 3 on a surface with cone points ([`super::delaunay_tessellation_dubois`]):
+    /// [`Sources::Singular`] (the default: Theorem 1's canonical tessellation) or
+    /// [`Sources::All`], every vertex of the input (Section 1's footnote 1: the flip route's
+    /// vertex set, so that the Laplacian has a row per input vertex). A flat surface always gets
+    /// Theorem 1's one vertex.
+    pub sources: Sources,
 }
 
 impl Default for FlatDelaunayOptions {
@@ -41,6 +47,7 @@ impl Default for FlatDelaunayOptions {
             reduce: ReduceOptions::default(),
             wave: WaveOptions::default(),
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
+            sources: Sources::Singular,
         }
     }
 }

@@ -70,8 +70,8 @@ pub mod caps;
 pub mod flat_delaunay;
 
 pub use caps::{
-    CapCut, CapsError, ConeDelaunay, cut_caps, delaunay_tessellation_dubois, proposition_2,
-    put_caps_back,
+    CapCut, CapsError, ConeDelaunay, cut_caps, cut_caps_at, delaunay_tessellation_dubois,
+    proposition_2, put_caps_back,
 };
 pub use flat_delaunay::{
     FlatDelaunay, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,

@@ -194,13 +194,45 @@ pub fn voronoi_delaunay<S: Scalar>(
             ((0..count as u32).collect(), class)
         }
     };
-    let wave = run_wave(p, &sources, &class, &options.wave)?;
+    wave_and_dual(p, sources, &class, options, options.sources == Sources::All)
+}
+
+/// Proposition 3 from a given V: `sources`, vertex classes of `p` ([`Portalgon::vertex_classes`],
+/// increasing, containing every singular vertex; a class out of range is ignored), e.g. the
+/// input's vertices among those of a refined portalgon (Section 1's footnote 1: V any finite set
+/// containing the singularities). The tessellation's corners are labelled with the index of
+/// their source in `sources`.
+///
+/// # Errors
+/// [`VoronoiError`].
+pub fn voronoi_delaunay_from<S: Scalar>(
+    p: &Portalgon<S>,
+    sources: Vec<u32>,
+    options: &VoronoiOptions,
+) -> Result<VoronoiDelaunay<S>, VoronoiError> {
+    wave::check_input(p)?;
+    let (class, _) = p.vertex_classes();
+    wave_and_dual(p, sources, &class, options, false)
+}
+
+/// The wave from `sources` and its dual; corners labelled with the source index, or with `p`'s
+/// labels when `input_labels` and every corner of `p` has one.
+fn wave_and_dual<S: Scalar>(
+    p: &Portalgon<S>,
+    sources: Vec<u32>,
+    class: &[u32],
+    options: &VoronoiOptions,
+    input_labels: bool,
+) -> Result<VoronoiDelaunay<S>, VoronoiError> {
+    let wave = run_wave(p, &sources, class, &options.wave)?;
     let mut labels = vec![u32::MAX; class.iter().map(|&c| c as usize + 1).max().unwrap_or(0)];
     let labelled = p.sides().all(|s| p.vertex_label(s).is_some());
     for (k, &c) in sources.iter().enumerate() {
-        labels[c as usize] = k as u32;
+        if let Some(l) = labels.get_mut(c as usize) {
+            *l = k as u32;
+        }
     }
-    if options.sources == Sources::All && labelled {
+    if input_labels && labelled {
         for s in p.sides() {
             labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
         }
