@@ -81,3 +81,53 @@ pub fn value_name(value: &impl clap::ValueEnum) -> String {
         .to_possible_value()
         .map_or_else(String::new, |v| v.get_name().to_owned())
 }
+
+/// The input, the output and the flags of the commands that turn a mesh into another on its
+/// vertex list (`irreducible`, `quad`), with the steps they share.
+#[derive(clap::Args, Debug)]
+pub struct MeshJobArgs {
+    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
+    /// .gz), `-` for standard input (format from the extension, else the content).
+    pub mesh: std::path::PathBuf,
+    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
+    /// --format).
+    #[arg(short, long)]
+    pub output: std::path::PathBuf,
+    #[command(flatten)]
+    pub format: FormatArg,
+    #[command(flatten)]
+    pub seed: SeedArg,
+    #[command(flatten)]
+    pub json: JsonArg,
+    #[command(flatten)]
+    pub weld: WeldArg,
+}
+
+impl MeshJobArgs {
+    /// Refuses an output that cannot be written as a mesh, before any work.
+    pub fn check_output(&self) -> anyhow::Result<()> {
+        let kind = crate::output::mesh_kind(self.format.format);
+        crate::output::check_outputs(&[("-o", self.output.as_path(), kind)])
+    }
+
+    /// Reads and validates the input surface (welded with `--weld`).
+    pub fn read(&self) -> anyhow::Result<crate::input::Loaded> {
+        crate::input::read_surface(&self.mesh, self.weld.weld)
+    }
+
+    /// Writes the output mesh, then warns about the input's attributes it does not keep
+    /// (`command` names the command in the warnings).
+    pub fn write(
+        &self,
+        command: &str,
+        soup: &surftopo_io::PolygonSoup,
+        loaded: &crate::input::Loaded,
+    ) -> anyhow::Result<()> {
+        let output = self.output.as_path();
+        crate::output::write_soup_as(output, soup, self.format.format)?;
+        crate::attributes::warn_not_read(&self.mesh, output, &loaded.attributes);
+        crate::attributes::warn_new_faces(command, output, &loaded.attributes);
+        crate::attributes::warn_unwritable(output, self.format.format, soup);
+        Ok(())
+    }
+}

@@ -1,9 +1,8 @@
 //! `surftopo irreducible`: an irreducible triangulation by topology-preserving edge contractions.
 
-use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
+use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
 use serde::Serialize;
-use std::path::PathBuf;
 use surftopo_irreducible::{Algorithm, Counters, reduce};
 use surftopo_mesh::Surface;
 use surftopo_mesh::{Renumbering, SurfaceMesh};
@@ -11,21 +10,8 @@ use surftopo_mesh::{Renumbering, SurfaceMesh};
 /// The arguments of `irreducible`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
-    /// .gz), `-` for standard input (format from the extension, else the content).
-    pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
-    /// --format).
-    #[arg(short, long)]
-    pub output: PathBuf,
     #[command(flatten)]
-    pub format: FormatArg,
-    #[command(flatten)]
-    pub seed: SeedArg,
-    #[command(flatten)]
-    pub json: JsonArg,
-    #[command(flatten)]
-    pub weld: WeldArg,
+    pub job: MeshJobArgs,
     /// The algorithm.
     #[arg(
         long,
@@ -129,12 +115,11 @@ pub fn reduce_surface_renumbered(
 
 /// Runs `irreducible`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    let kind = crate::output::mesh_kind(args.format.format);
-    crate::output::check_outputs(&[("-o", output, kind)])?;
-    let algorithm = Algorithm::from_name(&args.algorithm, args.seed.seed)
+    let (input, output) = (args.job.mesh.as_path(), args.job.output.as_path());
+    args.job.check_output()?;
+    let algorithm = Algorithm::from_name(&args.algorithm, args.job.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
-    let loaded = crate::input::read_surface(input, args.weld.weld)?;
+    let loaded = args.job.read()?;
     let (irreducible, report, renumbering) = crate::progress::step("contracting", || {
         reduce_surface_renumbered(&loaded.surface, algorithm)
     })
@@ -147,11 +132,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         soup.vertex_count(),
         &renumbering.vertices,
     );
-    crate::output::write_soup_as(output, &soup, args.format.format)?;
-    crate::attributes::warn_not_read(input, output, &loaded.attributes);
-    crate::attributes::warn_new_faces("irreducible", output, &loaded.attributes);
-    crate::attributes::warn_unwritable(output, args.format.format, &soup);
-    if args.json.json {
+    args.job.write("irreducible", &soup, &loaded)?;
+    if args.job.json.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(

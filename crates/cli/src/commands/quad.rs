@@ -1,8 +1,7 @@
 //! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
 
-use crate::args::{FormatArg, JsonArg, SeedArg, WeldArg, names};
+use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
-use std::path::PathBuf;
 use surftopo_io::PolygonSoup;
 use surftopo_mesh::Surface;
 use surftopo_quad::quality::QualityObjective;
@@ -14,21 +13,8 @@ use surftopo_quad::{
 /// The arguments of `quad`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
-    /// .gz), `-` for standard input (format from the extension, else the content).
-    pub mesh: PathBuf,
-    /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
-    /// --format).
-    #[arg(short, long)]
-    pub output: PathBuf,
     #[command(flatten)]
-    pub format: FormatArg,
-    #[command(flatten)]
-    pub seed: SeedArg,
-    #[command(flatten)]
-    pub json: JsonArg,
-    #[command(flatten)]
-    pub weld: WeldArg,
+    pub job: MeshJobArgs,
     /// The initial pairing (for `--objective count`).
     #[arg(
         long,
@@ -112,12 +98,11 @@ fn pair(
 
 /// Runs `quad`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let (input, output) = (args.mesh.as_path(), args.output.as_path());
-    let kind = crate::output::mesh_kind(args.format.format);
-    crate::output::check_outputs(&[("-o", output, kind)])?;
-    let algorithm = algorithm_named(&args.algorithm, args.seed.seed)?;
+    let (input, output) = (args.job.mesh.as_path(), args.job.output.as_path());
+    args.job.check_output()?;
+    let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
-    let loaded = crate::input::read_surface(input, args.weld.weld)?;
+    let loaded = args.job.read()?;
     if !loaded.report.dropped_vertices.is_empty() {
         eprintln!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
@@ -130,12 +115,9 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
     let mut soup = quad_soup(&loaded.surface, result);
     soup.attributes.vertex = loaded.attributes.vertex.clone();
-    crate::output::write_soup_as(output, &soup, args.format.format)?;
-    crate::attributes::warn_not_read(input, output, &loaded.attributes);
-    crate::attributes::warn_new_faces("quad", output, &loaded.attributes);
-    crate::attributes::warn_unwritable(output, args.format.format, &soup);
+    args.job.write("quad", &soup, &loaded)?;
     let stats = &result.stats;
-    if args.json.json {
+    if args.job.json.json {
         crate::output::print_json(&paired.figures(&args.objective))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
