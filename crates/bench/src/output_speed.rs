@@ -291,14 +291,7 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
         lines.push_str(&serde_json::to_string(row)?);
         lines.push('\n');
     }
-    if let Some(parent) = options.output.parent() {
-        std::fs::create_dir_all(parent)?;
-    }
-    std::fs::OpenOptions::new()
-        .create(true)
-        .append(true)
-        .open(&options.output)?
-        .write_all(lines.as_bytes())?;
+    surftopo_bench::append_lines(&options.output, &lines)?;
     println!("appended to {}", options.output.display());
     let machine = Machine {
         cores: std::thread::available_parallelism().map_or(1, |n| n.get()),
@@ -320,12 +313,7 @@ struct Machine {
 
 /// The one-minute load average, on Linux.
 fn load_average() -> Option<f64> {
-    std::fs::read_to_string("/proc/loadavg")
-        .ok()?
-        .split_whitespace()
-        .next()?
-        .parse()
-        .ok()
+    surftopo_bench::papers::measure::load_average().parse().ok()
 }
 
 /// The Markdown report: per input, reading against writing each set of outputs, and every row.

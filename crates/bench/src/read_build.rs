@@ -114,15 +114,7 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
             lines.push('\n');
         }
     }
-    if let Some(parent) = options.output.parent() {
-        std::fs::create_dir_all(parent)?;
-    }
-    use std::io::Write;
-    std::fs::OpenOptions::new()
-        .create(true)
-        .append(true)
-        .open(&options.output)?
-        .write_all(lines.as_bytes())?;
+    surftopo_bench::append_lines(&options.output, &lines)?;
     println!("appended to {}", options.output.display());
     Ok(())
 }
