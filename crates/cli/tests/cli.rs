@@ -1259,6 +1259,21 @@ fn times_are_short_decimals_in_json_and_carry_a_unit_in_summaries() {
     }
 }
 
+/// A successful run whose summary ("wrote …, 48 faces") is on stdout, with nothing on stderr.
+fn assert_wrote_48_faces_on_stdout(out: &std::process::Output) {
+    assert!(out.status.success());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
+        "{stdout}"
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// Every command's summary is on stdout, `generate` and `convert` included; stderr stays free
 /// for notes and progress.
 #[test]
@@ -1270,17 +1285,7 @@ fn generate_and_convert_print_their_summary_on_stdout() {
         .arg(&mesh)
         .output()
         .unwrap();
-    assert!(out.status.success());
-    let stdout = String::from_utf8(out.stdout).unwrap();
-    assert!(
-        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
-        "{stdout}"
-    );
-    assert!(
-        out.stderr.is_empty(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_wrote_48_faces_on_stdout(&out);
 
     let converted = dir.path().join("t.obj");
     let out = surftopo()
@@ -1289,15 +1294,5 @@ fn generate_and_convert_print_their_summary_on_stdout() {
         .arg(&converted)
         .output()
         .unwrap();
-    assert!(out.status.success());
-    let stdout = String::from_utf8(out.stdout).unwrap();
-    assert!(
-        stdout.starts_with("wrote ") && stdout.contains("48 faces"),
-        "{stdout}"
-    );
-    assert!(
-        out.stderr.is_empty(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_wrote_48_faces_on_stdout(&out);
 }
