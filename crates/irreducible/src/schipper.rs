@@ -6,9 +6,12 @@
 //! of lowest degree is taken from the global dictionary and its edges [v, w] are tested in rotation
 //! order: [v, w] is contractible iff K is not T4 and no vertex of D_v other than w and the two
 //! vertices opposite [v, w] is in D_w (Theorem 3), which costs O(d_v lg d_w). The first contractible
-//! edge is contracted, identifying v with w (the low-degree vertex is the one removed, O(d_v) in the
-//! half-edge mesh); if none is, v is trapped and leaves the global dictionary for good (Lemma 5).
-//! Nothing prevents an edge from being tested again after a later contraction (ε counts those).
+//! edge is contracted, identifying v with w: the low-degree vertex is the one removed, O(d_v) in
+//! the half-edge mesh, as Schipper's O(n lg n + g lg n + g⁴) bound needs (keeping it instead
+//! removes w, O(d_w): quadratic where high-degree vertices form, measured by the bench example
+//! `schipper_epsilon`). If no edge is contractible, v is trapped and leaves the global dictionary
+//! for good (Lemma 5). Nothing prevents an edge from being tested again after a later
+//! contraction (ε counts those).
 //!
 //! Decisions: D_u is a sorted vector (O(lg d) search as in a balanced tree; O(d) update, small at
 //! the degrees of surface meshes; compact); the global dictionary is a `BTreeSet` of (degree,
@@ -20,7 +23,7 @@
 use std::collections::BTreeSet;
 use std::time::Instant;
 
-use surftopo_mesh::{HalfedgeId, SurfaceMesh, VertexId};
+use surftopo_mesh::{EdgeId, HalfedgeId, SurfaceMesh, VertexId};
 
 use crate::tally::TestTally;
 use crate::{IrreducibleError, Reduction, check_simplicial};
@@ -35,7 +38,44 @@ use crate::{IrreducibleError, Reduction, check_simplicial};
 ///
 /// # Errors
 /// [`IrreducibleError`] if the mesh is not simplicial (nothing is done then).
-pub fn schipper(mut mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
+pub fn schipper(mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
+    run(mesh, |_, _, _| {})
+}
+
+/// One link-condition test made by [`schipper_traced`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LinkTest {
+    /// The edge tested (its id in the input mesh; ids survive contractions, see
+    /// [`SurfaceMesh::contract_unchecked`]).
+    pub edge: EdgeId,
+    /// Its two ends when tested: the chosen vertex first.
+    pub ends: [VertexId; 2],
+    /// Contractions made before this test (an index into [`Reduction::history`]).
+    pub contractions_before: usize,
+}
+
+/// [`schipper`], also returning every link-condition test in the order made, so that ε (Section
+/// 5.3: "the number of edges tested more than once") can be recounted under another identity of
+/// an edge through contractions. Same result and counters as [`schipper`].
+///
+/// # Errors
+/// As [`schipper`].
+pub fn schipper_traced(mesh: SurfaceMesh) -> Result<(Reduction, Vec<LinkTest>), IrreducibleError> {
+    let mut tests = Vec::new();
+    let reduction = run(mesh, |m, h, contractions_before| {
+        tests.push(LinkTest {
+            edge: h.edge(),
+            ends: [m.origin(h), m.dest(h)],
+            contractions_before,
+        });
+    })?;
+    Ok((reduction, tests))
+}
+
+fn run(
+    mut mesh: SurfaceMesh,
+    mut on_test: impl FnMut(&SurfaceMesh, HalfedgeId, usize),
+) -> Result<Reduction, IrreducibleError> {
     check_simplicial(&mesh)?;
     let start = Instant::now();
     let mut dict: Vec<Vec<u32>> = (0..mesh.vertex_slots())
@@ -62,6 +102,7 @@ pub fn schipper(mut mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
         fan.extend(mesh.outgoing(v));
         let found = fan.iter().copied().find(|&h| {
             tally.record(h.edge());
+            on_test(&mesh, h, history.len());
             link_condition(&mesh, &dict, h)
         });
         let Some(h) = found else {

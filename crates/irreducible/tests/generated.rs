@@ -6,7 +6,7 @@ mod support;
 
 use proptest::prelude::*;
 use support::{all_algorithms, run_and_verify, verify};
-use surftopo_irreducible::{Algorithm, brute_force, ramaswami_siqueira, schipper};
+use surftopo_irreducible::{Algorithm, brute_force, ramaswami_siqueira, schipper, schipper_traced};
 use surftopo_mesh::Surface;
 use surftopo_mesh::SurfaceMesh;
 use surftopo_mesh::generators::{
@@ -193,6 +193,50 @@ fn same_seed_same_result() {
     for f in [ramaswami_siqueira, schipper] {
         let (x, y) = (f(mesh.clone()).expect("ok"), f(mesh.clone()).expect("ok"));
         assert_eq!((x.mesh, x.history), (y.mesh, y.history));
+    }
+}
+
+#[test]
+fn schipper_traced_lists_every_test_of_schipper() {
+    for b in [
+        CavityBox::new(5, 4, 1, 1, 1, 1),
+        CavityBox::new(2, 7, 2, 2, 2, 1),
+    ] {
+        let mesh = b.generate().mesh;
+        let plain = schipper(mesh.clone()).expect("simplicial");
+        let (traced, tests) = schipper_traced(mesh.clone()).expect("simplicial");
+        assert_eq!(
+            (&plain.mesh, &plain.history),
+            (&traced.mesh, &traced.history)
+        );
+        assert_eq!(tests.len() as u64, plain.counters.link_tests);
+        // ε recounted from the trace: edge ids tested more than once.
+        let mut count = vec![0u32; mesh.edge_slots()];
+        for t in &tests {
+            count[t.edge.idx()] += 1;
+        }
+        let eps = count.iter().filter(|&&c| c > 1).count() as u64;
+        assert_eq!(eps, plain.counters.edges_tested_more_than_once);
+        // Each test names the edge's ends at that moment, the chosen vertex first; a contraction
+        // follows only a passed test, so the contraction counts never fall and end at the history.
+        let mut replay = mesh.clone();
+        let mut done = 0;
+        for t in &tests {
+            assert!(t.contractions_before >= done);
+            while done < t.contractions_before {
+                let k = &traced.history[done];
+                let h = k.halfedge_uv();
+                replay.contract_unchecked(h);
+                done += 1;
+            }
+            let h = t.edge.halfedge();
+            let ends = [replay.origin(h), replay.dest(h)];
+            assert!(ends == t.ends || ends == [t.ends[1], t.ends[0]]);
+        }
+        assert_eq!(
+            tests.last().map(|t| t.contractions_before),
+            Some(traced.history.len())
+        );
     }
 }
 
