@@ -946,6 +946,62 @@ impl<S: Scalar> Portalgon<S> {
         self.sub_portalgon(&live)
     }
 
+    /// Drops the removed polygons and sides in place, renumbering the live ones densely **in
+    /// their id order** (side `s` becomes the number of live sides below `s`, likewise for
+    /// polygons), so every rule that breaks ties by lowest id decides as before; new ids still
+    /// come after every live one. Returns the old-to-new side and polygon maps (`INVALID` for
+    /// removed ids). O(slots). Edits leave tombstones, so a long run of edits (Dubois'
+    /// ALGORITHM) compacts from time to time to keep whole-portalgon passes proportional to the
+    /// live size.
+    pub fn compact_in_place(&mut self) -> (Vec<SideId>, Vec<PolygonId>) {
+        let mut side_map = vec![SideId::INVALID; self.start.len()];
+        let mut next_id = 0u32;
+        for (s, m) in side_map.iter_mut().enumerate() {
+            if self.owner[s].is_valid() {
+                *m = SideId(next_id);
+                next_id += 1;
+            }
+        }
+        let mut polygon_map = vec![PolygonId::INVALID; self.polygons.len()];
+        next_id = 0;
+        for (p, m) in polygon_map.iter_mut().enumerate() {
+            if !self.polygons[p].is_empty() {
+                *m = PolygonId(next_id);
+                next_id += 1;
+            }
+        }
+        let keep = |old: usize| side_map[old].is_valid();
+        let map_side = |s: SideId| {
+            if s.is_valid() { side_map[s.idx()] } else { s }
+        };
+        let mut k = 0;
+        for old in 0..self.start.len() {
+            if !keep(old) {
+                continue;
+            }
+            self.start.swap(k, old);
+            self.owner[k] = polygon_map[self.owner[old].idx()];
+            self.mate[k] = map_side(self.mate[old]);
+            self.label[k] = self.label[old];
+            self.slot[k] = self.slot[old];
+            self.next[k] = map_side(self.next[old]);
+            k += 1;
+        }
+        self.start.truncate(k);
+        self.owner.truncate(k);
+        self.mate.truncate(k);
+        self.label.truncate(k);
+        self.slot.truncate(k);
+        self.next.truncate(k);
+        self.polygons.retain(|sides| !sides.is_empty());
+        for sides in &mut self.polygons {
+            for s in sides.iter_mut() {
+                *s = side_map[s.idx()];
+            }
+        }
+        (side_map, polygon_map)
+    }
+
     /// The mirror image (every polygon reflected across the x axis, orientations kept
     /// counter-clockwise by reversing the corner order; the matching carried over): the surface
     /// with the opposite orientation. Side `i` of a `k`-gon becomes side `k - 1 - i`.
@@ -1016,6 +1072,18 @@ impl Regions {
         }
         self.region[p.idx()] = r;
         self.count = self.count.max(r + 1);
+    }
+    /// Follows [`Portalgon::compact_in_place`]: each live polygon keeps its region under its new
+    /// id (`polygon_map` is the map that returned).
+    pub fn renumber(&mut self, polygon_map: &[PolygonId]) {
+        let live = polygon_map.iter().filter(|p| p.is_valid()).count();
+        let mut region = vec![self.active; live];
+        for (old, new) in polygon_map.iter().enumerate() {
+            if new.is_valid() {
+                region[new.idx()] = self.region(PolygonId(old as u32));
+            }
+        }
+        self.region = region;
     }
     /// A fresh region label.
     pub fn new_region(&mut self) -> u32 {

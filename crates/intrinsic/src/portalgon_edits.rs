@@ -14,7 +14,7 @@
 //! surface is unchanged (area, cone angles, boundary) after each one (`tests/portalgon_edits.rs`).
 
 use std::cmp::Ordering;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use crate::geometry::{Point, Scalar, add, midpoint, scale, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
@@ -246,31 +246,38 @@ impl<S: Scalar> Portalgon<S> {
 
     /// The connected components of the sub-portalgon of `polygons` (Section 2.1: sides matched
     /// to polygons outside the set are boundary), each with its Euler characteristic, boundary
-    /// cycles and interior vertices, ordered by lowest polygon id. O(n α(n)).
+    /// cycles and interior vertices, ordered by lowest polygon id. O(k log k) in the size `k` of
+    /// the set, whatever the size of the portalgon (Dubois' routines ask for every tube
+    /// component of the active region).
     ///
     /// # Errors
     /// [`EditError::NoSuchPolygon`] for a removed or repeated polygon.
     pub fn components(&self, polygons: &[PolygonId]) -> Result<Vec<Component>, EditError> {
-        let in_set = self.polygon_set(polygons)?;
-        let inside = |s: SideId| in_set[self.owner(s).idx()];
+        let set = LocalSet::new(self, polygons)?;
+        let inside = |s: SideId| set.polygon(self.owner(s)).is_some();
         let internal = |s: SideId| self.mate(s).is_some_and(inside);
-        // Components of polygons through internal sides.
-        let mut uf = UnionFind::new(self.polygon_slots());
-        for &p in polygons {
+        // Components of polygons through internal sides; vertex classes of the sides (start
+        // corners identified through internal sides), both on set-local indices.
+        let mut polygon_uf = UnionFind::new(set.polygons.len());
+        let mut vertex_uf = UnionFind::new(set.side_count());
+        for (i, &p) in set.polygons.iter().enumerate() {
             for &s in self.polygon_sides(p) {
                 if let Some(t) = self.mate(s).filter(|&t| inside(t)) {
-                    uf.union(p.0, self.owner(t).0);
+                    let j = set.polygon(self.owner(t)).expect("inside");
+                    polygon_uf.union(i as u32, j as u32);
+                    let (a, b) = (set.side(self, s), set.side(self, self.next_side(t)));
+                    vertex_uf.union(a.expect("inside") as u32, b.expect("inside") as u32);
                 }
             }
         }
-        let (class, _) = self.classes_within(&in_set);
-        let mut sorted = polygons.to_vec();
-        sorted.sort();
-        let mut component_of_root: HashMap<u32, usize> = HashMap::new();
+        // Per local polygon its component; per vertex class (a root of `vertex_uf`) its lowest
+        // side and whether it is on the boundary.
+        let mut component_of_root = vec![usize::MAX; set.polygons.len()];
         let mut out: Vec<Component> = Vec::new();
-        for &p in &sorted {
-            let r = uf.find(p.0);
-            let k = *component_of_root.entry(r).or_insert_with(|| {
+        for (i, &p) in set.polygons.iter().enumerate() {
+            let r = polygon_uf.find(i as u32) as usize;
+            if component_of_root[r] == usize::MAX {
+                component_of_root[r] = out.len();
                 out.push(Component {
                     polygons: Vec::new(),
                     vertices: 0,
@@ -279,37 +286,45 @@ impl<S: Scalar> Portalgon<S> {
                     boundary_cycles: Vec::new(),
                     interior_vertices: Vec::new(),
                 });
-                out.len() - 1
-            });
-            out[k].polygons.push(p);
+            }
+            out[component_of_root[r]].polygons.push(p);
         }
+        let mut lowest = vec![SideId::INVALID; set.side_count()];
+        let mut on_boundary = vec![false; set.side_count()];
         for c in &mut out {
-            let sides: Vec<SideId> = c
-                .polygons
-                .iter()
-                .flat_map(|&p| self.polygon_sides(p).iter().copied())
-                .collect();
-            let mut vertex_side: Vec<(u32, SideId)> =
-                sides.iter().map(|&s| (class[s.idx()], s)).collect();
-            vertex_side.sort();
-            vertex_side.dedup_by_key(|x| x.0);
-            let boundary: Vec<SideId> = sides.iter().copied().filter(|&s| !internal(s)).collect();
-            let on_boundary: HashSet<u32> = boundary.iter().map(|&s| class[s.idx()]).collect();
-            c.vertices = vertex_side.len();
-            c.edges = (sides.len() - boundary.len()) / 2 + boundary.len();
+            let mut roots: Vec<u32> = Vec::new();
+            let mut boundary: Vec<SideId> = Vec::new();
+            let mut sides = 0;
+            for &p in &c.polygons {
+                for &s in self.polygon_sides(p) {
+                    sides += 1;
+                    let r = vertex_uf.find(set.side(self, s).expect("inside") as u32);
+                    let l = &mut lowest[r as usize];
+                    if !l.is_valid() {
+                        roots.push(r);
+                        *l = s;
+                    } else if s < *l {
+                        *l = s;
+                    }
+                    if !internal(s) {
+                        boundary.push(s);
+                        on_boundary[r as usize] = true;
+                    }
+                }
+            }
+            c.vertices = roots.len();
+            c.edges = (sides - boundary.len()) / 2 + boundary.len();
             c.euler_characteristic = c.vertices as i64 - c.edges as i64 + c.polygons.len() as i64;
-            // Sorted by (vertex, side): each vertex's first entry is its lowest side.
-            let mut interior: Vec<SideId> = vertex_side
+            let mut interior: Vec<SideId> = roots
                 .iter()
-                .filter(|(v, _)| !on_boundary.contains(v))
-                .map(|&(_, s)| s)
+                .filter(|&&r| !on_boundary[r as usize])
+                .map(|&r| lowest[r as usize])
                 .collect();
-            interior.sort();
+            interior.sort_unstable();
             c.interior_vertices = interior;
-            let mut sorted_boundary = boundary.clone();
-            sorted_boundary.sort();
+            boundary.sort_unstable();
             let mut seen: HashSet<SideId> = HashSet::new();
-            for &b in &sorted_boundary {
+            for &b in &boundary {
                 if seen.contains(&b) {
                     continue;
                 }
@@ -321,6 +336,51 @@ impl<S: Scalar> Portalgon<S> {
                 }
                 seen.extend(&cycle);
                 c.boundary_cycles.push(cycle);
+            }
+        }
+        Ok(out)
+    }
+
+    /// The components of the sub-portalgon of `polygons` bounded by exactly two sides, as
+    /// [`Self::components`] gives them and in its order: the only components that can be tubes
+    /// (Section 3: an annulus whose two boundary components are single sides). The connectivity
+    /// of the whole set costs O(k α(k)); only these components are analysed further.
+    ///
+    /// # Errors
+    /// [`EditError::NoSuchPolygon`] for a removed or repeated polygon.
+    pub fn two_sided_components(
+        &self,
+        polygons: &[PolygonId],
+    ) -> Result<Vec<Component>, EditError> {
+        let set = LocalSet::new(self, polygons)?;
+        let mut uf = UnionFind::new(set.polygons.len());
+        let mut boundary_sides = vec![0usize; set.polygons.len()];
+        for (i, &p) in set.polygons.iter().enumerate() {
+            for &s in self.polygon_sides(p) {
+                match self.mate(s).and_then(|t| set.polygon(self.owner(t))) {
+                    Some(j) => {
+                        uf.union(i as u32, j as u32);
+                    }
+                    None => boundary_sides[i] += 1,
+                }
+            }
+        }
+        let mut group_of_root = vec![usize::MAX; set.polygons.len()];
+        let mut groups: Vec<(Vec<PolygonId>, usize)> = Vec::new();
+        for (i, &p) in set.polygons.iter().enumerate() {
+            let r = uf.find(i as u32) as usize;
+            if group_of_root[r] == usize::MAX {
+                group_of_root[r] = groups.len();
+                groups.push((Vec::new(), 0));
+            }
+            let g = &mut groups[group_of_root[r]];
+            g.0.push(p);
+            g.1 += boundary_sides[i];
+        }
+        let mut out = Vec::new();
+        for (group, sides) in groups {
+            if sides == 2 {
+                out.extend(self.components(&group)?);
             }
         }
         Ok(out)
@@ -478,5 +538,69 @@ impl<S: Scalar> Portalgon<S> {
             }
         }
         Ok(created)
+    }
+}
+
+/// A set of live polygons with set-local indices for them and their sides (polygon `i` of the
+/// sorted set owns the side indices `offset[i]..offset[i + 1]`, in side order), so that work on
+/// a small set costs its size, not the portalgon's.
+struct LocalSet {
+    /// The polygons, increasing ids.
+    polygons: Vec<PolygonId>,
+    offset: Vec<usize>,
+    /// Per polygon slot, its index in the set (`u32::MAX` outside) when the set is a large
+    /// part of the portalgon; else lookups search `polygons`.
+    dense: Option<Vec<u32>>,
+}
+
+impl LocalSet {
+    fn new<S: Scalar>(p: &Portalgon<S>, polygons: &[PolygonId]) -> Result<Self, EditError> {
+        let mut sorted = polygons.to_vec();
+        sorted.sort_unstable();
+        if let Some(&q) = sorted.iter().find(|&&q| !p.is_polygon_live(q)) {
+            return Err(EditError::NoSuchPolygon(q.idx()));
+        }
+        if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {
+            return Err(EditError::NoSuchPolygon(w[0].idx()));
+        }
+        let mut offset = Vec::with_capacity(sorted.len() + 1);
+        offset.push(0);
+        for &q in &sorted {
+            offset.push(offset.last().copied().unwrap_or(0) + p.polygon_sides(q).len());
+        }
+        let dense = (4 * sorted.len() >= p.polygon_slots()).then(|| {
+            let mut index = vec![u32::MAX; p.polygon_slots()];
+            for (i, &q) in sorted.iter().enumerate() {
+                index[q.idx()] = i as u32;
+            }
+            index
+        });
+        Ok(Self {
+            polygons: sorted,
+            offset,
+            dense,
+        })
+    }
+
+    /// The set-local index of polygon `q`, when in the set.
+    fn polygon(&self, q: PolygonId) -> Option<usize> {
+        match &self.dense {
+            Some(index) => index
+                .get(q.idx())
+                .filter(|&&i| i != u32::MAX)
+                .map(|&i| i as usize),
+            None => self.polygons.binary_search(&q).ok(),
+        }
+    }
+
+    /// The set-local index of side `s`, when its polygon is in the set.
+    fn side<S: Scalar>(&self, p: &Portalgon<S>, s: SideId) -> Option<usize> {
+        self.polygon(p.owner(s))
+            .map(|i| self.offset[i] + p.side_index(s))
+    }
+
+    /// The number of sides of the set.
+    fn side_count(&self) -> usize {
+        self.offset.last().copied().unwrap_or(0)
     }
 }

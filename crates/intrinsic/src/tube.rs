@@ -179,12 +179,8 @@ impl<S: Scalar> Portalgon<S> {
         if c.vertices != 2 + c.interior_vertices.len() {
             return Err(not_annulus());
         }
-        let (sub_portalgon, map) = self.sub_portalgon(polygons);
-        let info = sub_portalgon.vertex_info();
-        let sides_at = sides_by_vertex(&sub_portalgon, &info);
         for &s in &c.interior_vertices {
-            let v = info.class[map[s.idx()].idx()] as usize;
-            let (full_turn, angle) = sub_portalgon.is_full_turn(&sides_at[v], tolerance);
+            let (full_turn, angle) = self.is_full_turn(&self.sides_around(s), tolerance);
             if !full_turn {
                 return Err(TubeError::NotFlat {
                     side: s.idx(),
@@ -196,6 +192,21 @@ impl<S: Scalar> Portalgon<S> {
             polygons: c.polygons.clone(),
             boundary,
         })
+    }
+
+    /// The sides starting at the start vertex of `s`, in rotation order from `s` (each next one
+    /// is the mate of the previous side of the last), up to the first unmatched side. O(degree).
+    pub(crate) fn sides_around(&self, s: SideId) -> Vec<SideId> {
+        let mut out = vec![s];
+        let mut x = s;
+        while let Some(y) = self.mate(self.prev_side(x)) {
+            if y == s {
+                break;
+            }
+            out.push(y);
+            x = y;
+        }
+        out
     }
 
     /// Whether the corner angles at the start corners of `sides` (one vertex) add up to 2π, and

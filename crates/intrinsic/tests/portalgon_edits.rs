@@ -327,3 +327,102 @@ fn vertex_info_within_a_subset_treats_sides_matched_outside_as_boundary() {
         Err(EditError::NoSuchPolygon(_))
     ));
 }
+
+/// What [`Portalgon::components`] says of a component, without ids: vertices, edges, χ, the
+/// lengths of its boundary cycles, its interior vertices and polygons counted.
+fn shape(c: &surftopo_intrinsic::Component) -> (usize, usize, i64, Vec<usize>, usize, usize) {
+    let cycles = c.boundary_cycles.iter().map(Vec::len).collect();
+    (
+        c.vertices,
+        c.edges,
+        c.euler_characteristic,
+        cycles,
+        c.interior_vertices.len(),
+        c.polygons.len(),
+    )
+}
+
+#[test]
+fn components_of_a_subset_match_those_of_its_copy() {
+    // Random subsets of random tubes, small (the set searched by id) and large (indexed per
+    // slot): the components must be those of the subset copied into a portalgon of its own.
+    for seed in 0..12 {
+        let tube: RandomTube<Rational> = random_tube(seed, seed % 3 == 0, 4, 12);
+        let p = &tube.portalgon;
+        let all: Vec<_> = p.polygons().collect();
+        for keep in [5, 50, 95] {
+            let subset: Vec<_> = all
+                .iter()
+                .copied()
+                .enumerate()
+                .filter(|(i, _)| (i * 7919 + seed as usize * 31) % 100 < keep)
+                .map(|(_, q)| q)
+                .collect();
+            let ours = p.components(&subset).unwrap();
+            let (copy, _) = p.sub_portalgon(&subset);
+            let theirs = copy
+                .components(&copy.polygons().collect::<Vec<_>>())
+                .unwrap();
+            let mut a: Vec<_> = ours.iter().map(shape).collect();
+            let mut b: Vec<_> = theirs.iter().map(shape).collect();
+            a.sort();
+            b.sort();
+            assert_eq!(a, b, "seed {seed}, {keep}%");
+            // The two-sided ones are those with two boundary sides in all, in the same order.
+            let two_sided: Vec<_> = ours
+                .iter()
+                .filter(|c| c.boundary_cycles.iter().map(Vec::len).sum::<usize>() == 2)
+                .cloned()
+                .collect();
+            assert_eq!(p.two_sided_components(&subset).unwrap(), two_sided);
+        }
+        // The whole tube is one two-sided component.
+        assert_eq!(p.two_sided_components(&all).unwrap().len(), 1);
+        assert!(p.two_sided_components(&[all[0], all[0]]).is_err());
+    }
+}
+
+#[test]
+fn compaction_keeps_the_surface_and_the_order_of_ids() {
+    for seed in 0..6 {
+        let (mut p, first, ends, joint) = two_tubes::<Rational>(seed);
+        p.replace_tube_by_good_biface(&first, TubeRoute::Direct, 0.0)
+            .unwrap();
+        assert!(
+            p.side_slots() > p.side_count(),
+            "the splice left tombstones"
+        );
+        let before = p.clone();
+        let mut regions = surftopo_intrinsic::Regions::new(&p);
+        let live: Vec<_> = p.polygons().collect();
+        let marked = regions.new_region();
+        regions.assign(live[live.len() / 2], marked);
+        let (sides, polygons) = p.compact_in_place();
+        regions.renumber(&polygons);
+        p.check_invariants().unwrap();
+        assert_eq!(p.side_slots(), p.side_count());
+        assert_eq!(p.polygon_slots(), p.polygon_count());
+        assert_eq!(
+            (p.side_count(), p.polygon_count()),
+            (before.side_count(), before.polygon_count())
+        );
+        assert_eq!(p.area(), before.area());
+        assert!(same_angles(&cone_angles(&p), &cone_angles(&before)));
+        // Live ids keep their order; corners, labels and mates follow their sides.
+        let mapped: Vec<SideId> = before.sides().map(|s| sides[s.idx()]).collect();
+        assert!(mapped.windows(2).all(|w| w[0] < w[1]));
+        for s in before.sides() {
+            let n = sides[s.idx()];
+            assert_eq!(p.start(n), before.start(s));
+            assert_eq!(p.vertex_label(n), before.vertex_label(s));
+            assert_eq!(p.mate(n), before.mate(s).map(|t| sides[t.idx()]));
+        }
+        for q in before.polygons() {
+            let n = polygons[q.idx()];
+            assert_eq!(regions.region(n), u32::from(q == live[live.len() / 2]));
+        }
+        for s in ends.into_iter().chain([joint]) {
+            assert!(sides[s.idx()].is_valid());
+        }
+    }
+}
