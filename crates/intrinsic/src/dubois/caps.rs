@@ -58,6 +58,12 @@
 //!   motions of many merges; on `T₁` they use a relative tolerance of at least
 //!   [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than 1e-9. The output is checked
 //!   independently (the tests compare the Laplacian with the flip route's to 1e-9).
+//! - **\[`f64` only\] The wave on `T′`** identifies two points of a constellation within
+//!   [`CAPS_F64_CLOSING_TOLERANCE`] times the longest side (the wave's default is 1e-9): `T′`
+//!   closes up only to that tolerance, so a site carried around a vertex of `T′` comes back
+//!   that far from itself, and with the tighter tolerance each trip added a new site (thousands
+//!   in one triangle of `chair_soup.off`, the wave out of its budget). The dual keeps its own
+//!   1e-9 ([`VoronoiOptions::dual_tolerance`]).
 //! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
 //!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
 //!   off their line by an ulp, would otherwise produce.
@@ -80,8 +86,8 @@
 //! meshes.
 
 use super::{
-    DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, delaunay_tessellation_flat,
-    first_cone_point, reduce_with_boundary,
+    DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, Reduction,
+    delaunay_tessellation_flat, first_cone_point, reduce_with_boundary,
 };
 use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon, SideId};
@@ -388,16 +394,16 @@ fn in_local_frames<S: Scalar>(p: &Portalgon<S>) -> Result<Portalgon<S>, CapsErro
 }
 
 /// Section 8's last step (Proposition 2's output `T′`): the cap triangles of `cut` added to
-/// `reduced` (a portalgon of the surface of [`CapCut::remainder`] whose boundary sides keep
-/// `T₁`'s ids, as ALGORITHM's output does) and glued back: to each other as in `T₀`, and to the
-/// boundary sides by id. Lengths are checked by [`Portalgon::glue`] (exactly in exact mode,
+/// `reduced` (ALGORITHM's output on [`CapCut::remainder`], whose boundary sides all survive:
+/// [`Reduction::side_of_input`]) and glued back: to each other as in `T₀`, and to the boundary
+/// sides. Lengths are checked by [`Portalgon::glue`] (exactly in exact mode,
 /// within `tolerance` in `f64`).
 ///
 /// # Errors
 /// [`DuboisError::Portalgon`] when a boundary side is missing, already matched or of another
 /// length.
 pub fn put_caps_back<S: Scalar>(
-    reduced: &Portalgon<S>,
+    reduced: &Reduction<S>,
     cut: &CapCut<S>,
     tolerance: f64,
 ) -> Result<Portalgon<S>, CapsError> {
@@ -406,12 +412,12 @@ pub fn put_caps_back<S: Scalar>(
 
 /// [`put_caps_back`], with the map from `T₀`'s cap side ids to the output's.
 fn put_caps_back_mapped<S: Scalar>(
-    reduced: &Portalgon<S>,
+    reduced: &Reduction<S>,
     cut: &CapCut<S>,
     tolerance: f64,
 ) -> Result<(Portalgon<S>, Vec<SideId>), CapsError> {
     let t0 = &cut.t0;
-    let mut out = reduced.clone();
+    let mut out = reduced.portalgon.clone();
     let mut new_side = vec![SideId::INVALID; t0.side_slots()];
     for &c in &cut.caps {
         let q = out.add_polygon(&t0.corners(c))?;
@@ -433,7 +439,14 @@ fn put_caps_back_mapped<S: Scalar>(
                     out.glue(new_side[x.idx()], new_side[y.idx()], tolerance)?;
                 }
             } else {
-                out.glue(new_side[x.idx()], cut.to_remainder[y.idx()], tolerance)?;
+                let boundary = cut.to_remainder[y.idx()];
+                let now = reduced.side_of_input(boundary).ok_or_else(|| {
+                    DuboisError::Invariant(format!(
+                        "boundary side {} of T₁ did not survive ALGORITHM",
+                        boundary.idx()
+                    ))
+                })?;
+                out.glue(new_side[x.idx()], now, tolerance)?;
             }
         }
     }
@@ -477,7 +490,7 @@ fn proposition_2_with_apexes<S: Scalar>(
         reduce.tolerance = reduce.tolerance.max(CAPS_F64_CLOSING_TOLERANCE);
     }
     let r = reduce_with_boundary(&cut.remainder, &reduce)?;
-    let (t_prime, new_side) = put_caps_back_mapped(&r.portalgon, &cut, reduce.tolerance)?;
+    let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerance)?;
     let mut report = r.report;
     report.triangles_after_reduction = t_prime.polygon_count();
     let (t_prime, dense) = t_prime.compacted();
@@ -541,11 +554,19 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         });
     }
     let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(t, options)?;
-    let wave_options = VoronoiOptions {
+    let mut wave_options = VoronoiOptions {
         sources: Sources::Singular,
         angle_tolerance: options.angle_tolerance,
         wave: options.wave,
+        ..VoronoiOptions::default()
     };
+    if !S::EXACT {
+        // T′ carries the rounding of ALGORITHM's merges (closed up to the closing tolerance), so
+        // a point carried around a vertex comes back that far off: the wave identifies points
+        // to the same tolerance, else it adds the copies as new sites without end.
+        let t = &mut wave_options.wave.point_tolerance;
+        *t = t.max(CAPS_F64_CLOSING_TOLERANCE);
+    }
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
         Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,

@@ -134,6 +134,7 @@ pub fn delaunay_tessellation_flat<S: Scalar>(
             sources: Sources::Singular,
             angle_tolerance: options.angle_tolerance,
             wave: options.wave,
+            ..VoronoiOptions::default()
         },
     )?;
     Ok(FlatDelaunay {

@@ -52,6 +52,12 @@
 //!   their area, `ℓ` their longest side, `L` the longest side overall), so it is never
 //!   underestimated; in `f64` with a relative margin of 1e-9 upward.
 //!
+//! **Cost.** Every routine makes passes over `R_A` (its vertices, its components); a pass
+//! costs the live size: the structure is compacted once removed slots outnumber the live ones
+//! (order kept, so no decision changes: [`Reduction::side_of_input`] follows the input's
+//! sides), and only the components bounded by two sides, the candidates for tubes, are analysed
+//! ([`Portalgon::two_sided_components`]).
+//!
 //! **Guarantees.** Proposition 1's bounds hold for exact input in exact mode; none is claimed in
 //! `f64` (the routines then run with the tolerances of the edits they call). [`reduce`] takes a
 //! closed flat input; [`reduce_with_boundary`] a flat input with boundary (every interior vertex
@@ -209,6 +215,9 @@ pub struct Reduction<S: Scalar = f64> {
     pub tolerance: f64,
     /// Counters for the report.
     pub report: DuboisReport,
+    /// Per side id of the input: its id now (`INVALID` once removed). Ids change only when the
+    /// structure is compacted ([`Portalgon::compact_in_place`], which keeps their order).
+    input_side: Vec<SideId>,
 }
 
 /// The two sides of an edge, lower id first.
@@ -218,6 +227,7 @@ impl<S: Scalar> Reduction<S> {
     /// Initialises the data structure (Section 4.5): `R = T`, `R_A = R`, no inactive region.
     pub fn new(portalgon: Portalgon<S>, route: TubeRoute, tolerance: f64) -> Self {
         let regions = Regions::new(&portalgon);
+        let input_side = (0..portalgon.side_slots() as u32).map(SideId).collect();
         let mut r = Self {
             portalgon,
             regions,
@@ -227,9 +237,36 @@ impl<S: Scalar> Reduction<S> {
                 arithmetic: S::ARITHMETIC,
                 ..DuboisReport::default()
             },
+            input_side,
         };
-        r.after_routine("initialisation");
+        r.after_routine("initialisation", true);
         r
+    }
+
+    /// The id now of side `s` of the input (`None` once it was removed): the boundary sides of
+    /// [`reduce_with_boundary`]'s input all survive.
+    pub fn side_of_input(&self, s: SideId) -> Option<SideId> {
+        self.input_side
+            .get(s.idx())
+            .copied()
+            .filter(|&t| t.is_valid() && self.portalgon.is_side_live(t))
+    }
+
+    /// Compacts the portalgon ([`Portalgon::compact_in_place`]: order kept, so no decision
+    /// changes) once removed slots outnumber the live ones: every routine makes whole passes over
+    /// the slots, and the edits of a long run leave many times more tombstones than live sides.
+    fn compact_if_sparse(&mut self) {
+        let live = self.portalgon.side_count();
+        if self.portalgon.side_slots() <= 2 * live + 64 {
+            return;
+        }
+        let (side_map, polygon_map) = self.portalgon.compact_in_place();
+        self.regions.renumber(&polygon_map);
+        for s in &mut self.input_side {
+            if s.is_valid() {
+                *s = side_map[s.idx()];
+            }
+        }
     }
 
     /// The polygons of `R_A`, increasing ids.
@@ -314,14 +351,28 @@ impl<S: Scalar> Reduction<S> {
         Ok(())
     }
 
-    /// Bookkeeping after each routine: the peak of active vertices, and the invariants in debug
-    /// builds (a failure there is a bug of the routines, reported by a panic naming the routine).
-    fn after_routine(&mut self, routine: &str) {
-        let v = self.active_vertex_count();
-        self.report.peak_active_vertices = self.report.peak_active_vertices.max(v);
+    /// Bookkeeping after each routine: compaction when sparse, the peak of active vertices, and
+    /// the invariants in debug builds (a failure there is a bug of the routines, reported by a
+    /// panic naming the routine). Only the initialisation and INSERTVERTICES add vertices to
+    /// `S(R_A)` (INSERTEDGES adds edges; the other routines delete vertices, replace tubes by
+    /// bifaces with fewer, or make regions inactive), so the peak is measured after those
+    /// (`adds_vertices`); debug builds check that no other routine exceeds it.
+    fn after_routine(&mut self, routine: &str, adds_vertices: bool) {
+        self.compact_if_sparse();
+        if adds_vertices {
+            let v = self.active_vertex_count();
+            self.report.peak_active_vertices = self.report.peak_active_vertices.max(v);
+        }
         #[cfg(debug_assertions)]
-        if let Err(e) = self.check_invariants() {
-            panic!("after {routine}: {e}");
+        {
+            if let Err(e) = self.check_invariants() {
+                panic!("after {routine}: {e}");
+            }
+            let v = self.active_vertex_count();
+            assert!(
+                v <= self.report.peak_active_vertices,
+                "after {routine}: {v} active vertices, above the peak"
+            );
         }
         let _ = routine;
     }
@@ -349,7 +400,7 @@ impl<S: Scalar> Reduction<S> {
             self.portalgon.split_side(s, &half)?;
         }
         self.report.vertices_inserted += edges.len();
-        self.after_routine("INSERTVERTICES");
+        self.after_routine("INSERTVERTICES", true);
         Ok(edges.len())
     }
 
@@ -372,7 +423,7 @@ impl<S: Scalar> Reduction<S> {
                 }
             }
         }
-        self.after_routine("INSERTEDGES");
+        self.after_routine("INSERTEDGES", false);
         Ok(cuts)
     }
 
@@ -404,7 +455,7 @@ impl<S: Scalar> Reduction<S> {
             self.portalgon.delete_vertex(s, self.tolerance)?;
         }
         self.report.vertices_deleted += chosen.len();
-        self.after_routine("DELETEVERTICES");
+        self.after_routine("DELETEVERTICES", false);
         Ok(chosen.len())
     }
 
@@ -432,7 +483,19 @@ impl<S: Scalar> Reduction<S> {
 
     /// Whether `S(R_A)` is homeomorphic to a torus: one component, no boundary, `χ = 0`.
     fn active_is_torus(&self) -> Result<bool, DuboisError> {
-        let comps = self.portalgon.components(&self.active_polygons())?;
+        let active = self.active_polygons();
+        // A boundary side (unmatched, or matched outside R_A) settles it without the components.
+        let closed = active.iter().all(|&p| {
+            self.portalgon.polygon_sides(p).iter().all(|&s| {
+                self.portalgon
+                    .mate(s)
+                    .is_some_and(|t| self.is_active(self.portalgon.owner(t)))
+            })
+        });
+        if !closed {
+            return Ok(false);
+        }
+        let comps = self.portalgon.components(&active)?;
         Ok(comps.len() == 1
             && comps[0].boundary_cycles.is_empty()
             && comps[0].euler_characteristic == 0)
@@ -457,22 +520,27 @@ impl<S: Scalar> Reduction<S> {
         } else {
             // Case (b): J′ = `loops`; drop every loop between two distinct tube components.
             self.cut(&loops);
-            let comps = self.portalgon.components(&self.active_polygons())?;
-            let mut component_of = std::collections::HashMap::new();
-            let mut is_tube = Vec::with_capacity(comps.len());
-            for (k, c) in comps.iter().enumerate() {
-                for &p in &c.polygons {
-                    component_of.insert(p, k);
+            // The tube components (only two-sided components can be), by polygon.
+            let mut tube_of = std::collections::HashMap::new();
+            if !loops.is_empty() {
+                let comps = self
+                    .portalgon
+                    .two_sided_components(&self.active_polygons())?;
+                for (k, c) in comps.iter().enumerate() {
+                    if c.is_annulus_with_single_side_boundaries()
+                        && self.portalgon.tube(&c.polygons, self.tolerance).is_ok()
+                    {
+                        tube_of.extend(c.polygons.iter().map(|&p| (p, k)));
+                    }
                 }
-                is_tube.push(self.portalgon.tube(&c.polygons, self.tolerance).is_ok());
             }
             let mut kept = Vec::new();
             for &(s, t) in &loops {
                 let (cs, ct) = (
-                    component_of[&self.portalgon.owner(s)],
-                    component_of[&self.portalgon.owner(t)],
+                    tube_of.get(&self.portalgon.owner(s)),
+                    tube_of.get(&self.portalgon.owner(t)),
                 );
-                if cs != ct && is_tube[cs] && is_tube[ct] {
+                if cs.is_some() && ct.is_some() && cs != ct {
                     self.portalgon.glue(s, t, self.tolerance)?;
                 } else {
                     kept.push((s, t));
@@ -485,7 +553,7 @@ impl<S: Scalar> Reduction<S> {
         let produced = self.replace_tube_components(false);
         self.glue_back(&j)?;
         let produced = produced?;
-        self.after_routine("SIMPLIFYTUBES");
+        self.after_routine("SIMPLIFYTUBES", false);
         Ok(produced)
     }
 
@@ -496,7 +564,7 @@ impl<S: Scalar> Reduction<S> {
     /// A tube or edit error.
     pub fn gardening(&mut self) -> Result<usize, DuboisError> {
         let (thin, thick) = self.replace_tube_components(true)?;
-        self.after_routine("GARDENING");
+        self.after_routine("GARDENING", false);
         Ok(thin + thick)
     }
 
@@ -518,9 +586,15 @@ impl<S: Scalar> Reduction<S> {
     /// Step 2 of SIMPLIFYTUBES / GARDENING: each component of `R_A` (as currently matched) that is
     /// a tube becomes a good biface; marked inactive when thin, or always with `mark_all`.
     fn replace_tube_components(&mut self, mark_all: bool) -> Result<(usize, usize), DuboisError> {
-        let comps = self.portalgon.components(&self.active_polygons())?;
+        let comps = self
+            .portalgon
+            .two_sided_components(&self.active_polygons())?;
         let (mut thin, mut thick) = (0, 0);
         for c in comps {
+            // The tube test starts with this (Section 3: an annulus bounded by two sides).
+            if !c.is_annulus_with_single_side_boundaries() {
+                continue;
+            }
             let Ok(tube) = self.portalgon.tube(&c.polygons, self.tolerance) else {
                 continue;
             };
@@ -686,9 +760,9 @@ pub fn reduce<S: Scalar>(
 
 /// ALGORITHM (Section 4.5, Proposition 1) on a flat triangular portalgon that may have boundary
 /// (Section 8's truncated surface `T₁`): as [`reduce`], with every *interior* vertex flat. The
-/// boundary sides are never split nor removed and keep their ids through every routine (the
-/// splice keeps boundary ids), so the caller can glue back what it cut off
-/// ([`caps::delaunay_tessellation_dubois`]).
+/// boundary sides are never split nor removed and keep their identity through every routine
+/// (the splice keeps boundary ids; compaction renumbers them, [`Reduction::side_of_input`]
+/// follows), so the caller can glue back what it cut off ([`caps::put_caps_back`]).
 ///
 /// # Errors
 /// As [`reduce`] (a boundary is allowed).

@@ -70,8 +70,11 @@ pub struct VoronoiOptions {
     /// In `f64`: a vertex is flat when its angle sum is within this many radians of 2π (exact
     /// mode decides exactly).
     pub angle_tolerance: f64,
-    /// The wave's options (its `point_tolerance` also serves the dual in `f64`).
+    /// The wave's options.
     pub wave: WaveOptions,
+    /// In `f64`: sites of the dual closer than this times the longest side are one point (so
+    /// near-co-circular sites make one polygon of the tessellation).
+    pub dual_tolerance: f64,
 }
 
 impl Default for VoronoiOptions {
@@ -80,6 +83,7 @@ impl Default for VoronoiOptions {
             sources: Sources::All,
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
             wave: WaveOptions::default(),
+            dual_tolerance: WaveOptions::default().point_tolerance,
         }
     }
 }
@@ -237,7 +241,7 @@ fn wave_and_dual<S: Scalar>(
             labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
         }
     }
-    let out = dual::build_dual(p, &wave, &labels, options.wave.point_tolerance)?;
+    let out = dual::build_dual(p, &wave, &labels, options.dual_tolerance)?;
     Ok(VoronoiDelaunay {
         tessellation: out.portalgon,
         diagram: out.diagram,
