@@ -25,7 +25,9 @@
 
 use std::collections::BTreeSet;
 
-use surftopo_irreducible::{LinkTest, Reduction, ramaswami_siqueira, schipper_traced};
+use surftopo_irreducible::{
+    LinkDictionaries, LinkTest, Reduction, ramaswami_siqueira, schipper_traced,
+};
 use surftopo_mesh::generators::{CavityBox, random_flips};
 use surftopo_mesh::{HalfedgeId, Surface, SurfaceMesh, VertexId};
 
@@ -102,44 +104,10 @@ struct Counts {
     contractions: u64,
 }
 
-fn link_condition(mesh: &SurfaceMesh, dict: &[Vec<u32>], h: HalfedgeId) -> bool {
-    let (v, w) = (mesh.origin(h), mesh.dest(h));
-    let (dv, dw) = (&dict[v.idx()], &dict[w.idx()]);
-    if dv.len() == 3 && dw.len() == 3 {
-        return false;
-    }
-    let (x, y) = (mesh.opposite_vertex(h).0, mesh.opposite_vertex(h.twin()).0);
-    !dv.iter()
-        .any(|&z| z != w.0 && z != x && z != y && dw.binary_search(&z).is_ok())
-}
-
-fn dict_remove(d: &mut Vec<u32>, z: u32) {
-    if let Ok(i) = d.binary_search(&z) {
-        d.remove(i);
-    }
-}
-
-fn dict_insert(d: &mut Vec<u32>, z: u32) {
-    if let Err(i) = d.binary_search(&z) {
-        d.insert(i, z);
-    }
-}
-
 /// S as `crates/irreducible/src/schipper.rs` (`Variant::Ours` gives its counts), with `variant`.
 fn run_variant(mut mesh: SurfaceMesh, variant: Variant) -> Counts {
-    let mut dict: Vec<Vec<u32>> = (0..mesh.vertex_slots())
-        .map(|i| {
-            let v = VertexId::new(i);
-            let mut link: Vec<u32> = if mesh.is_vertex_live(v) {
-                mesh.neighbors(v).map(|w| w.0).collect()
-            } else {
-                Vec::new()
-            };
-            link.sort_unstable();
-            link
-        })
-        .collect();
-    let key = |dict: &[Vec<u32>], z: VertexId| (dict[z.idx()].len() as u32, z.0);
+    let mut dict = LinkDictionaries::new(&mesh);
+    let key = |dict: &LinkDictionaries, z: VertexId| (dict.degree(z), z.0);
     let mut by_degree: BTreeSet<(u32, u32)> = mesh.vertices().map(|v| key(&dict, v)).collect();
     let mut tests = vec![0u8; mesh.edge_slots()];
     let mut c = Counts {
@@ -150,13 +118,11 @@ fn run_variant(mut mesh: SurfaceMesh, variant: Variant) -> Counts {
     let mut fan: Vec<HalfedgeId> = Vec::new();
     let mut current: Option<VertexId> = None;
     while let Some(&(first_degree, first)) = by_degree.first() {
-        if variant == Variant::AgainWhileDegreeSix
-            && current.is_some_and(|v| dict[v.idx()].len() > 6)
-        {
+        if variant == Variant::AgainWhileDegreeSix && current.is_some_and(|v| dict.degree(v) > 6) {
             current = None;
         }
         let (degree, vi) = match current {
-            Some(v) => (dict[v.idx()].len() as u32, v.0),
+            Some(v) => key(&dict, v),
             None => (first_degree, first),
         };
         let v = VertexId(vi);
@@ -176,7 +142,7 @@ fn run_variant(mut mesh: SurfaceMesh, variant: Variant) -> Counts {
             let t = &mut tests[h.edge().idx()];
             c.eps += u64::from(*t == 1);
             *t = t.saturating_add(1);
-            link_condition(&mesh, &dict, h)
+            dict.link_condition(&mesh, h)
         });
         let Some(h) = found else {
             by_degree.remove(&(degree, vi));
@@ -205,17 +171,7 @@ fn run_variant(mut mesh: SurfaceMesh, variant: Variant) -> Counts {
         let removed_key = key(&dict, r);
         mesh.contract_unchecked(kept_to_removed);
         c.contractions += 1;
-        let link = std::mem::take(&mut dict[r.idx()]);
-        for z in [k, x, y] {
-            dict_remove(&mut dict[z.idx()], r.0);
-        }
-        for &z in &link {
-            if z != k.0 && z != x.0 && z != y.0 {
-                dict_remove(&mut dict[z as usize], r.0);
-                dict_insert(&mut dict[z as usize], k.0);
-                dict_insert(&mut dict[k.idx()], z);
-            }
-        }
+        let link = dict.contract(r, k, [x, y]);
         by_degree.remove(&removed_key);
         for (old_key, z) in old.into_iter().zip([k, x, y]) {
             if by_degree.remove(&old_key) || variant == Variant::LinkPutBack {

@@ -9,33 +9,20 @@
 //! ```
 
 use surftopo_bench::papers::measure::timed;
-use surftopo_irreducible::{Algorithm, check_simplicial, reduce};
+use surftopo_irreducible::{Algorithm, LinkDictionaries, check_simplicial, reduce};
 use surftopo_mesh::generators::{simplify, subdivide_midpoint};
-use surftopo_mesh::{Surface, SurfaceMesh, VertexId};
+use surftopo_mesh::{Surface, SurfaceMesh};
 
 use std::collections::BTreeSet;
 
-/// CPU seconds per call of S's set-up alone (the same code as `schipper`'s first lines: one
-/// sorted link dictionary per vertex and the global dictionary by degree).
+/// CPU seconds per call of S's set-up alone (as `schipper`'s first lines: its
+/// [`LinkDictionaries`] and the global dictionary by degree).
 fn set_up_time(mesh: &SurfaceMesh) -> f64 {
     let t = timed(0.5, || {
         let start = std::time::Instant::now();
-        let dict: Vec<Vec<u32>> = (0..mesh.vertex_slots())
-            .map(|i| {
-                let v = VertexId::new(i);
-                let mut link: Vec<u32> = if mesh.is_vertex_live(v) {
-                    mesh.neighbors(v).map(|w| w.0).collect()
-                } else {
-                    Vec::new()
-                };
-                link.sort_unstable();
-                link
-            })
-            .collect();
-        let by_degree: BTreeSet<(u32, u32)> = mesh
-            .vertices()
-            .map(|v| (dict[v.idx()].len() as u32, v.0))
-            .collect();
+        let dict = LinkDictionaries::new(mesh);
+        let by_degree: BTreeSet<(u32, u32)> =
+            mesh.vertices().map(|v| (dict.degree(v), v.0)).collect();
         ((dict, by_degree), start.elapsed().as_secs_f64())
     });
     t.cpu

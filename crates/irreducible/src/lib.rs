@@ -42,7 +42,7 @@ mod verify;
 pub use brute_force::brute_force;
 pub use error::IrreducibleError;
 pub use ramaswami_siqueira::ramaswami_siqueira;
-pub use schipper::{LinkTest, schipper, schipper_traced};
+pub use schipper::{LinkDictionaries, LinkTest, schipper, schipper_traced};
 pub use validate::check_simplicial;
 pub use verify::is_irreducible;
 

@@ -78,21 +78,9 @@ fn run(
 ) -> Result<Reduction, IrreducibleError> {
     check_simplicial(&mesh)?;
     let start = Instant::now();
-    let mut dict: Vec<Vec<u32>> = (0..mesh.vertex_slots())
-        .map(|i| {
-            let v = VertexId::new(i);
-            if !mesh.is_vertex_live(v) {
-                return Vec::new();
-            }
-            let mut link: Vec<u32> = mesh.neighbors(v).map(|w| w.0).collect();
-            link.sort_unstable();
-            link
-        })
-        .collect();
-    let mut by_degree: BTreeSet<(u32, u32)> = mesh
-        .vertices()
-        .map(|v| (dict[v.idx()].len() as u32, v.0))
-        .collect();
+    let mut dict = LinkDictionaries::new(&mesh);
+    let mut by_degree: BTreeSet<(u32, u32)> =
+        mesh.vertices().map(|v| (dict.degree(v), v.0)).collect();
     let mut tally = TestTally::new(mesh.edge_slots());
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
     let mut fan: Vec<HalfedgeId> = Vec::new();
@@ -103,7 +91,7 @@ fn run(
         let found = fan.iter().copied().find(|&h| {
             tally.record(h.edge());
             on_test(&mesh, h, history.len());
-            link_condition(&mesh, &dict, h)
+            dict.link_condition(&mesh, h)
         });
         let Some(h) = found else {
             by_degree.remove(&(degree, vi)); // v is trapped, and stays so (Lemma 5)
@@ -111,41 +99,87 @@ fn run(
         };
         let w = mesh.dest(h);
         let (x, y) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
-        let old = [w, x, y].map(|z| (dict[z.idx()].len() as u32, z.0));
+        let old = [w, x, y].map(|z| (dict.degree(z), z.0));
         history.push(mesh.contract_unchecked(h.twin())); // v identified with w
-        let link = std::mem::take(&mut dict[v.idx()]);
-        for z in [w, x, y] {
-            dict_remove(&mut dict[z.idx()], v.0);
-        }
-        for &z in &link {
-            if z != w.0 && z != x.0 && z != y.0 {
-                let dz = &mut dict[z as usize];
-                dict_remove(dz, v.0);
-                dict_insert(dz, w.0);
-                dict_insert(&mut dict[w.idx()], z);
-            }
-        }
+        dict.contract(v, w, [x, y]);
         by_degree.remove(&(degree, vi));
         for (key, z) in old.into_iter().zip([w, x, y]) {
             if by_degree.remove(&key) {
-                by_degree.insert((dict[z.idx()].len() as u32, z.0));
+                by_degree.insert((dict.degree(z), z.0));
             }
         }
     }
     Ok(Reduction::finish(mesh, history, &tally, start))
 }
 
-/// The link condition for `h = v → w` with the dictionaries: K is not T4 and no vertex of D_v but
-/// w and the two vertices opposite [v, w] belongs to D_w. O(d_v lg d_w).
-fn link_condition(mesh: &SurfaceMesh, dict: &[Vec<u32>], h: HalfedgeId) -> bool {
-    let (v, w) = (mesh.origin(h), mesh.dest(h));
-    let (dv, dw) = (&dict[v.idx()], &dict[w.idx()]);
-    if dv.len() == 3 && dw.len() == 3 {
-        return false; // K is T4 (Proposition 6)
+/// S's dictionaries D_u (Section 3 of the paper): for every vertex slot, the ids of the vertices of
+/// its link lk(u, K), sorted; empty for a removed vertex. Public so that the bench's variants of S
+/// (`schipper_epsilon`, `schipper_time`) use the same dictionaries as [`schipper`].
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LinkDictionaries(Vec<Vec<u32>>);
+
+impl LinkDictionaries {
+    /// The dictionaries of `mesh`, one per vertex slot. O(n lg d).
+    pub fn new(mesh: &SurfaceMesh) -> Self {
+        let dict = (0..mesh.vertex_slots())
+            .map(|i| {
+                let v = VertexId::new(i);
+                if !mesh.is_vertex_live(v) {
+                    return Vec::new();
+                }
+                let mut link: Vec<u32> = mesh.neighbors(v).map(|w| w.0).collect();
+                link.sort_unstable();
+                link
+            })
+            .collect();
+        Self(dict)
     }
-    let (x, y) = (mesh.opposite_vertex(h).0, mesh.opposite_vertex(h.twin()).0);
-    !dv.iter()
-        .any(|&z| z != w.0 && z != x && z != y && dw.binary_search(&z).is_ok())
+
+    /// The degree of `v`: the size of D_v.
+    #[inline]
+    pub fn degree(&self, v: VertexId) -> u32 {
+        self.0[v.idx()].len() as u32
+    }
+
+    /// The link condition for `h = v → w` in `mesh`, whose dictionaries these are: K is not T4 and
+    /// no vertex of D_v but w and the two vertices opposite [v, w] belongs to D_w. O(d_v lg d_w).
+    #[inline]
+    pub fn link_condition(&self, mesh: &SurfaceMesh, h: HalfedgeId) -> bool {
+        let (v, w) = (mesh.origin(h), mesh.dest(h));
+        let (dv, dw) = (&self.0[v.idx()], &self.0[w.idx()]);
+        if dv.len() == 3 && dw.len() == 3 {
+            return false; // K is T4 (Proposition 6)
+        }
+        let (x, y) = (mesh.opposite_vertex(h).0, mesh.opposite_vertex(h.twin()).0);
+        !dv.iter()
+            .any(|&z| z != w.0 && z != x && z != y && dw.binary_search(&z).is_ok())
+    }
+
+    /// The update for contracting the edge between `removed` and `kept` into `kept`, `opposite`
+    /// being the edge's two opposite vertices: D_removed is emptied and returned, `removed` leaves
+    /// the other dictionaries, and `kept` and each vertex of D_removed but `kept` and `opposite`
+    /// enter each other's.
+    pub fn contract(
+        &mut self,
+        removed: VertexId,
+        kept: VertexId,
+        opposite: [VertexId; 2],
+    ) -> Vec<u32> {
+        let [x, y] = opposite;
+        let link = std::mem::take(&mut self.0[removed.idx()]);
+        for z in [kept, x, y] {
+            dict_remove(&mut self.0[z.idx()], removed.0);
+        }
+        for &z in &link {
+            if z != kept.0 && z != x.0 && z != y.0 {
+                let dz = &mut self.0[z as usize];
+                dict_remove(dz, removed.0);
+                dict_insert(dz, kept.0);
+                dict_insert(&mut self.0[kept.idx()], z);
+            }
+        }
+        link
+    }
 }
 
 fn dict_remove(d: &mut Vec<u32>, z: u32) {
