@@ -63,9 +63,10 @@
 //!   closes up only to that tolerance, so a site carried around a vertex of `T′` comes back
 //!   that far from itself, and with the tighter tolerance each trip added a new site (thousands
 //!   in one triangle of `chair_soup.off`, the wave out of its budget). Its dual merges sites
-//!   within [`CAPS_F64_DUAL_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_tolerance`]), chosen by
-//!   measurement on the shared meshes: with 1e-9 the traced Voronoi edges of `casting.off`'s
-//!   `T′` do not close up, with 1e-7 `chair_soup.off`'s merge sites of distinct cells.
+//!   within the default 1e-9 and, when the traced Voronoi edges do not close up, is built again
+//!   at [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]):
+//!   measured on the shared meshes, `casting.off`'s `T′` needs 1e-8, `torus_2304.obj`'s (exactly
+//!   co-circular grid quads) fails at 1e-8 and `chair_soup.off`'s at 1e-7.
 //! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
 //!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
 //!   off their line by an ulp, would otherwise produce.
@@ -103,9 +104,9 @@ use crate::voronoi::{
 /// see the module doc.
 pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
 
-/// In `f64`, the least relative tolerance of the dual of the wave on `T′`
-/// ([`VoronoiOptions::dual_tolerance`]): see the module doc.
-pub const CAPS_F64_DUAL_TOLERANCE: f64 = 1e-8;
+/// In `f64`, the tolerance at which the dual of the wave on `T′` is built again when it fails
+/// at its own ([`VoronoiOptions::dual_retry_tolerance`]): see the module doc.
+pub const CAPS_F64_DUAL_RETRY_TOLERANCE: f64 = 1e-8;
 
 /// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -572,7 +573,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         // to the same tolerance, else it adds the copies as new sites without end.
         let t = &mut wave_options.wave.point_tolerance;
         *t = t.max(CAPS_F64_CLOSING_TOLERANCE);
-        wave_options.dual_tolerance = wave_options.dual_tolerance.max(CAPS_F64_DUAL_TOLERANCE);
+        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
     }
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,

@@ -75,6 +75,9 @@ pub struct VoronoiOptions {
     /// In `f64`: sites of the dual closer than this times the longest side are one point (so
     /// near-co-circular sites make one polygon of the tessellation).
     pub dual_tolerance: f64,
+    /// In `f64`: when the dual fails at `dual_tolerance` (traced Voronoi edges that do not close
+    /// up), it is built again at this tolerance; the first error is reported if that fails too.
+    pub dual_retry_tolerance: Option<f64>,
 }
 
 impl Default for VoronoiOptions {
@@ -84,6 +87,7 @@ impl Default for VoronoiOptions {
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
             wave: WaveOptions::default(),
             dual_tolerance: WaveOptions::default().point_tolerance,
+            dual_retry_tolerance: None,
         }
     }
 }
@@ -241,7 +245,13 @@ fn wave_and_dual<S: Scalar>(
             labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
         }
     }
-    let out = dual::build_dual(p, &wave, &labels, options.dual_tolerance)?;
+    let out = match dual::build_dual(p, &wave, &labels, options.dual_tolerance) {
+        Err(first) if !S::EXACT => match options.dual_retry_tolerance {
+            Some(t) => dual::build_dual(p, &wave, &labels, t).map_err(|_| first)?,
+            None => return Err(first.into()),
+        },
+        built => built?,
+    };
     Ok(VoronoiDelaunay {
         tessellation: out.portalgon,
         diagram: out.diagram,
