@@ -239,7 +239,7 @@ impl PortalgonDoc {
     }
 
     /// Writes JSON (compact, or pretty-printed). Compact output is written by hand
-    /// ([`write_compact`], on several threads), with the bytes `serde_json::to_writer` gives for the document.
+    /// (`write_compact`, on several threads), with the bytes `serde_json::to_writer` gives for the document.
     ///
     /// # Errors
     /// [`PortalgonError::Io`]; [`PortalgonError::NonFinite`] if a number is NaN or infinite (JSON
