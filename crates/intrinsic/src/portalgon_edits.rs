@@ -256,39 +256,31 @@ impl<S: Scalar> Portalgon<S> {
         let set = LocalSet::new(self, polygons)?;
         let inside = |s: SideId| set.polygon(self.owner(s)).is_some();
         let internal = |s: SideId| self.mate(s).is_some_and(inside);
-        // Components of polygons through internal sides; vertex classes of the sides (start
-        // corners identified through internal sides), both on set-local indices.
-        let mut polygon_uf = UnionFind::new(set.polygons.len());
+        // Vertex classes of the sides (start corners identified through internal sides), on
+        // set-local side indices.
         let mut vertex_uf = UnionFind::new(set.side_count());
-        for (i, &p) in set.polygons.iter().enumerate() {
+        for &p in &set.polygons {
             for &s in self.polygon_sides(p) {
                 if let Some(t) = self.mate(s).filter(|&t| inside(t)) {
-                    let j = set.polygon(self.owner(t)).expect("inside");
-                    polygon_uf.union(i as u32, j as u32);
                     let (a, b) = (set.side(self, s), set.side(self, self.next_side(t)));
                     vertex_uf.union(a.expect("inside") as u32, b.expect("inside") as u32);
                 }
             }
         }
-        // Per local polygon its component; per vertex class (a root of `vertex_uf`) its lowest
-        // side and whether it is on the boundary.
-        let mut component_of_root = vec![usize::MAX; set.polygons.len()];
-        let mut out: Vec<Component> = Vec::new();
-        for (i, &p) in set.polygons.iter().enumerate() {
-            let r = polygon_uf.find(i as u32) as usize;
-            if component_of_root[r] == usize::MAX {
-                component_of_root[r] = out.len();
-                out.push(Component {
-                    polygons: Vec::new(),
-                    vertices: 0,
-                    edges: 0,
-                    euler_characteristic: 0,
-                    boundary_cycles: Vec::new(),
-                    interior_vertices: Vec::new(),
-                });
-            }
-            out[component_of_root[r]].polygons.push(p);
-        }
+        let mut out: Vec<Component> = set
+            .polygon_components(self)
+            .into_iter()
+            .map(|members| Component {
+                polygons: members.into_iter().map(|i| set.polygons[i]).collect(),
+                vertices: 0,
+                edges: 0,
+                euler_characteristic: 0,
+                boundary_cycles: Vec::new(),
+                interior_vertices: Vec::new(),
+            })
+            .collect();
+        // Per vertex class (a root of `vertex_uf`) its lowest side and whether it is on the
+        // boundary.
         let mut lowest = vec![SideId::INVALID; set.side_count()];
         let mut on_boundary = vec![false; set.side_count()];
         for c in &mut out {
@@ -353,33 +345,18 @@ impl<S: Scalar> Portalgon<S> {
         polygons: &[PolygonId],
     ) -> Result<Vec<Component>, EditError> {
         let set = LocalSet::new(self, polygons)?;
-        let mut uf = UnionFind::new(set.polygons.len());
-        let mut boundary_sides = vec![0usize; set.polygons.len()];
-        for (i, &p) in set.polygons.iter().enumerate() {
-            for &s in self.polygon_sides(p) {
-                match self.mate(s).and_then(|t| set.polygon(self.owner(t))) {
-                    Some(j) => {
-                        uf.union(i as u32, j as u32);
-                    }
-                    None => boundary_sides[i] += 1,
-                }
-            }
-        }
-        let mut group_of_root = vec![usize::MAX; set.polygons.len()];
-        let mut groups: Vec<(Vec<PolygonId>, usize)> = Vec::new();
-        for (i, &p) in set.polygons.iter().enumerate() {
-            let r = uf.find(i as u32) as usize;
-            if group_of_root[r] == usize::MAX {
-                group_of_root[r] = groups.len();
-                groups.push((Vec::new(), 0));
-            }
-            let g = &mut groups[group_of_root[r]];
-            g.0.push(p);
-            g.1 += boundary_sides[i];
-        }
         let mut out = Vec::new();
-        for (group, sides) in groups {
-            if sides == 2 {
+        for members in set.polygon_components(self) {
+            let group: Vec<PolygonId> = members.into_iter().map(|i| set.polygons[i]).collect();
+            let boundary_sides = group
+                .iter()
+                .flat_map(|&p| self.polygon_sides(p))
+                .filter(|&&s| {
+                    self.mate(s)
+                        .is_none_or(|t| set.polygon(self.owner(t)).is_none())
+                })
+                .count();
+            if boundary_sides == 2 {
                 out.extend(self.components(&group)?);
             }
         }
@@ -602,5 +579,30 @@ impl LocalSet {
     /// The number of sides of the set.
     fn side_count(&self) -> usize {
         self.offset.last().copied().unwrap_or(0)
+    }
+
+    /// The connected components of the set through the sides matched inside it: per component
+    /// the set-local indices of its polygons, increasing; components by their lowest polygon.
+    fn polygon_components<S: Scalar>(&self, p: &Portalgon<S>) -> Vec<Vec<usize>> {
+        let n = self.polygons.len();
+        let mut uf = UnionFind::new(n);
+        for (i, &q) in self.polygons.iter().enumerate() {
+            for &s in p.polygon_sides(q) {
+                if let Some(j) = p.mate(s).and_then(|t| self.polygon(p.owner(t))) {
+                    uf.union(i as u32, j as u32);
+                }
+            }
+        }
+        let mut component_of_root = vec![usize::MAX; n];
+        let mut out: Vec<Vec<usize>> = Vec::new();
+        for i in 0..n {
+            let r = uf.find(i as u32) as usize;
+            if component_of_root[r] == usize::MAX {
+                component_of_root[r] = out.len();
+                out.push(Vec::new());
+            }
+            out[component_of_root[r]].push(i);
+        }
+        out
     }
 }

@@ -180,7 +180,9 @@ impl<S: Scalar> Portalgon<S> {
             return Err(not_annulus());
         }
         for &s in &c.interior_vertices {
-            let (full_turn, angle) = self.is_full_turn(&self.sides_around(s), tolerance);
+            // Interior: every side around it is matched, so its star closes up.
+            let sides = crate::voronoi::star(self, s).ok_or_else(not_annulus)?;
+            let (full_turn, angle) = self.is_full_turn(&sides, tolerance);
             if !full_turn {
                 return Err(TubeError::NotFlat {
                     side: s.idx(),
@@ -192,21 +194,6 @@ impl<S: Scalar> Portalgon<S> {
             polygons: c.polygons.clone(),
             boundary,
         })
-    }
-
-    /// The sides starting at the start vertex of `s`, in rotation order from `s` (each next one
-    /// is the mate of the previous side of the last), up to the first unmatched side. O(degree).
-    pub(crate) fn sides_around(&self, s: SideId) -> Vec<SideId> {
-        let mut out = vec![s];
-        let mut x = s;
-        while let Some(y) = self.mate(self.prev_side(x)) {
-            if y == s {
-                break;
-            }
-            out.push(y);
-            x = y;
-        }
-        out
     }
 
     /// Whether the corner angles at the start corners of `sides` (one vertex) add up to 2π, and
