@@ -346,19 +346,9 @@ impl<S: Scalar> Portalgon<S> {
     ) -> Result<Vec<Component>, EditError> {
         let set = LocalSet::new(self, polygons)?;
         let mut out = Vec::new();
-        for members in set.polygon_components(self) {
+        for members in set.polygon_components_where(self, |boundary_sides| boundary_sides == 2) {
             let group: Vec<PolygonId> = members.into_iter().map(|i| set.polygons[i]).collect();
-            let boundary_sides = group
-                .iter()
-                .flat_map(|&p| self.polygon_sides(p))
-                .filter(|&&s| {
-                    self.mate(s)
-                        .is_none_or(|t| set.polygon(self.owner(t)).is_none())
-                })
-                .count();
-            if boundary_sides == 2 {
-                out.extend(self.components(&group)?);
-            }
+            out.extend(self.components(&group)?);
         }
         Ok(out)
     }
@@ -584,19 +574,42 @@ impl LocalSet {
     /// The connected components of the set through the sides matched inside it: per component
     /// the set-local indices of its polygons, increasing; components by their lowest polygon.
     fn polygon_components<S: Scalar>(&self, p: &Portalgon<S>) -> Vec<Vec<usize>> {
+        self.polygon_components_where(p, |_| true)
+    }
+
+    /// [`Self::polygon_components`], keeping only the components whose number of boundary sides
+    /// (sides not matched inside the set) satisfies `keep`; the others are never listed.
+    fn polygon_components_where<S: Scalar>(
+        &self,
+        p: &Portalgon<S>,
+        keep: impl Fn(usize) -> bool,
+    ) -> Vec<Vec<usize>> {
         let n = self.polygons.len();
         let mut uf = UnionFind::new(n);
+        let mut boundary_sides = vec![0usize; n];
         for (i, &q) in self.polygons.iter().enumerate() {
             for &s in p.polygon_sides(q) {
-                if let Some(j) = p.mate(s).and_then(|t| self.polygon(p.owner(t))) {
-                    uf.union(i as u32, j as u32);
+                match p.mate(s).and_then(|t| self.polygon(p.owner(t))) {
+                    // Each matched pair is seen from both polygons: unite once.
+                    Some(j) if j > i => {
+                        uf.union(i as u32, j as u32);
+                    }
+                    Some(_) => {}
+                    None => boundary_sides[i] += 1,
                 }
             }
         }
+        let mut boundary_of_root = vec![0usize; n];
+        let roots: Vec<usize> = (0..n).map(|i| uf.find(i as u32) as usize).collect();
+        for (i, &r) in roots.iter().enumerate() {
+            boundary_of_root[r] += boundary_sides[i];
+        }
         let mut component_of_root = vec![usize::MAX; n];
         let mut out: Vec<Vec<usize>> = Vec::new();
-        for i in 0..n {
-            let r = uf.find(i as u32) as usize;
+        for (i, &r) in roots.iter().enumerate() {
+            if !keep(boundary_of_root[r]) {
+                continue;
+            }
             if component_of_root[r] == usize::MAX {
                 component_of_root[r] = out.len();
                 out.push(Vec::new());

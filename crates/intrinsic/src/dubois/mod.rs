@@ -45,6 +45,11 @@
 //!   repetitions would change nothing either (DUBOIS.md §2.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
+//! - Two steps that provably find nothing are skipped (not in faithful mode): right after
+//!   GARDENING no component of `S(R_A)` is a tube (each became an inactive biface; the other
+//!   components are untouched), so SIMPLIFYTUBES' step 2 with `J` empty, and the second GARDENING
+//!   of a repetition whose SIMPLIFYTUBES changed nothing, would find no tube (debug builds check
+//!   both).
 //! - **\[reconstruction\]** `s` for a flat torus: the paper's `s = d/(6r)` comes from the caps of
 //!   Section 8; with no cone point there are no caps, and `s = d/2` (`d` the smallest height of a
 //!   triangle) is below the systole (DUBOIS.md §2.3). `N` is computed exactly from squared
@@ -509,6 +514,16 @@ impl<S: Scalar> Reduction<S> {
     /// # Errors
     /// A tube or edit error.
     pub fn simplify_tubes(&mut self) -> Result<(usize, usize), DuboisError> {
+        self.simplify_tubes_after(false)
+    }
+
+    /// [`Self::simplify_tubes`]; `after_gardening` says that GARDENING ran last, so that no
+    /// component of `S(R_A)` is a tube (each became an inactive biface, and the other components
+    /// are untouched): when `J` is empty step 2 then finds nothing, and is skipped.
+    fn simplify_tubes_after(
+        &mut self,
+        after_gardening: bool,
+    ) -> Result<(usize, usize), DuboisError> {
         let info = self.active_vertices()?;
         let loops = self.interior_loops(&info);
         let j: Vec<EdgeSides> = if self.active_is_torus()? {
@@ -549,6 +564,16 @@ impl<S: Scalar> Reduction<S> {
             // The kept loops stay cut for step 2.
             kept
         };
+        if j.is_empty() && after_gardening {
+            #[cfg(debug_assertions)]
+            assert_eq!(
+                self.clone().replace_tube_components(false)?,
+                (0, 0),
+                "a tube component right after GARDENING"
+            );
+            self.after_routine("SIMPLIFYTUBES", false);
+            return Ok((0, 0));
+        }
         self.cut(&j);
         let produced = self.replace_tube_components(false);
         self.glue_back(&j)?;
@@ -811,8 +836,22 @@ fn reduce_checked<S: Scalar>(
             let before = (r.portalgon.clone(), r.regions.clone());
             let edits_before = r.report.edits();
             r.gardening()?;
-            r.simplify_tubes()?;
-            r.gardening()?;
+            // Right after GARDENING no component of S(R_A) is a tube, so SIMPLIFYTUBES' step 2
+            // with `J` empty, and a second GARDENING after a SIMPLIFYTUBES that changed nothing,
+            // find nothing: the default skips them (faithful runs them; the tests compare).
+            let skip = !options.faithful;
+            let edits_before_tubes = r.report.edits();
+            r.simplify_tubes_after(skip)?;
+            if !skip || r.report.edits() != edits_before_tubes {
+                r.gardening()?;
+            } else {
+                #[cfg(debug_assertions)]
+                assert_eq!(
+                    r.clone().gardening()?,
+                    0,
+                    "a tube component after SIMPLIFYTUBES"
+                );
+            }
             r.delete_vertices()?;
             let cuts = r.insert_edges()?;
             passes += 1;
