@@ -13,8 +13,8 @@
 //!    caps (exact), the wave alone (exact, bounded events) and flipping (`f64`), each checked
 //!    against the known tessellation.
 //! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
-//!    (`flip_to_delaunay_unless_needle`: the needle test inside flipping's first pass), alternated,
-//!    best of 25.
+//!    (`flip_to_delaunay_unless_needle`: the needle test inside flipping's first pass): the
+//!    median over 101 adjacent pairs of runs of the ratio within a pair.
 //!
 //! ```text
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
@@ -44,9 +44,17 @@ use surftopo_intrinsic::{
     flip_to_delaunay_unless_needle,
 };
 
-/// Alternated runs of `flip` and `auto` per shared mesh (their best is compared: the two differ by
-/// a test per face, far below this machine's run-to-run noise, so many runs are needed).
-const AUTO_RUNS: usize = 25;
+/// Paired runs of `flip` and `auto` per shared mesh. The two differ by a test per face, far below
+/// a shared machine's run-to-run noise, so the figure is the median over the pairs of the ratio
+/// within a pair (the two runs of a pair are adjacent in time and see the same load; which runs
+/// first alternates from pair to pair).
+const AUTO_PAIRS: usize = 101;
+
+/// The median of `values` (sorted in place).
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
 
 fn q(s: &str) -> Rational {
     s.parse().expect("a rational")
@@ -352,23 +360,26 @@ fn main() {
         md.push_str(
             "\n## `auto` against `flip` on the ~100k-face shared meshes\n\n\
              `auto` = `flip_to_delaunay_unless_needle` (flipping with the needle test in its first pass \
-             over the faces), as `surftopo delaunay` runs it; runs alternated (flip, auto, flip, auto, …), \
-             best of 25. `choice / flip` is what the rule's test costs as a pass of its own \
-             (`choose_method_for_triangulation`, best of 25) against flipping; `auto / flip` compares \
-             the two whole runs (noisy on a shared machine).\n\n\
+             over the faces), as `surftopo delaunay` runs it. 101 pairs of runs (flip then auto, auto \
+             then flip, alternately); flip ms and auto ms are medians, `auto / flip` is the median over \
+             the pairs of the ratio within a pair (robust to the machine's load, which both runs of a \
+             pair share). `choice / flip` is what the rule's test costs as a pass of its own \
+             (`choose_method_for_triangulation`, best of 25) against flipping's median.\n\n\
              | mesh | F | auto chose | choice ms | flip ms | auto ms | choice / flip | auto / flip |\n|---|---:|---|---:|---:|---:|---:|---:|\n",
         );
         let flip_options = DelaunayOptions::default();
+        let mut worst_ratio: f64 = 0.0;
         for m in &meshes {
             let s = surftopo_testkit::load(m);
             let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
-            let (mut flip_best, mut auto_best) = (f64::INFINITY, f64::INFINITY);
             let mut chosen = Method::Flip;
-            for _ in 0..AUTO_RUNS {
+            let run_flip = || {
                 let mut t = tri.clone();
                 let start = Instant::now();
                 flip_to_delaunay(&mut t, &flip_options).expect("flips");
-                flip_best = flip_best.min(start.elapsed().as_secs_f64());
+                start.elapsed().as_secs_f64()
+            };
+            let mut run_auto = || {
                 let mut t = tri.clone();
                 let start = Instant::now();
                 chosen = match flip_to_delaunay_unless_needle(&mut t, &flip_options).expect("flips")
@@ -376,29 +387,48 @@ fn main() {
                     Some(_) => Method::Flip,
                     None => choose_method_for_needle(&t),
                 };
-                auto_best = auto_best.min(start.elapsed().as_secs_f64());
+                start.elapsed().as_secs_f64()
+            };
+            let (mut flips, mut autos, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+            for pair in 0..AUTO_PAIRS {
+                let (f, a) = if pair % 2 == 0 {
+                    let f = run_flip();
+                    (f, run_auto())
+                } else {
+                    let a = run_auto();
+                    (run_flip(), a)
+                };
+                flips.push(f);
+                autos.push(a);
+                ratios.push(a / f);
             }
-            let (_, choice_seconds) = best_of(AUTO_RUNS, || choose_method_for_triangulation(&tri));
+            let (flip_ms, auto_ms) = (median(&mut flips) * 1e3, median(&mut autos) * 1e3);
+            let ratio = median(&mut ratios);
+            worst_ratio = worst_ratio.max(ratio);
+            let (_, choice_seconds) = best_of(25, || choose_method_for_triangulation(&tri));
             writeln!(
                 md,
-                "| {} | {} | {chosen:?} | {:.2} | {:.1} | {:.1} | {:.3} | {:.3} |",
+                "| {} | {} | {chosen:?} | {:.2} | {flip_ms:.2} | {auto_ms:.2} | {:.3} | {ratio:.3} |",
                 m.file,
                 m.faces,
                 choice_seconds * 1e3,
-                flip_best * 1e3,
-                auto_best * 1e3,
-                choice_seconds / flip_best,
-                auto_best / flip_best
+                choice_seconds * 1e3 / flip_ms,
             )
             .expect("write to a string");
             let line = json!({
                 "kind": "auto_vs_flip", "mesh": m.file, "faces": m.faces,
-                "chosen": format!("{chosen:?}"), "choice_seconds": choice_seconds, "flip_seconds": flip_best,
-                "auto_seconds": auto_best, "ratio": auto_best / flip_best,
+                "chosen": format!("{chosen:?}"), "choice_seconds": choice_seconds,
+                "flip_median_seconds": flip_ms / 1e3, "auto_median_seconds": auto_ms / 1e3,
+                "pairs": AUTO_PAIRS, "median_pair_ratio": ratio,
             });
             writeln!(jsonl, "{line}").expect("write to a string");
-            eprintln!("{}: auto / flip = {:.3}", m.file, auto_best / flip_best);
+            eprintln!("{}: auto / flip = {ratio:.3}", m.file);
         }
+        writeln!(
+            md,
+            "\nLargest median ratio: {worst_ratio:.3} (target: at most 1.05)."
+        )
+        .expect("write to a string");
     }
 
     let results = out_dir.join("results");

@@ -312,49 +312,103 @@ fn dubois_with_caps_equals_flip_on_the_smallest_shared_meshes() {
 
 surftopo_testkit::shared_mesh_tests!(dubois_with_caps_equals_flip_on_the_smallest_shared_meshes);
 
-/// Every shared mesh, smallest first, 300 s each: the Laplacian within 1e-6 of flipping's (the
-/// deviation of each is printed), or a typed refusal (a numerical failure in `f64`), listed at
-/// the end.
+/// The variable naming the mesh [`dubois_against_flip_on_one_shared_mesh`] checks.
+const ONE_MESH_VARIABLE: &str = "SURFTOPO_DUBOIS_MESH";
+
+/// One shared mesh (its file name in [`ONE_MESH_VARIABLE`]): the child process of
+/// [`dubois_with_caps_equals_flip_on_every_shared_mesh`], which can then stop it at its time
+/// limit. Prints `RESULT agrees DEVIATION` or `RESULT refused WHY`; a disagreement beyond 1e-6 fails.
+#[test]
+#[ignore = "run by dubois_with_caps_equals_flip_on_every_shared_mesh"]
+fn dubois_against_flip_on_one_shared_mesh() {
+    let Ok(file) = std::env::var(ONE_MESH_VARIABLE) else {
+        return;
+    };
+    let mesh = shared_meshes()
+        .into_iter()
+        .find(|m| m.file == file)
+        .unwrap_or_else(|| panic!("no shared mesh {file}"));
+    match check_dubois_against_flip(&mesh, 1e-6) {
+        Ok(deviation) => println!("RESULT agrees {deviation:.1e}"),
+        Err(why) => println!("RESULT refused {why}"),
+    }
+}
+
+/// Every shared mesh, smallest first, each in a child process stopped after
+/// `SURFTOPO_SWEEP_SECONDS` (default 300): the Laplacian within 1e-6 of flipping's (the deviation
+/// of each is printed), or a typed refusal (a numerical failure in `f64`), listed at the end.
+/// Times grow with the faces: after two timeouts in a row the larger meshes are not run.
 #[test]
 #[ignore = "every shared mesh: run in release (cargo test --release -p surftopo-intrinsic --test caps -- --ignored)"]
 fn dubois_with_caps_equals_flip_on_every_shared_mesh() {
+    if std::env::var(ONE_MESH_VARIABLE).is_ok() {
+        return;
+    }
+    let limit = std::env::var("SURFTOPO_SWEEP_SECONDS")
+        .ok()
+        .and_then(|s| s.parse::<u64>().ok())
+        .unwrap_or(300);
     let mut meshes = shared_meshes();
     meshes.sort_by_key(|m| m.faces);
     let (mut agreed, mut skipped, mut disagreed) = (0, Vec::new(), Vec::new());
     let mut timeouts_in_a_row = 0;
     for m in &meshes {
-        // Times grow with the faces: after two timeouts in a row the larger meshes are not run.
         if timeouts_in_a_row == 2 {
             skipped.push(format!("{}: not run (two timeouts before it)", m.file));
             continue;
         }
-        let (tx, rx) = std::sync::mpsc::channel();
-        let mesh = m.clone();
         let start = std::time::Instant::now();
-        std::thread::spawn(move || {
-            let result = std::panic::catch_unwind(|| check_dubois_against_flip(&mesh, 1e-6));
-            let _ = tx.send(result);
-        });
-        let outcome = match rx.recv_timeout(std::time::Duration::from_secs(300)) {
-            Ok(Ok(Ok(deviation))) => {
-                timeouts_in_a_row = 0;
-                agreed += 1;
-                format!("agrees to {deviation:.1e}")
+        let mut child = std::process::Command::new(std::env::current_exe().unwrap())
+            .args([
+                "dubois_against_flip_on_one_shared_mesh",
+                "--exact",
+                "--ignored",
+                "--nocapture",
+            ])
+            .env(ONE_MESH_VARIABLE, &m.file)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        let finished = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break Some(status);
             }
-            Ok(Ok(Err(why))) => {
-                timeouts_in_a_row = 0;
+            if start.elapsed().as_secs() >= limit {
+                child.kill().unwrap();
+                child.wait().unwrap();
+                break None;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(100));
+        };
+        let mut stdout = String::new();
+        std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut stdout).unwrap();
+        let result = stdout
+            .lines()
+            .find_map(|l| l.strip_prefix("RESULT "))
+            .map(str::to_string);
+        timeouts_in_a_row = if finished.is_none() {
+            timeouts_in_a_row + 1
+        } else {
+            0
+        };
+        let outcome = match (finished, result) {
+            (None, _) => {
+                skipped.push(format!("{}: did not finish within {limit} s", m.file));
+                "timeout".to_string()
+            }
+            (Some(_), Some(r)) if r.starts_with("agrees ") => {
+                agreed += 1;
+                r.replace("agrees ", "agrees to ")
+            }
+            (Some(_), Some(r)) => {
+                let why = r.trim_start_matches("refused ").to_string();
                 skipped.push(why.clone());
                 format!("not compared: {why}")
             }
-            Ok(Err(_)) => {
-                timeouts_in_a_row = 0;
+            (Some(_), None) => {
                 disagreed.push(m.file.clone());
-                "DISAGREES".to_string()
-            }
-            Err(_) => {
-                timeouts_in_a_row += 1;
-                skipped.push(format!("{}: did not finish within 300 s", m.file));
-                "timeout".to_string()
+                "DISAGREES (or panicked)".to_string()
             }
         };
         eprintln!(
