@@ -440,7 +440,19 @@ impl<S: Scalar> Reduction<S> {
     /// # Errors
     /// [`PortalgonError::NotFlat`] when a vertex is not flat; other edit errors.
     pub fn delete_vertices(&mut self) -> Result<usize, DuboisError> {
-        let info = self.active_vertices()?;
+        self.delete_vertices_with(None)
+    }
+
+    /// [`Self::delete_vertices`] from `info` when given: the classification of `S(R_A)` as it
+    /// stands (debug builds check it).
+    fn delete_vertices_with(&mut self, info: Option<VertexInfo>) -> Result<usize, DuboisError> {
+        let info = match info {
+            Some(info) => {
+                debug_assert!(info == self.active_vertices()?, "a stale classification");
+                info
+            }
+            None => self.active_vertices()?,
+        };
         let sides_at = sides_by_vertex(&self.portalgon, &info);
         let mut blocked = vec![false; info.count()];
         let mut chosen: Vec<SideId> = Vec::new();
@@ -514,16 +526,18 @@ impl<S: Scalar> Reduction<S> {
     /// # Errors
     /// A tube or edit error.
     pub fn simplify_tubes(&mut self) -> Result<(usize, usize), DuboisError> {
-        self.simplify_tubes_after(false)
+        Ok(self.simplify_tubes_after(false)?.0)
     }
 
-    /// [`Self::simplify_tubes`]; `after_gardening` says that GARDENING ran last, so that no
-    /// component of `S(R_A)` is a tube (each became an inactive biface, and the other components
-    /// are untouched): when `J` is empty step 2 then finds nothing, and is skipped.
+    /// [`Self::simplify_tubes`], also returning the classification of `S(R_A)` it started from
+    /// (still that of `S(R_A)` when it changed nothing); `after_gardening` says that GARDENING
+    /// ran last, so that no component of `S(R_A)` is a tube (each became an inactive biface, and
+    /// the other components are untouched): when `J` is empty step 2 then finds nothing, and is
+    /// skipped.
     fn simplify_tubes_after(
         &mut self,
         after_gardening: bool,
-    ) -> Result<(usize, usize), DuboisError> {
+    ) -> Result<((usize, usize), VertexInfo), DuboisError> {
         let info = self.active_vertices()?;
         let loops = self.interior_loops(&info);
         let j: Vec<EdgeSides> = if self.active_is_torus()? {
@@ -572,14 +586,14 @@ impl<S: Scalar> Reduction<S> {
                 "a tube component right after GARDENING"
             );
             self.after_routine("SIMPLIFYTUBES", false);
-            return Ok((0, 0));
+            return Ok(((0, 0), info));
         }
         self.cut(&j);
         let produced = self.replace_tube_components(false);
         self.glue_back(&j)?;
         let produced = produced?;
         self.after_routine("SIMPLIFYTUBES", false);
-        Ok(produced)
+        Ok((produced, info))
     }
 
     /// GARDENING (Section 4.4): every component of `S(R_A)` that is a tube becomes a good biface
@@ -839,11 +853,17 @@ fn reduce_checked<S: Scalar>(
             // Right after GARDENING no component of S(R_A) is a tube, so SIMPLIFYTUBES' step 2
             // with `J` empty, and a second GARDENING after a SIMPLIFYTUBES that changed nothing,
             // find nothing: the default skips them (faithful runs them; the tests compare).
+            // The classification SIMPLIFYTUBES read is then also DELETEVERTICES' (the side ids
+            // are unchanged too: no edit, hence no compaction).
             let skip = !options.faithful;
             let edits_before_tubes = r.report.edits();
-            r.simplify_tubes_after(skip)?;
-            if !skip || r.report.edits() != edits_before_tubes {
+            let slots_before_tubes = r.portalgon.side_slots();
+            let (_, info) = r.simplify_tubes_after(skip)?;
+            let unchanged = r.report.edits() == edits_before_tubes
+                && r.portalgon.side_slots() == slots_before_tubes;
+            let info = if !skip || !unchanged {
                 r.gardening()?;
+                None
             } else {
                 #[cfg(debug_assertions)]
                 assert_eq!(
@@ -851,8 +871,9 @@ fn reduce_checked<S: Scalar>(
                     0,
                     "a tube component after SIMPLIFYTUBES"
                 );
-            }
-            r.delete_vertices()?;
+                Some(info)
+            };
+            r.delete_vertices_with(info)?;
             let cuts = r.insert_edges()?;
             passes += 1;
             // Every edit of a repetition is counted: a splice (tubes replaced), a marking
