@@ -253,7 +253,7 @@ impl<S: Scalar> Biface<S> {
 
     /// The gluing `g` of `AD` onto `CB` (footnote 2: `g(A) = C`, `g(D) = B`).
     pub fn gluing(&self) -> Motion<S> {
-        Motion::taking(&self.a, &self.d, &self.c, &self.b)
+        Motion::gluing(&self.a, &self.d, &self.c, &self.b)
     }
 
     /// Whether the gluing is a translation (`ω = 1` exactly): a flat cylinder, DUBOIS.md

@@ -23,7 +23,8 @@
 //!
 //! The corners are in a [`Scalar`] `S` (`Portalgon<S = f64>`): `f64`, or exact rationals
 //! ([`crate::geometry::Rational`]), where every edit is exact — [`Portalgon::merge`] displaces by
-//! footnote 2's motion ([`Motion::taking`], no square root) and lengths are compared squared
+//! footnote 2's motion ([`Motion::gluing`]: no square root in exact mode; in `f64` normalised to
+//! a rotation, so that rounding in short sides does not scale what is moved) and lengths are compared squared
 //! ([`Portalgon::side_length2`]). The plane geometry is [`crate::geometry`]'s; its predicates have
 //! exact signs in both modes.
 //!
@@ -416,6 +417,23 @@ impl<S: Scalar> Portalgon<S> {
     /// [`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`] (already matched, or
     /// `s == t`), [`PortalgonError::UnequalSides`].
     pub fn glue(&mut self, s: SideId, t: SideId, tolerance: f64) -> Result<(), PortalgonError> {
+        self.glue_at_scale(s, t, tolerance, 0.0)
+    }
+
+    /// [`Self::glue`], where in `f64` the lengths may also differ by up to `tolerance · scale`:
+    /// for a short side whose corners carry rounding errors of the size of a larger polygon
+    /// around it (`scale` its longest side), as when a side comes back from a long computation.
+    /// Exact mode ignores `scale`.
+    ///
+    /// # Errors
+    /// As [`Self::glue`].
+    pub fn glue_at_scale(
+        &mut self,
+        s: SideId,
+        t: SideId,
+        tolerance: f64,
+        scale: f64,
+    ) -> Result<(), PortalgonError> {
         for x in [s, t] {
             if !self.is_side_live(x) {
                 return Err(PortalgonError::NoSuchSide {
@@ -429,7 +447,9 @@ impl<S: Scalar> Portalgon<S> {
             }
         }
         let (la, lb) = (self.side_length2(s), self.side_length2(t));
-        if !S::lengths_match(&la, &lb, tolerance * (2.0 - tolerance)) {
+        let within_scale =
+            || !S::EXACT && (self.side_length(s) - self.side_length(t)).abs() <= tolerance * scale;
+        if !S::lengths_match(&la, &lb, tolerance * (2.0 - tolerance)) && !within_scale() {
             let (la, lb) = (self.side_length(s), self.side_length(t));
             let (polygon_a, side_a) = self.side_ref(s);
             let (polygon_b, side_b) = self.side_ref(t);
@@ -746,7 +766,7 @@ impl<S: Scalar> Portalgon<S> {
         };
         let q = self.owner(t);
         // Footnote 2's rigid motion taking start(t) to end(s) and end(t) to start(s).
-        let motion = Motion::taking(
+        let motion = Motion::gluing(
             self.start_ref(t),
             self.end_ref(t),
             self.end_ref(s),

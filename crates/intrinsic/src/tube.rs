@@ -335,7 +335,7 @@ impl<S: Scalar> Portalgon<S> {
                 let q = self.owner(t);
                 let tree_side = |x: PolygonId| parent.get(&x).map(|e| e.1);
                 if let Entry::Vacant(slot) = placed.entry(q) {
-                    let across = Motion::taking(
+                    let across = Motion::gluing(
                         self.start_ref(t),
                         self.end_ref(t),
                         self.end_ref(s),
@@ -360,7 +360,7 @@ impl<S: Scalar> Portalgon<S> {
         // Deck transformations of the non-tree sides: M_P ∘ (t onto s) ∘ M_Q⁻¹.
         let mut best: Option<(S, Motion<S>)> = None;
         for &(s, t) in &non_tree {
-            let across = Motion::taking(
+            let across = Motion::gluing(
                 self.start_ref(t),
                 self.end_ref(t),
                 self.end_ref(s),

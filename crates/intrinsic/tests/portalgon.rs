@@ -343,6 +343,75 @@ fn merge_displaces_the_other_polygon_rigidly() {
 }
 
 #[test]
+fn merge_in_f64_stays_rigid_across_a_short_side_whose_lengths_differ() {
+    // Two long thin triangles glued along a short side (length 1e-4) whose two copies differ by
+    // 1e-12 in length (rounding of an earlier computation): footnote 2's quotient would scale
+    // the moved triangle by 1 + 1e-8; the f64 gluing is a rotation, so its long sides keep their
+    // lengths.
+    let mut p = Portalgon::new();
+    let a = p
+        .add_polygon(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1e-4]])
+        .unwrap();
+    let short = 1e-4 + 1e-12;
+    let b = p
+        .add_polygon(&[[5.0, 5.0], [5.0 + short, 5.0], [5.0, 6.0]])
+        .unwrap();
+    let long_b = p.side_length(p.side(b, 1));
+    p.glue(p.side(a, 1), p.side(b, 0), 1e-6).unwrap();
+    let merged = p.merge(p.side(a, 1)).unwrap();
+    let lengths: Vec<f64> = p
+        .polygon_sides(merged)
+        .iter()
+        .map(|&s| p.side_length(s))
+        .collect();
+    assert!(
+        lengths.iter().any(|l| (l - long_b).abs() < 1e-14),
+        "the moved triangle's long side keeps its length {long_b}: {lengths:?}"
+    );
+}
+
+#[test]
+fn glue_at_scale_accepts_a_short_side_off_by_rounding_at_its_polygons_scale() {
+    // Sides of length 1e-4 and 1e-4 + 1e-11: 1e-7 apart relative to themselves, 1e-11 relative
+    // to a unit polygon.
+    let mut p = Portalgon::new();
+    let a = p
+        .add_polygon(&[[0.0, 0.0], [1e-4, 0.0], [0.0, 1.0]])
+        .unwrap();
+    let b = p
+        .add_polygon(&[[0.0, 0.0], [1e-4 + 1e-11, 0.0], [0.0, 1.0]])
+        .unwrap();
+    let (s, t) = (p.side(a, 0), p.side(b, 0));
+    assert!(matches!(
+        p.glue(s, t, 1e-9),
+        Err(PortalgonError::UnequalSides { .. })
+    ));
+    assert!(matches!(
+        p.glue_at_scale(s, t, 1e-9, 1e-3),
+        Err(PortalgonError::UnequalSides { .. })
+    ));
+    p.glue_at_scale(s, t, 1e-9, 1.0).unwrap();
+    assert_eq!(p.mate(s), Some(t));
+    // Exact mode ignores the scale: lengths must be equal.
+    let r = |x: &str| x.parse::<Rational>().unwrap();
+    let mut e = Portalgon::<Rational>::empty();
+    let a = e
+        .add_polygon(&[[r("0"), r("0")], [r("1/10000"), r("0")], [r("0"), r("1")]])
+        .unwrap();
+    let b = e
+        .add_polygon(&[
+            [r("0"), r("0")],
+            [r("1/10000") + r("1/100000000000"), r("0")],
+            [r("0"), r("1")],
+        ])
+        .unwrap();
+    assert!(
+        e.glue_at_scale(e.side(a, 0), e.side(b, 0), 1e-9, 1.0)
+            .is_err()
+    );
+}
+
+#[test]
 fn shortcuts_and_insert_edges() {
     let mut p = Portalgon::new();
     // A kite: the diagonal 1-3 (length 2) is shorter than 0-2 (length 4).

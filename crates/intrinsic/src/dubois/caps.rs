@@ -55,10 +55,14 @@
 //! - **\[`f64` only\] Closing tolerance.** Every interior vertex of `T₁` is flat and every
 //!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
 //!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
-//!   motions of many merges; on `T₁` they use a relative tolerance of at least
-//!   [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than 1e-9. The output is checked
-//!   independently (the tests compare the Laplacian with the flip route's: to 1e-9 or 1e-8 on the
-//!   smallest shared meshes; `results/dubois-every-mesh.txt` gives each mesh's deviation).
+//!   motions of many merges (rigid in `f64`: [`crate::geometry::Motion::gluing`]); on `T₁` they
+//!   use a relative tolerance of at least [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than
+//!   1e-9. A cap is glued back to its side of `T₁` with that tolerance relative to the longest
+//!   side of the polygon that side ends in ([`Portalgon::glue_at_scale`]): cap sides are far
+//!   shorter than the polygons ALGORITHM leaves around them, whose rounding they carry. The
+//!   output is checked independently (the tests compare the Laplacian with the flip route's: to
+//!   1e-9 on the smallest shared meshes; `results/dubois-every-mesh.txt` gives each mesh's
+//!   deviation).
 //! - **\[`f64` only\] The wave on `T′`** identifies two points of a constellation within
 //!   [`CAPS_F64_CLOSING_TOLERANCE`] times the longest side (the wave's default is 1e-9): `T′`
 //!   closes up only to that tolerance, so a site carried around a vertex of `T′` comes back
@@ -454,7 +458,14 @@ fn put_caps_back_mapped<S: Scalar>(
                         boundary.idx()
                     ))
                 })?;
-                out.glue(new_side[x.idx()], now, tolerance)?;
+                // In f64, `now` comes out of ALGORITHM with the rounding of the polygons it
+                // was merged with: its length is compared at the scale of its polygon.
+                let scale = out
+                    .polygon_sides(out.owner(now))
+                    .iter()
+                    .map(|&z| out.side_length(z))
+                    .fold(0.0, f64::max);
+                out.glue_at_scale(new_side[x.idx()], now, tolerance, scale)?;
             }
         }
     }

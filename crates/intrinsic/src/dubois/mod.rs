@@ -693,7 +693,7 @@ impl<S: Scalar> Reduction<S> {
         }
         let (c, a, b) = (p.start(beta0), p.end(beta0), p.end(e));
         let motion =
-            crate::geometry::Motion::taking(p.start_ref(e_mate), p.end_ref(e_mate), &b, &a);
+            crate::geometry::Motion::gluing(p.start_ref(e_mate), p.end_ref(e_mate), &b, &a);
         let d = motion.apply(p.end_ref(p.next_side(e_mate)));
         let Ok(biface) = Biface::new(a, d, b, c, self.tolerance) else {
             return Ok(None);

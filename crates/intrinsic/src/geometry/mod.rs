@@ -209,6 +209,33 @@ impl<S: Scalar> Motion<S> {
         }
     }
 
+    /// The motion gluing side `s0 s1` onto side `t0 t1` (`s0` to `t0`, `s1` to `t1`): footnote 2's
+    /// [`Motion::taking`] in exact mode, where matched sides have equal lengths and `|ω| = 1`
+    /// exactly; in `f64`, where they agree only up to rounding, `ω` is normalised to modulus 1
+    /// (as [`Motion::rigid_taking`]). Footnote 2's quotient would otherwise scale the moved
+    /// polygon by the ratio of the two lengths, and a short side with a small absolute error
+    /// makes that ratio far from 1: every later side of the polygon inherits the error, and
+    /// repeated merges compound it.
+    pub fn gluing(s0: &Point<S>, s1: &Point<S>, t0: &Point<S>, t1: &Point<S>) -> Self {
+        let m = Motion::taking(s0, s1, t0, t1);
+        if S::EXACT {
+            return m;
+        }
+        let modulus2 = norm2(&m.rotation).to_f64();
+        let Some(modulus) = S::from_f64(modulus2.sqrt()).filter(|k| !k.is_zero()) else {
+            return m;
+        };
+        let rotation = [
+            m.rotation[0].clone() / modulus.clone(),
+            m.rotation[1].clone() / modulus,
+        ];
+        let translation = sub(t0, &complex_mul(&rotation, s0));
+        Motion {
+            rotation,
+            translation,
+        }
+    }
+
     /// The image of `z`.
     #[inline]
     pub fn apply(&self, z: &Point<S>) -> Point<S> {

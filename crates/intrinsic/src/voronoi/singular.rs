@@ -2,7 +2,7 @@
 //! from 2π), or one vertex when there is none (a flat torus, Proof of Proposition 3).
 //!
 //! Exact mode decides flatness exactly (DUBOIS.md §2.5): the star of the vertex is unfolded into
-//! the plane of its first corner by composing the gluing maps ([`Motion::taking`], rational), and
+//! the plane of its first corner by composing the gluing maps ([`Motion::gluing`], exact on rationals), and
 //! the vertex is flat iff the composed map around the star is the identity and the corners wind
 //! exactly once around the vertex (the number of corner wedges, half-open, that contain the
 //! direction of the first side). In `f64` the angle sum is summed with `atan2` and compared with 2π
@@ -36,7 +36,7 @@ pub(crate) fn star<S: Scalar>(p: &Portalgon<S>, s: SideId) -> Option<Vec<SideId>
 /// The gluing map from the frame of the polygon of `q` to the frame of the polygon of `s` that
 /// puts `q` onto its mate `s` (footnote 2: `start(q) ↦ end(s)`, `end(q) ↦ start(s)`).
 pub(crate) fn gluing<S: Scalar>(p: &Portalgon<S>, q: SideId, s: SideId) -> Motion<S> {
-    Motion::taking(p.start_ref(q), p.end_ref(q), p.end_ref(s), p.start_ref(s))
+    Motion::gluing(p.start_ref(q), p.end_ref(q), p.end_ref(s), p.start_ref(s))
 }
 
 /// Whether direction `r` lies in the half-open wedge from `a` (included) counter-clockwise to `b`
