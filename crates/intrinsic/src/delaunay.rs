@@ -102,7 +102,7 @@ pub(crate) fn flip_keeping_tan_half_sq(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
 ) -> Result<(FlipReport, Vec<f64>), DelaunayError> {
-    let flipped = flip_unless(tri, options, |_| false)?;
+    let flipped = flip_unless(tri, options, false)?;
     Ok(flipped.expect("no face is refused"))
 }
 
@@ -118,18 +118,18 @@ pub fn flip_to_delaunay_unless_needle(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
 ) -> Result<Option<FlipReport>, DelaunayError> {
-    let flipped = flip_unless(tri, options, |[a, b, c]| {
-        crate::method_choice::is_needle(a, b, c)
-    })?;
+    let flipped = flip_unless(tri, options, true)?;
     Ok(flipped.map(|(report, _)| report))
 }
 
-/// The flip algorithm; `Ok(None)` when `refuse` holds for the sides of some face in the first
-/// pass (before any flip).
+/// The flip algorithm; with `stop_at_needle`, `Ok(None)` when some face is a needle after the
+/// first pass (before any flip: [`crate::method_choice::has_needle_given_half_angles`], one scan
+/// of the half-angle cache that pass fills). A flag rather than a closure: `flip` and `auto` run
+/// the same machine code, which differs only by that scan.
 fn flip_unless(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
-    refuse: impl Fn([f64; 3]) -> bool,
+    stop_at_needle: bool,
 ) -> Result<Option<(FlipReport, Vec<f64>)>, DelaunayError> {
     let tol = options.tolerance;
     if !(tol.is_finite() && tol >= 0.0) {
@@ -150,13 +150,13 @@ fn flip_unless(
     for f in tri.mesh().faces() {
         let halfedges = tri.mesh().face_halfedges(f);
         let sides = halfedges.map(|h| tri.halfedge_length(h));
-        if refuse(sides) {
-            return Ok(None);
-        }
         let smallest = store_tan_half_sq(halfedges, sides, &mut t2);
         if smallest.is_nan() || smallest <= 0.0 {
             tri.validate()?;
         }
+    }
+    if stop_at_needle && crate::method_choice::has_needle_given_half_angles(tri, &t2) {
+        return Ok(None);
     }
     let max_flips = options
         .max_flips
