@@ -690,6 +690,12 @@ impl<S: Scalar> Portalgon<S> {
                 j,
             });
         }
+        Ok(self.cut_along_arc(p, i, j))
+    }
+
+    /// [`Self::cut`] of a live polygon along corners `i, j` known to bound an arc (as
+    /// [`Self::shortcut`] returns them: its test is not repeated).
+    fn cut_along_arc(&mut self, p: PolygonId, i: usize, j: usize) -> (SideId, SideId) {
         let sides = std::mem::take(&mut self.polygons[p.idx()]);
         let k = sides.len();
         let q = PolygonId(self.polygons.len() as u32);
@@ -720,7 +726,7 @@ impl<S: Scalar> Portalgon<S> {
         self.set_polygon(q, second);
         self.live_polygons += 1;
         self.live_sides += 2;
-        Ok((in_p, in_q))
+        (in_p, in_q)
     }
 
     pub(crate) fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {
@@ -920,7 +926,7 @@ impl<S: Scalar> Portalgon<S> {
                 i: 0,
                 j: 0,
             })?;
-            let (_, in_q) = self.cut(x, i, j)?;
+            let (_, in_q) = self.cut_along_arc(x, i, j);
             todo.push(self.owner(in_q));
             todo.push(x);
         }
