@@ -532,16 +532,47 @@ fn lemma_28<S: Scalar>(
     }
 }
 
+/// The sides starting at each vertex, increasing ids per vertex, in one allocation (the
+/// routines that need them run on every vertex of large portalgons, many times): `at[v]`.
+pub(crate) struct SidesByVertex {
+    offset: Vec<u32>,
+    sides: Vec<SideId>,
+}
+
+impl std::ops::Index<usize> for SidesByVertex {
+    type Output = [SideId];
+    fn index(&self, v: usize) -> &[SideId] {
+        &self.sides[self.offset[v] as usize..self.offset[v + 1] as usize]
+    }
+}
+
+impl SidesByVertex {
+    /// The vertices' sides, by vertex.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = &[SideId]> {
+        (0..self.offset.len() - 1).map(|v| &self[v])
+    }
+}
+
 /// The sides starting at each vertex (of the set `info` classifies).
-pub(crate) fn sides_by_vertex<S: Scalar>(p: &Portalgon<S>, info: &VertexInfo) -> Vec<Vec<SideId>> {
-    let mut at = vec![Vec::new(); info.count()];
+pub(crate) fn sides_by_vertex<S: Scalar>(p: &Portalgon<S>, info: &VertexInfo) -> SidesByVertex {
+    // Sides outside the classified set (`vertex_info_within`) have no class.
+    let class = |s: SideId| Some(info.class[s.idx()] as usize).filter(|&v| v < info.count());
+    let mut offset = vec![0u32; info.count() + 1];
+    for v in p.sides().filter_map(class) {
+        offset[v + 1] += 1;
+    }
+    for v in 0..info.count() {
+        offset[v + 1] += offset[v];
+    }
+    let mut next = offset.clone();
+    let mut sides = vec![SideId::INVALID; offset[info.count()] as usize];
     for s in p.sides() {
-        // Sides outside the classified set (`vertex_info_within`) have no class.
-        if let Some(v) = at.get_mut(info.class[s.idx()] as usize) {
-            v.push(s);
+        if let Some(v) = class(s) {
+            sides[next[v] as usize] = s;
+            next[v] += 1;
         }
     }
-    at
+    SidesByVertex { offset, sides }
 }
 
 /// The two triangles of a biface as a portalgon (`(A, B, C)` then `(A, D, B)`, matched as in

@@ -764,11 +764,11 @@ fn check_input<S: Scalar>(
         });
     }
     let info = t.vertex_info();
-    for (v, sides) in sides_by_vertex(t, &info).into_iter().enumerate() {
+    for (v, sides) in sides_by_vertex(t, &info).iter().enumerate() {
         if !info.interior[v] {
             continue;
         }
-        let (flat, angle) = t.is_full_turn(&sides, tolerance);
+        let (flat, angle) = t.is_full_turn(sides, tolerance);
         if !flat {
             return Err(DuboisError::NotFlat {
                 side: sides[0].idx(),
