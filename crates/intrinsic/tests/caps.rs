@@ -333,8 +333,9 @@ fn dubois_against_flip_on_one_shared_mesh() {
     }
 }
 
-/// Every shared mesh, smallest first, each in a child process stopped after
-/// `SURFTOPO_SWEEP_SECONDS` (default 300): the Laplacian within 1e-6 of flipping's (the deviation
+/// Every shared mesh (of at least `SURFTOPO_SWEEP_MIN_FACES` faces, default 0), smallest first,
+/// each in a child process stopped after `SURFTOPO_SWEEP_SECONDS` (default 300): the Laplacian
+/// within 1e-6 of flipping's (the deviation
 /// of each is printed), or a typed refusal (a numerical failure in `f64`), listed at the end.
 /// Times grow with the faces: after two timeouts in a row the larger meshes are not run.
 #[test]
@@ -347,7 +348,12 @@ fn dubois_with_caps_equals_flip_on_every_shared_mesh() {
         .ok()
         .and_then(|s| s.parse::<u64>().ok())
         .unwrap_or(300);
+    let min_faces = std::env::var("SURFTOPO_SWEEP_MIN_FACES")
+        .ok()
+        .and_then(|s| s.parse::<usize>().ok())
+        .unwrap_or(0);
     let mut meshes = shared_meshes();
+    meshes.retain(|m| m.faces >= min_faces);
     meshes.sort_by_key(|m| m.faces);
     let (mut agreed, mut skipped, mut disagreed) = (0, Vec::new(), Vec::new());
     let mut timeouts_in_a_row = 0;
