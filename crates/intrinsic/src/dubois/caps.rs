@@ -58,8 +58,9 @@
 //!   motions of many merges (rigid in `f64`: [`crate::geometry::Motion::gluing`]); on `T₁` they
 //!   use a relative tolerance of at least [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than
 //!   1e-9. A cap is glued back to its side of `T₁` with that tolerance relative to the longest
-//!   side of the polygon that side ends in ([`Portalgon::glue_at_scale`]): cap sides are far
-//!   shorter than the polygons ALGORITHM leaves around them, whose rounding they carry. The
+//!   side of that side's polygon, in `T₁` or after ALGORITHM, whichever is longer
+//!   ([`Portalgon::glue_at_scale`]): cap sides are far shorter than the polygons around them,
+//!   whose rounding they carry. The
 //!   output is checked independently (the tests compare the Laplacian with the flip route's: to
 //!   1e-9 on the smallest shared meshes; `results/dubois-every-mesh.txt` gives each mesh's
 //!   deviation).
@@ -459,12 +460,15 @@ fn put_caps_back_mapped<S: Scalar>(
                     ))
                 })?;
                 // In f64, `now` comes out of ALGORITHM with the rounding of the polygons it
-                // was merged with: its length is compared at the scale of its polygon.
-                let scale = out
-                    .polygon_sides(out.owner(now))
-                    .iter()
-                    .map(|&z| out.side_length(z))
-                    .fold(0.0, f64::max);
+                // was merged with: its length is compared at the scale of its polygon, before
+                // ALGORITHM (in T₁) and after.
+                let longest = |p: &Portalgon<S>, s: SideId| {
+                    p.polygon_sides(p.owner(s))
+                        .iter()
+                        .map(|&z| p.side_length(z))
+                        .fold(0.0, f64::max)
+                };
+                let scale = longest(&out, now).max(longest(&cut.remainder, boundary));
                 out.glue_at_scale(new_side[x.idx()], now, tolerance, scale)?;
             }
         }
