@@ -593,7 +593,7 @@ fn correspondence(
             let what = MismatchKind::Length { a: la, b: lb };
             return Err(fail(pa, pb, polygons_done, what));
         }
-        let motion = Motion::rigid_taking(
+        let motion = Motion::gluing(
             a.start_ref(sa),
             a.end_ref(sa),
             b.start_ref(sb),

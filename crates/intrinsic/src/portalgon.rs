@@ -24,8 +24,8 @@
 //! The corners are in a [`Scalar`] `S` (`Portalgon<S = f64>`): `f64`, or exact rationals
 //! ([`crate::geometry::Rational`]), where every edit is exact — [`Portalgon::merge`] displaces by
 //! footnote 2's motion ([`Motion::gluing`]: no square root in exact mode; in `f64` normalised to
-//! a rotation, so that rounding in short sides does not scale what is moved) and lengths are compared squared
-//! ([`Portalgon::side_length2`]). The plane geometry is [`crate::geometry`]'s; its predicates have
+//! a rotation, so that rounding in short sides does not scale what is moved) and lengths are
+//! compared squared ([`Portalgon::side_length2`]). The plane geometry is [`crate::geometry`]'s; its predicates have
 //! exact signs in both modes.
 //!
 //! What is checked: [`Portalgon::add_polygon`] validates a polygon (at least three finite corners,

@@ -60,10 +60,9 @@
 //!   1e-9. A cap is glued back to its side of `T₁` with that tolerance relative to the longest
 //!   side of that side's polygon, in `T₁` or after ALGORITHM, whichever is longer
 //!   ([`Portalgon::glue_at_scale`]): cap sides are far shorter than the polygons around them,
-//!   whose rounding they carry. The
-//!   output is checked independently (the tests compare the Laplacian with the flip route's: to
-//!   1e-9 on the smallest shared meshes; `results/dubois-every-mesh.txt` gives each mesh's
-//!   deviation).
+//!   whose rounding they carry. The output is checked independently (the tests compare the
+//!   Laplacian with the flip route's: to 1e-9 on the smallest shared meshes;
+//!   `results/dubois-every-mesh.txt` gives each mesh's deviation).
 //! - **\[`f64` only\] The wave on `T′`** identifies two points of a constellation within
 //!   [`CAPS_F64_CLOSING_TOLERANCE`] times the longest side (the wave's default is 1e-9): `T′`
 //!   closes up only to that tolerance, so a site carried around a vertex of `T′` comes back

@@ -212,17 +212,17 @@ impl<S: Scalar> Motion<S> {
     /// The motion gluing side `s0 s1` onto side `t0 t1` (`s0` to `t0`, `s1` to `t1`): footnote 2's
     /// [`Motion::taking`] in exact mode, where matched sides have equal lengths and `|ω| = 1`
     /// exactly; in `f64`, where they agree only up to rounding, `ω` is normalised to modulus 1
-    /// (as [`Motion::rigid_taking`]). Footnote 2's quotient would otherwise scale the moved
-    /// polygon by the ratio of the two lengths, and a short side with a small absolute error
-    /// makes that ratio far from 1: every later side of the polygon inherits the error, and
-    /// repeated merges compound it.
+    /// (a rigid motion taking `s0` to `t0` and the direction of `s1 − s0` to that of `t1 − t0`).
+    /// Footnote 2's quotient would otherwise scale the moved polygon by the ratio of the two
+    /// lengths, and a short side with a small absolute error makes that ratio far from 1: every
+    /// later side of the polygon inherits the error, and repeated merges compound it.
     pub fn gluing(s0: &Point<S>, s1: &Point<S>, t0: &Point<S>, t1: &Point<S>) -> Self {
         let m = Motion::taking(s0, s1, t0, t1);
         if S::EXACT {
             return m;
         }
-        let modulus2 = norm2(&m.rotation).to_f64();
-        let Some(modulus) = S::from_f64(modulus2.sqrt()).filter(|k| !k.is_zero()) else {
+        let modulus = norm2(&m.rotation).to_f64().sqrt();
+        let Some(modulus) = S::from_f64(modulus).filter(|k| !k.is_zero()) else {
             return m;
         };
         let rotation = [
@@ -294,28 +294,6 @@ impl<S: Scalar> Motion<S> {
     /// Whether this is the identity (exactly).
     pub fn is_identity(&self) -> bool {
         self.is_translation() && self.translation[0].is_zero() && self.translation[1].is_zero()
-    }
-}
-
-impl Motion<f64> {
-    /// The rigid motion taking `s0` to `t0` and the direction of `s1 − s0` to that of `t1 − t0`:
-    /// [`Motion::taking`] with `ω` normalised to modulus 1 (a square root, so `f64` only). For sides
-    /// whose lengths agree only up to a tolerance, this keeps the motion rigid (footnote 2's
-    /// quotient would scale by the ratio of the lengths).
-    pub fn rigid_taking(
-        s0: &Point<f64>,
-        s1: &Point<f64>,
-        t0: &Point<f64>,
-        t1: &Point<f64>,
-    ) -> Self {
-        let w = Motion::taking(s0, s1, t0, t1).rotation;
-        let modulus = w[0].hypot(w[1]);
-        let rotation = [w[0] / modulus, w[1] / modulus];
-        let translation = sub(t0, &complex_mul(&rotation, s0));
-        Motion {
-            rotation,
-            translation,
-        }
     }
 }
 
