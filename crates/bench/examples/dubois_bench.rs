@@ -13,8 +13,8 @@
 //!    caps (exact), the wave alone (exact, bounded events) and flipping (`f64`), each checked
 //!    against the known tessellation.
 //! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
-//!    (`flip_to_delaunay_unless_needle`: the needle test inside flipping's first pass): the
-//!    median over 101 adjacent pairs of runs of the ratio within a pair.
+//!    (`flip_to_delaunay_unless_needle`: the needle test on the half-angle cache of flipping's
+//!    first pass): the median over 101 adjacent pairs of runs of the ratio within a pair.
 //!
 //! ```text
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
@@ -44,7 +44,7 @@ use surftopo_intrinsic::{
     flip_to_delaunay_unless_needle,
 };
 
-/// Paired runs of `flip` and `auto` per shared mesh. The two differ by a test per face, far below
+/// Paired runs of `flip` and `auto` per shared mesh. The two differ by one scan of a cache, far below
 /// a shared machine's run-to-run noise, so the figure is the median over the pairs of the ratio
 /// within a pair (the two runs of a pair are adjacent in time and see the same load; which runs
 /// first alternates from pair to pair).
@@ -359,8 +359,8 @@ fn main() {
     } else {
         md.push_str(
             "\n## `auto` against `flip` on the ~100k-face shared meshes\n\n\
-             `auto` = `flip_to_delaunay_unless_needle` (flipping with the needle test in its first pass \
-             over the faces), as `surftopo delaunay` runs it. 101 pairs of runs (flip then auto, auto \
+             `auto` = `flip_to_delaunay_unless_needle` (flipping with the needle test on the half-angle \
+             cache of its first pass), as `surftopo delaunay` runs it. 101 pairs of runs (flip then auto, auto \
              then flip, alternately); flip ms and auto ms are medians, `auto / flip` is the median over \
              the pairs of the ratio within a pair (robust to the machine's load, which both runs of a \
              pair share). `choice / flip` is what the rule's test costs as a pass of its own \

@@ -109,8 +109,9 @@ pub(crate) fn flip_keeping_tan_half_sq(
 /// [`flip_to_delaunay`] for `--method auto` ([`crate::method_choice`]): `Ok(None)`, before any
 /// flip and with the triangulation unchanged (mollified first when `options.mollify` asks), when
 /// some triangle's aspect ratio exceeds [`crate::method_choice::AUTO_ASPECT_LIMIT`] (a degenerate
-/// one counts). The needle test runs in flipping's own first pass over the faces, on the lengths
-/// that pass loads, so `auto` costs flipping next to nothing on the inputs it flips.
+/// one counts). The needle test reads the half-angle cache flipping's own first pass fills
+/// (`method_choice::has_needle_given_half_angles`), so `auto` costs flipping next to
+/// nothing on the inputs it flips.
 ///
 /// # Errors
 /// As [`flip_to_delaunay`].
@@ -152,6 +153,10 @@ fn flip_unless(
         let sides = halfedges.map(|h| tri.halfedge_length(h));
         let smallest = store_tan_half_sq(halfedges, sides, &mut t2);
         if smallest.is_nan() || smallest <= 0.0 {
+            // A degenerate triangle counts as a needle ([`crate::method_choice::is_needle`]).
+            if stop_at_needle {
+                return Ok(None);
+            }
             tri.validate()?;
         }
     }

@@ -9,9 +9,9 @@
 //!   `x = 10³` (aspect 5·10⁵), wrong from `x = 3·10³` (aspect 4.5·10⁶). [`AUTO_ASPECT_LIMIT`]
 //!   = 10⁵ leaves a margin of 45 below the first failure.
 //! - Aspect at most the limit: [`Method::Flip`] (on the shared meshes flipping is the fastest
-//!   method). The CLI runs the test inside flipping's first pass over the faces
-//!   ([`crate::delaunay::flip_to_delaunay_unless_needle`], leaving before any flip at the first
-//!   needle), so on the inputs it flips `auto` adds nothing but the test itself.
+//!   method). The CLI runs the test on the half-angle cache flipping's first pass fills
+//!   ([`crate::delaunay::flip_to_delaunay_unless_needle`], leaving before any flip when there
+//!   is a needle), so on the inputs it flips `auto` adds nothing but the test itself.
 //! - Above the limit, no cone point: [`Method::Dubois`] (Theorem 1: time polylogarithmic in the
 //!   aspect ratio, exact in exact mode).
 //! - Above the limit with a cone point: [`Method::Dubois`] when [`DUBOIS_TAKES_CONE_POINTS`]

@@ -220,3 +220,27 @@ fn flipping_unless_a_needle_leaves_needles_untouched_and_flips_the_rest_like_fli
         }
     }
 }
+
+#[test]
+fn a_degenerate_triangle_counts_as_a_needle_before_any_flip() {
+    use surftopo_intrinsic::{
+        DelaunayOptions, IntrinsicTriangulation, flip_to_delaunay, flip_to_delaunay_unless_needle,
+    };
+    // The unit tetrahedron with one triangle flattened: its sides 1, 1, 2.
+    let mesh = surftopo_mesh::generators::tetrahedron().mesh;
+    let mut lengths = vec![1.0; mesh.edge_slots()];
+    let f = mesh.faces().next().unwrap();
+    let e = mesh.face_halfedges(f)[0].edge();
+    lengths[e.idx()] = 2.0;
+    let tri = IntrinsicTriangulation::from_parts(mesh, lengths).unwrap();
+    let options = DelaunayOptions::default();
+    let mut flipped = tri.clone();
+    assert!(flip_to_delaunay(&mut flipped, &options).is_err());
+    let mut fused = tri.clone();
+    assert!(
+        flip_to_delaunay_unless_needle(&mut fused, &options)
+            .unwrap()
+            .is_none()
+    );
+    assert_eq!(fused.lengths(), tri.lengths(), "nothing flipped");
+}

@@ -346,7 +346,7 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     }
 }
 
-/// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test in its first pass
+/// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test after its first pass
 /// ([`delaunay_with_stats_unless_needle`]); at a needle, nothing is flipped and the rule goes on
 /// from there ([`choose_method_for_needle`]).
 fn run_auto(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
