@@ -611,3 +611,123 @@ fn numerical_refusals_are_told_from_bad_input() {
     let e = voronoi_delaunay(&open, &VoronoiOptions::default()).unwrap_err();
     assert!(!e.is_numerical(), "{e}");
 }
+
+/// The flat 1 × 2 torus cut into the `m × m` grid of rectangles (each split by a diagonal: exactly
+/// co-circular quadrilaterals), every vertex moved by a random vector of length at most `jitter`:
+/// nearly co-circular quadrilaterals whose Voronoi vertices lie within rounding distance of
+/// each other. Lengths from the moved positions (vertex `j m + i` at `(i, 2j) / m`).
+fn jittered_rectangle_torus(m: u32, jitter: f64, seed: u64) -> IntrinsicTriangulation {
+    let grid =
+        IntrinsicTriangulation::from_portalgon(&flat_torus_portalgon(&0.0, m).unwrap(), 1e-12)
+            .unwrap();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let moved: Vec<[f64; 2]> = (0..m * m)
+        .map(|_| {
+            let (r, a) = (
+                jitter * rng.random::<f64>(),
+                std::f64::consts::TAU * rng.random::<f64>(),
+            );
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    let (mi, mf) = (i64::from(m), f64::from(m));
+    let cell = |v: u32| (i64::from(v) % mi, i64::from(v) / mi);
+    let (mesh, lengths) = grid.into_parts();
+    let mut jittered = lengths.clone();
+    for e in mesh.edges() {
+        let [a, b] = mesh.edge_vertices(e);
+        let ((ia, ja), (ib, jb)) = (cell(a.0), cell(b.0));
+        // The edge's grid step from a to b, told by its length (1, 2 or √5, over m).
+        let (di, dj) = [(1, 0), (0, 1), (-1, 1), (1, -1), (-1, 0), (0, -1)]
+            .into_iter()
+            .find(|&(di, dj): &(i64, i64)| {
+                let expected = (di as f64).hypot(2.0 * dj as f64) / mf;
+                (ia + di).rem_euclid(mi) == ib
+                    && (ja + dj).rem_euclid(mi) == jb
+                    && (expected - lengths[e.0 as usize]).abs() < 1e-12
+            })
+            .expect("an edge of the rectangle grid");
+        let (da, db) = (moved[a.0 as usize], moved[b.0 as usize]);
+        let dx = di as f64 / mf + db[0] - da[0];
+        let dy = 2.0 * dj as f64 / mf + db[1] - da[1];
+        jittered[e.0 as usize] = dx.hypot(dy);
+    }
+    IntrinsicTriangulation::from_parts(mesh, jittered).unwrap()
+}
+
+/// Nearly co-circular sites in `f64`, around the dual's tolerance (1e-9 of the longest side) and
+/// on both sides of it: the dual gives a tessellation whose polygons have empty circles and whose
+/// Laplacian is the flip route's (to 1e-6: one route may merge a nearly co-circular polygon that
+/// the other splits), or refuses with its typed error; exactly co-circular and well separated
+/// sites are answered. The retry that pools the sites of Voronoi vertices taken for one (as
+/// Dubois' route runs it) answers where the first attempt refused.
+#[test]
+fn nearly_co_circular_sites_in_f64_give_the_flip_route_or_a_typed_refusal() {
+    // Retried at the same tolerance: only the pooling can answer differently.
+    let retried = VoronoiOptions {
+        dual_retry_tolerance: Some(VoronoiOptions::default().dual_tolerance),
+        ..VoronoiOptions::default()
+    };
+    let mut rescued = 0;
+    for (seed, jitter) in [0.0, 1e-9, 3e-9, 1e-8, 3e-8, 1e-7, 1e-6]
+        .into_iter()
+        .enumerate()
+    {
+        for m in [5, 8] {
+            let what = format!("m = {m}, jitter {jitter:e}");
+            let tri = jittered_rectangle_torus(m, jitter, seed as u64);
+            let (p, _) = tri.to_portalgon();
+            let must_answer = jitter == 0.0 || jitter >= 1e-6;
+            let first = match voronoi_delaunay(&p, &VoronoiOptions::default()) {
+                Ok(v) => {
+                    check_empty_circles(&v);
+                    assert_laplacian_close(&tri, &v, 1e-6, &what);
+                    if must_answer {
+                        assert_same_as_flip(&tri, &p, &v, &what);
+                    }
+                    true
+                }
+                Err(VoronoiError::Dual(DualError::Trace { .. })) if !must_answer => false,
+                Err(e) => panic!("{what}: {e}"),
+            };
+            match voronoi_delaunay(&p, &retried) {
+                Ok(v) => {
+                    assert_laplacian_close(&tri, &v, 1e-6, &what);
+                    rescued += usize::from(!first);
+                }
+                Err(VoronoiError::Dual(DualError::Trace { .. })) if !must_answer => {}
+                Err(e) => panic!("{what}: {e}"),
+            }
+        }
+    }
+    assert!(
+        rescued > 0,
+        "the retry answered nowhere the first attempt refused"
+    );
+}
+
+/// The cotan Laplacians of `v`'s triangulation and of the flip route's agree to `tolerance`
+/// relative to the largest diagonal entry.
+fn assert_laplacian_close(
+    tri: &IntrinsicTriangulation,
+    v: &VoronoiDelaunay<f64>,
+    tolerance: f64,
+    what: &str,
+) {
+    let mut flipped = tri.clone();
+    flip_to_delaunay(&mut flipped, &DelaunayOptions::default()).unwrap();
+    let (la, lb) = (
+        cotan_laplacian(&v.triangulation().unwrap()),
+        cotan_laplacian(&flipped),
+    );
+    let scale = (0..lb.n).map(|i| lb.get(i, i).abs()).fold(0.0, f64::max);
+    for i in 0..la.n {
+        for (j, _) in la.row(i).chain(lb.row(i)) {
+            let (a, b) = (la.get(i, j as usize), lb.get(i, j as usize));
+            assert!(
+                (a - b).abs() <= tolerance * scale,
+                "{what}: L[{i}][{j}] {a} vs {b}"
+            );
+        }
+    }
+}

@@ -37,6 +37,16 @@
 //! - In `f64` nearest points, vertices and parameters are compared with a tolerance relative to
 //!   the longest side (`point_tolerance`): near-co-circular points are merged into one polygon, as
 //!   the flip route merges near-co-circular triangles. In exact mode every comparison is exact.
+//! - In `f64` a followed edge continues, in each triangle it enters, from that triangle's own
+//!   copies of its two sites (found within the wave's tolerance) and from the point of their
+//!   bisector nearest to where it entered: on a portalgon that closes up only to a tolerance
+//!   (Dubois' `T′`) the copies carried by the gluings drift off the constellation's.
+//! - In `f64`, when the dual fails, `wave_and_dual` builds it again with clusters
+//!   merged (`merge_clusters`): a Voronoi vertex found within the tolerance of a recorded one,
+//!   seeing sites the recorded one does not (near-co-circular sites whose Voronoi vertices are
+//!   a rounding apart, each seeing some of them), adds those within the tolerance of its circle
+//!   to it, so the cluster is one polygon. Not the first attempt: the pooled polygon can be off
+//!   its circle by a few tolerances, more than the flip route's co-circularity test allows.
 
 use std::cmp::Ordering;
 
@@ -107,6 +117,8 @@ struct Dual<'a, S: Scalar> {
     p: &'a Portalgon<S>,
     wave: &'a Wave<S>,
     eps: f64,
+    /// Whether Voronoi vertices taken for the same one pool their sites ([`Self::absorb`]).
+    merge_clusters: bool,
     instances: Vec<Vec<Instance<S>>>,
     /// The most triangles a followed edge may cross (a guard against an `f64` loop).
     step_budget: usize,
@@ -125,6 +137,17 @@ fn rot_right<S: Scalar>(v: &Point<S>) -> Point<S> {
     [v[1].clone(), -v[0].clone()]
 }
 
+/// The point of the bisector of `a` and `b` reached from `x` along `b − a`.
+fn onto_bisector<S: Scalar>(x: &Point<S>, a: &Point<S>, b: &Point<S>) -> Point<S> {
+    let w = sub(b, a);
+    let ww = dot(&w, &w);
+    if ww.is_zero() {
+        return x.clone();
+    }
+    let excess = dist2(x, a) - dist2(x, b);
+    sub(x, &scale(&(excess / (ww.clone() + ww)), &w))
+}
+
 /// Builds the Delaunay tessellation (and the Voronoi diagram) from a finished wave; `labels[c]`
 /// is the output vertex label of vertex class `c` (of V).
 pub(crate) fn build_dual<S: Scalar>(
@@ -132,12 +155,14 @@ pub(crate) fn build_dual<S: Scalar>(
     wave: &Wave<S>,
     labels: &[u32],
     point_tolerance: f64,
+    merge_clusters: bool,
 ) -> Result<DualOutput<S>, DualError> {
     let scale = p.sides().map(|s| p.side_length(s)).fold(0.0f64, f64::max);
     let mut dual = Dual {
         p,
         wave,
         eps: point_tolerance * scale,
+        merge_clusters,
         instances: vec![Vec::new(); p.polygon_slots()],
         step_budget: 4 * (p.polygon_slots() + wave.total_points()) + 16,
     };
@@ -424,10 +449,10 @@ impl<S: Scalar> Dual<'_, S> {
     }
 
     /// Records the vertex at `v` in triangle `q` unless known; returns its index and whether it
-    /// is new.
+    /// is to be explored (new, or in `f64` known with sites added by [`Self::absorb`]).
     fn record(&mut self, q: PolygonId, v: Point<S>) -> Option<(usize, bool)> {
         if let Some(k) = self.instance_at(q, &v) {
-            return Some((k, false));
+            return Some((k, self.absorb(q, k, &v)));
         }
         let mut sites = self.nearest(q, &v);
         if sites.len() < 3 {
@@ -443,6 +468,35 @@ impl<S: Scalar> Dual<'_, S> {
             polygon: None,
         });
         Some((self.instances[q.idx()].len() - 1, true))
+    }
+
+    /// In `f64`, adds to instance `k` of `q` the nearest sites of `v`, a point taken for the
+    /// same vertex ([`Self::instance_at`]) that it lacks, kept counter-clockwise around the
+    /// instance; returns whether any was added. Near-co-circular sites give Voronoi vertices
+    /// closer than the tolerance, each with only some of the sites: they are one vertex of the
+    /// merged (near-co-circular) polygon, as the flip route merges near-co-circular triangles;
+    /// the Voronoi edges between them, shorter than the tolerance, are not followed.
+    fn absorb(&mut self, q: PolygonId, k: usize, v: &Point<S>) -> bool {
+        if S::EXACT || !self.merge_clusters {
+            return false;
+        }
+        let at = self.instances[q.idx()][k].at.clone();
+        let mut sites = self.instances[q.idx()][k].sites.clone();
+        let pts = self.pts(q);
+        let radius = dist2(&at, &pts[sites[0] as usize]).to_f64().sqrt();
+        let before = sites.len();
+        for i in self.nearest(q, v) {
+            let off = dist2(&at, &pts[i as usize]).to_f64().sqrt() - radius;
+            if !sites.contains(&i) && off.abs() <= 4.0 * self.eps {
+                sites.push(i);
+            }
+        }
+        if sites.len() == before {
+            return false;
+        }
+        self.sort_around(q, &at, &mut sites);
+        self.instances[q.idx()][k].sites = sites;
+        true
     }
 
     /// Whether the segment from a point on the edge of sites `i`, `j` to the exit is all on that
@@ -556,7 +610,8 @@ impl<S: Scalar> Dual<'_, S> {
     }
 
     /// The instance of the vertex at `v` in triangle `q`: at the same point, or (in `f64`, for
-    /// near-co-circular sites) with the same nearest sites.
+    /// near-co-circular sites) one with the same nearest sites as `v` (when merging clusters:
+    /// holding all of them).
     fn instance_at(&self, q: PolygonId, v: &Point<S>) -> Option<usize> {
         let list = &self.instances[q.idx()];
         if let Some(k) = list.iter().position(|inst| self.same_point(&inst.at, v)) {
@@ -566,11 +621,19 @@ impl<S: Scalar> Dual<'_, S> {
             return None;
         }
         let mut sites = self.nearest(q, v);
+        if sites.len() < 3 {
+            return None;
+        }
         sites.sort_unstable();
         list.iter().position(|inst| {
-            let mut own = inst.sites.clone();
-            own.sort_unstable();
-            own == sites
+            if self.merge_clusters {
+                // Three sites fix the vertex: an instance holding them all is this one.
+                sites.iter().all(|i| inst.sites.contains(i))
+            } else {
+                let mut own = inst.sites.clone();
+                own.sort_unstable();
+                own == sites
+            }
         })
     }
 
@@ -618,6 +681,15 @@ impl<S: Scalar> Dual<'_, S> {
             };
             let ia = self.wave.find(tri, &ya).ok_or_else(|| missing(&ya))?;
             let ib = self.wave.find(tri, &yb).ok_or_else(|| missing(&yb))?;
+            if !S::EXACT && step > 0 {
+                // The sites are found in this triangle's constellation within the wave's
+                // tolerance, not where the gluings carried them (`T′` closes up only to that
+                // tolerance): continue from this triangle's copies, on their bisector.
+                let pts = self.pts(tri);
+                (ya, yb) = (pts[ia as usize].clone(), pts[ib as usize].clone());
+                dir = rot_right(&sub(&yb, &ya));
+                x = onto_bisector(&x, &ya, &yb);
+            }
             let (exit, t_exit) = self.exit(tri, &x, &dir);
             if matches!(exit, Exit::None) {
                 return Err("the edge does not leave a triangle".into());

@@ -77,7 +77,9 @@ pub struct VoronoiOptions {
     /// near-co-circular sites make one polygon of the tessellation).
     pub dual_tolerance: f64,
     /// In `f64`: when the dual fails at `dual_tolerance` (traced Voronoi edges that do not close
-    /// up), it is built again at this tolerance; the first error is reported if that fails too.
+    /// up), it is built again at `dual_tolerance` pooling the sites of Voronoi vertices taken
+    /// for one (see the dual's module doc), then at this tolerance; the first error is reported
+    /// if both fail.
     pub dual_retry_tolerance: Option<f64>,
 }
 
@@ -246,9 +248,12 @@ fn wave_and_dual<S: Scalar>(
             labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
         }
     }
-    let out = match dual::build_dual(p, &wave, &labels, options.dual_tolerance) {
+    let tolerance = options.dual_tolerance;
+    let out = match dual::build_dual(p, &wave, &labels, tolerance, false) {
         Err(first) if !S::EXACT => match options.dual_retry_tolerance {
-            Some(t) => dual::build_dual(p, &wave, &labels, t).map_err(|_| first)?,
+            Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true)
+                .or_else(|_| dual::build_dual(p, &wave, &labels, t, false))
+                .map_err(|_| first)?,
             None => return Err(first.into()),
         },
         built => built?,
