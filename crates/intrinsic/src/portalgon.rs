@@ -224,6 +224,22 @@ impl<S: Scalar> Portalgon<S> {
         Self::default()
     }
 
+    /// The same portalgon (ids, matching and labels kept) with every corner coordinate mapped by
+    /// `f`, e.g. into another scalar type.
+    pub fn map_coordinates<T: Scalar>(&self, f: impl Fn(&S) -> T) -> Portalgon<T> {
+        Portalgon {
+            start: self.start.iter().map(|[x, y]| [f(x), f(y)]).collect(),
+            owner: self.owner.clone(),
+            mate: self.mate.clone(),
+            label: self.label.clone(),
+            slot: self.slot.clone(),
+            next: self.next.clone(),
+            polygons: self.polygons.clone(),
+            live_polygons: self.live_polygons,
+            live_sides: self.live_sides,
+        }
+    }
+
     /// Number of live polygons.
     pub fn polygon_count(&self) -> usize {
         self.live_polygons
@@ -726,7 +742,22 @@ impl<S: Scalar> Portalgon<S> {
         self.set_polygon(q, second);
         self.live_polygons += 1;
         self.live_sides += 2;
+        if !S::EXACT {
+            self.recenter(p);
+            self.recenter(q);
+        }
         (in_p, in_q)
+    }
+
+    /// In `f64`, translates polygon `p` so that its first corner is the origin: a piece cut
+    /// from a large polygon keeps that polygon's frame, where its coordinates can be many times
+    /// its own size (thousands of times in `T′` of a mesh), and every later rounding (motions of
+    /// merges, gluings) is relative to the coordinates, not to the piece.
+    fn recenter(&mut self, p: PolygonId) {
+        let origin = self.start(self.polygons[p.idx()][0]);
+        for &x in &self.polygons[p.idx()] {
+            self.start[x.idx()] = sub(&self.start[x.idx()], &origin);
+        }
     }
 
     pub(crate) fn set_polygon(&mut self, p: PolygonId, sides: Vec<SideId>) {

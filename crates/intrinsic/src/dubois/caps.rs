@@ -99,7 +99,9 @@ use super::{
     DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, Reduction,
     delaunay_tessellation_flat, first_cone_point, reduce_with_boundary,
 };
-use crate::geometry::Scalar;
+use std::any::TypeId;
+
+use crate::geometry::{DoubleDouble, Scalar};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, voronoi_delaunay,
@@ -362,7 +364,7 @@ pub fn cut_caps_at<S: Scalar>(
     let is_cap = |p: PolygonId| is_cap.get(p.idx()).copied().unwrap_or(false);
     let remaining: Vec<PolygonId> = t0.polygons().filter(|&p| !is_cap(p)).collect();
     let (remainder, to_remainder) = t0.sub_portalgon(&remaining);
-    let remainder = in_local_frames(&remainder)?;
+    let remainder = in_local_frames(&remainder, 1e-9)?;
     let l1_2 = remainder
         .sides()
         .map(|s| remainder.side_length2(s))
@@ -384,7 +386,7 @@ pub fn cut_caps_at<S: Scalar>(
 /// origin (same side ids, labels and matching): the frames ALGORITHM's merges start from are then
 /// local, so that in `f64` rounding is relative to the polygons' sizes rather than to the
 /// coordinates of the input (cap-sized pieces lie far from the origin). Exact in exact mode.
-fn in_local_frames<S: Scalar>(p: &Portalgon<S>) -> Result<Portalgon<S>, CapsError> {
+fn in_local_frames<S: Scalar>(p: &Portalgon<S>, tolerance: f64) -> Result<Portalgon<S>, CapsError> {
     let mut out = Portalgon::empty();
     for q in p.polygons() {
         let c = p.corners(q);
@@ -401,10 +403,42 @@ fn in_local_frames<S: Scalar>(p: &Portalgon<S>) -> Result<Portalgon<S>, CapsErro
     for s in p.sides() {
         if let Some(t) = p.mate(s).filter(|&t| s < t) {
             // Translations keep lengths (exactly in exact mode, to rounding in `f64`).
-            out.glue(s, t, 1e-9)?;
+            out.glue(s, t, tolerance)?;
         }
     }
     Ok(out)
+}
+
+/// The closed triangular portalgon `t` (in `f64`) laid out again in double-double: one length
+/// per edge (its lower side id's, from the corners), each triangle placed from its three
+/// lengths, so that matched sides agree to double-double rounding instead of differing by the
+/// rounding of two independent `f64` layouts (which a short piece cut from the edge, a cap
+/// side, would carry as a large relative error). A triangle the new lengths make degenerate
+/// keeps its corners. Ids, matching and labels are kept.
+fn laid_out_in_double_double<S: Scalar>(t: &Portalgon<S>) -> Portalgon<DoubleDouble> {
+    let mut out = t.map_coordinates(|x| DoubleDouble::from_f64_exact(x.to_f64()));
+    let length2 = |p: &Portalgon<DoubleDouble>, s: SideId| {
+        let s = p.mate(s).map_or(s, |m| m.min(s));
+        p.side_length2(s)
+    };
+    for q in t.polygons() {
+        let &[s0, s1, s2] = t.polygon_sides(q) else {
+            continue;
+        };
+        let [a2, b2, c2] = [s0, s1, s2].map(|s| length2(&out, s));
+        let a = a2.sqrt();
+        // Corner 0 at the origin, corner 1 at (a, 0), corner 2 at (x, y): |2 − 0| = c, |2 − 1| = b.
+        let x = (a2 + c2 - b2) / (a + a);
+        let y2 = c2 - x * x;
+        if y2.sign() != std::cmp::Ordering::Greater {
+            continue;
+        }
+        let zero = DoubleDouble::zero();
+        out.start[s0.idx()] = [zero, zero];
+        out.start[s1.idx()] = [a, zero];
+        out.start[s2.idx()] = [x, y2.sqrt()];
+    }
+    out
 }
 
 /// Section 8's last step (Proposition 2's output `T′`): the cap triangles of `cut` added to
@@ -577,7 +611,23 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             reduced: flat.reduced,
         });
     }
-    let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(t, options)?;
+    let (t_prime, reduction, cut, apexes) = if TypeId::of::<S>() == TypeId::of::<f64>() {
+        // The reduction in double-double, `T′` rounded back in local frames (module doc).
+        let t_dd = laid_out_in_double_double(t);
+        let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
+        let t_prime = in_local_frames(&t_prime, CAPS_F64_CLOSING_TOLERANCE)?
+            .map_coordinates(|x| S::from_f64(x.to_f64()).unwrap_or_else(S::zero));
+        let cut = (cut.cone_points, cut.caps.len());
+        (t_prime, reduction, cut, apexes)
+    } else {
+        let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(t, options)?;
+        (
+            t_prime,
+            reduction,
+            (cut.cone_points, cut.caps.len()),
+            apexes,
+        )
+    };
     let mut wave_options = VoronoiOptions {
         sources: Sources::Singular,
         angle_tolerance: options.angle_tolerance,
@@ -600,8 +650,8 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
     Ok(ConeDelaunay {
         delaunay,
         reduction,
-        cone_points: cut.cone_points,
-        cap_triangles: cut.caps.len(),
+        cone_points: cut.0,
+        cap_triangles: cut.1,
         reduced: t_prime,
     })
 }

@@ -18,9 +18,11 @@
 //!
 //! Points are `[S; 2]` ([`Point`]): `Point<f64>` is the crate's `Point2`.
 
+mod double_double;
 mod rational;
 mod scalar;
 
+pub use double_double::DoubleDouble;
 pub use rational::{ParseRationalError, Rational};
 pub use scalar::Scalar;
 
@@ -221,8 +223,10 @@ impl<S: Scalar> Motion<S> {
         if S::EXACT {
             return m;
         }
-        let modulus = norm2(&m.rotation).to_f64().sqrt();
-        let Some(modulus) = S::from_f64(modulus).filter(|k| !k.is_zero()) else {
+        let Some(modulus) = norm2(&m.rotation)
+            .approximate_sqrt()
+            .filter(|k| !k.is_zero())
+        else {
             return m;
         };
         let rotation = [

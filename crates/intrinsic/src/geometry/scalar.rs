@@ -6,8 +6,8 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use super::Point;
 
-/// An ordered field for plane geometry: `f64` (rounded constructions, exact-sign predicates) or
-/// [`super::Rational`] (exact). Operators take values; clone where a value is reused.
+/// An ordered field for plane geometry: `f64` (rounded constructions, exact-sign predicates),
+/// [`super::DoubleDouble`] (about 106 bits) or [`super::Rational`] (exact). Operators take values; clone where a value is reused.
 pub trait Scalar:
     Clone
     + fmt::Debug
@@ -52,6 +52,11 @@ pub trait Scalar:
     fn half(&self) -> Self;
     /// The largest integer not above the value.
     fn floor(&self) -> Self;
+
+    /// The square root to the type's precision, for rounded types (`None` for exact ones).
+    fn approximate_sqrt(&self) -> Option<Self> {
+        None
+    }
 
     /// The sign of the value, compared with zero.
     fn sign(&self) -> Ordering {
@@ -129,6 +134,9 @@ impl Scalar for f64 {
     }
     fn lengths_match(a: &Self, b: &Self, tolerance: f64) -> bool {
         (a - b).abs() <= tolerance * a.abs().max(b.abs())
+    }
+    fn approximate_sqrt(&self) -> Option<Self> {
+        Some(self.sqrt())
     }
 
     /// Shewchuk's adaptive orientation predicate: the exact sign for the given doubles.

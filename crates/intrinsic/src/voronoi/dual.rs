@@ -108,6 +108,22 @@ pub enum DualError {
         /// What went wrong.
         why: String,
     },
+    /// The traced polygons and gluings close up, but not into a tessellation of the surface
+    /// with V as its vertex set (an `f64` failure that no local check saw).
+    #[error(
+        "the traced tessellation has {vertices} vertices and Euler characteristic {euler}, where \
+         V has {sources} vertices and the surface Euler characteristic {expected}"
+    )]
+    Topology {
+        /// Vertices of the traced tessellation.
+        vertices: usize,
+        /// Vertices in V.
+        sources: usize,
+        /// Its Euler characteristic.
+        euler: i64,
+        /// The surface's.
+        expected: i64,
+    },
     /// A polygon or a gluing of the tessellation was refused.
     #[error(transparent)]
     Portalgon(#[from] PortalgonError),
@@ -156,6 +172,7 @@ pub(crate) fn build_dual<S: Scalar>(
     labels: &[u32],
     point_tolerance: f64,
     merge_clusters: bool,
+    sources: usize,
 ) -> Result<DualOutput<S>, DualError> {
     let scale = p.sides().map(|s| p.side_length(s)).fold(0.0f64, f64::max);
     let mut dual = Dual {
@@ -235,10 +252,24 @@ pub(crate) fn build_dual<S: Scalar>(
             diagram.edges.push(segments);
         }
     }
+    let (vertices, expected, euler) = (out.vertex_classes().1, euler(p), euler(&out));
+    if vertices != sources || euler != expected {
+        return Err(DualError::Topology {
+            vertices,
+            sources,
+            euler,
+            expected,
+        });
+    }
     Ok(DualOutput {
         portalgon: out,
         diagram,
     })
+}
+
+/// `V − E + F` of a closed portalgon.
+fn euler<S: Scalar>(p: &Portalgon<S>) -> i64 {
+    p.vertex_classes().1 as i64 - (p.side_count() / 2) as i64 + p.polygon_count() as i64
 }
 
 /// Where a ray leaves a triangle.

@@ -249,10 +249,12 @@ fn wave_and_dual<S: Scalar>(
         }
     }
     let tolerance = options.dual_tolerance;
-    let out = match dual::build_dual(p, &wave, &labels, tolerance, false) {
+    let count = labels.len();
+    let v = sources.iter().filter(|&&c| (c as usize) < count).count();
+    let out = match dual::build_dual(p, &wave, &labels, tolerance, false, v) {
         Err(first) if !S::EXACT => match options.dual_retry_tolerance {
-            Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true)
-                .or_else(|_| dual::build_dual(p, &wave, &labels, t, false))
+            Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true, v)
+                .or_else(|_| dual::build_dual(p, &wave, &labels, t, false, v))
                 .map_err(|_| first)?,
             None => return Err(first.into()),
         },
