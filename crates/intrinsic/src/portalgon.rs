@@ -686,7 +686,8 @@ impl<S: Scalar> Portalgon<S> {
     /// Cuts polygon `p` along the arc between its corners `i` and `j` (INSERTEDGES' elementary
     /// step, Section 4.1): `p` keeps corners `i..=j` and a new polygon gets corners `j..=i`; the two
     /// new sides (from j to i in `p`, from i to j in the new polygon) are matched to each other
-    /// and returned in that order. O(k).
+    /// and returned in that order. In rounded arithmetic both pieces are then translated so
+    /// that their first corner is the origin (exact mode keeps the corners). O(k).
     ///
     /// # Errors
     /// [`PortalgonError::NoSuchPolygon`], [`PortalgonError::NotAnArc`].

@@ -52,6 +52,19 @@
 //!   in each face `f`, and the corners of `f` are at least `h_f` apart, so caps stay disjoint and
 //!   inside their faces; radii only grow (`h ≥ d`), and `N` is still computed from the global
 //!   `d` (an upper bound).
+//! - **\[`f64` only\] Double-double reduction.** [`delaunay_tessellation_dubois`] on `f64`
+//!   input runs Proposition 2 (caps, ALGORITHM, caps back) in
+//!   [`crate::geometry::DoubleDouble`] (about 106 bits), the wave and its dual in `f64`: `T₀` is
+//!   laid out again from one length per edge (so matched sides agree to that precision), and
+//!   `T′` is rounded back to `f64` in local frames (first corner at the origin). In `f64` the
+//!   caps and the pieces of thin triangles give sides thousands of times shorter than the
+//!   polygons holding them, whose coordinates (a merged polygon's frame) are larger still;
+//!   every motion rounds at the coordinates' scale, so the two copies of a short side come to
+//!   disagree in direction by `ulp · |coordinates| / |side|`, and `T′` gets pairs of false cone
+//!   points (on `chassis_upright.off`'s `T′`, ±6.8e-5 rad in `f64`), which the cotangents of
+//!   the Laplacian amplify. Pieces cut from a polygon are also moved to their own frame
+//!   ([`Portalgon::cut`]). Measured on `kitten.off`: 1.55 times the time of an `f64`
+//!   reduction. [`proposition_2`] itself runs in the scalar type it is given.
 //! - **\[`f64` only\] Closing tolerance.** Every interior vertex of `T₁` is flat and every
 //!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
 //!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
@@ -61,7 +74,7 @@
 //!   side of that side's polygon, in `T₁` or after ALGORITHM, whichever is longer
 //!   ([`Portalgon::glue_at_scale`]): cap sides are far shorter than the polygons around them,
 //!   whose rounding they carry. The output is checked independently (the tests compare the
-//!   Laplacian with the flip route's: to 1e-9 on the smallest shared meshes;
+//!   Laplacian with the flip route's: to 1e-12 on the smallest shared meshes;
 //!   `results/dubois-every-mesh.txt` gives each mesh's deviation).
 //! - **\[`f64` only\] The wave on `T′`** identifies two points of a constellation within
 //!   [`CAPS_F64_CLOSING_TOLERANCE`] times the longest side (the wave's default is 1e-9): `T′`

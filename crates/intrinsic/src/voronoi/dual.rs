@@ -41,6 +41,10 @@
 //!   copies of its two sites (found within the wave's tolerance) and from the point of their
 //!   bisector nearest to where it entered: on a portalgon that closes up only to a tolerance
 //!   (Dubois' `T′`) the copies carried by the gluings drift off the constellation's.
+//! - The traced tessellation must have V's vertices (one vertex class per source) and the
+//!   surface's Euler characteristic ([`DualError::Topology`]): in `f64`, edges followed to the
+//!   wrong vertex of a near-co-circular cluster can close up into another surface that no
+//!   local check sees.
 //! - In `f64`, when the dual fails, `wave_and_dual` builds it again with clusters
 //!   merged (`merge_clusters`): a Voronoi vertex found within the tolerance of a recorded one,
 //!   seeing sites the recorded one does not (near-co-circular sites whose Voronoi vertices are
