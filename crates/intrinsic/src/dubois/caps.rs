@@ -76,17 +76,15 @@
 //!   whose rounding they carry. The output is checked independently (the tests compare the
 //!   Laplacian with the flip route's: to 1e-12 on the smallest shared meshes;
 //!   `results/dubois-every-mesh.txt` gives each mesh's deviation).
-//! - **\[`f64` only\] The wave on `T′`** identifies two points of a constellation within
-//!   [`CAPS_F64_CLOSING_TOLERANCE`] times the longest side (the wave's default is 1e-9): `T′`
-//!   closes up only to that tolerance, so a site carried around a vertex of `T′` comes back
-//!   that far from itself, and with the tighter tolerance each trip added a new site (thousands
-//!   in one triangle of `chair_soup.off`, the wave out of its budget). Its dual merges sites
-//!   within the default 1e-9 and, when the traced Voronoi edges do not close up, is built again
-//!   pooling the sites of Voronoi vertices taken for one, then at
-//!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]).
-//!   Measured: the first attempt suffices on `casting.off`, `chair_soup.off`, `torus_2304.obj`
-//!   (exactly co-circular grid quads), `block.off` and `socket.off`; `wheel.off`'s `T′` needs
-//!   the pooling (two Voronoi vertices 2.3e-8 apart, 8e-8 of their circles' radius).
+//! - **\[`f64` only\] The wave on `T′`** runs with its own tolerances (points one within 1e-9
+//!   of the longest side): the double-double `T′` closes up far below them. (With an `f64`
+//!   reduction `T′` closed up only to the closing tolerance, so a site carried around a vertex
+//!   came back that far from itself, and the wave had to identify points within 1e-6 of the
+//!   longest side; that merged distinct sites of near-co-circular configurations, which broke
+//!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
+//!   is built again pooling the sites of Voronoi vertices taken for one, then at
+//!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]);
+//!   `results/dubois-every-mesh.txt` shows where they are needed.
 //! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
 //!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
 //!   off their line by an ulp, would otherwise produce.
@@ -648,11 +646,8 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         ..VoronoiOptions::default()
     };
     if !S::EXACT {
-        // T′ carries the rounding of ALGORITHM's merges (closed up to the closing tolerance), so
-        // a point carried around a vertex comes back that far off: the wave identifies points
-        // to the same tolerance, else it adds the copies as new sites without end.
-        let t = &mut wave_options.wave.point_tolerance;
-        *t = t.max(CAPS_F64_CLOSING_TOLERANCE);
+        // `T′` from the double-double reduction closes up to far below the wave's own point
+        // tolerance (module doc), which is kept.
         wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
     }
     let mut delaunay = match options.sources {
