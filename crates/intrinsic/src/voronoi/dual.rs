@@ -45,11 +45,13 @@
 //!   surface's Euler characteristic ([`DualError::Topology`]): in `f64`, edges followed to the
 //!   wrong vertex of a near-co-circular cluster can close up into another surface that no
 //!   local check sees.
-//! - In `f64`, when the dual fails, `wave_and_dual` builds it again with clusters
-//!   merged (`merge_clusters`): a Voronoi vertex found within the tolerance of a recorded one,
-//!   seeing sites the recorded one does not (near-co-circular sites whose Voronoi vertices are
-//!   a rounding apart, each seeing some of them), adds those within the tolerance of its circle
-//!   to it, so the cluster is one polygon. Not the first attempt: the pooled polygon can be off
+//! - In `f64`, when the dual fails, `wave_and_dual` builds it again with clusters merged
+//!   (`merge_clusters`): Voronoi vertices are told apart by their nearest sites, not by their
+//!   positions (two that share three sites are one, however far apart the rounding put them;
+//!   two with different sites are two, however close: near-co-circular sites put Voronoi
+//!   vertices a rounding apart, each seeing some of the sites), and a vertex found again adds
+//!   to the recorded one the nearest sites it lacks that lie within the tolerance of its
+//!   circle, so a cluster is one polygon. Not the first attempt: the pooled polygon can be off
 //!   its circle by a few tolerances, more than the flip route's co-circularity test allows.
 
 use std::cmp::Ordering;
@@ -645,10 +647,21 @@ impl<S: Scalar> Dual<'_, S> {
     }
 
     /// The instance of the vertex at `v` in triangle `q`: at the same point, or (in `f64`, for
-    /// near-co-circular sites) one with the same nearest sites as `v` (when merging clusters:
-    /// holding all of them).
+    /// near-co-circular sites) one with the same nearest sites as `v`. When merging clusters
+    /// (`f64`), one sharing three of the nearest sites of `v` (if it has three), whatever
+    /// the distance.
     fn instance_at(&self, q: PolygonId, v: &Point<S>) -> Option<usize> {
         let list = &self.instances[q.idx()];
+        if !S::EXACT && self.merge_clusters {
+            let sites = self.nearest(q, v);
+            if sites.len() >= 3 {
+                // Three sites fix a circle: vertices sharing three are one (pooled) vertex,
+                // however close two others are.
+                return list
+                    .iter()
+                    .position(|inst| sites.iter().filter(|i| inst.sites.contains(i)).count() >= 3);
+            }
+        }
         if let Some(k) = list.iter().position(|inst| self.same_point(&inst.at, v)) {
             return Some(k);
         }
