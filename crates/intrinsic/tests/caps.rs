@@ -253,24 +253,32 @@ fn the_surface_is_unchanged_by_every_step() {
 fn check_dubois_against_flip(mesh: &SharedMesh, tolerance: f64) -> Result<f64, String> {
     let s = load(mesh);
     let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
+    check_triangulation_against_flip(&tri, &mesh.file, mesh.faces, tolerance)
+}
+
+/// [`check_dubois_against_flip`] on any intrinsic triangulation, named `name` in messages.
+fn check_triangulation_against_flip(
+    tri: &IntrinsicTriangulation,
+    name: &str,
+    faces: usize,
+    tolerance: f64,
+) -> Result<f64, String> {
     let (p, _) = tri.to_portalgon();
     let options = FlatDelaunayOptions {
         sources: Sources::All,
         ..FlatDelaunayOptions::default()
     };
-    let out =
-        delaunay_tessellation_dubois(&p, &options).map_err(|e| format!("{}: {e}", mesh.file))?;
+    let out = delaunay_tessellation_dubois(&p, &options).map_err(|e| format!("{name}: {e}"))?;
     assert_eq!(
         out.delaunay.sources.len(),
         tri.mesh().vertex_count(),
-        "{}: V is every vertex",
-        mesh.file
+        "{name}: V is every vertex",
     );
     let ours = out.delaunay.triangulation().unwrap();
     let mut flipped = tri.clone();
     flip_to_delaunay(&mut flipped, &DelaunayOptions::default()).unwrap();
     let (la, lb) = (cotan_laplacian(&ours), cotan_laplacian(&flipped));
-    assert_eq!(la.n, lb.n, "{}", mesh.file);
+    assert_eq!(la.n, lb.n, "{name}");
     let scale = (0..lb.n).map(|i| lb.get(i, i).abs()).fold(0.0, f64::max);
     let mut deviation = 0.0f64;
     for i in 0..la.n {
@@ -279,16 +287,15 @@ fn check_dubois_against_flip(mesh: &SharedMesh, tolerance: f64) -> Result<f64, S
             deviation = deviation.max((a - b).abs() / scale);
             assert!(
                 (a - b).abs() <= tolerance * scale,
-                "{}: L[{i}][{j}] {a} vs {b} ({x})",
-                mesh.file
+                "{name}: L[{i}][{j}] {a} vs {b} ({x})"
             );
         }
     }
     eprintln!(
         "{}: {} faces, {} cone points, N = {}, {} triangles after reduction, {} events, \
          Laplacian within {deviation:.1e} of flipping's",
-        mesh.file,
-        mesh.faces,
+        name,
+        faces,
         out.cone_points,
         out.reduction.outer_iterations,
         out.reduction.triangles_after_reduction,
@@ -313,6 +320,35 @@ fn dubois_with_caps_equals_flip_on_the_smallest_shared_meshes() {
 }
 
 surftopo_testkit::shared_mesh_tests!(dubois_with_caps_equals_flip_on_the_smallest_shared_meshes);
+
+/// Surfaces the tolerances were never tuned on, made here: a torus whose grid diagonals wind
+/// around the tube, an icosphere and a thin torus re-triangulated by random intrinsic flips
+/// (edges crossing the mesh's, vertices of degree 3 to 12), and the icosahedron: Theorem 1 in
+/// `f64` gives the flip route's Laplacian to 1e-12.
+#[test]
+fn dubois_with_caps_equals_flip_on_generated_surfaces() {
+    use surftopo_intrinsic::generators::{random_flips, sheared_torus};
+    use surftopo_mesh::generators::{icosphere, torus};
+    let from = |s: surftopo_mesh::Surface| {
+        IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap()
+    };
+    let mut cases = vec![
+        ("sheared torus", from(sheared_torus(24, 8, 3))),
+        ("icosahedron", from(icosphere(0))),
+    ];
+    for (k, (name, surface)) in [("icosphere", icosphere(2)), ("thin torus", torus(5, 30))]
+        .into_iter()
+        .enumerate()
+    {
+        let mut tri = from(surface);
+        random_flips(&mut tri, 300, k as u64 + 7);
+        cases.push((name, tri));
+    }
+    for (name, tri) in &cases {
+        let faces = tri.mesh().face_count();
+        check_triangulation_against_flip(tri, name, faces, 1e-12).unwrap();
+    }
+}
 
 /// The variable naming the mesh [`dubois_against_flip_on_one_shared_mesh`] checks.
 const ONE_MESH_VARIABLE: &str = "SURFTOPO_DUBOIS_MESH";
