@@ -596,7 +596,8 @@ pub struct ConeDelaunay<S: Scalar> {
 /// [`crate::voronoi::voronoi_delaunay`] from the singular vertices of `T′` (its cone points are
 /// the input's), or with [`Sources::All`] from every input vertex
 /// ([`crate::voronoi::voronoi_delaunay_from`] on the capped vertices). Labels: see the module
-/// doc. Exact on rational input in exact mode.
+/// doc. Exact on rational input in exact mode; on `f64` input Proposition 2 runs in
+/// double-double and the wave in `f64` (module doc).
 ///
 /// # Errors
 /// [`CapsError`]: bad input, ALGORITHM's or the wave's errors.
