@@ -161,6 +161,7 @@ impl fmt::Display for DoubleDouble {
 
 impl Scalar for DoubleDouble {
     const EXACT: bool = false;
+    /// The mode it serves: `f64` input, rounded arithmetic (reports name that mode).
     const ARITHMETIC: &'static str = "f64";
 
     fn zero() -> Self {
