@@ -63,8 +63,8 @@
 //!   disagree in direction by `ulp · |coordinates| / |side|`, and `T′` gets pairs of false cone
 //!   points (on `chassis_upright.off`'s `T′`, ±6.8e-5 rad in `f64`), which the cotangents of
 //!   the Laplacian amplify. Pieces cut from a polygon are also moved to their own frame
-//!   ([`Portalgon::cut`]). Measured on `kitten.off`: 1.55 times the time of an `f64`
-//!   reduction. [`proposition_2`] itself runs in the scalar type it is given.
+//!   ([`Portalgon::cut`]). Measured on `kitten.off` (3 paired runs): 1.3 times the time of
+//!   an `f64` reduction. [`proposition_2`] itself runs in the scalar type it is given.
 //! - **\[`f64` only\] Closing tolerance.** Every interior vertex of `T₁` is flat and every
 //!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
 //!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
