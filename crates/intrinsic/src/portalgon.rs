@@ -750,10 +750,10 @@ impl<S: Scalar> Portalgon<S> {
         (in_p, in_q)
     }
 
-    /// In `f64`, translates polygon `p` so that its first corner is the origin: a piece cut
-    /// from a large polygon keeps that polygon's frame, where its coordinates can be many times
-    /// its own size (thousands of times in `T′` of a mesh), and every later rounding (motions of
-    /// merges, gluings) is relative to the coordinates, not to the piece.
+    /// In rounded arithmetic, translates polygon `p` so that its first corner is the origin: a
+    /// piece cut from a large polygon keeps that polygon's frame, where its coordinates can be
+    /// many times its own size (thousands of times in `T′` of a mesh), and every later rounding
+    /// (motions of merges, gluings) is relative to the coordinates, not to the piece.
     fn recenter(&mut self, p: PolygonId) {
         let origin = self.start(self.polygons[p.idx()][0]);
         for &x in &self.polygons[p.idx()] {

@@ -7,7 +7,8 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 use super::Point;
 
 /// An ordered field for plane geometry: `f64` (rounded constructions, exact-sign predicates),
-/// [`super::DoubleDouble`] (about 106 bits) or [`super::Rational`] (exact). Operators take values; clone where a value is reused.
+/// [`super::DoubleDouble`] (about 106 bits) or [`super::Rational`] (exact). Operators take
+/// values; clone where a value is reused.
 pub trait Scalar:
     Clone
     + fmt::Debug

@@ -258,7 +258,8 @@ pub(crate) fn build_dual<S: Scalar>(
             diagram.edges.push(segments);
         }
     }
-    let (vertices, expected, euler) = (out.vertex_classes().1, euler(p), euler(&out));
+    let vertices = out.vertex_classes().1;
+    let (euler, expected) = (euler(&out, vertices), euler(p, p.vertex_classes().1));
     if vertices != sources || euler != expected {
         return Err(DualError::Topology {
             vertices,
@@ -273,9 +274,9 @@ pub(crate) fn build_dual<S: Scalar>(
     })
 }
 
-/// `V − E + F` of a closed portalgon.
-fn euler<S: Scalar>(p: &Portalgon<S>) -> i64 {
-    p.vertex_classes().1 as i64 - (p.side_count() / 2) as i64 + p.polygon_count() as i64
+/// `V − E + F` of a closed portalgon with `vertices` vertex classes.
+fn euler<S: Scalar>(p: &Portalgon<S>, vertices: usize) -> i64 {
+    vertices as i64 - (p.side_count() / 2) as i64 + p.polygon_count() as i64
 }
 
 /// Where a ray leaves a triangle.
@@ -507,12 +508,13 @@ impl<S: Scalar> Dual<'_, S> {
         Some((self.instances[q.idx()].len() - 1, true))
     }
 
-    /// In `f64`, adds to instance `k` of `q` the nearest sites of `v`, a point taken for the
-    /// same vertex ([`Self::instance_at`]) that it lacks, kept counter-clockwise around the
-    /// instance; returns whether any was added. Near-co-circular sites give Voronoi vertices
-    /// closer than the tolerance, each with only some of the sites: they are one vertex of the
-    /// merged (near-co-circular) polygon, as the flip route merges near-co-circular triangles;
-    /// the Voronoi edges between them, shorter than the tolerance, are not followed.
+    /// When merging clusters (`f64`), adds to instance `k` of `q` the nearest sites of `v`, a
+    /// point taken for the same vertex ([`Self::instance_at`]: three sites shared), that it
+    /// lacks and that lie within the tolerance of its circle, kept counter-clockwise around the
+    /// instance; returns whether any was added. Near-co-circular sites give Voronoi vertices a
+    /// rounding apart, each with only some of the sites: they are one vertex of the merged
+    /// (near-co-circular) polygon, as the flip route merges near-co-circular triangles; the
+    /// Voronoi edges between them are not followed.
     fn absorb(&mut self, q: PolygonId, k: usize, v: &Point<S>) -> bool {
         if S::EXACT || !self.merge_clusters {
             return false;
@@ -674,14 +676,9 @@ impl<S: Scalar> Dual<'_, S> {
         }
         sites.sort_unstable();
         list.iter().position(|inst| {
-            if self.merge_clusters {
-                // Three sites fix the vertex: an instance holding them all is this one.
-                sites.iter().all(|i| inst.sites.contains(i))
-            } else {
-                let mut own = inst.sites.clone();
-                own.sort_unstable();
-                own == sites
-            }
+            let mut own = inst.sites.clone();
+            own.sort_unstable();
+            own == sites
         })
     }
 

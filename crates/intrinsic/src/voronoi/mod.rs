@@ -249,12 +249,15 @@ fn wave_and_dual<S: Scalar>(
         }
     }
     let tolerance = options.dual_tolerance;
-    let count = labels.len();
-    let v = sources.iter().filter(|&&c| (c as usize) < count).count();
-    let out = match dual::build_dual(p, &wave, &labels, tolerance, false, v) {
+    // |V|: the sources that are vertex classes of `p` (others are ignored).
+    let in_v = sources
+        .iter()
+        .filter(|&&c| (c as usize) < labels.len())
+        .count();
+    let out = match dual::build_dual(p, &wave, &labels, tolerance, false, in_v) {
         Err(first) if !S::EXACT => match options.dual_retry_tolerance {
-            Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true, v)
-                .or_else(|_| dual::build_dual(p, &wave, &labels, t, false, v))
+            Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true, in_v)
+                .or_else(|_| dual::build_dual(p, &wave, &labels, t, false, in_v))
                 .map_err(|_| first)?,
             None => return Err(first.into()),
         },
