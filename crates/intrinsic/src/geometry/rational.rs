@@ -13,53 +13,180 @@ use super::{Point, Scalar};
 
 /// An exact rational number (arbitrary-precision numerator and denominator, always reduced).
 ///
-/// Backed by `dashu`'s `RBig` (ARCHITECTURE.md gives the measurement behind the choice); the
-/// newtype keeps the backend replaceable. Parsed from an integer (`"-7"`), a decimal with an
-/// optional exponent (`"1000000000.333"`, `"2.5e-3"`) or a fraction (`"3000000001/3"`); written
-/// as `"p/q"` or `"p"` ([`fmt::Display`]).
-#[derive(Clone, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
-pub struct Rational(RBig);
+/// Two representations behind one canonical form: a value whose reduced numerator and
+/// denominator both fit in an `i64` (numerator not `i64::MIN`) is stored inline and its
+/// arithmetic runs on `i128` products and a binary gcd; any other value is `dashu`'s `RBig`
+/// (ARCHITECTURE.md gives the measurements behind both). Every result is normalised to the
+/// inline form when it fits, so equality and hashing compare representations. Parsed from an
+/// integer (`"-7"`), a decimal with an optional exponent (`"1000000000.333"`, `"2.5e-3"`) or a
+/// fraction (`"3000000001/3"`); written as `"p/q"` or `"p"` ([`fmt::Display`]).
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub struct Rational(Repr);
+
+/// The two representations of [`Rational`]; `Small` whenever the value fits.
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+enum Repr {
+    /// `num / den`, reduced, `den > 0`, `num ≠ i64::MIN`.
+    Small { num: i64, den: i64 },
+    /// Any value that does not fit `Small`.
+    Big(RBig),
+}
 
 /// Why a string is not a rational number.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("not an exact number (an integer, a decimal or a fraction p/q with q > 0): {0:?}")]
 pub struct ParseRationalError(pub String);
 
+/// The greatest common divisor; `gcd(0, b) = b`. A power of two shortcuts; operands that fit
+/// 64 bits run the 64-bit loop.
+fn gcd_u128(a: u128, b: u128) -> u128 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    if a.is_power_of_two() || b.is_power_of_two() {
+        return 1 << (a | b).trailing_zeros();
+    }
+    match (u64::try_from(a), u64::try_from(b)) {
+        (Ok(a), Ok(b)) => u128::from(binary_gcd_u64(a, b)),
+        _ => binary_gcd_u128(a, b),
+    }
+}
+
+/// Stein's binary gcd of two non-zero operands.
+macro_rules! binary_gcd {
+    ($name:ident, $t:ty) => {
+        fn $name(mut a: $t, mut b: $t) -> $t {
+            let shift = (a | b).trailing_zeros();
+            a >>= a.trailing_zeros();
+            loop {
+                b >>= b.trailing_zeros();
+                if a > b {
+                    std::mem::swap(&mut a, &mut b);
+                }
+                b -= a;
+                if b == 0 {
+                    return a << shift;
+                }
+            }
+        }
+    };
+}
+binary_gcd!(binary_gcd_u64, u64);
+binary_gcd!(binary_gcd_u128, u128);
+
 impl Rational {
+    /// `num / den` from a reduced or unreduced fraction with `den > 0`.
+    fn from_i128(num: i128, den: i128) -> Self {
+        debug_assert!(den > 0);
+        let g = gcd_u128(num.unsigned_abs(), den as u128) as i128;
+        if g > 1 {
+            Self::from_reduced_i128(num / g, den / g)
+        } else {
+            Self::from_reduced_i128(num, den)
+        }
+    }
+
+    /// `num / den` already reduced, `den > 0`.
+    fn from_reduced_i128(num: i128, den: i128) -> Self {
+        match (i64::try_from(num), i64::try_from(den)) {
+            (Ok(num), Ok(den)) if num != i64::MIN => Rational(Repr::Small { num, den }),
+            _ => Rational(Repr::Big(RBig::from_parts(
+                IBig::from(num),
+                UBig::from(den as u128),
+            ))),
+        }
+    }
+
+    /// The canonical form of an `RBig`: inline when it fits.
+    fn from_rbig(r: RBig) -> Self {
+        match (i64::try_from(r.numerator()), i64::try_from(r.denominator())) {
+            (Ok(num), Ok(den)) if num != i64::MIN => Rational(Repr::Small { num, den }),
+            _ => Rational(Repr::Big(r)),
+        }
+    }
+
+    /// The value as an `RBig` (a copy).
+    fn to_rbig(&self) -> RBig {
+        match &self.0 {
+            Repr::Small { num, den } => RBig::from_parts(IBig::from(*num), UBig::from(*den as u64)),
+            Repr::Big(r) => r.clone(),
+        }
+    }
+
+    /// The numerator and the (positive) denominator, reduced.
+    fn parts(&self) -> (IBig, UBig) {
+        match &self.0 {
+            Repr::Small { num, den } => (IBig::from(*num), UBig::from(*den as u64)),
+            Repr::Big(r) => (r.numerator().clone(), r.denominator().clone()),
+        }
+    }
+
     /// `numerator / denominator`; `None` when the denominator is zero.
     pub fn new(numerator: i64, denominator: i64) -> Option<Self> {
         (denominator != 0).then(|| {
-            Rational(RBig::from_parts_signed(
-                IBig::from(numerator),
-                IBig::from(denominator),
-            ))
+            let (num, den) = (i128::from(numerator), i128::from(denominator));
+            if den < 0 {
+                Self::from_i128(-num, -den)
+            } else {
+                Self::from_i128(num, den)
+            }
         })
     }
 
     /// Whether the value is an integer.
     pub fn is_integer(&self) -> bool {
-        self.0.is_int()
+        match &self.0 {
+            Repr::Small { den, .. } => *den == 1,
+            Repr::Big(r) => r.is_int(),
+        }
     }
 
     /// The exact value as a double when it is one (`Some(x)` with `Rational::from_f64(x) == self`).
     pub fn as_exact_f64(&self) -> Option<f64> {
-        let x = self.0.to_f64().value();
-        (x.is_finite() && RBig::try_from(x).ok().as_ref() == Some(&self.0)).then_some(x)
+        let r = self.to_rbig();
+        let x = r.to_f64().value();
+        (x.is_finite() && RBig::try_from(x).ok().as_ref() == Some(&r)).then_some(x)
     }
 
     /// The number of bits of the numerator plus those of the denominator (a measure of size).
     pub fn bits(&self) -> u64 {
-        (self.0.numerator().unsigned_abs().bit_len() + self.0.denominator().bit_len()) as u64
+        match &self.0 {
+            Repr::Small { num, den } => {
+                u64::from(64 - num.unsigned_abs().leading_zeros())
+                    + u64::from(64 - den.leading_zeros())
+            }
+            Repr::Big(r) => {
+                (r.numerator().unsigned_abs().bit_len() + r.denominator().bit_len()) as u64
+            }
+        }
     }
 }
 
 impl fmt::Display for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.0.is_int() {
-            write!(f, "{}", self.0.numerator())
-        } else {
-            write!(f, "{}/{}", self.0.numerator(), self.0.denominator())
+        match &self.0 {
+            Repr::Small { num, den: 1 } => write!(f, "{num}"),
+            Repr::Small { num, den } => write!(f, "{num}/{den}"),
+            Repr::Big(r) if r.is_int() => write!(f, "{}", r.numerator()),
+            Repr::Big(r) => write!(f, "{}/{}", r.numerator(), r.denominator()),
         }
+    }
+}
+
+impl Ord for Rational {
+    fn cmp(&self, other: &Self) -> Ordering {
+        match (&self.0, &other.0) {
+            (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
+                (i128::from(*a) * i128::from(*d)).cmp(&(i128::from(*c) * i128::from(*b)))
+            }
+            _ => self.to_rbig().cmp(&other.to_rbig()),
+        }
+    }
+}
+
+impl PartialOrd for Rational {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
     }
 }
 
@@ -118,33 +245,90 @@ impl FromStr for Rational {
             if q <= IBig::ZERO {
                 return Err(err());
             }
-            return Ok(Rational(RBig::from_parts_signed(p, q)));
+            return Ok(Rational::from_rbig(RBig::from_parts_signed(p, q)));
         }
-        parse_decimal(t).map(Rational).ok_or_else(err)
+        parse_decimal(t).map(Rational::from_rbig).ok_or_else(err)
     }
 }
 
-macro_rules! binary_op {
-    ($trait:ident, $method:ident) => {
-        impl $trait for Rational {
-            type Output = Rational;
-            #[inline]
-            fn $method(self, rhs: Rational) -> Rational {
-                Rational(self.0.$method(rhs.0))
+impl Add for Rational {
+    type Output = Rational;
+    #[inline]
+    fn add(self, rhs: Rational) -> Rational {
+        match (&self.0, &rhs.0) {
+            (&Repr::Small { num: a, den: b }, &Repr::Small { num: c, den: d }) => {
+                if b == d {
+                    Rational::from_i128(i128::from(a) + i128::from(c), i128::from(b))
+                } else {
+                    let (a, b, c, d) = (i128::from(a), i128::from(b), i128::from(c), i128::from(d));
+                    Rational::from_i128(a * d + c * b, b * d)
+                }
             }
+            _ => Rational::from_rbig(self.to_rbig() + rhs.to_rbig()),
         }
-    };
+    }
 }
-binary_op!(Add, add);
-binary_op!(Sub, sub);
-binary_op!(Mul, mul);
-binary_op!(Div, div);
+
+impl Sub for Rational {
+    type Output = Rational;
+    #[inline]
+    fn sub(self, rhs: Rational) -> Rational {
+        self + (-rhs)
+    }
+}
+
+impl Mul for Rational {
+    type Output = Rational;
+    #[inline]
+    fn mul(self, rhs: Rational) -> Rational {
+        match (&self.0, &rhs.0) {
+            (&Repr::Small { num: a, den: b }, &Repr::Small { num: c, den: d }) => {
+                // a/b · c/d with the cross gcds divided out first: the result is reduced.
+                let g1 = gcd_u128(u128::from(a.unsigned_abs()), d as u128) as i64;
+                let g2 = gcd_u128(u128::from(c.unsigned_abs()), b as u128) as i64;
+                let (a, d) = (a / g1, d / g1);
+                let (c, b) = (c / g2, b / g2);
+                Rational::from_reduced_i128(
+                    i128::from(a) * i128::from(c),
+                    i128::from(b) * i128::from(d),
+                )
+            }
+            _ => Rational::from_rbig(self.to_rbig() * rhs.to_rbig()),
+        }
+    }
+}
+
+impl Div for Rational {
+    type Output = Rational;
+    #[inline]
+    fn div(self, rhs: Rational) -> Rational {
+        match rhs.0 {
+            Repr::Small { num, den } => {
+                assert!(num != 0, "division of a rational by zero");
+                // num ≠ i64::MIN, so its negation fits; den > 0 fits the numerator of the inverse.
+                let inverse = if num > 0 {
+                    Repr::Small { num: den, den: num }
+                } else {
+                    Repr::Small {
+                        num: -den,
+                        den: -num,
+                    }
+                };
+                self * Rational(inverse)
+            }
+            Repr::Big(r) => Rational::from_rbig(self.to_rbig() / r),
+        }
+    }
+}
 
 impl Neg for Rational {
     type Output = Rational;
     #[inline]
     fn neg(self) -> Rational {
-        Rational(-self.0)
+        match self.0 {
+            Repr::Small { num, den } => Rational(Repr::Small { num: -num, den }),
+            Repr::Big(r) => Rational::from_rbig(-r),
+        }
     }
 }
 
@@ -153,19 +337,25 @@ impl Scalar for Rational {
     const ARITHMETIC: &'static str = "exact";
 
     fn zero() -> Self {
-        Rational(RBig::ZERO)
+        Rational(Repr::Small { num: 0, den: 1 })
     }
     fn one() -> Self {
-        Rational(RBig::ONE)
+        Rational(Repr::Small { num: 1, den: 1 })
     }
     fn from_i64(v: i64) -> Self {
-        Rational(RBig::from(v))
+        Rational::from_reduced_i128(i128::from(v), 1)
     }
     fn from_f64(v: f64) -> Option<Self> {
-        RBig::try_from(v).ok().map(Rational)
+        RBig::try_from(v).ok().map(Rational::from_rbig)
     }
     fn to_f64(&self) -> f64 {
-        self.0.to_f64().value()
+        match &self.0 {
+            // Both exact doubles: one correctly rounded division.
+            Repr::Small { num, den } if num.unsigned_abs() < 1 << 53 && *den < 1 << 53 => {
+                *num as f64 / *den as f64
+            }
+            _ => self.to_rbig().to_f64().value(),
+        }
     }
     fn from_rational(v: &Rational) -> Self {
         v.clone()
@@ -174,26 +364,42 @@ impl Scalar for Rational {
         Some(self.clone())
     }
     fn is_zero(&self) -> bool {
-        self.0.is_zero()
+        matches!(self.0, Repr::Small { num: 0, .. })
     }
     fn half(&self) -> Self {
-        Rational(&self.0 / RBig::from(2u8))
+        match self.0 {
+            Repr::Small { num, den } => Rational::from_i128(i128::from(num), 2 * i128::from(den)),
+            Repr::Big(ref r) => Rational::from_rbig(r / RBig::from(2u8)),
+        }
     }
     fn floor(&self) -> Self {
-        Rational(RBig::from(self.0.floor()))
+        match self.0 {
+            Repr::Small { num, den } => Rational::from_i64(num.div_euclid(den)),
+            Repr::Big(ref r) => Rational::from_rbig(RBig::from(r.floor())),
+        }
     }
     fn sign(&self) -> Ordering {
-        self.0.cmp(&RBig::ZERO)
+        match &self.0 {
+            Repr::Small { num, .. } => num.cmp(&0),
+            Repr::Big(r) => r.cmp(&RBig::ZERO),
+        }
     }
     fn lengths_match(a: &Self, b: &Self, _tolerance: f64) -> bool {
         a == b
     }
 
-    /// The sign of `(b − a) × (c − a)` on unreduced fractions: the four differences and the two
+    /// The sign of `(b − a) × (c − a)`. Inline values: the rational operations (`i128`
+    /// intermediates). Otherwise on unreduced fractions: the four differences and the two
     /// products are formed on numerators and denominators without the gcd normalisation of
     /// [`RBig`] arithmetic, and compared by cross-multiplication (denominators are positive).
     /// Equal denominators (dyadic charts share them often) skip their products.
     fn orient2d(a: &Point<Self>, b: &Point<Self>, c: &Point<Self>) -> Ordering {
+        let small = |p: &Point<Self>| p.iter().all(|v| matches!(v.0, Repr::Small { .. }));
+        if small(a) && small(b) && small(c) {
+            let ab = super::sub(b, a);
+            let ac = super::sub(c, a);
+            return super::cross(&ab, &ac).sign();
+        }
         let (ux, uxd) = unreduced_difference(&b[0], &a[0]);
         let (uy, uyd) = unreduced_difference(&b[1], &a[1]);
         let (vx, vxd) = unreduced_difference(&c[0], &a[0]);
@@ -221,10 +427,10 @@ impl Scalar for Rational {
 
 /// `p − q` as an unreduced fraction (numerator, positive denominator).
 fn unreduced_difference(p: &Rational, q: &Rational) -> (IBig, UBig) {
-    let (pn, pd) = (p.0.numerator(), p.0.denominator());
-    let (qn, qd) = (q.0.numerator(), q.0.denominator());
+    let (pn, pd) = p.parts();
+    let (qn, qd) = q.parts();
     if pd == qd {
-        (pn - qn, pd.clone())
+        (pn - qn, pd)
     } else {
         (
             pn * IBig::from(qd.clone()) - qn * IBig::from(pd.clone()),
@@ -249,6 +455,7 @@ mod tests {
             "5/12",
             "-2",
             "1/3",
+            "1267650600228229401496703205377/3",
         ];
         let mut checked = 0;
         for (i, a) in values.iter().enumerate() {
@@ -269,7 +476,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(checked, 512);
+        assert_eq!(checked, 729);
         // Collinear points with different denominators.
         let (p, q, s) = (
             [r("1/3"), r("2/3")],
@@ -277,6 +484,91 @@ mod tests {
             [r("5/6"), r("5/3")],
         );
         assert_eq!(Rational::orient2d(&p, &q, &s), Ordering::Equal);
+    }
+
+    /// Whether `r` is in canonical form: inline exactly when the reduced value fits.
+    fn canonical(r: &Rational) -> bool {
+        let big = r.to_rbig();
+        let fits = i64::try_from(big.numerator()).is_ok_and(|n| n != i64::MIN)
+            && i64::try_from(big.denominator()).is_ok();
+        fits == matches!(r.0, Repr::Small { .. })
+    }
+
+    #[test]
+    fn inline_arithmetic_agrees_with_big_rationals_across_the_overflow_boundary() {
+        let max = i64::MAX.to_string();
+        let min1 = (i64::MIN + 1).to_string();
+        let values: Vec<String> = [
+            "0",
+            "1",
+            "-1",
+            "3/4",
+            "-7/6",
+            "1/3",
+            "5/1024",
+            "-1000000000000000001/2",
+            "4611686018427387904",
+            "-4611686018427387904",
+            "3037000499/2",
+            "1/4611686018427387904",
+            "9223372036854775807/2",
+            "2/9223372036854775807",
+            "-9223372036854775808",
+            "9223372036854775808",
+            "1/9223372036854775808",
+            "1267650600228229401496703205376/3",
+            "-5/1267650600228229401496703205376",
+        ]
+        .iter()
+        .map(|v| v.to_string())
+        .chain([
+            max.clone(),
+            min1.clone(),
+            format!("1/{max}"),
+            format!("{min1}/{max}"),
+        ])
+        .collect();
+        let r = |s: &str| s.parse::<Rational>().unwrap();
+        let mut checked = 0;
+        for a in &values {
+            let (x, bx) = (r(a), r(a).to_rbig());
+            assert!(canonical(&x), "{a}");
+            assert_eq!(x.to_string(), r(&x.to_string()).to_string());
+            assert_eq!(Rational::from_rbig(-bx.clone()), -x.clone(), "-{a}");
+            assert_eq!(
+                x.half(),
+                Rational::from_rbig(&bx / RBig::from(2u8)),
+                "{a}/2"
+            );
+            assert_eq!(
+                x.floor(),
+                Rational::from_rbig(RBig::from(bx.floor())),
+                "floor {a}"
+            );
+            assert_eq!(x.to_f64(), bx.to_f64().value(), "{a} as f64");
+            assert_eq!(x.sign(), bx.cmp(&RBig::ZERO));
+            for b in &values {
+                let (y, by) = (r(b), r(b).to_rbig());
+                let results = [
+                    (x.clone() + y.clone(), &bx + &by),
+                    (x.clone() - y.clone(), &bx - &by),
+                    (x.clone() * y.clone(), &bx * &by),
+                ];
+                for (got, want) in results {
+                    assert!(canonical(&got), "{a} {b}: {got:?}");
+                    assert_eq!(got.to_rbig(), want, "{a} {b}");
+                }
+                if !y.is_zero() {
+                    let q = x.clone() / y.clone();
+                    assert!(canonical(&q), "{a} / {b}");
+                    assert_eq!(q.to_rbig(), &bx / &by, "{a} / {b}");
+                }
+                assert_eq!(x.cmp(&y), bx.cmp(&by), "{a} <> {b}");
+                assert_eq!(x == y, bx == by, "{a} == {b}");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, values.len() * values.len());
     }
 
     #[test]
