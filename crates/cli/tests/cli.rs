@@ -1213,6 +1213,75 @@ fn delaunay_writes_the_reduced_triangulation() {
         .code(2);
 }
 
+/// `--faithful` runs all 350 inner repetitions per outer iteration (the JSON's total equals its
+/// bound `350·N`) and writes the same triangulation, tessellation and reduced triangulation,
+/// byte for byte, as the default, which stops at the first repetition that changes nothing;
+/// `isometric` takes it too; without `--method dubois` it is refused (exit 2).
+#[test]
+fn faithful_gives_the_default_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = |name: &str| dir.path().join(name);
+    std::fs::write(d("t.json"), t_x_json("1000", "1001")).unwrap();
+    let mut figures = Vec::new();
+    for (suffix, extra) in [("", &[][..]), ("-faithful", &["--faithful"][..])] {
+        let v = json_of(
+            surftopo()
+                .arg("delaunay")
+                .arg(d("t.json"))
+                .arg("-o")
+                .arg(d(&format!("d{suffix}.json")))
+                .arg("--tessellation")
+                .arg(d(&format!("dt{suffix}.json")))
+                .arg("--reduced")
+                .arg(d(&format!("r{suffix}.json")))
+                .args(["--method", "dubois", "--exact", "--json"])
+                .args(extra),
+            &[
+                "inner_passes_total",
+                "inner_passes_bound",
+                "outer_iterations",
+            ],
+        );
+        figures.push(v);
+    }
+    let bound = figures[1]["inner_passes_bound"].as_u64().unwrap();
+    assert_eq!(
+        bound,
+        350 * figures[1]["outer_iterations"].as_u64().unwrap()
+    );
+    assert_eq!(figures[1]["inner_passes_total"].as_u64().unwrap(), bound);
+    assert!(figures[0]["inner_passes_total"].as_u64().unwrap() < bound / 10);
+    for name in ["d", "dt", "r"] {
+        assert_eq!(
+            std::fs::read(d(&format!("{name}.json"))).unwrap(),
+            std::fs::read(d(&format!("{name}-faithful.json"))).unwrap(),
+            "{name}.json"
+        );
+    }
+    surftopo()
+        .arg("isometric")
+        .arg(d("t.json"))
+        .arg(d("r.json"))
+        .args(["--method", "dubois", "--exact", "--faithful"])
+        .assert()
+        .code(0);
+    for method in ["auto", "flip", "voronoi"] {
+        let out = surftopo()
+            .arg("delaunay")
+            .arg(d("t.json"))
+            .arg("-o")
+            .arg(d("x.json"))
+            .args(["--faithful", "--method", method])
+            .assert()
+            .code(2);
+        let stderr = String::from_utf8_lossy(&out.get_output().stderr).into_owned();
+        assert!(
+            stderr.contains("--faithful applies to --method dubois"),
+            "{stderr}"
+        );
+    }
+}
+
 /// The `seconds` figures of `--json` are rounded to the microsecond (no `0.0012000300000000002`)
 /// and the summary lines give times with a unit (µs, ms, s), never `0.000 s`.
 #[test]

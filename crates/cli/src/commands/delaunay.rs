@@ -10,7 +10,9 @@ use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
-use surftopo_intrinsic::dubois::{DuboisReport, FlatDelaunayOptions, delaunay_tessellation_dubois};
+use surftopo_intrinsic::dubois::{
+    DuboisReport, FlatDelaunayOptions, ReduceOptions, delaunay_tessellation_dubois,
+};
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::method_choice::{
     Method as Choice, choose_method, choose_method_for_needle,
@@ -105,6 +107,11 @@ pub struct MethodOptions {
     /// portalgon JSON file given by exact corners).
     #[arg(long)]
     pub exact: bool,
+    /// With --method dubois: run all 350 inner repetitions of ALGORITHM (Section 4.5) per outer
+    /// iteration, as the paper does, instead of stopping at the first repetition that changes
+    /// nothing (the output is the same; slower).
+    #[arg(long)]
+    pub faithful: bool,
 }
 
 impl MethodOptions {
@@ -113,6 +120,9 @@ impl MethodOptions {
     /// # Errors
     /// An invalid-input error (exit 2).
     pub fn check(&self) -> anyhow::Result<()> {
+        if self.faithful && self.method != Method::Dubois {
+            return Err(invalid("--faithful applies to --method dubois only"));
+        }
         if self.exact && self.method == Method::Flip {
             return Err(invalid(
                 "--exact computes with --method voronoi or dubois only (the flip algorithm works on \
@@ -120,6 +130,14 @@ impl MethodOptions {
             ));
         }
         Ok(())
+    }
+
+    /// Proposition 2's reduction options (`--faithful`).
+    pub fn reduce_options(&self) -> ReduceOptions {
+        ReduceOptions {
+            faithful: self.faithful,
+            ..ReduceOptions::default()
+        }
     }
 }
 
@@ -166,6 +184,7 @@ type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
 fn tessellate<S: Scalar>(
     p: &Portalgon<S>,
     method: Method,
+    reduce: ReduceOptions,
     input: &Path,
 ) -> anyhow::Result<Tessellated<S>> {
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", input.display()));
@@ -176,6 +195,7 @@ fn tessellate<S: Scalar>(
                 // V = the input's vertices, as flip and voronoi (Section 1's footnote 1), so the
                 // Laplacian has a row per input vertex; a flat surface gets Theorem 1's one.
                 let options = FlatDelaunayOptions {
+                    reduce,
                     sources: surftopo_intrinsic::voronoi::Sources::All,
                     ..FlatDelaunayOptions::default()
                 };
@@ -463,7 +483,8 @@ fn run_exact(options: &Args, p: &Portalgon<Rational>, method: Method) -> anyhow:
     check_wave_options(options, method)?;
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    let (v, figures, reduced) = tessellate(p, method, &options.input)?;
+    let (v, figures, reduced) =
+        tessellate(p, method, options.method.reduce_options(), &options.input)?;
     let triangulated = v.triangulated().map_err(|e| fail(&e))?;
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
@@ -485,7 +506,8 @@ fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyh
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
     tri.validate().map_err(|e| fail(&e))?;
     let (p, _) = tri.to_portalgon();
-    let (v, figures, reduced) = tessellate(&p, method, &options.input)?;
+    let (v, figures, reduced) =
+        tessellate(&p, method, options.method.reduce_options(), &options.input)?;
     let tri = v.triangulation().map_err(|e| fail(&e))?;
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {

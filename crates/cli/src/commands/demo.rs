@@ -380,7 +380,11 @@ impl Demo {
                 weld: crate::args::WeldArg { weld: false },
                 json: crate::args::JsonArg { json: false },
                 reduced: file(reduced),
-                method: delaunay::MethodOptions { method, exact },
+                method: delaunay::MethodOptions {
+                    method,
+                    exact,
+                    faithful: false,
+                },
             })?;
         }
         Ok(())
@@ -420,7 +424,11 @@ impl Demo {
                 a: a.to_path_buf(),
                 b: b.to_path_buf(),
                 weld: crate::args::WeldArg { weld: false },
-                method: delaunay::MethodOptions { method, exact },
+                method: delaunay::MethodOptions {
+                    method,
+                    exact,
+                    faithful: false,
+                },
                 tolerance: surftopo_intrinsic::ISOMETRY_LENGTH_TOLERANCE,
                 json: crate::args::JsonArg { json: false },
             })?;

@@ -10,7 +10,7 @@ use crate::args::{JsonArg, WeldArg};
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
-use surftopo_intrinsic::dubois::{FlatDelaunayOptions, delaunay_tessellation_flat};
+use surftopo_intrinsic::dubois::{FlatDelaunayOptions, ReduceOptions, delaunay_tessellation_flat};
 use surftopo_intrinsic::geometry::Scalar;
 use surftopo_intrinsic::method_choice::{
     Method as Choice, choose_method, choose_method_for_triangulation,
@@ -90,11 +90,16 @@ fn canonical<S: Scalar>(
     path: &Path,
     p: &surftopo_intrinsic::Portalgon<S>,
     method: Method,
+    reduce: ReduceOptions,
 ) -> anyhow::Result<Portalgon> {
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
     let tessellation = if method == Method::Dubois {
         crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
-            delaunay_tessellation_flat(p, &FlatDelaunayOptions::default())
+            let options = FlatDelaunayOptions {
+                reduce,
+                ..FlatDelaunayOptions::default()
+            };
+            delaunay_tessellation_flat(p, &options)
         })
         .map_err(|e| fail(&e))?
         .delaunay
@@ -112,11 +117,12 @@ fn canonical_of_triangulation(
     path: &Path,
     tri: &IntrinsicTriangulation,
     method: Method,
+    reduce: ReduceOptions,
 ) -> anyhow::Result<Portalgon> {
     tri.validate()
         .map_err(|e| invalid(format!("{}: {e}", shown(path))))?;
     let (p, _) = tri.to_portalgon();
-    canonical(path, &p, method)
+    canonical(path, &p, method, reduce)
 }
 
 /// Whether two canonical tessellations correspond.
@@ -140,10 +146,10 @@ fn decide_by_tessellations(
     a: &Path,
     b: &Path,
     weld: bool,
-    method: Method,
-    exact: bool,
+    method: MethodOptions,
     options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
+    let (exact, reduce, method) = (method.exact, method.reduce_options(), method.method);
     let what = |method: Method| {
         if method == Method::Dubois {
             "Theorem 1 (Dubois) tessellation"
@@ -165,7 +171,10 @@ fn decide_by_tessellations(
             Method::Auto => Method::Voronoi,
             m => m,
         };
-        let (ta, tb) = (canonical(a, &pa, method)?, canonical(b, &pb, method)?);
+        let (ta, tb) = (
+            canonical(a, &pa, method, reduce)?,
+            canonical(b, &pb, method, reduce)?,
+        );
         let outcome = correspond(&ta, &tb, options)?;
         return Ok(if outcome.is_isometric() {
             isometric(method, outcome)
@@ -205,8 +214,8 @@ fn decide_by_tessellations(
             }
         }
     }
-    let tessellations = canonical_of_triangulation(a, &first, method)
-        .and_then(|ta| Ok((ta, canonical_of_triangulation(b, &second, method)?)));
+    let tessellations = canonical_of_triangulation(a, &first, method, reduce)
+        .and_then(|ta| Ok((ta, canonical_of_triangulation(b, &second, method, reduce)?)));
     if let Ok((ta, tb)) = tessellations {
         let outcome = correspond(&ta, &tb, options)?;
         if outcome.is_isometric() {
@@ -275,6 +284,6 @@ pub fn decide_args(args: &Args) -> anyhow::Result<IsometryDecision> {
         let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
         decide(a, b, &first, &second, &options)
     } else {
-        decide_by_tessellations(a, b, weld, method.method, method.exact, &options)
+        decide_by_tessellations(a, b, weld, *method, &options)
     }
 }
