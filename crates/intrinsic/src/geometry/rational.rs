@@ -571,6 +571,47 @@ mod tests {
         assert_eq!(checked, values.len() * values.len());
     }
 
+    /// A value from a numerator and a denominator of up to 64 bits each, scaled by `2^shift`
+    /// (`shift` up to ±80: many values then leave the inline range).
+    fn value(num: i64, den: u64, shift: i32) -> Rational {
+        let den = RBig::from(UBig::from(den.max(1)));
+        let scale = RBig::from(UBig::ONE << shift.unsigned_abs() as usize);
+        let r = RBig::from(IBig::from(num)) / den;
+        Rational::from_rbig(if shift >= 0 { r * scale } else { r / scale })
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn random_values_agree_with_big_rationals(
+            a in proptest::prelude::any::<(i64, u64)>(), b in proptest::prelude::any::<(i64, u64)>(),
+            sa in -80i32..80, sb in -80i32..80, small in 0u32..3,
+        ) {
+            // `small` = 1 or 2: narrow operands (the common case), else full 64-bit ones.
+            let narrow = |(n, d): (i64, u64)| if small > 0 { (n >> 40, (d >> 40).max(1)) } else { (n, d) };
+            let (a, b) = (narrow(a), narrow(b));
+            let (sa, sb) = if small > 0 { (sa / 8, sb / 8) } else { (sa, sb) };
+            let (x, y) = (value(a.0, a.1, sa), value(b.0, b.1, sb));
+            let (bx, by) = (x.to_rbig(), y.to_rbig());
+            for (got, want) in [
+                (x.clone() + y.clone(), &bx + &by),
+                (x.clone() - y.clone(), &bx - &by),
+                (x.clone() * y.clone(), &bx * &by),
+                (x.half(), &bx / RBig::from(2u8)),
+                (x.floor(), RBig::from(bx.floor())),
+            ] {
+                proptest::prop_assert!(canonical(&got));
+                proptest::prop_assert_eq!(got.to_rbig(), want);
+            }
+            if !y.is_zero() {
+                let q = x.clone() / y.clone();
+                proptest::prop_assert!(canonical(&q));
+                proptest::prop_assert_eq!(q.to_rbig(), &bx / &by);
+            }
+            proptest::prop_assert_eq!(x.cmp(&y), bx.cmp(&by));
+            proptest::prop_assert_eq!(x.to_f64(), bx.to_f64().value());
+        }
+    }
+
     #[test]
     fn parses_integers_decimals_and_fractions() {
         let r = |s: &str| s.parse::<Rational>().unwrap();
