@@ -15,6 +15,8 @@
 //! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
 //!    (`flip_to_delaunay_unless_needle`: the needle test on the half-angle cache of flipping's
 //!    first pass): the median over 101 adjacent pairs of runs of the ratio within a pair.
+//! 5. The shared meshes of at most 10 000 faces: Theorem 1 in `f64` (`--method dubois`) beside
+//!    flipping, the cost of Dubois where flipping is cheap.
 //!
 //! ```text
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
@@ -49,6 +51,9 @@ use surftopo_intrinsic::{
 /// within a pair (the two runs of a pair are adjacent in time and see the same load; which runs
 /// first alternates from pair to pair).
 const AUTO_PAIRS: usize = 101;
+
+/// The largest shared meshes of the Dubois-on-meshes table (each takes seconds to a minute).
+const SMALL_MESH_FACES: usize = 10_000;
 
 /// The median of `values` (sorted in place).
 fn median(values: &mut [f64]) -> f64 {
@@ -192,6 +197,90 @@ fn flip_and_check(
             };
             (Some(report.flips), Some(seconds), verdict)
         }
+    }
+}
+
+/// Section 5 of the report: Theorem 1 in `f64` (a cap at every vertex, V = every vertex, as
+/// `surftopo delaunay --method dubois` runs it) side by side with flipping on the shared meshes
+/// of at most [`SMALL_MESH_FACES`] faces, where flipping is cheap: what Dubois costs there.
+fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
+    let meshes: Vec<_> = surftopo_testkit::shared_meshes()
+        .into_iter()
+        .filter(|m| m.faces <= SMALL_MESH_FACES)
+        .collect();
+    if meshes.is_empty() {
+        eprintln!("no shared meshes (set SURFTOPO_MESHES): the Dubois-on-meshes table is skipped");
+        return;
+    }
+    write!(
+        md,
+        "\n## Dubois where flipping is cheap: the shared meshes of at most {SMALL_MESH_FACES} faces\n\n\
+         Theorem 1 in `f64` as `surftopo delaunay --method dubois` runs it (a cap at every vertex, \
+         Proposition 2 in double-double, the wave from every vertex; one run) beside flipping \
+         (`flip_to_delaunay`, best of 5), in one run. `T′ / F`: the triangles Proposition 2's \
+         reduction hands to the wave, per input face.\n\n\
+         | mesh | F | flip ms | Dubois ms | Dubois / flip | N | inner passes | T′ / F | wave events |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+    )
+    .expect("write to a string");
+    let options = FlatDelaunayOptions {
+        sources: Sources::All,
+        ..FlatDelaunayOptions::default()
+    };
+    for m in &meshes {
+        let s = surftopo_testkit::load(m);
+        let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
+        let (_, flip_seconds) = best_of(5, || {
+            let mut t = tri.clone();
+            flip_to_delaunay(&mut t, &DelaunayOptions::default()).expect("flips")
+        });
+        let (p, _) = tri.to_portalgon();
+        let (out, seconds) = best_of(1, || delaunay_tessellation_dubois(&p, &options));
+        let line = match out {
+            Ok(out) => {
+                let rep = &out.reduction;
+                writeln!(
+                    md,
+                    "| {} | {} | {:.3} | {:.0} | {:.0} | {} | {} | {:.1} | {} |",
+                    m.file,
+                    m.faces,
+                    flip_seconds * 1e3,
+                    seconds * 1e3,
+                    seconds / flip_seconds,
+                    rep.outer_iterations,
+                    rep.inner_passes_total,
+                    rep.triangles_after_reduction as f64 / m.faces as f64,
+                    out.delaunay.wave.events,
+                )
+                .expect("write to a string");
+                json!({
+                    "kind": "dubois_on_mesh", "mesh": m.file, "faces": m.faces,
+                    "flip_seconds": flip_seconds, "seconds": seconds,
+                    "outer_iterations": rep.outer_iterations,
+                    "inner_passes_total": rep.inner_passes_total,
+                    "triangles_after_reduction": rep.triangles_after_reduction,
+                    "wave_events": out.delaunay.wave.events,
+                })
+            }
+            Err(e) => {
+                writeln!(
+                    md,
+                    "| {} | {} | {:.3} | error: {e} | | | | | |",
+                    m.file,
+                    m.faces,
+                    flip_seconds * 1e3
+                )
+                .expect("write to a string");
+                json!({"kind": "dubois_on_mesh", "mesh": m.file, "faces": m.faces, "error": e.to_string()})
+            }
+        };
+        writeln!(jsonl, "{line}").expect("write to a string");
+        eprintln!(
+            "{}: Dubois {:.0} ms, flip {:.2} ms",
+            m.file,
+            seconds * 1e3,
+            flip_seconds * 1e3
+        );
     }
 }
 
@@ -444,6 +533,8 @@ fn main() {
         )
         .expect("write to a string");
     }
+
+    dubois_on_small_meshes(&mut md, &mut jsonl);
 
     let results = out_dir.join("results");
     std::fs::create_dir_all(&results).expect("results directory");

@@ -848,10 +848,12 @@ fn reduce_checked<S: Scalar>(
         if r.active_polygons().is_empty() && !options.faithful {
             break;
         }
+        #[cfg(debug_assertions)]
         let active_before = r.active_vertex_count();
         r.insert_vertices()?;
         // Lemma 3: INSERTVERTICES leaves fewer than 7(g + m_A) vertices (g ≥ the genus of S(R_A)).
-        debug_assert!(
+        #[cfg(debug_assertions)]
+        assert!(
             active_before == 0 || r.active_vertex_count() < 7 * (genus + active_before),
             "Lemma 3"
         );
