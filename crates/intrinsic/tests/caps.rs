@@ -263,12 +263,23 @@ fn check_triangulation_against_flip(
     faces: usize,
     tolerance: f64,
 ) -> Result<f64, String> {
-    let (p, _) = tri.to_portalgon();
     let options = FlatDelaunayOptions {
         sources: Sources::All,
         ..FlatDelaunayOptions::default()
     };
-    let out = delaunay_tessellation_dubois(&p, &options).map_err(|e| format!("{name}: {e}"))?;
+    check_triangulation_against_flip_with(tri, name, faces, tolerance, &options)
+}
+
+/// [`check_triangulation_against_flip`] with `options` (V must be every vertex).
+fn check_triangulation_against_flip_with(
+    tri: &IntrinsicTriangulation,
+    name: &str,
+    faces: usize,
+    tolerance: f64,
+    options: &FlatDelaunayOptions,
+) -> Result<f64, String> {
+    let (p, _) = tri.to_portalgon();
+    let out = delaunay_tessellation_dubois(&p, options).map_err(|e| format!("{name}: {e}"))?;
     assert_eq!(
         out.delaunay.sources.len(),
         tri.mesh().vertex_count(),
@@ -348,6 +359,46 @@ fn dubois_with_caps_equals_flip_on_generated_surfaces() {
         let faces = tri.mesh().face_count();
         check_triangulation_against_flip(tri, name, faces, 1e-12).unwrap();
     }
+}
+
+/// When the wave's point tolerance is coarse for the surface's features, its dual fails and
+/// Theorem 1 in `f64` runs the wave again at a finer tolerance (`CAPS_F64_FINER_TOLERANCE`):
+/// here an icosphere whose faces at one vertex are split at a hundredth of the way to their
+/// centroids, with the wave told points apart only to 1e-3 of the longest side (the dual then
+/// misses a Voronoi vertex, as on `seahorse2_100K.off` at the default 1e-9), gives flipping's
+/// Laplacian to 1e-12 through the retry at 1e-6.
+#[test]
+fn a_wave_tolerance_too_coarse_for_the_features_is_retried_finer() {
+    use surftopo_mesh::Surface;
+    use surftopo_mesh::generators::icosphere;
+    let s = icosphere(1);
+    let mut positions = s.positions.clone();
+    let mut triangles = Vec::new();
+    for f in s.mesh.faces() {
+        let t = s.mesh.face_vertices(f).map(|v| v.0);
+        if !t.contains(&0) {
+            triangles.push(t);
+            continue;
+        }
+        let at = |k: usize| t.map(|v| positions[v as usize][k]);
+        let w = [0, 1, 2].map(|k| {
+            let c = at(k).iter().sum::<f64>() / 3.0;
+            positions[0][k] + 0.01 * (c - positions[0][k])
+        });
+        positions.push(w);
+        let n = (positions.len() - 1) as u32;
+        triangles.extend([[t[0], t[1], n], [t[1], t[2], n], [t[2], t[0], n]]);
+    }
+    let surface = Surface::from_triangles(positions, &triangles).unwrap();
+    let tri = IntrinsicTriangulation::from_positions(surface.mesh, &surface.positions).unwrap();
+    let mut options = FlatDelaunayOptions {
+        sources: Sources::All,
+        ..FlatDelaunayOptions::default()
+    };
+    options.wave.point_tolerance = 1e-3;
+    let faces = tri.mesh().face_count();
+    check_triangulation_against_flip_with(&tri, "clustered icosphere", faces, 1e-12, &options)
+        .unwrap();
 }
 
 /// The variable naming the mesh [`dubois_against_flip_on_one_shared_mesh`] checks.

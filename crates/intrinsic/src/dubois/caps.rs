@@ -83,8 +83,16 @@
 //!   longest side; that merged distinct sites of near-co-circular configurations, which broke
 //!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
 //!   is built again pooling the sites of Voronoi vertices taken for one, then at
-//!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]);
-//!   `results/dubois-every-mesh.txt` shows where they are needed.
+//!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]).
+//!   When all three fail, the wave and the dual run again at a point tolerance
+//!   [`CAPS_F64_FINER_TOLERANCE`] times finer (1e-12, the dual retried at 1e-11). The tolerance
+//!   is taken at the scale of the longest side, and a surface with features thousands of times
+//!   smaller can have whole clusters of sites within it: on `seahorse2_100K.off`'s `T′`
+//!   (longest side 0.07) a cap triangle has a side of 1.9e-6 and 17 sites within 3.2e-5 of a
+//!   Voronoi vertex; the side diagrams' ties (about 2e-9 in squared distance, against squared
+//!   distances of 1.5e-10 to 1e-9) swallow them all, and the dual misses the vertex. The
+//!   coarse tolerance comes first because it merges near-co-circular vertices where the fine
+//!   one may not; `results/dubois-every-mesh.txt` shows where each retry is needed.
 //! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
 //!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
 //!   off their line by an ulp, would otherwise produce.
@@ -127,6 +135,10 @@ pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
 /// In `f64`, the tolerance at which the dual of the wave on `T′` is built again when it fails
 /// at its own ([`VoronoiOptions::dual_retry_tolerance`]): see the module doc.
 pub const CAPS_F64_DUAL_RETRY_TOLERANCE: f64 = 1e-8;
+
+/// In `f64`, when the wave and its dual on `T′` fail at their point tolerance, they run again at
+/// that tolerance times this (1e-9 by default, then 1e-12): see the module doc.
+pub const CAPS_F64_FINER_TOLERANCE: f64 = 1e-3;
 
 /// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -651,9 +663,21 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         // tolerance (module doc), which is kept.
         wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
     }
-    let mut delaunay = match options.sources {
-        Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
-        Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
+    let wave_and_dual = |wave_options: &VoronoiOptions| match options.sources {
+        Sources::Singular => voronoi_delaunay(&t_prime, wave_options),
+        Sources::All => voronoi_delaunay_from(&t_prime, apexes.clone(), wave_options),
+    };
+    let mut delaunay = match wave_and_dual(&wave_options) {
+        // Features far below the default tolerance (module doc): the wave again, finer.
+        Err(e) if !S::EXACT && e.is_numerical() => {
+            let fine = wave_options.wave.point_tolerance * CAPS_F64_FINER_TOLERANCE;
+            let mut finer = wave_options;
+            finer.wave.point_tolerance = fine;
+            finer.dual_tolerance = fine;
+            finer.dual_retry_tolerance = Some(fine * 1e1);
+            wave_and_dual(&finer).map_err(|_| e)?
+        }
+        result => result?,
     };
     relabel_with_input_labels(&t_prime, &mut delaunay)?;
     Ok(ConeDelaunay {
