@@ -731,3 +731,35 @@ fn assert_laplacian_close(
         }
     }
 }
+
+/// When the wave's and the dual's tolerances are coarse for the surface's features they can
+/// refuse it; [`VoronoiOptions::finer_retry`] runs both again finer, which answers with the flip
+/// route's tessellation: rectangle-grid tori jittered by 1e-4 to 3e-4 of their side, told apart
+/// to 1e-4 (the jitter is then near-co-circularity at the tolerance, as the default 1e-9 meets
+/// on meshes with features 10⁴ times smaller than their longest side), retried at 1e-7.
+#[test]
+fn coarse_tolerances_are_retried_finer_when_asked() {
+    let mut coarse = VoronoiOptions::default();
+    coarse.wave.point_tolerance = 1e-4;
+    coarse.dual_tolerance = 1e-4;
+    let finer = VoronoiOptions {
+        finer_retry: Some(1e-3),
+        ..coarse
+    };
+    let mut rescued = 0;
+    for (seed, jitter) in [1e-4, 2e-4, 3e-4].into_iter().enumerate() {
+        for m in [5, 8] {
+            let tri = jittered_rectangle_torus(m, jitter, seed as u64);
+            let (p, _) = tri.to_portalgon();
+            if voronoi_delaunay(&p, &coarse).is_ok() {
+                continue;
+            }
+            let what = format!("m = {m}, jitter {jitter:e}, retried finer");
+            let v = voronoi_delaunay(&p, &finer).unwrap_or_else(|e| panic!("{what}: {e}"));
+            assert_same_as_flip(&tri, &p, &v, &what);
+            rescued += 1;
+        }
+    }
+    eprintln!("{rescued} refused at 1e-4 and answered at 1e-7");
+    assert!(rescued > 0, "no case refused at the coarse tolerance");
+}

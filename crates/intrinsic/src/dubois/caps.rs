@@ -84,8 +84,9 @@
 //!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
 //!   is built again pooling the sites of Voronoi vertices taken for one, then at
 //!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]).
-//!   When all three fail, the wave and the dual run again at a point tolerance
-//!   [`CAPS_F64_FINER_TOLERANCE`] times finer (1e-12, the dual retried at 1e-11). The tolerance
+//!   When all three fail, the wave and the dual run again at tolerances
+//!   [`CAPS_F64_FINER_TOLERANCE`] times finer ([`VoronoiOptions::finer_retry`]: points 1e-12,
+//!   the dual 1e-12 and 1e-11). The tolerance
 //!   is taken at the scale of the longest side, and a surface with features thousands of times
 //!   smaller can have whole clusters of sites within it: on `seahorse2_100K.off`'s `T′`
 //!   (longest side 0.07) a cap triangle has a side of 1.9e-6 and 17 sites within 3.2e-5 of a
@@ -136,8 +137,9 @@ pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
 /// at its own ([`VoronoiOptions::dual_retry_tolerance`]): see the module doc.
 pub const CAPS_F64_DUAL_RETRY_TOLERANCE: f64 = 1e-8;
 
-/// In `f64`, when the wave and its dual on `T′` fail at their point tolerance, they run again at
-/// that tolerance times this (1e-9 by default, then 1e-12): see the module doc.
+/// In `f64`, when the wave and its dual on `T′` fail, they run again at their tolerances times
+/// this ([`VoronoiOptions::finer_retry`]; points 1e-9 by default, then 1e-12): see the module
+/// doc.
 pub const CAPS_F64_FINER_TOLERANCE: f64 = 1e-3;
 
 /// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
@@ -662,22 +664,12 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         // `T′` from the double-double reduction closes up to far below the wave's own point
         // tolerance (module doc), which is kept.
         wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
-    }
-    let wave_and_dual = |wave_options: &VoronoiOptions| match options.sources {
-        Sources::Singular => voronoi_delaunay(&t_prime, wave_options),
-        Sources::All => voronoi_delaunay_from(&t_prime, apexes.clone(), wave_options),
-    };
-    let mut delaunay = match wave_and_dual(&wave_options) {
         // Features far below the default tolerance (module doc): the wave again, finer.
-        Err(e) if !S::EXACT && e.is_numerical() => {
-            let fine = wave_options.wave.point_tolerance * CAPS_F64_FINER_TOLERANCE;
-            let mut finer = wave_options;
-            finer.wave.point_tolerance = fine;
-            finer.dual_tolerance = fine;
-            finer.dual_retry_tolerance = Some(fine * 1e1);
-            wave_and_dual(&finer).map_err(|_| e)?
-        }
-        result => result?,
+        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
+    }
+    let mut delaunay = match options.sources {
+        Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
+        Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
     };
     relabel_with_input_labels(&t_prime, &mut delaunay)?;
     Ok(ConeDelaunay {

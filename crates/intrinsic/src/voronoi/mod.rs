@@ -81,6 +81,12 @@ pub struct VoronoiOptions {
     /// for one (see the dual's module doc), then at this tolerance; the first error is reported
     /// if both fail.
     pub dual_retry_tolerance: Option<f64>,
+    /// In `f64`: when the wave and its dual still fail (a numerical refusal), they run again with
+    /// the wave's point tolerance and the dual's tolerances multiplied by this (e.g. 1e-3, for a
+    /// surface whose features are thousands of times smaller than its longest side, where the
+    /// tolerances taken at the longest side's scale swallow whole clusters of sites); the first
+    /// error is reported if that fails too.
+    pub finer_retry: Option<f64>,
 }
 
 impl Default for VoronoiOptions {
@@ -91,6 +97,7 @@ impl Default for VoronoiOptions {
             wave: WaveOptions::default(),
             dual_tolerance: WaveOptions::default().point_tolerance,
             dual_retry_tolerance: None,
+            finer_retry: None,
         }
     }
 }
@@ -227,8 +234,34 @@ pub fn voronoi_delaunay_from<S: Scalar>(
 }
 
 /// The wave from `sources` and its dual; corners labelled with the source index, or with `p`'s
-/// labels when `input_labels` and every corner of `p` has one.
+/// labels when `input_labels` and every corner of `p` has one. In `f64`, a numerical refusal
+/// runs both again with [`VoronoiOptions::finer_retry`]'s tolerances, when set.
 fn wave_and_dual<S: Scalar>(
+    p: &Portalgon<S>,
+    sources: Vec<u32>,
+    class: &[u32],
+    options: &VoronoiOptions,
+    input_labels: bool,
+) -> Result<VoronoiDelaunay<S>, VoronoiError> {
+    let factor = options.finer_retry.filter(|_| !S::EXACT);
+    let retry_sources = factor.map(|_| sources.clone());
+    match wave_and_dual_at(p, sources, class, options, input_labels) {
+        Err(first) if first.is_numerical() => {
+            let (Some(factor), Some(sources)) = (factor, retry_sources) else {
+                return Err(first);
+            };
+            let mut finer = *options;
+            finer.wave.point_tolerance *= factor;
+            finer.dual_tolerance *= factor;
+            finer.dual_retry_tolerance = finer.dual_retry_tolerance.map(|t| t * factor);
+            wave_and_dual_at(p, sources, class, &finer, input_labels).map_err(|_| first)
+        }
+        result => result,
+    }
+}
+
+/// [`wave_and_dual`] at the tolerances of `options` (the dual retried as they say).
+fn wave_and_dual_at<S: Scalar>(
     p: &Portalgon<S>,
     sources: Vec<u32>,
     class: &[u32],
