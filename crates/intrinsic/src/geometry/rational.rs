@@ -113,6 +113,14 @@ impl Rational {
         }
     }
 
+    /// The value as an `RBig`, moved out when it is one.
+    fn into_rbig(self) -> RBig {
+        match self.0 {
+            Repr::Big(r) => r,
+            small => Rational(small).to_rbig(),
+        }
+    }
+
     /// The numerator and the (positive) denominator, reduced.
     fn parts(&self) -> (IBig, UBig) {
         match &self.0 {
@@ -264,7 +272,7 @@ impl Add for Rational {
                     Rational::from_i128(a * d + c * b, b * d)
                 }
             }
-            _ => Rational::from_rbig(self.to_rbig() + rhs.to_rbig()),
+            _ => Rational::from_rbig(self.into_rbig() + rhs.into_rbig()),
         }
     }
 }
@@ -293,7 +301,7 @@ impl Mul for Rational {
                     i128::from(b) * i128::from(d),
                 )
             }
-            _ => Rational::from_rbig(self.to_rbig() * rhs.to_rbig()),
+            _ => Rational::from_rbig(self.into_rbig() * rhs.into_rbig()),
         }
     }
 }
@@ -316,7 +324,7 @@ impl Div for Rational {
                 };
                 self * Rational(inverse)
             }
-            Repr::Big(r) => Rational::from_rbig(self.to_rbig() / r),
+            Repr::Big(r) => Rational::from_rbig(self.into_rbig() / r),
         }
     }
 }
