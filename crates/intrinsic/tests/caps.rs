@@ -253,28 +253,26 @@ fn the_surface_is_unchanged_by_every_step() {
 fn check_dubois_against_flip(mesh: &SharedMesh, tolerance: f64) -> Result<f64, String> {
     let s = load(mesh);
     let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap();
-    check_triangulation_against_flip(&tri, &mesh.file, mesh.faces, tolerance)
+    check_triangulation_against_flip(&tri, &mesh.file, tolerance)
 }
 
 /// [`check_dubois_against_flip`] on any intrinsic triangulation, named `name` in messages.
 fn check_triangulation_against_flip(
     tri: &IntrinsicTriangulation,
     name: &str,
-    faces: usize,
     tolerance: f64,
 ) -> Result<f64, String> {
     let options = FlatDelaunayOptions {
         sources: Sources::All,
         ..FlatDelaunayOptions::default()
     };
-    check_triangulation_against_flip_with(tri, name, faces, tolerance, &options)
+    check_triangulation_against_flip_with(tri, name, tolerance, &options)
 }
 
 /// [`check_triangulation_against_flip`] with `options` (V must be every vertex).
 fn check_triangulation_against_flip_with(
     tri: &IntrinsicTriangulation,
     name: &str,
-    faces: usize,
     tolerance: f64,
     options: &FlatDelaunayOptions,
 ) -> Result<f64, String> {
@@ -306,7 +304,7 @@ fn check_triangulation_against_flip_with(
         "{}: {} faces, {} cone points, N = {}, {} triangles after reduction, {} events, \
          Laplacian within {deviation:.1e} of flipping's",
         name,
-        faces,
+        tri.mesh().face_count(),
         out.cone_points,
         out.reduction.outer_iterations,
         out.reduction.triangles_after_reduction,
@@ -356,8 +354,7 @@ fn dubois_with_caps_equals_flip_on_generated_surfaces() {
         cases.push((name, tri));
     }
     for (name, tri) in &cases {
-        let faces = tri.mesh().face_count();
-        check_triangulation_against_flip(tri, name, faces, 1e-12).unwrap();
+        check_triangulation_against_flip(tri, name, 1e-12).unwrap();
     }
 }
 
@@ -396,9 +393,7 @@ fn a_wave_tolerance_too_coarse_for_the_features_is_retried_finer() {
         ..FlatDelaunayOptions::default()
     };
     options.wave.point_tolerance = 1e-3;
-    let faces = tri.mesh().face_count();
-    check_triangulation_against_flip_with(&tri, "clustered icosphere", faces, 1e-12, &options)
-        .unwrap();
+    check_triangulation_against_flip_with(&tri, "clustered icosphere", 1e-12, &options).unwrap();
 }
 
 /// The variable naming the mesh [`dubois_against_flip_on_one_shared_mesh`] checks.
