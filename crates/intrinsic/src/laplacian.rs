@@ -17,10 +17,10 @@
 //!
 //! Rows and columns are the live vertices in increasing id order ([`dense_vertex_index`]).
 
-use crate::delaunay::{DelaunayOptions, FlipReport, flip_keeping_tan_half_sq};
 use crate::error::DelaunayError;
+use crate::flip::{DelaunayOptions, FlipReport, flip_keeping_tan_half_sq};
 use crate::triangulation::IntrinsicTriangulation;
-use crate::trig;
+use crate::triangulation::trig;
 use surftopo_mesh::EdgeId;
 
 /// A square sparse matrix in compressed rows, columns sorted within each row.

@@ -52,64 +52,55 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
-mod biface;
-mod convert;
-mod delaunay;
 pub mod dubois;
 mod error;
-mod flat;
-pub mod flat_torus_lattice;
-mod format;
+mod flip;
+mod formats;
 pub mod generators;
 pub mod geometry;
 mod isometry;
-mod isometry_decision;
 mod laplacian;
-mod matrix_market;
 pub mod method_choice;
-mod mollify;
-mod numpy;
 mod portalgon;
-mod portalgon_edits;
-mod quality;
-mod stats;
-mod tessellation;
-mod text_blocks;
 mod triangulation;
-mod trig;
-mod tube;
 pub mod voronoi;
 
-pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
-pub use delaunay::{
-    DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
-    flip_to_delaunay_unless_needle,
+pub use dubois::biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
+pub use dubois::tube::{
+    LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon,
 };
 pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
 };
-pub use flat::{RemovalReport, remove_flat_vertices};
-pub use format::{FORMAT_NAME, FORMAT_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle};
+pub use flip::stats::{DelaunayStats, delaunay_with_stats, delaunay_with_stats_unless_needle};
+pub use flip::tessellation::{
+    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
+};
+pub use flip::{
+    DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
+    flip_to_delaunay_unless_needle,
+};
+pub use formats::matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
+pub use formats::numpy::{write_npy, write_npz};
+pub use formats::portalgon_json::{
+    FORMAT_NAME, FORMAT_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle,
+};
+pub use isometry::decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
+pub use isometry::flat_torus_lattice::flat_torus_invariants;
+pub use isometry::flat_vertices::{RemovalReport, remove_flat_vertices};
 pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
     MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,
 };
-pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use laplacian::{
     SparseMatrix, cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass,
 };
-pub use matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
-pub use mollify::{MAX_MOLLIFY, mollify};
-pub use numpy::{write_npy, write_npz};
 pub use portalgon::{
-    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SHORTCUT_MIN_SINE, SideId,
-    check_polygon, signed_area,
+    Component, DEFAULT_LENGTH_TOLERANCE, EditError, Point2, PolygonId, Portalgon, Regions,
+    SHORTCUT_MIN_SINE, SideId, VertexInfo, check_polygon, signed_area,
 };
-pub use portalgon_edits::{Component, EditError, VertexInfo};
-pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
-pub use stats::{DelaunayStats, delaunay_with_stats, delaunay_with_stats_unless_needle};
-pub use tessellation::{
-    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
+pub use triangulation::mollify::{MAX_MOLLIFY, mollify};
+pub use triangulation::quality::{
+    DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality,
 };
 pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
-pub use tube::{LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon};

@@ -10,7 +10,7 @@
 //!   = 10⁵ leaves a margin of 45 below the first failure.
 //! - Aspect at most the limit: [`Method::Flip`] (on the shared meshes flipping is the fastest
 //!   method). The CLI runs the test on the half-angle cache flipping's first pass fills
-//!   ([`crate::delaunay::flip_to_delaunay_unless_needle`], leaving before any flip when there
+//!   ([`crate::flip::flip_to_delaunay_unless_needle`], leaving before any flip when there
 //!   is a needle), so on the inputs it flips `auto` adds nothing but the test itself.
 //! - Above the limit, no cone point: [`Method::Dubois`] (Theorem 1: time polylogarithmic in the
 //!   aspect ratio, exact in exact mode).
@@ -25,8 +25,8 @@
 
 use crate::geometry::Scalar;
 use crate::portalgon::Portalgon;
-use crate::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 
 /// The Delaunay methods [`choose_method`] chooses between.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,7 +145,7 @@ pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
 }
 
 /// [`method_for`] a triangulation known to have a needle (e.g. from
-/// [`crate::delaunay::flip_to_delaunay_unless_needle`]): flatness decided from its angle sums as
+/// [`crate::flip::flip_to_delaunay_unless_needle`]): flatness decided from its angle sums as
 /// in [`choose_method_for_triangulation`].
 pub fn choose_method_for_needle(tri: &IntrinsicTriangulation) -> Method {
     method_for(true, || is_flat(tri))
@@ -162,7 +162,7 @@ fn is_flat(tri: &IntrinsicTriangulation) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trig::tan_half_sq_all;
+    use crate::triangulation::trig::tan_half_sq_all;
 
     /// The bound behind the half-angle shortcut: no triangle with every `tan²(θ/2)` at least
     /// [`SURELY_NOT_NEEDLE_TAN_HALF_SQ`] is a needle, on triangles of every shape (aspect ratios

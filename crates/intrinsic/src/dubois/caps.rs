@@ -159,8 +159,8 @@ impl From<crate::error::PortalgonError> for CapsError {
     }
 }
 
-impl From<crate::portalgon_edits::EditError> for CapsError {
-    fn from(e: crate::portalgon_edits::EditError) -> Self {
+impl From<crate::portalgon::EditError> for CapsError {
+    fn from(e: crate::portalgon::EditError) -> Self {
         Self::Reduction(e.into())
     }
 }

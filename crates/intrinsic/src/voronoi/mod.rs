@@ -48,8 +48,8 @@ pub use wave::{SideCell, Wave, WaveError, WaveOptions, run_wave};
 use crate::error::PortalgonError;
 use crate::geometry::Scalar;
 use crate::portalgon::Portalgon;
-use crate::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 
 /// The vertex set V the wave starts from.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -6,7 +6,7 @@
 //! the vertex is flat iff the composed map around the star is the identity and the corners wind
 //! exactly once around the vertex (the number of corner wedges, half-open, that contain the
 //! direction of the first side). In `f64` the angle sum is summed with `atan2` and compared with 2π
-//! up to the tolerance of [`crate::quality`] ([`crate::DEFAULT_ANGLE_TOLERANCE`] = 1e-9 radians by
+//! up to the tolerance of [`crate::triangulation::quality`] ([`crate::DEFAULT_ANGLE_TOLERANCE`] = 1e-9 radians by
 //! default).
 
 use std::cmp::Ordering;

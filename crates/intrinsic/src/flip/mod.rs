@@ -8,7 +8,7 @@
 //! number of triangles (Dubois, Section 1.1 and Section 9: the flat torus T_x needs about x flips),
 //! so every run has a flip budget and fails with a typed error instead of running on.
 //!
-//! Numerics (see [`crate::trig`]): the test of an edge is `tan(γ/2) · tan(δ/2) > 1 + tolerance`
+//! Numerics (see [`crate::triangulation::trig`]): the test of an edge is `tan(γ/2) · tan(δ/2) > 1 + tolerance`
 //! with the half-angle tangents from Kahan's ordered factors — relative error a few ulps, no
 //! cancellation even for needles; the new length after a flip comes from a sum of non-negative
 //! terms (`|cd|² = (|ac| - |ad|)² + 4|ac||ad| sin²(θ/2)`). Every new length is checked: a
@@ -19,8 +19,11 @@
 //! them). An edge whose two sides are the same face is never non-Delaunay (its two opposite angles
 //! are the base angles of an isosceles triangle) and is never flipped.
 
+pub(crate) mod stats;
+pub(crate) mod tessellation;
+
 use crate::error::DelaunayError;
-use crate::mollify::mollify;
+use crate::triangulation::mollify::mollify;
 use crate::triangulation::{IntrinsicTriangulation, store_tan_half_sq};
 use surftopo_mesh::EdgeId;
 
@@ -197,7 +200,7 @@ fn flip_unless(
                 let (h1, h2) = (mesh.next(h), mesh.prev(h));
                 let (t1, t2h) = (mesh.next(t), mesh.prev(t));
                 let [bc, ca, ad, db] = [h1, h2, t1, t2h].map(|g| tri.halfedge_length(g));
-                let length = crate::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
+                let length = crate::triangulation::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
                 if !(length.is_finite() && length > 0.0) {
                     return Err(DelaunayError::NumericalBreakdown {
                         edge: e.0,

@@ -10,7 +10,7 @@
 //! - [`TubeRoute::Direct`], DUBOIS.md §2.1(c) (a *reconstruction*): unfold the whole tube into
 //!   one chart along a dual spanning tree, read the deck transformation `g` off a non-tree side,
 //!   sum the angle `ψ₀` around `g`'s centre along a path of the chart, and apply the kernel of
-//!   [`crate::biface`] once: O(n + log h) operations.
+//!   [`crate::dubois::biface`] once: O(n + log h) operations.
 //!
 //! Lemmas 25 and 26 delegate to exhaustive searches on portalgons of constant happiness; here both
 //! are the ladder kernel [`good_biface_of_ladder`] on the unfolded biface (2 triangles) or
@@ -32,11 +32,11 @@ use std::cmp::Ordering;
 use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 
-use crate::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
+use crate::dubois::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
 use crate::error::PortalgonError;
 use crate::geometry::{Motion, Point, Scalar, complex_div, complex_mul, cross, dist2, dot, sub};
+use crate::portalgon::{EditError, VertexInfo};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
-use crate::portalgon_edits::{EditError, VertexInfo};
 
 /// Lemma 28 deletes interior weak vertices of degree at most this.
 pub const LEMMA_28_MAX_DEGREE: u32 = 10;

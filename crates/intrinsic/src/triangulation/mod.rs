@@ -9,10 +9,15 @@
 //! Conventions: side `i` of face `f` is `mesh.face_halfedges(f)[i]`, from corner `i` to corner
 //! `i + 1`; the *corner* of a half-edge `h` is the corner at `origin(h)` in `face(h)`.
 
+pub(crate) mod convert;
+pub(crate) mod mollify;
+pub(crate) mod quality;
+pub(crate) mod trig;
+
 use crate::error::{GeometryError, SoupError};
-use crate::trig::{self, Quad};
 use surftopo_mesh::geometry::{Point3, check_finite, edge_lengths};
 use surftopo_mesh::{BuildReport, EdgeId, FaceId, HalfedgeId, SurfaceMesh, VertexId};
+use trig::Quad;
 
 /// An intrinsic triangulation of a closed surface: topology and edge lengths.
 #[derive(Clone, Debug, PartialEq)]
