@@ -62,6 +62,7 @@ mod isometry;
 mod laplacian;
 pub mod method_choice;
 mod portalgon;
+mod sparse;
 mod triangulation;
 pub mod voronoi;
 
@@ -92,13 +93,12 @@ pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
     MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,
 };
-pub use laplacian::{
-    SparseMatrix, cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass,
-};
+pub use laplacian::{cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass};
 pub use portalgon::{
     Component, DEFAULT_LENGTH_TOLERANCE, EditError, Point2, PolygonId, Portalgon, Regions,
     SHORTCUT_MIN_SINE, SideId, VertexInfo, check_polygon, signed_area,
 };
+pub use sparse::SparseMatrix;
 pub use triangulation::mollify::{MAX_MOLLIFY, mollify};
 pub use triangulation::quality::{
     DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality,

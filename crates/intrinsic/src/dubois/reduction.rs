@@ -74,15 +74,6 @@
 //! `f64` (the routines then run with the tolerances of the edits they call). [`reduce`] takes a
 //! closed flat input; [`reduce_with_boundary`] a flat input with boundary (every interior vertex
 //! of angle 2π), Section 8's truncated surface.
-//!
-//! **Section 8 and Theorem 1 with cone points** ([`caps`]): [`cut_caps`], [`proposition_2`],
-//! [`put_caps_back`], [`delaunay_tessellation_dubois`] (the CLI's `delaunay --method dubois`).
-//!
-//! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
-//! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
-//! ([`crate::voronoi::voronoi_delaunay`] from one vertex, the lowest side id's, of the reduced
-//! triangulation), reporting both; a cone point is refused with
-//! [`FlatDelaunayError::ConePoint`] naming the first one ([`first_cone_point`]).
 
 use crate::dubois::biface::{Biface, BifaceError, BifaceKind};
 use crate::dubois::tube::{Tube, TubeError, TubeRoute, sides_by_vertex};
@@ -796,7 +787,7 @@ pub fn reduce<S: Scalar>(
 /// (Section 8's truncated surface `T₁`): as [`reduce`], with every *interior* vertex flat. The
 /// boundary sides are never split nor removed and keep their identity through every routine
 /// (the splice keeps boundary ids; compaction renumbers them, [`Reduction::side_of_input`]
-/// follows), so the caller can glue back what it cut off ([`caps::put_caps_back`]).
+/// follows), so the caller can glue back what it cut off ([`super::put_caps_back`]).
 ///
 /// # Errors
 /// As [`reduce`] (a boundary is allowed).

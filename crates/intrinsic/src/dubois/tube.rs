@@ -181,7 +181,7 @@ impl<S: Scalar> Portalgon<S> {
         }
         for &s in &c.interior_vertices {
             // Interior: every side around it is matched, so its star closes up.
-            let sides = crate::voronoi::star(self, s).ok_or_else(not_annulus)?;
+            let sides = self.star(s).ok_or_else(not_annulus)?;
             let (full_turn, angle) = self.is_full_turn(&sides, tolerance);
             if !full_turn {
                 return Err(TubeError::NotFlat {

@@ -19,6 +19,7 @@
 //! them). An edge whose two sides are the same face is never non-Delaunay (its two opposite angles
 //! are the base angles of an isosceles triangle) and is never flipped.
 
+pub(crate) mod needle;
 pub(crate) mod stats;
 pub(crate) mod tessellation;
 
@@ -111,9 +112,9 @@ pub(crate) fn flip_keeping_tan_half_sq(
 
 /// [`flip_to_delaunay`] for `--method auto` ([`crate::method_choice`]): `Ok(None)`, before any
 /// flip and with the triangulation unchanged (mollified first when `options.mollify` asks), when
-/// some triangle's aspect ratio exceeds [`crate::method_choice::AUTO_ASPECT_LIMIT`] (a degenerate
+/// some triangle's aspect ratio exceeds [`needle::AUTO_ASPECT_LIMIT`] (a degenerate
 /// one counts). The needle test reads the half-angle cache flipping's own first pass fills
-/// (`method_choice::has_needle_given_half_angles`), so `auto` costs flipping next to
+/// (`needle::has_needle_given_half_angles`), so `auto` costs flipping next to
 /// nothing on the inputs it flips.
 ///
 /// # Errors
@@ -127,7 +128,7 @@ pub fn flip_to_delaunay_unless_needle(
 }
 
 /// The flip algorithm; with `stop_at_needle`, `Ok(None)` when some face is a needle after the
-/// first pass (before any flip: [`crate::method_choice::has_needle_given_half_angles`], one scan
+/// first pass (before any flip: [`needle::has_needle_given_half_angles`], one scan
 /// of the half-angle cache that pass fills). A flag rather than a closure: `flip` and `auto` run
 /// the same machine code, which differs only by that scan.
 fn flip_unless(
@@ -156,14 +157,14 @@ fn flip_unless(
         let sides = halfedges.map(|h| tri.halfedge_length(h));
         let smallest = store_tan_half_sq(halfedges, sides, &mut t2);
         if smallest.is_nan() || smallest <= 0.0 {
-            // A degenerate triangle counts as a needle ([`crate::method_choice::is_needle`]).
+            // A degenerate triangle counts as a needle ([`needle::is_needle`]).
             if stop_at_needle {
                 return Ok(None);
             }
             tri.validate()?;
         }
     }
-    if stop_at_needle && crate::method_choice::has_needle_given_half_angles(tri, &t2) {
+    if stop_at_needle && needle::has_needle_given_half_angles(tri, &t2) {
         return Ok(None);
     }
     let max_flips = options

@@ -24,9 +24,9 @@
 //! canonical tessellation has V = the singular vertices (see [`crate::canonical_tessellation`],
 //! which removes the flat ones first).
 
-use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::dense_vertex_index;
 use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind};
 

@@ -9,7 +9,7 @@
 //! benchmark's comparison with libigl.
 
 use crate::formats::text_blocks::{block_count, block_range, write_blocks};
-use crate::laplacian::SparseMatrix;
+use crate::sparse::SparseMatrix;
 use std::io::{self, BufRead, Write};
 use surftopo_mesh::decimal::{push_f64, push_u64};
 

@@ -45,10 +45,10 @@
 use crate::error::PortalgonError;
 use crate::formats::text_blocks::{block_count, block_range, write_blocks};
 use crate::geometry::{Point, Rational, Scalar};
-use crate::laplacian::dense_vertex_index;
-use crate::portalgon::{Portalgon, check_polygon};
+use crate::portalgon::{PolygonId, Portalgon, check_polygon};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::convert::{TriangleGluing, is_clockwise, triangulation_from_gluing};
+use crate::triangulation::dense_vertex_index;
 use crate::triangulation::trig;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
@@ -445,8 +445,8 @@ impl PortalgonDoc {
         }
         for [[p, i], [q, j]] in pairs {
             let (s, t) = (
-                out.side(crate::PolygonId(p as u32), i),
-                out.side(crate::PolygonId(q as u32), j),
+                out.side(PolygonId(p as u32), i),
+                out.side(PolygonId(q as u32), j),
             );
             out.glue(s, t, tolerance)?;
         }

@@ -296,6 +296,29 @@ impl IntrinsicTriangulation {
     }
 }
 
+impl IntrinsicTriangulation {
+    /// Per vertex slot, its row (and column) in the matrices of this crate ([`crate::cotan_laplacian`],
+    /// [`crate::lumped_mass`], [`crate::intrinsic_delaunay_laplacian`]): the live vertices in increasing id
+    /// order, `u32::MAX` for removed ids. There are [`surftopo_mesh::SurfaceMesh::vertex_count`]
+    /// rows.
+    pub fn matrix_rows(&self) -> Vec<u32> {
+        dense_vertex_index(self).0
+    }
+}
+
+/// Dense index of each live vertex (increasing id order), `u32::MAX` for removed ids, and the
+/// number of live vertices.
+pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
+    let mesh = tri.mesh();
+    let mut index = vec![u32::MAX; mesh.vertex_slots()];
+    let mut n = 0usize;
+    for v in mesh.vertices() {
+        index[v.idx()] = n as u32;
+        n += 1;
+    }
+    (index, n)
+}
+
 /// Relative change of a quad's area beyond which [`IntrinsicTriangulation::flip_if_convex`]
 /// refuses a flip: on needle-like quads the rounded new diagonal can change the area by far more
 /// than rounding of the area itself (errors grow with the squared aspect ratio), and repeated

@@ -56,11 +56,10 @@
 
 use std::cmp::Ordering;
 
-use super::singular::star;
 use super::wave::Wave;
-use crate::DEFAULT_LENGTH_TOLERANCE;
 use crate::error::PortalgonError;
 use crate::geometry::{Motion, Point, Scalar, add, cross, dist2, dot, scale, sub};
+use crate::portalgon::DEFAULT_LENGTH_TOLERANCE;
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Where a Voronoi vertex lies in its triangle.
@@ -205,7 +204,7 @@ pub(crate) fn build_dual<S: Scalar>(
             let owned = match inst.place {
                 Place::Interior => true,
                 Place::Side(s) => s < p.mate(s).expect("closed"),
-                Place::Corner(s) => star(p, s).is_some_and(|c| c.iter().min() == Some(&s)),
+                Place::Corner(s) => p.star(s).is_some_and(|c| c.iter().min() == Some(&s)),
             };
             if !owned {
                 continue;
@@ -776,7 +775,7 @@ impl<S: Scalar> Dual<'_, S> {
                     let mut cur = s;
                     let mut pts = [end, ya, yb];
                     let mut dirs = [dir];
-                    let corners = star(p, s).ok_or("an open star")?.len();
+                    let corners = p.star(s).ok_or("an open star")?.len();
                     let mut found = false;
                     for _ in 0..=corners {
                         let c = &pts[0];
@@ -835,7 +834,7 @@ impl<S: Scalar> Dual<'_, S> {
                     tri = p.owner(p.mate(s).expect("closed"));
                 }
                 Place::Corner(s) => {
-                    let corners = star(p, s).ok_or("an open star")?;
+                    let corners = p.star(s).ok_or("an open star")?;
                     let target = *corners.iter().min().expect("a corner");
                     let mut cur = s;
                     let mut pts = [at, ya, yb];

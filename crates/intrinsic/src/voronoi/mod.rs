@@ -41,7 +41,6 @@ pub mod singular;
 pub mod wave;
 
 pub use dual::{DualError, Segment, VoronoiDiagram};
-pub(crate) use singular::star;
 pub use singular::{is_flat_vertex, wave_sources};
 pub use wave::{SideCell, Wave, WaveError, WaveOptions, run_wave};
 
