@@ -4,7 +4,7 @@
 //!
 //! **The paper's steps and their functions:**
 //! - `d`, the minimum height of the triangles of `T`, and the cap points on every directed edge
-//!   leaving a cone point (interior singularity): [`cut_caps`], with the radius of DUBOIS.md §2.4
+//!   leaving a cone point (interior singularity): [`cut_caps`], with the radius of docs/dubois.md §3.4
 //!   (below);
 //! - tracing each cap boundary and cutting the faces along it (`T₀`), then cutting the
 //!   remaining polygons along shortcuts (INSERTEDGES' [`Portalgon::triangulate_by_shortcuts`]):
@@ -16,7 +16,7 @@
 //! - placing the caps back (Proposition 2's output portalgon `T′`): [`put_caps_back`].
 //!
 //! **Decisions and deviations:**
-//! - **\[reconstruction, DUBOIS.md §2.4\] Cap radius.** The paper's point at distance `d/6` from
+//! - **\[reconstruction, docs/dubois.md §3.4\] Cap radius.** The paper's point at distance `d/6` from
 //!   the cone point is irrational in general (`d` is a height). Each edge `e` at a cone point gets
 //!   the point at distance `ρ_e = 2^{−k}|e|` from it, `k` the least integer with `ρ_e ≤ d/6`
 //!   (decided exactly on squares: `36·|e|² ≤ 4^k·d²`, `d² = min 4A²/ℓ²_max`), so

@@ -14,7 +14,7 @@
 //! - ALGORITHM (Section 4.5) with `N = ⌈log₂(2 + L/s)⌉`: [`reduce`], reporting a
 //!   [`DuboisReport`]; `N` alone: [`outer_iterations`].
 //!
-//! **Decisions where the paper is silent** (DUBOIS.md §2.6), each tested in `tests/dubois.rs`:
+//! **Decisions where the paper is silent** (docs/dubois.md §3.6), each tested in `tests/dubois.rs`:
 //! - INSERTVERTICES splits every pair of sides matched *inside* `R_A` (both polygons active) at
 //!   its midpoint, lower side id first; separating loops (matched to an inactive region) and
 //!   the boundary of `S(R)` are never split.
@@ -35,14 +35,14 @@
 //!   unchanged) is kept as it is, not spliced again: the paper's "replace `X` by a good biface
 //!   `B`" with `B = X`. This keeps ids stable, so a pass that changes nothing is recognisable.
 //! - Tubes are replaced by Proposition 4 along [`ReduceOptions::route`]
-//!   ([`TubeRoute::Direct`] by default, DUBOIS.md §2.1(c)).
+//!   ([`TubeRoute::Direct`] by default, docs/dubois.md §3.1(c)).
 //! - GARDENING and the inactive regions: each biface marked inactive gets a region of its own.
 //!
 //! **Deviations** (none changes the output):
 //! - The 350 inner repetitions stop after the first repetition that changes nothing (no splice,
 //!   marking, deletion or cut; debug builds check that the portalgon and the regions are then
 //!   unchanged): everything is deterministic, so the remaining
-//!   repetitions would change nothing either (DUBOIS.md §2.2). [`ReduceOptions::faithful`] runs
+//!   repetitions would change nothing either (docs/dubois.md §3.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
 //! - Steps that provably find nothing are skipped (not in faithful mode; debug builds check each
@@ -59,7 +59,7 @@
 //!   within the tolerance.)
 //! - **\[reconstruction\]** `s` for a flat torus: the paper's `s = d/(6r)` comes from the caps of
 //!   Section 8; with no cone point there are no caps, and `s = d/2` (`d` the smallest height of a
-//!   triangle) is below the systole (DUBOIS.md §2.3). `N` is computed exactly from squared
+//!   triangle) is below the systole (docs/dubois.md §3.3). `N` is computed exactly from squared
 //!   lengths in exact mode (the least `N` with `((2^N − 2)·A)² ≥ L²·ℓ²` over the triangles, `A`
 //!   their area, `ℓ` their longest side, `L` the longest side overall), so it is never
 //!   underestimated; in `f64` with a relative margin of 1e-9 upward.

@@ -1,5 +1,5 @@
 //! The Delaunay tessellation from the constellations: the dual of the Voronoi diagram (Dubois,
-//! Appendix C, Lemmas 29–31; Appendix D.1, Proposition 12), by the simpler route of DUBOIS.md §2.7.
+//! Appendix C, Lemmas 29–31; Appendix D.1, Proposition 12), by the simpler route of docs/dubois.md §3.7.
 //!
 //! At the end of the wave, the Voronoi diagram of X_Δ restricted to Δ is the pre-image of the
 //! Voronoi diagram of V (Proposition 13, Lemma 34). A Voronoi vertex `v` in (closed) Δ is a point
@@ -29,7 +29,7 @@
 //!   not built (nothing downstream needs it).
 //! - Proposition 12 lays each polygon out by unfolding a spanning tree of its Voronoi face
 //!   (Lemmas 32–33); here the polygon is read off the constellation of a triangle holding its
-//!   Voronoi vertex (DUBOIS.md §2.7), which Lemma 35 makes equivalent. The tests compare the result
+//!   Voronoi vertex (docs/dubois.md §3.7), which Lemma 35 makes equivalent. The tests compare the result
 //!   with the flip route's tessellation.
 //! - A Voronoi vertex on a side of T belongs to the triangle of the smaller side id of the matched
 //!   pair; one at a corner of T (a flat vertex of T not in V) to the corner of the smallest side

@@ -1,7 +1,7 @@
 //! The vertex set V of the wave: the singular vertices (Dubois, Section 2.2: angle sum different
 //! from 2π), or one vertex when there is none (a flat torus, Proof of Proposition 3).
 //!
-//! Exact mode decides flatness exactly (DUBOIS.md §2.5): the star of the vertex is unfolded into
+//! Exact mode decides flatness exactly (docs/dubois.md §3.5): the star of the vertex is unfolded into
 //! the plane of its first corner by composing the gluing maps ([`Motion::gluing`], exact on rationals), and
 //! the vertex is flat iff the composed map around the star is the identity and the corners wind
 //! exactly once around the vertex (the number of corner wedges, half-open, that contain the
