@@ -4,8 +4,8 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use std::time::Duration;
 
-/// Runs `work` while a spinner shows `message`.
-pub fn step<T>(message: &str, work: impl FnOnce() -> T) -> T {
+/// A spinner showing `message`, ticking.
+fn spinner(message: &str) -> ProgressBar {
     let spinner = ProgressBar::new_spinner();
     spinner.set_style(
         ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
@@ -13,7 +13,22 @@ pub fn step<T>(message: &str, work: impl FnOnce() -> T) -> T {
     );
     spinner.set_message(message.to_string());
     spinner.enable_steady_tick(Duration::from_millis(120));
+    spinner
+}
+
+/// Runs `work` while a spinner shows `message`.
+pub fn step<T>(message: &str, work: impl FnOnce() -> T) -> T {
+    let spinner = spinner(message);
     let result = work();
+    spinner.finish_and_clear();
+    result
+}
+
+/// Runs `work`, which names each of its steps as it starts through the callback it is given,
+/// while a spinner shows the current one.
+pub fn steps<T>(work: impl FnOnce(&mut dyn FnMut(&'static str)) -> T) -> T {
+    let spinner = spinner("");
+    let result = work(&mut |message| spinner.set_message(message));
     spinner.finish_and_clear();
     result
 }

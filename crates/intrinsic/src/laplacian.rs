@@ -82,7 +82,7 @@ pub fn intrinsic_delaunay_laplacian(
 /// increasing `lo`, row `lo` receives its diagonal and then its entries `hi > lo` in increasing
 /// order, and each row `hi` receives its entry `lo < hi`, rows being filled front to back; so
 /// every row comes out sorted (entries left of the diagonal were all written by earlier buckets).
-fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> SparseMatrix {
+pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> SparseMatrix {
     let weights = weights_from_tan_half_sq(tri, t2);
     let mesh = tri.mesh();
     let (index, n) = dense_vertex_index(tri);

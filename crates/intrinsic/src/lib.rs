@@ -32,7 +32,8 @@
 //!   [`isometric`], [`decide_isometry`]. `laplacian`: [`cotan_laplacian`] (positive
 //!   semidefinite), [`lumped_mass`], [`intrinsic_delaunay_laplacian`] (flips and assembles in one
 //!   call, libigl's `intrinsic_delaunay_cotmatrix`).
-//! - [`method_choice`]: the rule of `--method auto`. [`generators`]: `T_x` (Section 9), sheared
+//! - `delaunay/`: [`intrinsic_delaunay`], the job by method (auto, flip, voronoi, dubois), with
+//!   the rule of `auto` ([`choose_method`]). [`generators`]: `T_x` (Section 9), sheared
 //!   tori, pillowcases, random isometric flips.
 //!
 //! ```
@@ -54,6 +55,7 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
+mod delaunay;
 pub mod dubois;
 mod error;
 mod flip;
@@ -62,12 +64,19 @@ pub mod generators;
 pub mod geometry;
 mod isometry;
 mod laplacian;
-pub mod method_choice;
 mod portalgon;
 mod sparse;
 mod triangulation;
 pub mod voronoi;
 
+pub use delaunay::choice::{
+    DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
+};
+pub use delaunay::{
+    AnyPortalgon, DelaunayInput, DelaunayMethod, DelaunayOutput, DelaunayOutputs, DelaunayRequest,
+    IntrinsicDelaunayError, RequestError, WaveFigures, intrinsic_delaunay,
+    intrinsic_delaunay_reporting,
+};
 pub use dubois::biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
 pub use dubois::tube::{
     LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon,
@@ -75,7 +84,8 @@ pub use dubois::tube::{
 pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
 };
-pub use flip::stats::{DelaunayStats, delaunay_with_stats, delaunay_with_stats_unless_needle};
+pub use flip::needle::AUTO_ASPECT_LIMIT;
+pub use flip::stats::{DelaunayStats, delaunay_with_stats};
 pub use flip::tessellation::{
     DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
 };

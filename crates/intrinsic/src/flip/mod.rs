@@ -110,7 +110,7 @@ pub(crate) fn flip_keeping_tan_half_sq(
     Ok(flipped.expect("no face is refused"))
 }
 
-/// [`flip_to_delaunay`] for `--method auto` ([`crate::method_choice`]): `Ok(None)`, before any
+/// [`flip_to_delaunay`] for `--method auto` ([`crate::choose_method`]): `Ok(None)`, before any
 /// flip and with the triangulation unchanged (mollified first when `options.mollify` asks), when
 /// some triangle's aspect ratio exceeds [`needle::AUTO_ASPECT_LIMIT`] (a degenerate
 /// one counts). The needle test reads the half-angle cache flipping's own first pass fills
@@ -131,7 +131,7 @@ pub fn flip_to_delaunay_unless_needle(
 /// first pass (before any flip: [`needle::has_needle_given_half_angles`], one scan
 /// of the half-angle cache that pass fills). A flag rather than a closure: `flip` and `auto` run
 /// the same machine code, which differs only by that scan.
-fn flip_unless(
+pub(crate) fn flip_unless(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
     stop_at_needle: bool,

@@ -1,11 +1,11 @@
-//! The needle test of `--method auto` ([`crate::method_choice`]), beside flipping, which runs it on
+//! The needle test of `--method auto` ([`crate::choose_method`]), beside flipping, which runs it on
 //! the half-angle cache of its first pass ([`super::flip_to_delaunay_unless_needle`]): a needle
 //! is a triangle whose aspect ratio `ℓ²/(2A)` exceeds [`AUTO_ASPECT_LIMIT`].
 
 use crate::triangulation::IntrinsicTriangulation;
 
 /// Above this largest triangle aspect ratio `ℓ²/(2A)`, `--method auto` leaves flipping
-/// ([`crate::method_choice`] gives the measurement behind it).
+/// ([`crate::choose_method`]'s module gives the measurement behind it).
 pub const AUTO_ASPECT_LIMIT: f64 = 1e5;
 
 /// Whether the triangle of sides `a, b, c` has aspect ratio `ℓ²/(2A)` above

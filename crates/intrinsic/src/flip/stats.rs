@@ -75,20 +75,3 @@ pub fn delaunay_with_stats(
     let seconds = start.elapsed().as_secs_f64();
     Ok(DelaunayStats::new(tri, &report, seconds))
 }
-
-/// Runs [`crate::flip::flip_to_delaunay_unless_needle`] and times it: `Ok(None)` (nothing
-/// flipped) at the first needle.
-///
-/// # Errors
-/// As [`flip_to_delaunay`].
-pub fn delaunay_with_stats_unless_needle(
-    tri: &mut IntrinsicTriangulation,
-    options: &DelaunayOptions,
-) -> Result<Option<DelaunayStats>, DelaunayError> {
-    let start = Instant::now();
-    let Some(report) = crate::flip::flip_to_delaunay_unless_needle(tri, options)? else {
-        return Ok(None);
-    };
-    let seconds = start.elapsed().as_secs_f64();
-    Ok(Some(DelaunayStats::new(tri, &report, seconds)))
-}

@@ -1,4 +1,4 @@
-//! The automatic choice of the Delaunay method (`--method auto`): flipping where it is safe and
+//! The automatic choice of the Delaunay method ([`DelaunayMethod::Auto`], `--method auto`): flipping where it is safe and
 //! fast, Dubois' Theorem 1 where flipping would take too many flips or lose precision.
 //!
 //! **The rule** ([`choose_method`]), read off one O(n) pass over the triangles:
@@ -6,16 +6,16 @@
 //!   `A` the area). Flipping a needle of aspect `a` takes about `√(2a)` flips (Section 9's `T_x`:
 //!   aspect `(x² + 4)/2`, `x − 1` flips) and, in double precision, loses about `log₁₀ a` digits.
 //!   `results/papers/intrinsic.md` measures the flip route on `T_x`: lengths right to 2e-9 up to
-//!   `x = 10³` (aspect 5·10⁵), wrong from `x = 3·10³` (aspect 4.5·10⁶). [`AUTO_ASPECT_LIMIT`]
+//!   `x = 10³` (aspect 5·10⁵), wrong from `x = 3·10³` (aspect 4.5·10⁶). [`crate::AUTO_ASPECT_LIMIT`]
 //!   = 10⁵ leaves a margin of 45 below the first failure.
-//! - Aspect at most the limit: [`Method::Flip`] (on the shared meshes flipping is the fastest
-//!   method). The CLI runs the test on the half-angle cache flipping's first pass fills
+//! - Aspect at most the limit: [`DelaunayMethod::Flip`] (on the shared meshes flipping is the fastest
+//!   method). [`super::intrinsic_delaunay`] runs the test on the half-angle cache flipping's first pass fills
 //!   ([`crate::flip::flip_to_delaunay_unless_needle`], leaving before any flip when there
 //!   is a needle), so on the inputs it flips `auto` adds nothing but the test itself.
-//! - Above the limit, no cone point: [`Method::Dubois`] (Theorem 1: time polylogarithmic in the
+//! - Above the limit, no cone point: [`DelaunayMethod::Dubois`] (Theorem 1: time polylogarithmic in the
 //!   aspect ratio, exact in exact mode).
-//! - Above the limit with a cone point: [`Method::Dubois`] when [`DUBOIS_TAKES_CONE_POINTS`]
-//!   (Section 8's caps are built), otherwise [`Method::Flip`] — the wave alone on a raw needle
+//! - Above the limit with a cone point: [`DelaunayMethod::Dubois`] when [`DUBOIS_TAKES_CONE_POINTS`]
+//!   (Section 8's caps are built), otherwise [`DelaunayMethod::Flip`] — the wave alone on a raw needle
 //!   does as much work as flipping (its constellations grow like the flip count), so it is no
 //!   better a fallback.
 //!
@@ -23,24 +23,12 @@
 //! restarts another method half-way), so that the method, hence the output bytes, depends on
 //! the input alone.
 
-use crate::flip::needle::is_needle;
+use super::DelaunayMethod;
+use crate::flip::needle::{AUTO_ASPECT_LIMIT, is_needle};
 use crate::geometry::Scalar;
 use crate::portalgon::Portalgon;
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
-
-/// The Delaunay methods [`choose_method`] chooses between.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
-    /// Edge flipping (Bobenko–Springborn).
-    Flip,
-    /// The multi-source Voronoi wave and its dual (Dubois, Appendix D).
-    Voronoi,
-    /// Dubois' Theorem 1: the happiness reduction, then the wave.
-    Dubois,
-}
-
-pub use crate::flip::needle::AUTO_ASPECT_LIMIT;
 
 /// Whether [`choose_method`] sends needles with cone points to [`crate::dubois`]. Section 8's
 /// caps run in both arithmetics ([`crate::dubois::delaunay_tessellation_dubois`]), but on meshes
@@ -72,22 +60,22 @@ pub fn largest_aspect_ratio<S: Scalar>(p: &Portalgon<S>) -> f64 {
 }
 
 /// The rule of the module doc on its two inputs: whether some triangle's aspect ratio exceeds
-/// [`AUTO_ASPECT_LIMIT`], and whether the surface has no cone point (asked only for a needle).
-pub fn method_for(needle: bool, flat: impl FnOnce() -> bool) -> Method {
+/// [`crate::AUTO_ASPECT_LIMIT`], and whether the surface has no cone point (asked only for a needle).
+pub(crate) fn method_for(needle: bool, flat: impl FnOnce() -> bool) -> DelaunayMethod {
     if !needle {
-        return Method::Flip;
+        return DelaunayMethod::Flip;
     }
     if DUBOIS_TAKES_CONE_POINTS || flat() {
-        Method::Dubois
+        DelaunayMethod::Dubois
     } else {
-        Method::Flip
+        DelaunayMethod::Flip
     }
 }
 
 /// `--method auto` on a portalgon (see the module doc): [`method_for`] on its
 /// [`largest_aspect_ratio`] and whether it has a cone point (decided with the default angle
 /// tolerance in `f64`, exactly in exact mode). O(n).
-pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
+pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> DelaunayMethod {
     method_for(largest_aspect_ratio(p) > AUTO_ASPECT_LIMIT, || {
         crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none()
     })
@@ -97,7 +85,7 @@ pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> Method {
 /// at the first needle), and only then flatness from its angle sums (within the default angle
 /// tolerance, stopping at the first cone point). At most one pass over the faces and one over
 /// the corners.
-pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
+pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> DelaunayMethod {
     let needle = tri.mesh().faces().any(|f| {
         let [a, b, c] = tri.face_sides(f);
         is_needle(a, b, c)
@@ -108,7 +96,7 @@ pub fn choose_method_for_triangulation(tri: &IntrinsicTriangulation) -> Method {
 /// [`method_for`] a triangulation known to have a needle (e.g. from
 /// [`crate::flip::flip_to_delaunay_unless_needle`]): flatness decided from its angle sums as
 /// in [`choose_method_for_triangulation`].
-pub fn choose_method_for_needle(tri: &IntrinsicTriangulation) -> Method {
+pub(crate) fn choose_method_for_needle(tri: &IntrinsicTriangulation) -> DelaunayMethod {
     method_for(true, || is_flat(tri))
 }
 
