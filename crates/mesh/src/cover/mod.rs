@@ -54,6 +54,8 @@ pub trait Lifting {
     fn mirror(&self, h: HalfedgeId) -> Option<HalfedgeId>;
     /// A mesh vertex standing for class `c` (its first lift; the first apex for the apex class).
     fn lift(&self, c: u32) -> VertexId;
+    /// Whether some component is doubled (else [`Self::mirror`] is always `None`).
+    fn doubled(&self) -> bool;
     /// Whether a mesh vertex is an apex.
     #[inline]
     fn is_apex(&self, v: VertexId) -> bool {
@@ -99,6 +101,10 @@ impl Lifting for Plain {
         VertexId(c)
     }
     #[inline(always)]
+    fn doubled(&self) -> bool {
+        false
+    }
+    #[inline(always)]
     fn is_apex(&self, _: VertexId) -> bool {
         false
     }
@@ -142,6 +148,10 @@ impl Lifting for Sheets {
     #[inline]
     fn lift(&self, c: u32) -> VertexId {
         self.lift[c as usize]
+    }
+    #[inline]
+    fn doubled(&self) -> bool {
+        !self.mirror.is_empty()
     }
 }
 
