@@ -1,4 +1,4 @@
-//! surftopo-irreducible: irreducible triangulations of closed orientable surfaces by edge contractions.
+//! surftopo-irreducible: irreducible triangulations of compact surfaces by edge contractions.
 //!
 //! Paper: S. Ramaswami and M. Siqueira, "A fast algorithm for computing irreducible
 //! triangulations of closed surfaces in E^d", preprint (Rutgers University, Camden, and
@@ -26,9 +26,13 @@
 //! [`Counters`] (link-condition tests ℓ, edges tested more than once ε, contractions, seconds).
 //! [`is_irreducible`] is an independent check of the result.
 //!
-//! Input must be a closed, connected, orientable *simplicial* surface: the mesh type guarantees the
-//! first three (see `surftopo_mesh::build`); loops, multi-edges and the two-triangle sphere are
-//! refused with an [`IrreducibleError`] naming the offending element, before any work is done.
+//! [`reduce`] takes a closed, connected, orientable *simplicial* surface (a [`SurfaceMesh`]), as
+//! the paper does; [`reduce_surface`] takes any compact surface (boundary loops, non-orientable
+//! components, several pieces) as its [`ClosedCover`] and runs the same algorithms on it with Dey,
+//! Edelsbrunner, Guha and Nekhayev's link condition for complexes with boundary; its result is
+//! checked by [`is_irreducible_surface`], written from the triangles alone. Loops, multi-edges and
+//! the two-triangle sphere are refused with an [`IrreducibleError`] naming the offending element,
+//! before any work is done.
 
 mod brute_force;
 mod edge_lists;

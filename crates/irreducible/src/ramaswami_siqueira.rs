@@ -61,6 +61,19 @@
 //!    The two versions gave identical histories on 101 inputs (all shared meshes, genus up to
 //!    3,500); the time bound of Theorem 12 is unchanged, since the cost is at most the paper's.
 //!
+//! 9. **Surfaces beyond the paper** ([`crate::reduce_surface`]): K is the surface a closed
+//!    oriented mesh covers; every vertex of the pseudocode is a vertex class (both lifts of a
+//!    vertex of a doubled non-orientable component; all apexes closing the boundary form one
+//!    class ω), attributes are kept per class, rotations are read at a lift (a lift's star is
+//!    the vertex's star), and CONTRACT contracts both lifts. ω is processed from the start (p =
+//!    true), so no edge to it enters lue and none is tested or contracted; its critical cycles
+//!    (u, z, ω) make an interior edge between two boundary vertices non-contractible, which is
+//!    Dey et al.'s rule. Lines 33–41 of Algorithm 4.5 find the cycles through a new neighbour
+//!    z = ω from the lte side always (ω's link is every boundary vertex, so the paper's scan of
+//!    lk(z) would be long and would need all apexes). Degrees are those of the coned surface, so
+//!    Proposition 6 holds as stated (a boundary vertex of degree 3 is an ear: its two boundary
+//!    edges contract).
+//!
 //! Attributes are one flat array of small structs indexed by vertex id (no hashing): d, p, n, c,
 //! o, t of Table 1, with `u32::MAX` standing for the paper's −1 and nil.
 
