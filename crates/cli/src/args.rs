@@ -86,8 +86,8 @@ pub fn value_name(value: &impl clap::ValueEnum) -> String {
 /// vertex list (`irreducible`, `quad`), with the steps they share.
 #[derive(clap::Args, Debug)]
 pub struct MeshJobArgs {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
-    /// .gz), `-` for standard input (format from the extension, else the content).
+    /// Input mesh (a triangulated surface; .obj, .off, .ply, .stl, optionally .gz), `-` for
+    /// standard input (format from the extension, else the content).
     pub mesh: std::path::PathBuf,
     /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
     /// --format).
@@ -110,9 +110,15 @@ impl MeshJobArgs {
         crate::output::check_outputs(&[("-o", self.output.as_path(), kind)])
     }
 
-    /// Reads and validates the input surface (welded with `--weld`).
+    /// Reads and validates the input surface (welded with `--weld`): closed, connected and
+    /// orientable.
     pub fn read(&self) -> anyhow::Result<crate::input::Loaded> {
         crate::input::read_surface(&self.mesh, self.weld.weld)
+    }
+
+    /// Reads and validates the input surface of any kind (welded with `--weld`).
+    pub fn read_covered(&self) -> anyhow::Result<crate::input::LoadedCovered> {
+        crate::input::read_covered(&self.mesh, self.weld.weld)
     }
 
     /// Writes the output mesh, then warns about the input's attributes it does not keep
@@ -121,12 +127,12 @@ impl MeshJobArgs {
         &self,
         command: &str,
         soup: &surftopo_io::PolygonSoup,
-        loaded: &crate::input::Loaded,
+        attributes: &surftopo_io::Attributes,
     ) -> anyhow::Result<()> {
         let output = self.output.as_path();
         crate::output::write_soup_as(output, soup, self.format.format)?;
-        crate::attributes::warn_not_read(&self.mesh, output, &loaded.attributes);
-        crate::attributes::warn_new_faces(command, output, &loaded.attributes);
+        crate::attributes::warn_not_read(&self.mesh, output, attributes);
+        crate::attributes::warn_new_faces(command, output, attributes);
         crate::attributes::warn_unwritable(output, self.format.format, soup);
         Ok(())
     }

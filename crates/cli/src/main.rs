@@ -106,6 +106,13 @@ fn main() -> ExitCode {
         Err(e) => e.exit(),
     };
     limits::set(cli.limits.limits());
+    input::set_command(match cli.command {
+        Command::Quad(_) => "quad",
+        Command::Delaunay(_) => "delaunay",
+        Command::Isometric(_) => "isometric",
+        Command::Generate(_) => "generate",
+        _ => "surftopo",
+    });
     remove_temporaries_on_signals();
     let isometric = matches!(cli.command, Command::Isometric(_));
     match run(cli.command) {

@@ -32,7 +32,7 @@ mod union_find;
 
 pub use build::{
     BuildReport, Inspection, MAX_LISTED_PROBLEMS, ProblemCounts, SurfaceKind, build,
-    build_topology, inspect,
+    build_topology, face_components, inspect,
 };
 pub use compact::Renumbering;
 pub use contract::{Contraction, LinkScratch};

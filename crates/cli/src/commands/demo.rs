@@ -102,7 +102,9 @@ impl Demo {
         let input = self.path("input.obj");
         let start = Instant::now();
         let kind = generate::Kind::Genus { genus: 2, size: 2 };
-        let surface = generate::modify(generate::generate(&kind)?, &modifiers(1000))?;
+        let surface = generate::modify(generate::generate(&kind)?, &modifiers(1000))?
+            .into_plain()
+            .ok_or_else(|| anyhow::anyhow!("the genus-2 brick is closed and orientable"))?;
         crate::output::write_surface(&input, &surface)?;
         let mesh = &surface.mesh;
         Self::line(
@@ -197,19 +199,19 @@ impl Demo {
 
     /// `irreducible` with each algorithm of the irreducible-triangulations paper.
     fn irreducible(&self, input: &Path) -> anyhow::Result<()> {
-        let surface = crate::input::load_surface(input, false)?.surface;
+        let surface = crate::input::load_surface(input, false)?.surface.into();
         for algorithm in Algorithm::all(1) {
-            let (reduced, report) = irreducible::reduce_surface(&surface, algorithm)?;
+            let (reduced, report, _) = irreducible::reduce_covered(&surface, algorithm)?;
             let name = format!("irreducible-{}.obj", algorithm.name());
-            crate::output::write_surface(&self.path(&name), &reduced)?;
+            crate::output::write_soup(&self.path(&name), &reduced)?;
             Self::line(
                 &format!("irreducible --algorithm {}", algorithm.name()),
                 &format!(
-                    "{}: {} vertices, {} faces, genus {} (at most 26g - 4 = 48 vertices); {} contractions, {} link tests, {} edges tested twice",
+                    "{}: {} vertices, {} faces, {} (at most 26g - 4 = 48 vertices); {} contractions, {} link tests, {} edges tested twice",
                     self.shown(&name),
                     report.output.vertices,
                     report.output.faces,
-                    report.output.genus,
+                    report.output.names(),
                     report.contractions,
                     report.link_tests,
                     report.edges_tested_more_than_once
@@ -474,6 +476,8 @@ fn modifiers(flips: usize) -> generate::Modifiers {
         simplify: None,
         flips,
         splits: 0,
+        cut_holes: 0,
+        copies: 1,
         shuffle_faces: false,
         seed: 7,
     }

@@ -231,6 +231,13 @@ pub fn inspect(vertex_count: usize, triangles: &[[u32; 3]]) -> Inspection {
     p.inspection
 }
 
+/// The connected component of each face (numbered in the order of their first face, as
+/// [`Inspection::surfaces`]) when the soup forms a surface, `None` otherwise. O(n).
+pub fn face_components(vertex_count: usize, triangles: &[[u32; 3]]) -> Option<Vec<u32>> {
+    let p = CornerPairing::run(vertex_count, triangles);
+    p.is_surface().then(|| classify::components(&p).0)
+}
+
 /// Builds a closed, connected, orientable surface from a triangle soup.
 ///
 /// Unreferenced vertices are dropped (see [`BuildReport::vertex_old_to_new`]); faces are reoriented
