@@ -116,7 +116,7 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
     let rp2 = "v 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 0\nv 0 1 1\nv 1 0 1\n\
                f 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 6\nf 1 6 2\nf 2 3 5\nf 3 4 6\nf 4 5 2\nf 5 6 3\nf 6 2 4\n";
     let dir = tempfile::tempdir().unwrap();
-    let mut all: Vec<(String, String, String)> = cases
+    let all: Vec<(String, String, String)> = cases
         .iter()
         .map(|(n, t, m)| (n.to_string(), t.to_string(), m.to_string()))
         .collect();
