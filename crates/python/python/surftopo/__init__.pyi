@@ -46,7 +46,9 @@ __all__ = [
     "Portalgon",
     "PortalgonError",
     "SurftopoError",
+    "annulus",
     "cavity_box",
+    "disk",
     "flat_torus",
     "genus_surface",
     "icosphere",
@@ -54,7 +56,11 @@ __all__ = [
     "intrinsic_delaunay",
     "irreducible",
     "isometric",
+    "klein_bottle",
     "laplacian",
+    "mobius_band",
+    "non_orientable",
+    "projective_plane",
     "quadrangulate",
     "read_mesh",
     "tetrahedron",
@@ -103,21 +109,26 @@ def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, An
     """Counts, topology and every problem found, valid surface or not.
 
     The keys of ``surftopo info --json``: ``vertices``, ``edges``, ``faces``, ``genus`` (``None``
-    unless valid), ``euler_characteristic``, ``components``, ``closed``, ``orientable``,
-    ``simplicial``, ``valid``, ``reoriented_faces``, ``unreferenced_vertices``,
-    ``welded_vertices``, one count per problem class (``non_finite_coordinates``,
-    ``zero_area_faces``, ``degenerate_faces``, ``duplicate_faces``,
-    ``boundary_edges``, ``non_manifold_edges``, ``non_manifold_vertices``, ``non_orientable``,
-    ``disconnected``, ``other_problems``), ``problems_total``, ``problems_truncated`` and
-    ``problems`` (at most 100 messages, each naming the face, edge or vertex). ``weld=True``
-    first merges vertices with exactly equal positions.
+    unless the faces form one orientable surface), ``euler_characteristic``, ``components``,
+    ``closed``, ``orientable``, ``boundary_loops``, ``boundary_edges``, ``simplicial``, ``valid``
+    (no problem: a triangulated surface, boundary, non-orientable pieces and several components
+    allowed), ``reoriented_faces``, ``unreferenced_vertices``, ``welded_vertices``, one count per
+    problem class (``non_finite_coordinates``, ``zero_area_faces``, ``degenerate_faces``,
+    ``duplicate_faces``, ``non_manifold_edges``, ``non_manifold_vertices``, ``other_problems``),
+    ``problems_total``, ``problems_truncated``, ``problems`` (at most 100 messages, each naming
+    the face, edge or vertex) and ``surfaces``: one dict per connected component with
+    ``faces``, ``euler_characteristic``, ``orientable``, ``boundary_loops``, ``genus`` (``None``
+    when non-orientable), ``crosscaps`` (``None`` when orientable), ``euler_genus`` and ``name``.
+    ``weld=True`` first merges vertices with exactly equal positions.
 
     >>> V, F = surftopo.torus(24, 12)
     >>> d = surftopo.info(V, F)
     >>> d["genus"], d["valid"], d["faces"]
     (1, True, 576)
-    >>> surftopo.info(V, F[1:])["problems"][0]
-    'boundary edge (0, 12) of face 22: the surface is not closed'
+    >>> [s["name"] for s in surftopo.info(V, F[1:])["surfaces"]]
+    ['genus 1 with 1 boundary loop']
+    >>> surftopo.info(*surftopo.klein_bottle())["surfaces"][0]["crosscaps"]
+    2
     """
 
 def irreducible(
@@ -126,9 +137,12 @@ def irreducible(
     """An irreducible triangulation of the surface by topology-preserving edge contractions.
 
     Every edge of the result fails the link condition, so none can be contracted without changing
-    the topology: the tetrahedron for genus 0, 7 to 10 vertices for the torus. ``algorithm`` is
-    ``"rs"`` (Ramaswami–Siqueira, O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by
-    ``seed``; the CLI's default seed is also 1).
+    the topology: the tetrahedron for genus 0, 7 to 10 vertices for the torus, 6 or 7 for the
+    projective plane, a single triangle for a disk. Any compact surface is taken: boundary loops
+    (the link condition of Dey et al. with the boundary coned over one vertex), non-orientable
+    surfaces, several pieces (each reduced). ``algorithm`` is ``"rs"`` (Ramaswami–Siqueira,
+    O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by ``seed``; the CLI's default seed
+    is also 1).
 
     Returns ``(V2, F2, stats)``: ``V2`` the surviving vertices with their positions, ``F2`` the
     triangles as indices into ``V2``, and ``stats`` the keys of ``surftopo irreducible --json``
@@ -138,10 +152,13 @@ def irreducible(
 
     >>> V, F = surftopo.torus(24, 12)
     >>> V2, F2, stats = surftopo.irreducible(V, F)
-    >>> stats["output"]
+    >>> {k: stats["output"][k] for k in ("vertices", "edges", "faces", "genus")}
     {'vertices': 7, 'edges': 21, 'faces': 14, 'genus': 1}
     >>> bool((V2 == V[stats["vertex_indices"]]).all())
     True
+    >>> V2, F2, stats = surftopo.irreducible(*surftopo.klein_bottle())
+    >>> stats["output"]["surfaces"][0]["name"], 8 <= len(V2) <= 11
+    ('Klein bottle', True)
     """
 
 def quadrangulate(
@@ -340,6 +357,36 @@ def cavity_box(
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
     """The papers' brick with ``cavities`` square cavities and ``holes`` through-holes (genus
     ``holes``), refined to about ``triangles`` triangles."""
+
+def disk(n: int = 8) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The unit square as an ``n x n`` grid: a disk (``2 n^2`` triangles), ``n >= 1``."""
+
+def annulus(m: int = 24, n: int = 4) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """An open cylinder: an annulus as an ``m x n`` grid (``2 m n`` triangles), ``m >= 3``,
+    ``n >= 1``."""
+
+def mobius_band(m: int = 24, n: int = 4) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A Möbius band as an ``m x n`` grid glued with a half twist (``2 m n`` triangles),
+    ``m >= 5``, ``n >= 1``.
+
+    >>> surftopo.info(*surftopo.mobius_band())["surfaces"][0]["name"]
+    'Möbius band'
+    """
+
+def projective_plane() -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The 6-vertex projective plane (10 triangles, every two vertices adjacent)."""
+
+def klein_bottle(m: int = 24, n: int = 12) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A Klein bottle as an ``m x n`` grid on the figure-8 immersion (``2 m n`` triangles),
+    ``m, n >= 3``."""
+
+def non_orientable(crosscaps: int = 3) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The non-orientable surface N_k with ``crosscaps`` crosscaps: a connected sum of 6-vertex
+    projective planes (``8k + 2`` triangles).
+
+    >>> surftopo.info(*surftopo.non_orientable(3))["surfaces"][0]["name"]
+    'N_3'
+    """
 
 def flat_torus(x: float, m: int = 1) -> Portalgon:
     """The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two
