@@ -199,9 +199,15 @@ impl Demo {
 
     /// `irreducible` with each algorithm of the irreducible-triangulations paper.
     fn irreducible(&self, input: &Path) -> anyhow::Result<()> {
-        let surface = crate::input::load_surface(input, false)?.surface.into();
+        let loaded = crate::input::load_surface(input, false)?;
+        let pieces = surftopo_mesh::inspect(
+            loaded.surface.mesh.vertex_slots(),
+            &loaded.surface.to_triangles().1,
+        )
+        .surfaces;
+        let surface = loaded.surface.into();
         for algorithm in Algorithm::all(1) {
-            let (reduced, report, _) = irreducible::reduce_covered(&surface, algorithm)?;
+            let (reduced, report, _) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
             let name = format!("irreducible-{}.obj", algorithm.name());
             crate::output::write_soup(&self.path(&name), &reduced)?;
             Self::line(

@@ -47,14 +47,24 @@ impl Counts {
             .flatten()
             .max()
             .map_or(0, |&v| v as usize + 1);
-        let ins = surftopo_mesh::inspect(vertices, triangles);
+        Self::of_pieces(&surftopo_mesh::inspect(vertices, triangles).surfaces)
+    }
+
+    /// The counts of a surface from the classification of its pieces.
+    pub fn of_pieces(pieces: &[surftopo_mesh::SurfaceKind]) -> Self {
+        let sum = |f: fn(&surftopo_mesh::SurfaceKind) -> usize| pieces.iter().map(f).sum();
+        let (vertices, edges, faces): (usize, usize, usize) =
+            (sum(|k| k.vertices), sum(|k| k.edges), sum(|k| k.faces));
         Self {
-            vertices: ins.vertices,
-            edges: ins.edges,
-            faces: ins.faces,
-            genus: ins.genus(),
-            euler_characteristic: ins.euler_characteristic(),
-            surfaces: ins.surfaces.iter().map(Into::into).collect(),
+            vertices,
+            edges,
+            faces,
+            genus: match pieces {
+                [one] => one.genus.map(|g| g as i64),
+                _ => None,
+            },
+            euler_characteristic: vertices as i64 - edges as i64 + faces as i64,
+            surfaces: pieces.iter().map(Into::into).collect(),
         }
     }
 
@@ -87,15 +97,17 @@ pub struct Report {
     pub seed: Option<u64>,
 }
 
-/// Reduces `surface` (any compact surface) to an irreducible triangulation; returns it (its
-/// vertices are the surviving input vertices with their positions, numbered densely in input
-/// order), the report, and the map from the input's vertex ids (classes) to the output's
-/// (`INVALID` for removed vertices): the survivors' attributes follow it.
+/// Reduces `surface` (any compact surface, whose pieces are classified as `pieces`: the
+/// [`surftopo_mesh::BuildReport::surfaces`] of its building) to an irreducible triangulation;
+/// returns it (its vertices are the surviving input vertices with their positions, numbered
+/// densely in input order), the report, and the map from the input's vertex ids (classes) to
+/// the output's (`INVALID` for removed vertices): the survivors' attributes follow it.
 pub fn reduce_covered(
     surface: &CoveredSurface,
+    pieces: &[surftopo_mesh::SurfaceKind],
     algorithm: Algorithm,
 ) -> anyhow::Result<(PolygonSoup, Report, Vec<VertexId>)> {
-    let input = Counts::of(&surface.cover.surface_triangles());
+    let input = Counts::of_pieces(pieces);
     let reduction = surftopo_irreducible::reduce_surface(surface.cover.clone(), algorithm)
         .map_err(|e| invalid(e.to_string()))?;
     let Counters {
@@ -143,9 +155,10 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = Algorithm::from_name(&args.algorithm, args.job.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = args.job.read_covered()?;
-    let (mut soup, report, old_to_new) =
-        crate::progress::step("contracting", || reduce_covered(&loaded.surface, algorithm))
-            .map_err(|e| e.context(crate::input::name(input)))?;
+    let (mut soup, report, old_to_new) = crate::progress::step("contracting", || {
+        reduce_covered(&loaded.surface, &loaded.report.surfaces, algorithm)
+    })
+    .map_err(|e| e.context(crate::input::name(input)))?;
     soup.attributes =
         crate::attributes::renumbered(&loaded.attributes, soup.vertex_count(), &old_to_new);
     args.job.write("irreducible", &soup, &loaded.attributes)?;

@@ -34,6 +34,9 @@ pub struct BuildReport {
     pub dropped_vertices: Vec<u32>,
     /// Input vertex index -> mesh vertex id (`INVALID` for dropped vertices).
     pub vertex_old_to_new: Vec<VertexId>,
+    /// The classification of each piece of the input, in the order of their first face
+    /// ([`crate::ClosedCover::from_triangles`] gives it; [`build()`] leaves it empty).
+    pub surfaces: Vec<SurfaceKind>,
 }
 
 /// Everything [`inspect`] finds out about a triangle soup, valid or not.
@@ -269,6 +272,7 @@ pub(crate) fn build_closed(
         reoriented_faces: p.inspection.reoriented_faces,
         dropped_vertices: std::mem::take(&mut p.dropped),
         vertex_old_to_new: std::mem::take(&mut p.old_to_new),
+        surfaces: Vec::new(),
     };
     let mesh = if report.reoriented_faces > 0 {
         let oriented = p.oriented_triangles();

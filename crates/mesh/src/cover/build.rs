@@ -2,7 +2,7 @@
 
 use super::{ClosedCover, Sheets};
 use crate::build::pairing::{CornerPairing, next_corner, prev_corner};
-use crate::build::{BuildReport, build_topology_closed, classify};
+use crate::build::{BuildReport, SurfaceKind, build_topology_closed, classify};
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::union_find::UnionFind;
@@ -27,19 +27,26 @@ impl ClosedCover {
         vertex_count: usize,
         triangles: &[[u32; 3]],
     ) -> Result<(Self, BuildReport), BuildError> {
-        let p = CornerPairing::run(vertex_count, triangles);
+        let mut p = CornerPairing::run(vertex_count, triangles);
         if let Some(e) = p.inspection.problems.first() {
             return Err(e.clone());
         }
         let nv = p.new_to_old.len();
         let ins = &p.inspection;
         if ins.boundary_edges == 0 && ins.orientable {
+            let surfaces = if ins.components == 1 {
+                let edges = 3 * triangles.len() / 2;
+                vec![SurfaceKind::new(triangles.len(), edges, nv, true, 0)]
+            } else {
+                classify::classify(&p)
+            };
             let mut report = BuildReport {
                 reoriented_faces: ins.reoriented_faces.min(triangles.len()),
-                dropped_vertices: p.dropped.clone(),
-                vertex_old_to_new: p.old_to_new.clone(),
+                dropped_vertices: std::mem::take(&mut p.dropped),
+                vertex_old_to_new: std::mem::take(&mut p.old_to_new),
+                surfaces,
             };
-            let mesh = if ins.reoriented_faces == 0 {
+            let mesh = if report.reoriented_faces == 0 {
                 p.into_mesh()
             } else {
                 build_topology_closed(nv, &p.oriented_triangles(), true)?
@@ -56,6 +63,7 @@ impl ClosedCover {
             reoriented_faces,
             dropped_vertices: p.dropped.clone(),
             vertex_old_to_new: p.old_to_new.clone(),
+            surfaces: kinds.clone(),
         };
         // Orientable components in their majority orientation; the others as given.
         let mut closed: Vec<[u32; 3]> = p.remapped.to_vec();
