@@ -620,6 +620,26 @@ mod tests {
         }
     }
 
+    /// dashu-int before 0.5.1 reserved a gcd's scratch memory from the operands' first lengths
+    /// and panicked ("not enough memory allocated") when a later Euclidean step divided by a
+    /// much shorter remainder: here `x = 5y + s`, `y` of 10,000 bits and `s` of 5,000.
+    #[test]
+    fn quotients_of_long_operands_with_a_short_remainder_do_not_panic() {
+        let y = (UBig::ONE << 10_000) - UBig::from(12_345u32);
+        let s = (UBig::ONE << 5_000) + UBig::from(7u32);
+        let x = UBig::from(5u8) * &y + &s;
+        let (rx, ry) = (
+            Rational::from_rbig(RBig::from(x.clone())),
+            Rational::from_rbig(RBig::from(y.clone())),
+        );
+        let q = rx / ry;
+        assert_eq!(
+            q.to_rbig(),
+            RBig::from_parts(IBig::from(x), y),
+            "x / y reduced by dashu's gcd"
+        );
+    }
+
     #[test]
     fn parses_integers_decimals_and_fractions() {
         let r = |s: &str| s.parse::<Rational>().unwrap();
