@@ -233,7 +233,13 @@ mod tests {
         assert_eq!(at, end);
         assert_eq!(
             names,
-            ["format.npy", "shape.npy", "data.npy", "indices.npy", "indptr.npy"]
+            [
+                "format.npy",
+                "shape.npy",
+                "data.npy",
+                "indices.npy",
+                "indptr.npy"
+            ]
         );
         // A crc-32 of a known string (the zip/PNG polynomial).
         assert_eq!(crc32fast::hash(b"123456789"), 0xCBF4_3926);

@@ -258,7 +258,7 @@ pub fn run(args: &Args) -> anyhow::Result<Verdict> {
         })?;
     } else {
         crate::output::emit(&format!("{verdict}\n"))?;
-        eprintln!("{decision}");
+        stderr_println!("{decision}");
     }
     Ok(Verdict(decision))
 }
