@@ -49,8 +49,8 @@ struct Cli {
 /// The exit codes, at the end of `--help`.
 const EXIT_CODES: &str = "Exit codes: 0 success; 1 internal failure; 2 invalid input or usage, or an \
 output that cannot be written (missing folder, read-only or full disk, full or closed stdout); 128+N stopped by \
-signal N, temporary files removed; 4 numerical failure (double precision could not finish: \
-`delaunay --method voronoi` without `--exact`). `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
+signal N, temporary files removed; 4 numerical failure (double precision could not finish on \
+valid input: use `--exact` on exact input, or another `--method`). `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
 undecidable in double precision, 4 internal failure.";
 
 /// The subcommands; each owns its arguments (`commands::NAME::Args`).
