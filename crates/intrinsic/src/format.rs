@@ -124,10 +124,12 @@ impl Number {
         let mut text = Vec::new();
         push_f64(&mut text, x);
         let text = std::str::from_utf8(&text).expect("ASCII");
-        crate::geometry::literal_is_double(text, x).unwrap_or_else(|| {
-            text.parse::<Rational>()
-                .is_ok_and(|r| r.as_exact_f64() == Some(x))
-        })
+        match crate::geometry::small_literal(text, x) {
+            Some(decimal) => decimal.is_none(),
+            None => text
+                .parse::<Rational>()
+                .is_ok_and(|r| r.as_exact_f64() == Some(x)),
+        }
     }
 
     /// A JSON number literal (`-12`, `0.1`, `2.5e-3`, as JSON spells numbers): a
@@ -141,10 +143,10 @@ impl Number {
         let nearest: f64 = text
             .parse()
             .map_err(|_| format!("not a number: {text:?}"))?;
-        if let Some(exact) = crate::geometry::literal_is_double(text, nearest) {
-            if exact {
-                return Ok(Number::Double(nearest));
-            }
+        match crate::geometry::small_literal(text, nearest) {
+            Some(None) => return Ok(Number::Double(nearest)),
+            Some(Some(exact)) => return Ok(Number::Decimal { exact, nearest }),
+            None => {}
         }
         let exact: Rational = text
             .parse()
@@ -303,6 +305,16 @@ impl PortalgonDoc {
     /// [`PortalgonError::Json`] (with line and column), [`PortalgonError::Version`].
     pub fn from_json(text: &str) -> Result<Self, PortalgonError> {
         let doc: Self = serde_json::from_str(text).map_err(|e| json_error(&e))?;
+        doc.check_header()?;
+        Ok(doc)
+    }
+
+    /// Parses JSON text in memory (faster than [`Self::read`] on a reader).
+    ///
+    /// # Errors
+    /// As [`Self::from_json`]; [`PortalgonError::Json`] for text that is not UTF-8.
+    pub fn from_slice(bytes: &[u8]) -> Result<Self, PortalgonError> {
+        let doc: Self = serde_json::from_slice(bytes).map_err(|e| json_error(&e))?;
         doc.check_header()?;
         Ok(doc)
     }

@@ -156,7 +156,7 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     }
     let name = crate::input::name(path);
     let bytes = crate::input::input_bytes(path)?;
-    let p = PortalgonDoc::read(&bytes[..])
+    let p = PortalgonDoc::from_slice(&bytes)
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
         .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
@@ -258,7 +258,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
-        let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
+        let doc = PortalgonDoc::from_slice(&bytes).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));

@@ -23,7 +23,7 @@ mod rational;
 mod scalar;
 
 pub use double_double::DoubleDouble;
-pub(crate) use rational::literal_is_double;
+pub(crate) use rational::small_literal;
 pub use rational::{MAX_INPUT_BITS, ParseRationalError, Rational};
 pub use scalar::Scalar;
 

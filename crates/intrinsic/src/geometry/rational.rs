@@ -74,45 +74,64 @@ fn check_input_size(s: &str, digits: usize, power: u64) -> Result<(), ParseRatio
     Ok(())
 }
 
-/// Whether a JSON number literal (`text`, JSON's syntax) is exactly the double `nearest` it
-/// rounds to, decided on its digits without big integers when it has at most 19 significant
-/// digits and a small exponent; `None` otherwise (then [`Rational`] decides).
-pub(crate) fn literal_is_double(text: &str, nearest: f64) -> Option<bool> {
-    if !nearest.is_finite() {
-        return Some(false);
-    }
+/// A JSON number literal (`text`, JSON's syntax) against the double `nearest` it rounds to,
+/// decided on its digits without big integers when it has at most 19 significant digits and a
+/// small exponent: `Some(None)` when its value is `nearest` exactly, `Some(Some(r))` with its
+/// value `r` otherwise; `None` when undecided here (then [`Rational`]'s parser decides).
+pub(crate) fn small_literal(text: &str, nearest: f64) -> Option<Option<Rational>> {
+    let negative = text.starts_with('-');
     let unsigned = text.strip_prefix('-').unwrap_or(text);
     let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
         Some(i) => (&unsigned[..i], unsigned[i + 1..].parse::<i64>().ok()?),
         None => (unsigned, 0),
     };
     let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let digits = format!("{int_part}{frac_part}");
-    let digits = digits.trim_start_matches('0');
-    if digits.is_empty() {
-        return Some(true); // zero
+    let mut m = 0u64;
+    let mut significant = 0usize;
+    for b in int_part.bytes().chain(frac_part.bytes()) {
+        if m > 0 || b != b'0' {
+            significant += 1;
+            if significant > 19 || !b.is_ascii_digit() {
+                return None;
+            }
+            m = 10 * m + u64::from(b - b'0');
+        }
     }
-    if digits.len() > 19 {
-        return None;
+    if m == 0 {
+        return Some(None); // zero
     }
-    let mut m: u64 = digits.parse().ok()?;
     let mut e10 = exponent.checked_sub(frac_part.len() as i64)?;
     while m % 10 == 0 {
         m /= 10;
         e10 += 1;
     }
+    let signed = |v: i64| if negative { -v } else { v };
     if e10 >= 0 {
         let value = u128::from(m).checked_mul(10u128.checked_pow(u32::try_from(e10).ok()?)?)?;
         // A correctly rounded double equals the value whenever the value is a double.
-        return Some(nearest.abs() < 2f64.powi(127) && nearest.abs() as u128 == value);
+        if nearest.is_finite() && nearest.abs() < 2f64.powi(127) && nearest.abs() as u128 == value {
+            return Some(None);
+        }
+        let value = i64::try_from(value).ok()?;
+        return Some(Some(Rational::from_i64(signed(value))));
     }
-    let k = u32::try_from(-e10).ok().filter(|&k| k <= 27)?;
-    let five_k = 5u64.pow(k);
-    if m % five_k != 0 {
-        return Some(false); // not a dyadic rational
+    let k = u32::try_from(-e10).ok().filter(|&k| k <= 18)?;
+    let q = (m % 5u64.pow(k) == 0).then(|| m / 5u64.pow(k)); // value = q / 2^k when dyadic
+    if q.is_some_and(|q| q >> q.trailing_zeros() < 1 << 53) {
+        return Some(None);
     }
-    let q = m / five_k; // value = q / 2^k
-    Some(q >> q.trailing_zeros() < 1 << 53)
+    // m / 10^k reduced: only the factors 2 and 5 of m can cancel.
+    let twos = m.trailing_zeros().min(k);
+    let (mut m, mut den) = (m >> twos, 10u64.pow(k) >> twos);
+    let mut fives = 0;
+    while fives < k && m % 5 == 0 {
+        (m, den, fives) = (m / 5, den / 5, fives + 1);
+    }
+    let (num, den) = (i64::try_from(m).ok()?, i64::try_from(den).ok()?);
+    Some(Some(Rational(Repr::Small {
+        num: signed(num),
+        den,
+    })))
 }
 
 /// The greatest common divisor; `gcd(0, b) = b`. A power of two shortcuts; operands that fit
