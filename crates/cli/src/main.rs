@@ -112,6 +112,22 @@ fn remove_temporaries_on_signals() {
     });
 }
 
+/// `--time-limit SECONDS`: a thread that, once the time is up, removes the temporary files of
+/// writes in progress and exits with code 2, naming the step then running (as the signal
+/// handler does, so no output is half-written: a write's rename waits for it or never happens).
+fn stop_after(seconds: f64) {
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs_f64(seconds));
+        let step = progress::current().map_or_else(String::new, |s| format!(" while {s}"));
+        surftopo_io::remove_temporaries_then(|| {
+            stderr_println!(
+                "error: stopped after {seconds} s (--time-limit){step}; temporary files removed"
+            );
+            std::process::exit(2)
+        })
+    });
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -127,6 +143,9 @@ fn main() -> ExitCode {
         output::STDOUT_CLOSED.store(true, std::sync::atomic::Ordering::Relaxed);
     }
     remove_temporaries_on_signals();
+    if let Some(seconds) = cli.limits.time_limit {
+        stop_after(seconds);
+    }
     let isometric = matches!(cli.command, Command::Isometric(_));
     match run(cli.command) {
         Ok(code) => code,

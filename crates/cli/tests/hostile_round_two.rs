@@ -93,3 +93,65 @@ fn item6_exit_codes_follow_the_readme() {
         }
     }
 }
+
+/// Item 4: `--time-limit SECONDS` stops any command with exit 2, naming the step then running,
+/// leaving no output and no temporary file; a command within its limit is unaffected.
+#[test]
+fn item4_time_limit_stops_a_long_run_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    // T_x at x = 10^5: the exact wave has about x events (minutes).
+    let t = flat_torus(dir.path(), "100000");
+    let out = dir.path().join("d.json");
+    let started = std::time::Instant::now();
+    let run_out = run(&[
+        "delaunay",
+        s(&t),
+        "--method",
+        "voronoi",
+        "--exact",
+        "-o",
+        s(&out),
+        "--time-limit",
+        "0.5",
+    ]);
+    assert!(started.elapsed().as_secs_f64() < 30.0);
+    assert_code(
+        &run_out,
+        2,
+        &["--time-limit", "while running the Voronoi wave"],
+    );
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert_eq!(left, [t.file_name().unwrap().to_str().unwrap()]);
+    // Within the limit: the same command on a small x.
+    let small = flat_torus(dir.path(), "10");
+    let ok = run(&[
+        "delaunay",
+        s(&small),
+        "--method",
+        "voronoi",
+        "--exact",
+        "-o",
+        s(&out),
+        "--time-limit",
+        "60",
+    ]);
+    assert_code(&ok, 0, &[]);
+    let tet = dir.path().join("tet.obj");
+    let ok = run(&[
+        "generate",
+        "tetrahedron",
+        "-o",
+        s(&tet),
+        "--time-limit",
+        "60",
+    ]);
+    assert_code(&ok, 0, &[]);
+    for bad in ["0", "-1", "nan", "abc"] {
+        let option = format!("--time-limit={bad}");
+        let refused = run(&["generate", "tetrahedron", "-o", s(&tet), &option]);
+        assert_code(&refused, 2, &["--time-limit"]);
+    }
+}
