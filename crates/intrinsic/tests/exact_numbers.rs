@@ -5,7 +5,7 @@
 
 use proptest::prelude::*;
 use surftopo_intrinsic::dubois::{FlatDelaunayOptions, delaunay_tessellation_flat};
-use surftopo_intrinsic::geometry::{MAX_INPUT_BITS, ParseRationalError, Rational, Scalar};
+use surftopo_intrinsic::geometry::{MAX_INPUT_BITS, ParseRationalError, Rational};
 use surftopo_intrinsic::{PortalgonDoc, PortalgonError};
 
 /// T_x by corners (Dubois, Section 9), each coordinate written as `number(value)`.

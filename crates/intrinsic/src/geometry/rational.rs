@@ -101,7 +101,7 @@ pub(crate) fn small_literal(text: &str, nearest: f64) -> Option<Option<Rational>
         return Some(None); // zero
     }
     let mut e10 = exponent.checked_sub(frac_part.len() as i64)?;
-    while m % 10 == 0 {
+    while m.is_multiple_of(10) {
         m /= 10;
         e10 += 1;
     }
@@ -116,7 +116,7 @@ pub(crate) fn small_literal(text: &str, nearest: f64) -> Option<Option<Rational>
         return Some(Some(Rational::from_i64(signed(value))));
     }
     let k = u32::try_from(-e10).ok().filter(|&k| k <= 18)?;
-    let q = (m % 5u64.pow(k) == 0).then(|| m / 5u64.pow(k)); // value = q / 2^k when dyadic
+    let q = m.is_multiple_of(5u64.pow(k)).then(|| m / 5u64.pow(k)); // value = q / 2^k when dyadic
     if q.is_some_and(|q| q >> q.trailing_zeros() < 1 << 53) {
         return Some(None);
     }
@@ -124,7 +124,7 @@ pub(crate) fn small_literal(text: &str, nearest: f64) -> Option<Option<Rational>
     let twos = m.trailing_zeros().min(k);
     let (mut m, mut den) = (m >> twos, 10u64.pow(k) >> twos);
     let mut fives = 0;
-    while fives < k && m % 5 == 0 {
+    while fives < k && m.is_multiple_of(5) {
         (m, den, fives) = (m / 5, den / 5, fives + 1);
     }
     let (num, den) = (i64::try_from(m).ok()?, i64::try_from(den).ok()?);
