@@ -145,7 +145,7 @@ fn weld_soup(
         let weld = soup.weld_exact();
         welded = weld.merged;
         if weld.conflicting > 0 {
-            eprintln!(
+            stderr_println!(
                 "warning: {source}: welding merged {} vertices whose per-vertex attributes differ \
                  from those of the vertex they were merged into; theirs are dropped",
                 weld.conflicting
@@ -266,16 +266,16 @@ pub fn log_report(path: &Path, loaded: &Loaded) {
 fn log_changes(path: &Path, welded: usize, report: &BuildReport) {
     let name = name(path);
     if welded > 0 {
-        eprintln!("note: {name}: welded {welded} coincident vertices");
+        stderr_println!("note: {name}: welded {welded} coincident vertices");
     }
     if !report.dropped_vertices.is_empty() {
-        eprintln!(
+        stderr_println!(
             "note: {name}: dropped {} unreferenced vertices",
             report.dropped_vertices.len()
         );
     }
     if report.reoriented_faces > 0 {
-        eprintln!(
+        stderr_println!(
             "note: {name}: reoriented {} faces to make the orientation consistent",
             report.reoriented_faces
         );
