@@ -1,7 +1,8 @@
 //! `surftopo demo`: every capability on built-in examples, needing no file.
 //!
 //! The examples are generated: a genus-2 brick with irregular connectivity (816
-//! triangles, small enough for the brute force and the exact quality pairing to stay quick),
+//! triangles, small enough for the brute force and the exact quality pairing to stay quick), a
+//! Klein bottle and a torus with two holes,
 //! a small broken mesh for `info`'s problem classes, and Dubois' flat tori T_x, T_{x+1} and
 //! T_{x+1/3} (x = 10^9, exact corners). Each step calls the command's own code (its `run`, or the
 //! library functions it calls) and prints one line: what was run, the result and its time.
@@ -73,6 +74,7 @@ impl Demo {
         self.info(&input)?;
         self.convert(&input)?;
         self.irreducible(&input)?;
+        self.other_surfaces()?;
         self.quad(&input)?;
         let tori = self.flat_tori()?;
         self.delaunay(&input, &tori)?;
@@ -260,6 +262,60 @@ impl Demo {
                     report.edges_tested_more_than_once
                 ),
                 report.seconds,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// A Klein bottle and a torus with two holes, each generated, classified by `info` and
+    /// reduced by RS: irreducible triangulations beyond closed orientable surfaces.
+    fn other_surfaces(&self) -> anyhow::Result<()> {
+        let cases = [
+            (
+                "klein-bottle + irreducible",
+                "klein-bottle.obj",
+                generate::Kind::KleinBottle { m: 12, n: 6 },
+                generate::Modifiers {
+                    splits: 200,
+                    ..modifiers(0)
+                },
+            ),
+            (
+                "torus --cut-holes 2 + irreducible",
+                "open-torus.obj",
+                generate::Kind::Torus { m: 24, n: 12 },
+                generate::Modifiers {
+                    cut_holes: 2,
+                    ..modifiers(300)
+                },
+            ),
+        ];
+        for (label, name, kind, modifiers) in cases {
+            let start = Instant::now();
+            let surface = generate::modify(generate::generate(&kind)?, &modifiers)?;
+            let (positions, triangles) = surface.to_triangles();
+            let path = self.path(name);
+            crate::output::write_soup(
+                &path,
+                &surftopo_io::PolygonSoup::from_triangles(positions, &triangles),
+            )?;
+            let pieces = surftopo_mesh::inspect(surface.positions.len(), &triangles).surfaces;
+            let (reduced, report, _) =
+                irreducible::reduce_covered(&surface, &pieces, Algorithm::RamaswamiSiqueira)?;
+            let reduced_name = name.replace(".obj", "-irreducible.obj");
+            crate::output::write_soup(&self.path(&reduced_name), &reduced)?;
+            Self::line(
+                label,
+                &format!(
+                    "{}: {}, {} vertices; irreducible {}: {} vertices, {} contractions",
+                    self.shown(name),
+                    report.input.names(),
+                    report.input.vertices,
+                    self.shown(&reduced_name),
+                    report.output.vertices,
+                    report.contractions
+                ),
+                start.elapsed().as_secs_f64(),
             )?;
         }
         Ok(())
