@@ -105,16 +105,19 @@ pub(crate) fn run_lifted<L: Lifting>(
 ) -> (Vec<Contraction>, TestTally, u64) {
     let class = |v: VertexId| VertexId(lifting.class(v));
     let mut dict = LinkDictionaries::of(mesh, lifting);
-    let mut by_degree: BTreeSet<(u32, u32)> = (0..lifting.class_count() as u32)
+    // (degree, vertex) packed as `degree << 32 | vertex`: the same order, one integer compare.
+    let key = |degree: u32, v: u32| u64::from(degree) << 32 | u64::from(v);
+    let mut by_degree: BTreeSet<u64> = (0..lifting.class_count() as u32)
         .filter(|&c| lifting.apex_class() != Some(c))
         .filter(|&c| lifting.lift(c).is_valid() && mesh.is_vertex_live(lifting.lift(c)))
-        .map(|c| (dict.degree(VertexId(c)), c))
+        .map(|c| key(dict.degree(VertexId(c)), c))
         .collect();
     let mut tally = TestTally::new(mesh.edge_slots());
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
     let mut contractions = 0u64;
     let mut fan: Vec<HalfedgeId> = Vec::new();
-    while let Some(&(degree, vi)) = by_degree.first() {
+    while let Some(&first) = by_degree.first() {
+        let vi = first as u32;
         let v = VertexId(vi);
         fan.clear();
         fan.extend(
@@ -127,7 +130,7 @@ pub(crate) fn run_lifted<L: Lifting>(
             dict.link_condition_of(mesh, lifting, h)
         });
         let Some(h) = found else {
-            by_degree.remove(&(degree, vi)); // v is trapped, and stays so (Lemma 5)
+            by_degree.remove(&first); // v is trapped, and stays so (Lemma 5)
             continue;
         };
         let w = class(mesh.dest(h));
@@ -135,14 +138,14 @@ pub(crate) fn run_lifted<L: Lifting>(
             class(mesh.opposite_vertex(h)),
             class(mesh.opposite_vertex(h.twin())),
         );
-        let old = [w, x, y].map(|z| (dict.degree(z), z.0));
+        let old = [w, x, y].map(|z| key(dict.degree(z), z.0));
         contract_lifts(mesh, lifting, h.twin(), &mut history); // v identified with w
         contractions += 1;
         dict.contract(v, w, [x, y]);
-        by_degree.remove(&(degree, vi));
-        for (key, z) in old.into_iter().zip([w, x, y]) {
-            if by_degree.remove(&key) {
-                by_degree.insert((dict.degree(z), z.0));
+        by_degree.remove(&first);
+        for (old_key, z) in old.into_iter().zip([w, x, y]) {
+            if by_degree.remove(&old_key) {
+                by_degree.insert(key(dict.degree(z), z.0));
             }
         }
     }
@@ -156,7 +159,8 @@ pub(crate) fn run_lifted<L: Lifting>(
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct LinkDictionaries {
     links: Vec<Vec<u32>>,
-    apex: Option<u32>,
+    /// The apexes' class, `u32::MAX` when there is none.
+    apex: u32,
 }
 
 impl LinkDictionaries {
@@ -185,7 +189,7 @@ impl LinkDictionaries {
             .collect();
         Self {
             links,
-            apex: lifting.apex_class(),
+            apex: lifting.apex_class().unwrap_or(u32::MAX),
         }
     }
 
@@ -215,7 +219,7 @@ impl LinkDictionaries {
         h: HalfedgeId,
     ) -> bool {
         let (v, w) = (lifting.class(mesh.origin(h)), lifting.class(mesh.dest(h)));
-        if self.apex.is_some_and(|a| a == v || a == w) {
+        if lifting.apex_class().is_some_and(|a| a == v || a == w) {
             return false;
         }
         let (dv, dw) = (&self.links[v as usize], &self.links[w as usize]);
@@ -243,13 +247,13 @@ impl LinkDictionaries {
         let [x, y] = opposite;
         let link = std::mem::take(&mut self.links[removed.idx()]);
         for z in [kept, x, y] {
-            if self.apex != Some(z.0) {
+            if z.0 != self.apex {
                 dict_remove(&mut self.links[z.idx()], removed.0);
             }
         }
         for &z in &link {
             if z != kept.0 && z != x.0 && z != y.0 {
-                if self.apex != Some(z) {
+                if z != self.apex {
                     let dz = &mut self.links[z as usize];
                     dict_remove(dz, removed.0);
                     dict_insert(dz, kept.0);

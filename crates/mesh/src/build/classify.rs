@@ -90,6 +90,12 @@ impl SurfaceKind {
 /// components of the graph of boundary edges (a cycle each: every boundary vertex of a surface
 /// has two boundary edges). O(n).
 pub(crate) fn classify(p: &CornerPairing) -> Vec<SurfaceKind> {
+    let ins = &p.inspection;
+    if ins.boundary_edges == 0 && ins.orientable && ins.components == 1 {
+        // One closed orientable piece: its counts are the whole's.
+        let (faces, vertices) = (p.remapped.len(), p.new_to_old.len());
+        return vec![SurfaceKind::new(faces, 3 * faces / 2, vertices, true, 0)];
+    }
     components(p).1
 }
 

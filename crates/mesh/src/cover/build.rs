@@ -2,7 +2,7 @@
 
 use super::{ClosedCover, Sheets};
 use crate::build::pairing::{CornerPairing, next_corner, prev_corner};
-use crate::build::{BuildReport, SurfaceKind, build_topology_closed, classify};
+use crate::build::{BuildReport, build_topology_closed, classify};
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::union_find::UnionFind;
@@ -34,12 +34,7 @@ impl ClosedCover {
         let nv = p.new_to_old.len();
         let ins = &p.inspection;
         if ins.boundary_edges == 0 && ins.orientable {
-            let surfaces = if ins.components == 1 {
-                let edges = 3 * triangles.len() / 2;
-                vec![SurfaceKind::new(triangles.len(), edges, nv, true, 0)]
-            } else {
-                classify::classify(&p)
-            };
+            let surfaces = classify::classify(&p);
             let mut report = BuildReport {
                 reoriented_faces: ins.reoriented_faces.min(triangles.len()),
                 dropped_vertices: std::mem::take(&mut p.dropped),
