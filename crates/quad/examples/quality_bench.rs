@@ -1,0 +1,433 @@
+//! The exact quality pairing against its peers, side by side in one run: surftopo's
+//! `min_cost_perfect_matching` (the matching and its certificate) against LEMON 1.3's
+//! `MaxWeightedPerfectMatching::run()` on the same dual graph and integer costs, and the whole
+//! `quad --objective quality` call (`quadrangulate_by_quality`: costs, matching, certificate
+//! check, quads, quality report) against Gmsh's Blossom recombination of the same triangles
+//! (`gmsh.model.mesh.recombine()` without topological optimisation or smoothing, so that its
+//! quads too are pairs of the input's triangles).
+//!
+//! ```text
+//! make -C crates/quad/peer
+//! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-quad --example quality_bench -- \
+//!     [--lemon crates/quad/peer/lemon_matching] [--python PYTHON] [--rounds R] [--seed S] \
+//!     [--input SPEC]... [--out results/quality_bench]
+//! ```
+//! `PYTHON`: an interpreter with the pip package `gmsh` (a venv; never needed by the tests).
+//! Each round runs every tool once on the input, in turn, the order reversed every other round,
+//! so that a slow spell of the shared machine hits all of them; a round's paired ratio is
+//! ours / LEMON (and Gmsh / ours) within that round. Printed and written per input: the median
+//! wall and CPU seconds of each tool (ours: this thread's; LEMON: its `run()`'s thread; Gmsh:
+//! its process's, the call alone, mesh loading excluded) and the median, smallest and largest
+//! paired ratio. Every round's matching is checked by the certificate verifier, LEMON's optimum
+//! must equal ours, and Gmsh's output must keep the input's vertices.
+//!
+//! SPEC: a shared mesh by the start of its file name (`koala`), `flips:MESH:N` (N random edge
+//! flips of a shared mesh: long thin triangles among the others), `splits:MESH:N` (N random
+//! vertex splits: small triangles and needles), `genus:G:SIZE:FLIPS` (a genus-G surface with
+//! random flips), `icosphere:S`; the random ones drawn with `--seed` (default 1). Without
+//! `--input`: armadillo_43k, koala, hand1_50k, `flips:hand1_50k:30000`,
+//! `splits:armadillo_43k:20000`, `genus:40:8:30000`. Writes `<out>.jsonl` and `<out>.md`.
+
+mod support;
+
+use std::error::Error;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+use support::{command_line, export_dual, thread_cpu_seconds, write_off};
+use surftopo_matching::weighted::{min_cost_perfect_matching, verify_min_cost_perfect_matching};
+use surftopo_mesh::Surface;
+use surftopo_mesh::generators::{genus_surface, icosphere, random_flips, random_vertex_splits};
+use surftopo_quad::quality::COST_RESOLUTION;
+use surftopo_quad::{QualityObjective, pair_costs, quadrangulate_by_quality};
+
+/// The command line (see the module doc).
+struct Args {
+    lemon: Option<PathBuf>,
+    python: Option<PathBuf>,
+    rounds: usize,
+    seed: u64,
+    inputs: Vec<String>,
+    out: PathBuf,
+    command: String,
+}
+
+fn parse_args() -> Result<Args, Box<dyn Error>> {
+    let mut args = Args {
+        lemon: None,
+        python: None,
+        rounds: 5,
+        seed: 1,
+        inputs: Vec::new(),
+        out: PathBuf::from(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../results/quality_bench"
+        )),
+        command: command_line(std::env::args().skip(1)),
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(flag) = it.next() {
+        let mut value = || it.next().ok_or(format!("{flag} needs a value"));
+        match flag.as_str() {
+            "--lemon" => args.lemon = Some(PathBuf::from(value()?)),
+            "--python" => args.python = Some(PathBuf::from(value()?)),
+            "--rounds" => args.rounds = value()?.parse::<usize>()?.max(1),
+            "--seed" => args.seed = value()?.parse()?,
+            "--input" => args.inputs.push(value()?),
+            "--out" => args.out = PathBuf::from(value()?),
+            other => return Err(format!("unknown argument {other}").into()),
+        }
+    }
+    if args.inputs.is_empty() {
+        args.inputs = [
+            "armadillo_43k",
+            "koala",
+            "hand1_50k",
+            "flips:hand1_50k:30000",
+            "splits:armadillo_43k:20000",
+            "genus:40:8:30000",
+        ]
+        .map(String::from)
+        .to_vec();
+    }
+    Ok(args)
+}
+
+/// The shared mesh whose file name starts with `name`.
+fn shared(name: &str) -> Result<Surface, Box<dyn Error>> {
+    let mesh = surftopo_testkit::shared_meshes()
+        .into_iter()
+        .find(|m| m.file.starts_with(name))
+        .ok_or(format!("no shared mesh {name} (is SURFTOPO_MESHES set?)"))?;
+    Ok(surftopo_testkit::load(&mesh))
+}
+
+/// The input a SPEC names (see the module doc).
+fn make_input(spec: &str, seed: u64) -> Result<Surface, Box<dyn Error>> {
+    let parts: Vec<&str> = spec.split(':').collect();
+    let number = |i: usize| -> Result<usize, Box<dyn Error>> {
+        Ok(parts
+            .get(i)
+            .ok_or(format!("{spec}: missing field {i}"))?
+            .parse()?)
+    };
+    Ok(match parts[0] {
+        "flips" => random_flips(&shared(parts[1])?, number(2)?, seed),
+        "splits" => random_vertex_splits(&shared(parts[1])?, number(2)?, seed),
+        "genus" => {
+            let surface = genus_surface(number(1)? as u32, number(2)? as u32);
+            random_flips(&surface, number(3)?, seed)
+        }
+        "icosphere" => icosphere(number(1)? as u32),
+        name => shared(name)?,
+    })
+}
+
+/// One tool's times over the rounds.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+struct Times {
+    wall: Vec<f64>,
+    cpu: Vec<f64>,
+}
+
+impl Times {
+    fn push(&mut self, (wall, cpu): (f64, f64)) {
+        self.wall.push(wall);
+        self.cpu.push(cpu);
+    }
+}
+
+/// One line of the results file.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+struct Record {
+    input: String,
+    seed: u64,
+    faces: usize,
+    genus: i64,
+    /// The optimum in integer units (10⁹ per unit of cost).
+    cost_units: i64,
+    /// `min_cost_perfect_matching`, `quadrangulate_by_quality`, LEMON's `run()`, Gmsh's
+    /// `recombine()`, per round.
+    matching: Times,
+    call: Times,
+    lemon: Times,
+    gmsh: Times,
+    /// Gmsh: quads made and triangles left, and its pairing's cost under our costs.
+    gmsh_quads: usize,
+    gmsh_triangles_left: usize,
+}
+
+fn median(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    match v.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => v[n / 2],
+        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+    }
+}
+
+/// Per-round ratios `a[i] / b[i]`.
+fn ratios(a: &[f64], b: &[f64]) -> Vec<f64> {
+    a.iter().zip(b).map(|(x, y)| x / y).collect()
+}
+
+/// `median (smallest–largest)` of per-round ratios, or `-`.
+fn ratio_summary(r: &[f64]) -> String {
+    if r.is_empty() {
+        return "-".into();
+    }
+    let lo = r.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = r.iter().copied().fold(0.0, f64::max);
+    format!("{:.2} ({lo:.2}–{hi:.2})", median(r))
+}
+
+/// LEMON's `run()` once on an exported weighted dual: (wall, CPU) seconds and its optimum as a
+/// cost in integer units.
+fn lemon_round(
+    binary: &Path,
+    dual: &Path,
+    faces: usize,
+) -> Result<((f64, f64), i64), Box<dyn Error>> {
+    let output = Command::new(binary).arg("--weighted").arg(dual).output()?;
+    if !output.status.success() {
+        return Err(format!("LEMON harness: {}", String::from_utf8_lossy(&output.stderr)).into());
+    }
+    let v: serde_json::Value = serde_json::from_slice(&output.stdout)?;
+    if v["perfect"] != serde_json::Value::Bool(true) {
+        return Err("LEMON found no perfect matching".into());
+    }
+    let weight = v["matching_weight"].as_i64().ok_or("no matching_weight")?;
+    let run = v["run_seconds"].as_f64().ok_or("no run_seconds")?;
+    let cpu = v["cpu_run_seconds"].as_f64().ok_or("no cpu_run_seconds")?;
+    Ok((
+        (run, cpu),
+        (faces as i64 / 2) * COST_RESOLUTION as i64 - weight,
+    ))
+}
+
+/// Gmsh's Blossom recombination once (`quad_peers.py gmsh-blossom`): (wall, CPU) seconds, quads
+/// and triangles left; fails when the output does not keep the input's vertices.
+fn gmsh_round(
+    python: &Path,
+    input: &Path,
+    vertices: usize,
+) -> Result<((f64, f64), usize, usize), Box<dyn Error>> {
+    let harness = Path::new(env!("CARGO_MANIFEST_DIR")).join("peer/quad_peers.py");
+    let output = input.with_extension("gmsh.off");
+    let run = Command::new(python)
+        .arg(&harness)
+        .arg("gmsh-blossom")
+        .arg(input)
+        .arg(&output)
+        .output()?;
+    if !run.status.success() {
+        return Err(format!("gmsh: {}", String::from_utf8_lossy(&run.stderr)).into());
+    }
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let line = stdout
+        .lines()
+        .rfind(|l| l.starts_with('{'))
+        .ok_or("no timing line")?;
+    let v: serde_json::Value = serde_json::from_str(line)?;
+    let seconds = v["seconds"].as_f64().ok_or("no seconds")?;
+    let cpu = v["cpu_seconds"].as_f64().ok_or("no cpu_seconds")?;
+    let text = std::fs::read_to_string(&output)?;
+    std::fs::remove_file(&output)?;
+    let mut words = text.split_whitespace().skip(1);
+    let count = |w: Option<&str>| w.and_then(|w| w.parse::<usize>().ok()).ok_or("bad OFF");
+    let kept = count(words.next())?;
+    if kept != vertices {
+        return Err(format!("gmsh: {kept} vertices out of {vertices}").into());
+    }
+    let (mut quads, mut triangles) = (0, 0);
+    for line in text.lines().skip(2 + vertices) {
+        match line.split_whitespace().next() {
+            Some("4") => quads += 1,
+            Some("3") => triangles += 1,
+            _ => {}
+        }
+    }
+    Ok(((seconds, cpu), quads, triangles))
+}
+
+/// (wall, this thread's CPU) seconds of `f`, and its result.
+fn timed<T>(f: impl FnOnce() -> T) -> ((f64, f64), T) {
+    let (start, cpu) = (Instant::now(), thread_cpu_seconds());
+    let out = f();
+    (
+        (start.elapsed().as_secs_f64(), thread_cpu_seconds() - cpu),
+        out,
+    )
+}
+
+fn measure(name: &str, surface: &Surface, args: &Args) -> Result<Record, Box<dyn Error>> {
+    let mesh = &surface.mesh;
+    let costs = pair_costs(mesh, &surface.positions);
+    let mut record = Record {
+        input: name.into(),
+        seed: args.seed,
+        faces: mesh.face_count(),
+        genus: mesh.genus(),
+        ..Record::default()
+    };
+    let weights: Vec<i64> = costs.iter().map(|c| COST_RESOLUTION as i64 - c).collect();
+    let dual = match &args.lemon {
+        Some(_) => Some(export_dual(surface, Some(&weights), "quality-bench")?),
+        None => None,
+    };
+    let off = match &args.python {
+        Some(_) => {
+            let path = std::env::temp_dir().join(format!("surftopo-qb-{}.off", std::process::id()));
+            write_off(surface, &path)?;
+            Some(path)
+        }
+        None => None,
+    };
+    for round in 0..args.rounds {
+        let mut tools = [0, 1, 2, 3];
+        if round % 2 == 1 {
+            tools.reverse();
+        }
+        for tool in tools {
+            match tool {
+                0 => {
+                    let (times, result) = timed(|| min_cost_perfect_matching(mesh, &costs));
+                    let result = result?;
+                    let verified = verify_min_cost_perfect_matching(
+                        mesh,
+                        &costs,
+                        &result.edges,
+                        &result.certificate,
+                    )?;
+                    if verified != result.cost || (round > 0 && result.cost != record.cost_units) {
+                        return Err(format!("{name}: optimum {} not verified", result.cost).into());
+                    }
+                    record.cost_units = result.cost;
+                    record.matching.push(times);
+                }
+                1 => {
+                    let (times, quads) = timed(|| {
+                        quadrangulate_by_quality(mesh, &surface.positions, QualityObjective::Exact)
+                    });
+                    quads?;
+                    record.call.push(times);
+                }
+                2 => {
+                    if let (Some(binary), Some(dual)) = (&args.lemon, &dual) {
+                        let (times, cost) = lemon_round(binary, dual, mesh.face_count())?;
+                        if record.cost_units != 0 && cost != record.cost_units {
+                            return Err(format!(
+                                "{name}: LEMON's optimum {cost} differs from {}",
+                                record.cost_units
+                            )
+                            .into());
+                        }
+                        record.lemon.push(times);
+                    }
+                }
+                _ => {
+                    if let (Some(python), Some(off)) = (&args.python, &off) {
+                        let (times, quads, left) =
+                            gmsh_round(python, off, surface.positions.len())?;
+                        record.gmsh.push(times);
+                        record.gmsh_quads = quads;
+                        record.gmsh_triangles_left = left;
+                    }
+                }
+            }
+        }
+    }
+    for path in dual.iter().chain(&off) {
+        std::fs::remove_file(path)?;
+    }
+    Ok(record)
+}
+
+/// The table row of a record: medians and paired ratios.
+fn row(r: &Record) -> String {
+    let m = |v: &[f64]| {
+        if v.is_empty() {
+            "-".into()
+        } else {
+            format!("{:.3}", median(v))
+        }
+    };
+    format!(
+        "| {} | {} | {} | {} / {} | {} / {} | {} | {} | {} / {} | {} / {} | {} | {} | {:.1} |",
+        r.input,
+        r.faces,
+        r.genus,
+        m(&r.matching.wall),
+        m(&r.matching.cpu),
+        m(&r.lemon.wall),
+        m(&r.lemon.cpu),
+        ratio_summary(&ratios(&r.matching.wall, &r.lemon.wall)),
+        ratio_summary(&ratios(&r.matching.cpu, &r.lemon.cpu)),
+        m(&r.call.wall),
+        m(&r.call.cpu),
+        m(&r.gmsh.wall),
+        m(&r.gmsh.cpu),
+        ratio_summary(&ratios(&r.gmsh.wall, &r.call.wall)),
+        ratio_summary(&ratios(&r.gmsh.cpu, &r.call.cpu)),
+        if r.gmsh.wall.is_empty() {
+            f64::NAN
+        } else {
+            100.0 * (2 * r.gmsh_quads) as f64 / r.faces as f64
+        },
+    )
+}
+
+const HEADER: &str = "| input | triangles | genus | ours s (wall / CPU) | LEMON s (wall / CPU) | \
+     ours / LEMON, wall | ours / LEMON, CPU | ours call s (wall / CPU) | Gmsh s (wall / CPU) | \
+     Gmsh / ours call, wall | Gmsh / ours call, CPU | Gmsh quads % |\n\
+     |---|---:|---:|---:|---:|---|---|---:|---:|---|---|---:|";
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let args = parse_args()?;
+    if let Some(dir) = args.out.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    println!("{HEADER}");
+    let mut records = Vec::new();
+    for spec in &args.inputs {
+        let surface = make_input(spec, args.seed)?;
+        let record = measure(spec, &surface, &args)?;
+        println!("{}", row(&record));
+        records.push(record);
+        write_results(&records, &args)?;
+    }
+    Ok(())
+}
+
+fn write_results(records: &[Record], args: &Args) -> Result<(), Box<dyn Error>> {
+    let mut jsonl = String::new();
+    for r in records {
+        writeln!(jsonl, "{}", serde_json::to_string(r)?)?;
+    }
+    std::fs::write(args.out.with_extension("jsonl"), jsonl)?;
+    let mut md = format!(
+        "# The exact quality pairing against LEMON and Gmsh\n\n\
+         Generated by `make -C crates/quad/peer && SURFTOPO_MESHES=../shared/meshes cargo run \
+         --release -p surftopo-quad --example quality_bench -- {}` on a 2-core machine shared \
+         with other work ({} rounds, each tool once per round, in turn, the order reversed every \
+         other round). `ours`: `surftopo_matching::weighted::min_cost_perfect_matching` (the \
+         matching and its certificate, verified after every round); LEMON: LEMON 1.3 \
+         `MaxWeightedPerfectMatching::run()` on the same dual and integer costs (graph \
+         construction excluded; the same optimum checked); `ours call`: \
+         `quadrangulate_by_quality` (costs, matching, certificate check, quads, quality report), \
+         as `surftopo quad --objective quality` runs it; Gmsh: `gmsh.model.mesh.recombine()` with \
+         Blossom recombination and no topological optimisation or smoothing (the same \
+         triangles paired; mesh loading excluded). Seconds: medians over the rounds; ratios: \
+         median (smallest–largest) of the rounds' paired ratios. CPU: this thread's (ours, \
+         LEMON) or the process's (Gmsh).\n\n{HEADER}\n",
+        args.command, args.rounds
+    );
+    for r in records {
+        writeln!(md, "{}", row(r))?;
+    }
+    std::fs::write(args.out.with_extension("md"), md)?;
+    Ok(())
+}
