@@ -125,6 +125,9 @@ fn make_input(spec: &str, seed: u64) -> Result<Surface, Box<dyn Error>> {
     })
 }
 
+/// Wall and CPU seconds of one run.
+type Seconds = (f64, f64);
+
 /// One tool's times over the rounds.
 #[derive(Clone, Debug, Default, serde::Serialize)]
 struct Times {
@@ -133,7 +136,7 @@ struct Times {
 }
 
 impl Times {
-    fn push(&mut self, (wall, cpu): (f64, f64)) {
+    fn push(&mut self, (wall, cpu): Seconds) {
         self.wall.push(wall);
         self.cpu.push(cpu);
     }
@@ -186,11 +189,7 @@ fn ratio_summary(r: &[f64]) -> String {
 
 /// LEMON's `run()` once on an exported weighted dual: (wall, CPU) seconds and its optimum as a
 /// cost in integer units.
-fn lemon_round(
-    binary: &Path,
-    dual: &Path,
-    faces: usize,
-) -> Result<((f64, f64), i64), Box<dyn Error>> {
+fn lemon_round(binary: &Path, dual: &Path, faces: usize) -> Result<(Seconds, i64), Box<dyn Error>> {
     let output = Command::new(binary).arg("--weighted").arg(dual).output()?;
     if !output.status.success() {
         return Err(format!("LEMON harness: {}", String::from_utf8_lossy(&output.stderr)).into());
@@ -214,7 +213,7 @@ fn gmsh_round(
     python: &Path,
     input: &Path,
     vertices: usize,
-) -> Result<((f64, f64), usize, usize), Box<dyn Error>> {
+) -> Result<(Seconds, usize, usize), Box<dyn Error>> {
     let harness = Path::new(env!("CARGO_MANIFEST_DIR")).join("peer/quad_peers.py");
     let output = input.with_extension("gmsh.off");
     let run = Command::new(python)
@@ -254,7 +253,7 @@ fn gmsh_round(
 }
 
 /// (wall, this thread's CPU) seconds of `f`, and its result.
-fn timed<T>(f: impl FnOnce() -> T) -> ((f64, f64), T) {
+fn timed<T>(f: impl FnOnce() -> T) -> (Seconds, T) {
     let (start, cpu) = (Instant::now(), thread_cpu_seconds());
     let out = f();
     (
