@@ -157,7 +157,17 @@ struct Record {
     call: Times,
     lemon: Times,
     gmsh: Times,
-    /// Gmsh: quads made and triangles left, and its pairing's cost under our costs.
+    /// The solver's figures (last round): nodes exposed after its greedy and fractional
+    /// starts, events popped, tree nodes, blossoms formed, seconds of its phases.
+    exposed_after_greedy: usize,
+    exposed_after_fractional: usize,
+    events: u64,
+    tree_nodes: u64,
+    shrinks: u64,
+    greedy_seconds: f64,
+    fractional_seconds: f64,
+    search_seconds: f64,
+    /// Gmsh: quads made and triangles left.
     gmsh_quads: usize,
     gmsh_triangles_left: usize,
 }
@@ -305,6 +315,15 @@ fn measure(name: &str, surface: &Surface, args: &Args) -> Result<Record, Box<dyn
                         return Err(format!("{name}: optimum {} not verified", result.cost).into());
                     }
                     record.cost_units = result.cost;
+                    let stats = &result.stats;
+                    record.exposed_after_greedy = stats.exposed_after_greedy;
+                    record.exposed_after_fractional = stats.exposed_after_fractional;
+                    record.events = stats.events;
+                    record.tree_nodes = stats.tree_nodes;
+                    record.shrinks = stats.shrinks;
+                    record.greedy_seconds = stats.greedy_seconds;
+                    record.fractional_seconds = stats.fractional_seconds;
+                    record.search_seconds = stats.search_seconds;
                     record.matching.push(times);
                 }
                 1 => {
@@ -395,6 +414,18 @@ fn main() -> Result<(), Box<dyn Error>> {
         let surface = make_input(spec, args.seed)?;
         let record = measure(spec, &surface, &args)?;
         println!("{}", row(&record));
+        eprintln!(
+            "  exposed after greedy {} / fractional {}, {} events, {} tree nodes, {} shrinks; \
+             greedy {:.3} s, fractional {:.3} s, searches {:.3} s",
+            record.exposed_after_greedy,
+            record.exposed_after_fractional,
+            record.events,
+            record.tree_nodes,
+            record.shrinks,
+            record.greedy_seconds,
+            record.fractional_seconds,
+            record.search_seconds
+        );
         records.push(record);
         write_results(&records, &args)?;
     }
