@@ -54,6 +54,8 @@
 use std::time::Instant;
 
 use super::certificate::{BlossomDual, Certificate};
+use prefetch_index::prefetch_index;
+
 use super::radix_heap::RadixHeap;
 use super::{WeightedError, check_costs};
 use crate::dual_graph::{DualGraph, NONE};
@@ -107,15 +109,18 @@ pub struct MinCostMatching {
     pub stats: BlossomStats,
 }
 
-/// An event of a search: the time (dual change of the tree) at which it becomes possible.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+/// An event of a search, queued under the time (the dual change since the search began) at
+/// which it becomes possible.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Event {
-    time: i64,
-    kind: u8,
     /// Edge (EDGE_EVENT) or blossom (EXPAND_EVENT).
     id: u32,
-    /// The blossom's join stamp (EXPAND_EVENT), to recognise stale events.
-    stamp: u32,
+    /// The edge's two ends (EDGE_EVENT), carried so that the event's vertices are read without
+    /// the edge's record first; or the blossom's join stamp and `NONE` (EXPAND_EVENT), to
+    /// recognise stale events.
+    a: u32,
+    b: u32,
+    kind: u8,
 }
 
 /// The hot state of one id of the node range, read together when a reduced cost is evaluated:
@@ -469,8 +474,8 @@ impl Solver {
 
     /// Reduced cost of edge `e` between two different outermost nodes, now.
     #[inline]
-    fn slack(&self, e: u32) -> i64 {
-        let [u, v] = self.edges[e as usize].ends;
+    /// (`u` and `v` are its ends, in either order.)
+    fn slack(&self, e: u32, u: u32, v: u32) -> i64 {
         self.edges[e as usize].cost - self.pi_now(u) - self.pi_now(v)
     }
 
@@ -483,20 +488,16 @@ impl Solver {
         self.slots[x as usize].join_time = self.time;
     }
 
-    /// Queues an event `delay` after now.
-    fn push_event(&mut self, delay: i64, kind: u8, id: u32, stamp: u32) {
-        let time = self.time + delay;
+    /// Queues an event for edge `e` between vertices `u` and `v`, `delay` after now.
+    #[inline]
+    fn push_edge(&mut self, e: u32, u: u32, v: u32, delay: i64) {
         let event = Event {
-            time,
-            kind,
-            id,
-            stamp,
+            id: e,
+            a: u,
+            b: v,
+            kind: EDGE_EVENT,
         };
-        self.heap.push(time as u64, event);
-    }
-
-    fn push_edge(&mut self, e: u32, delay: i64) {
-        self.push_event(delay, EDGE_EVENT, e, 0);
+        self.heap.push((self.time + delay) as u64, event);
     }
 
     /// Labels outermost node `x` as a node of `tree`.
@@ -511,7 +512,14 @@ impl Solver {
         self.members.push((x, first));
         self.stats.tree_nodes += 1;
         if label == MINUS && self.is_blossom(x) {
-            self.push_event(self.y[x as usize], EXPAND_EVENT, x, self.stamp);
+            let event = Event {
+                id: x,
+                a: self.stamp,
+                b: NONE,
+                kind: EXPAND_EVENT,
+            };
+            self.heap
+                .push((self.time + self.y[x as usize]) as u64, event);
         }
     }
 
@@ -535,11 +543,11 @@ impl Solver {
                     continue;
                 }
                 match self.slots[other as usize].label {
-                    FREE => self.push_edge(e, self.slack(e)),
+                    FREE => self.push_edge(e, v, w, self.slack(e, v, w)),
                     PLUS => {
-                        let s = self.slack(e);
+                        let s = self.slack(e, v, w);
                         debug_assert!(s % 2 == 0, "odd reduced cost {s} between + nodes");
-                        self.push_edge(e, s / 2);
+                        self.push_edge(e, v, w, s / 2);
                     }
                     _ => {}
                 }
@@ -555,7 +563,7 @@ impl Solver {
             for (e, w) in self.edges_of(v) {
                 let other = self.outer_of(w);
                 if other != x && self.slots[other as usize].label == PLUS {
-                    self.push_edge(e, self.slack(e));
+                    self.push_edge(e, v, w, self.slack(e, v, w));
                 }
             }
         }
@@ -601,20 +609,28 @@ impl Solver {
             self.scan_plus(r);
         }
         while self.active_trees > 0 {
-            let Some((_, event)) = self.heap.pop() else {
+            let Some((time, event)) = self.heap.pop() else {
                 let node = (0..self.n as u32)
                     .find(|&v| self.is_live[v as usize] && self.slots[v as usize].mate == NONE)
                     .unwrap_or(0);
                 return Err(WeightedError::NoPerfectMatching { node });
             };
             self.stats.events += 1;
-            debug_assert!(event.time >= self.time, "events go forward in time");
-            self.time = event.time;
+            debug_assert!(time as i64 >= self.time, "events go forward in time");
+            self.time = time as i64;
+            if let Some(next) = self.heap.peek() {
+                // The next event's records, read ahead (an event's vertices are far apart).
+                if next.kind == EDGE_EVENT {
+                    prefetch_index(&self.slots, next.a as usize);
+                    prefetch_index(&self.slots, next.b as usize);
+                    prefetch_index(&self.edges, next.id as usize);
+                }
+            }
             if event.kind == EXPAND_EVENT {
                 let b = event.id;
                 if self.parent[b as usize] != NONE
                     || self.slots[b as usize].label != MINUS
-                    || self.join_stamp[b as usize] != event.stamp
+                    || self.join_stamp[b as usize] != event.a
                     || !self.live_blossom[b as usize - self.n]
                 {
                     continue;
@@ -622,19 +638,18 @@ impl Solver {
                 self.expand(b);
                 continue;
             }
-            let e = event.id;
-            let [u, v] = self.edges[e as usize].ends;
+            let (e, u, v) = (event.id, event.a, event.b);
             let (ou, ov) = (self.outer_of(u), self.outer_of(v));
             if ou == ov {
                 continue;
             }
             let (lu, lv) = (self.slots[ou as usize].label, self.slots[ov as usize].label);
-            let s = self.slack(e);
+            let s = self.slack(e, u, v);
             debug_assert!(s >= 0, "negative reduced cost {s} on edge {e}");
             match (lu, lv) {
                 (PLUS, PLUS) => {
                     if s > 0 {
-                        self.push_edge(e, s / 2);
+                        self.push_edge(e, u, v, s / 2);
                     } else if self.slots[ou as usize].tree == self.slots[ov as usize].tree {
                         if fractional {
                             self.half_cycle(e);
@@ -647,7 +662,7 @@ impl Solver {
                 }
                 (PLUS, FREE) | (FREE, PLUS) => {
                     if s > 0 {
-                        self.push_edge(e, s);
+                        self.push_edge(e, u, v, s);
                         continue;
                     }
                     let (inner, outside) = if lu == PLUS { (u, v) } else { (v, u) };

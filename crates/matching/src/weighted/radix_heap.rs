@@ -76,6 +76,14 @@ impl<T: Copy> RadixHeap<T> {
         self.len += 1;
     }
 
+    /// The item the next [`RadixHeap::pop`] returns, when it is already at level 0 (`None`
+    /// otherwise, or when empty): a cheap look ahead.
+    #[inline]
+    pub(crate) fn peek(&self) -> Option<T> {
+        let digit = self.first_digit(0)?;
+        self.buckets[digit].last().map(|&(_, item)| item)
+    }
+
     /// Removes an item of smallest key.
     pub(crate) fn pop(&mut self) -> Option<(u64, T)> {
         if self.len == 0 {
