@@ -36,7 +36,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-use support::{command_line, export_dual, thread_cpu_seconds, write_off};
+use support::{Results, export_dual, lemon_weighted, thread_cpu_seconds, write_off};
 use surftopo_matching::weighted::{min_cost_perfect_matching, verify_min_cost_perfect_matching};
 use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{genus_surface, icosphere, random_flips, random_vertex_splits};
@@ -45,29 +45,26 @@ use surftopo_quad::{QualityObjective, pair_costs, quadrangulate_by_quality};
 
 /// The command line (see the module doc).
 struct Args {
+    /// Where the results go, and the command line.
+    results: Results,
     lemon: Option<PathBuf>,
     python: Option<PathBuf>,
     rounds: usize,
     seed: u64,
     inputs: Vec<String>,
-    out: PathBuf,
-    command: String,
 }
 
 fn parse_args() -> Result<Args, Box<dyn Error>> {
+    let (results, given) = Results::from_args("quality_bench")?;
     let mut args = Args {
+        results,
         lemon: None,
         python: None,
         rounds: 5,
         seed: 1,
         inputs: Vec::new(),
-        out: PathBuf::from(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../results/quality_bench"
-        )),
-        command: command_line(std::env::args().skip(1)),
     };
-    let mut it = std::env::args().skip(1);
+    let mut it = given.into_iter();
     while let Some(flag) = it.next() {
         let mut value = || it.next().ok_or(format!("{flag} needs a value"));
         match flag.as_str() {
@@ -76,7 +73,6 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             "--rounds" => args.rounds = value()?.parse::<usize>()?.max(1),
             "--seed" => args.seed = value()?.parse()?,
             "--input" => args.inputs.push(value()?),
-            "--out" => args.out = PathBuf::from(value()?),
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -197,26 +193,6 @@ fn ratio_summary(r: &[f64]) -> String {
     format!("{:.2} ({lo:.2}–{hi:.2})", median(r))
 }
 
-/// LEMON's `run()` once on an exported weighted dual: (wall, CPU) seconds and its optimum as a
-/// cost in integer units.
-fn lemon_round(binary: &Path, dual: &Path, faces: usize) -> Result<(Seconds, i64), Box<dyn Error>> {
-    let output = Command::new(binary).arg("--weighted").arg(dual).output()?;
-    if !output.status.success() {
-        return Err(format!("LEMON harness: {}", String::from_utf8_lossy(&output.stderr)).into());
-    }
-    let v: serde_json::Value = serde_json::from_slice(&output.stdout)?;
-    if v["perfect"] != serde_json::Value::Bool(true) {
-        return Err("LEMON found no perfect matching".into());
-    }
-    let weight = v["matching_weight"].as_i64().ok_or("no matching_weight")?;
-    let run = v["run_seconds"].as_f64().ok_or("no run_seconds")?;
-    let cpu = v["cpu_run_seconds"].as_f64().ok_or("no cpu_run_seconds")?;
-    Ok((
-        (run, cpu),
-        (faces as i64 / 2) * COST_RESOLUTION as i64 - weight,
-    ))
-}
-
 /// Gmsh's Blossom recombination once (`quad_peers.py gmsh-blossom`): (wall, CPU) seconds, quads
 /// and triangles left; fails when the output does not keep the input's vertices.
 fn gmsh_round(
@@ -335,7 +311,7 @@ fn measure(name: &str, surface: &Surface, args: &Args) -> Result<Record, Box<dyn
                 }
                 2 => {
                     if let (Some(binary), Some(dual)) = (&args.lemon, &dual) {
-                        let (times, cost) = lemon_round(binary, dual, mesh.face_count())?;
+                        let (wall, cpu, cost) = lemon_weighted(binary, dual, mesh.face_count(), 1)?;
                         if record.cost_units != 0 && cost != record.cost_units {
                             return Err(format!(
                                 "{name}: LEMON's optimum {cost} differs from {}",
@@ -343,7 +319,7 @@ fn measure(name: &str, surface: &Surface, args: &Args) -> Result<Record, Box<dyn
                             )
                             .into());
                         }
-                        record.lemon.push(times);
+                        record.lemon.push((wall, cpu));
                     }
                 }
                 _ => {
@@ -405,9 +381,6 @@ const HEADER: &str = "| input | triangles | genus | ours s (wall / CPU) | LEMON 
 
 fn main() -> Result<(), Box<dyn Error>> {
     let args = parse_args()?;
-    if let Some(dir) = args.out.parent() {
-        std::fs::create_dir_all(dir)?;
-    }
     println!("{HEADER}");
     let mut records = Vec::new();
     for spec in &args.inputs {
@@ -427,17 +400,12 @@ fn main() -> Result<(), Box<dyn Error>> {
             record.search_seconds
         );
         records.push(record);
-        write_results(&records, &args)?;
+        args.results.write(&records, &markdown(&records, &args))?;
     }
     Ok(())
 }
 
-fn write_results(records: &[Record], args: &Args) -> Result<(), Box<dyn Error>> {
-    let mut jsonl = String::new();
-    for r in records {
-        writeln!(jsonl, "{}", serde_json::to_string(r)?)?;
-    }
-    std::fs::write(args.out.with_extension("jsonl"), jsonl)?;
+fn markdown(records: &[Record], args: &Args) -> String {
     let mut md = format!(
         "# The exact quality pairing against LEMON and Gmsh\n\n\
          Generated by `make -C crates/quad/peer && SURFTOPO_MESHES=../shared/meshes cargo run \
@@ -453,11 +421,10 @@ fn write_results(records: &[Record], args: &Args) -> Result<(), Box<dyn Error>> 
          triangles paired; mesh loading excluded). Seconds: medians over the rounds; ratios: \
          median (smallest–largest) of the rounds' paired ratios. CPU: this thread's (ours, \
          LEMON) or the process's (Gmsh).\n\n{HEADER}\n",
-        args.command, args.rounds
+        args.results.command, args.rounds
     );
     for r in records {
-        writeln!(md, "{}", row(r))?;
+        let _ = writeln!(md, "{}", row(r));
     }
-    std::fs::write(args.out.with_extension("md"), md)?;
-    Ok(())
+    md
 }
