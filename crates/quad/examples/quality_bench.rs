@@ -350,7 +350,7 @@ fn row(r: &Record) -> String {
         }
     };
     format!(
-        "| {} | {} | {} | {} / {} | {} / {} | {} | {} | {} / {} | {} / {} | {} | {} | {:.1} |",
+        "| {} | {} | {} | {} / {} | {} / {} | {} | {} | {} / {} | {} / {} | {} | {} | {} |",
         r.input,
         r.faces,
         r.genus,
@@ -367,9 +367,9 @@ fn row(r: &Record) -> String {
         ratio_summary(&ratios(&r.gmsh.wall, &r.call.wall)),
         ratio_summary(&ratios(&r.gmsh.cpu, &r.call.cpu)),
         if r.gmsh.wall.is_empty() {
-            f64::NAN
+            "-".into()
         } else {
-            100.0 * (2 * r.gmsh_quads) as f64 / r.faces as f64
+            format!("{:.1}", 100.0 * (2 * r.gmsh_quads) as f64 / r.faces as f64)
         },
     )
 }
