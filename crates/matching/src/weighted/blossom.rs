@@ -242,6 +242,8 @@ struct Solver {
     mark_stamp: u32,
     heap: RadixHeap<Event>,
     scratch: Vec<u32>,
+    /// Buffers of `odd_cycle`'s two tree paths.
+    paths: [Vec<u32>; 2],
     stats: BlossomStats,
 }
 
@@ -345,6 +347,7 @@ impl Solver {
             mark_stamp: 0,
             heap: RadixHeap::new(),
             scratch: Vec::new(),
+            paths: [Vec::new(), Vec::new()],
             stats: BlossomStats::default(),
         }
     }
@@ -582,6 +585,7 @@ impl Solver {
         // Every tree of a previous phase has dissolved.
         self.trees.clear();
         self.members.clear();
+        self.members.reserve(2 * self.n);
         let roots: Vec<u32> = (0..self.n as u32)
             .filter(|&v| self.is_live[v as usize] && self.slots[v as usize].mate == NONE)
             .collect();
@@ -703,6 +707,18 @@ impl Solver {
         self.outer_of(self.other_end(self.tree_edge[minus as usize], tv))
     }
 
+    /// The outermost nodes from `from` up its tree to `top` (both included), into `out`.
+    fn path_up(&self, from: u32, top: u32, out: &mut Vec<u32>) {
+        out.clear();
+        out.push(from);
+        let mut x = from;
+        while x != top {
+            let (_, _, up) = self.parent_link(x);
+            x = self.outer_of(up);
+            out.push(x);
+        }
+    }
+
     /// The edge from node `x` to its tree parent, as `(edge, vertex in x, vertex in parent)`.
     fn parent_link(&self, x: u32) -> (u32, u32, u32) {
         if self.slots[x as usize].label == PLUS {
@@ -745,19 +761,10 @@ impl Solver {
                 b = self.plus_parent(b);
             }
         };
-        // The two paths up to the LCA, through the `−` nodes.
-        let path_to = |s: &Self, from: u32| {
-            let mut path = vec![from];
-            let mut x = from;
-            while x != lca {
-                let (_, _, up) = s.parent_link(x);
-                x = s.outer_of(up);
-                path.push(x);
-            }
-            path
-        };
-        let path_u = path_to(self, ou);
-        let path_v = path_to(self, ov);
+        // The two paths up to the LCA, through the `−` nodes (buffers kept between calls).
+        let [mut path_u, mut path_v] = std::mem::take(&mut self.paths);
+        self.path_up(ou, lca, &mut path_u);
+        self.path_up(ov, lca, &mut path_v);
         let mut children = Vec::with_capacity(path_u.len() + path_v.len() - 1);
         let mut cycle = Vec::with_capacity(children.capacity());
         for i in (0..path_u.len()).rev() {
@@ -773,6 +780,7 @@ impl Solver {
             let (edge, here, up) = self.parent_link(x);
             cycle.push((edge, here, up));
         }
+        self.paths = [path_u, path_v];
         (lca, children, cycle)
     }
 
