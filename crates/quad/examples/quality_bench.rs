@@ -26,7 +26,8 @@
 //! vertex splits: small triangles and needles), `genus:G:SIZE:FLIPS` (a genus-G surface with
 //! random flips), `icosphere:S`; the random ones drawn with `--seed` (default 1). Without
 //! `--input`: armadillo_43k, koala, hand1_50k, `flips:hand1_50k:30000`,
-//! `splits:armadillo_43k:20000`, `genus:40:8:30000`. Writes `<out>.jsonl` and `<out>.md`.
+//! `flips:armadillo_43k:50000`, `splits:armadillo_43k:20000`, `genus:40:8:30000`,
+//! `genus:120:6:40000`. Writes `<out>.jsonl` and `<out>.md`.
 
 mod support;
 
@@ -82,8 +83,10 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             "koala",
             "hand1_50k",
             "flips:hand1_50k:30000",
+            "flips:armadillo_43k:50000",
             "splits:armadillo_43k:20000",
             "genus:40:8:30000",
+            "genus:120:6:40000",
         ]
         .map(String::from)
         .to_vec();
