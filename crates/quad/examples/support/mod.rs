@@ -20,6 +20,19 @@ pub fn thread_cpu_seconds() -> f64 {
         .map_or(0.0, |ns| ns * 1e-9)
 }
 
+/// The day (UTC) and the machine's load averages (1, 5 and 15 minutes) now, for a results
+/// file's header: `2026-12-03, load 4.1 3.9 3.2`.
+pub fn machine_note() -> String {
+    let day = std::process::Command::new("date")
+        .args(["-u", "+%Y-%m-%d"])
+        .output()
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .unwrap_or_default();
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let load: Vec<&str> = load.split_whitespace().take(3).collect();
+    format!("{day}, load {}", load.join(" "))
+}
+
 /// Where an example writes its results, and the command line that made them.
 pub struct Results {
     /// The results path without extension.
