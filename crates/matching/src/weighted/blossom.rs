@@ -132,11 +132,12 @@ struct Event {
     kind: u8,
 }
 
-/// The hot state of one id of the node range, read together when a reduced cost is evaluated:
-/// for a vertex id, the vertex's own fields; for any id, the fields of the vertex set and of the
-/// node of that id. An outermost vertex is its own set and node, so its reduced-cost terms lie in
-/// one record.
+/// The hot state of one id of the node range, read together when a reduced cost is evaluated or
+/// a vertex is scanned: for a vertex id, the vertex's own fields and neighbours; for any id, the
+/// fields of the vertex set and of the node of that id. An outermost vertex is its own set and
+/// node, so its reduced-cost terms and its neighbours lie in one record of one cache line.
 #[derive(Clone, Copy, Debug)]
+#[repr(align(64))]
 struct Slot {
     /// Vertex: its stored `π` (see `Solver::pi_now`).
     pi: i64,
@@ -144,29 +145,31 @@ struct Slot {
     acc: i64,
     /// Node: the time it joined its tree (or was last settled).
     join_time: i64,
+    /// Vertex: its three `(edge, neighbour)` pairs (`NONE` pairs for a removed node), read by
+    /// every scan of the vertex right after its record.
+    adjacent: [(u32, u32); 3],
     /// Vertex: its set.
     set: u32,
     /// Vertex: its matched edge (`NONE` if exposed).
     mate: u32,
     /// Set: its outermost node (`set_outer` of the `Solver` doc).
     outer: u32,
-    /// Node: its tree (an index into `Solver::trees`) while it is an outermost tree node.
-    tree: u32,
     /// Node: `FREE`, `PLUS` or `MINUS`.
     label: u8,
 }
 
 impl Slot {
-    /// The record of id `i` before any search: its own set and node, free, exposed.
+    /// The record of id `i` before any search: its own set and node, free, exposed, no
+    /// neighbours.
     fn new(i: u32) -> Self {
         Slot {
             pi: 0,
             acc: 0,
             join_time: 0,
+            adjacent: [(NONE, NONE); 3],
             set: i,
             mate: NONE,
             outer: i,
-            tree: NONE,
             label: FREE,
         }
     }
@@ -185,7 +188,8 @@ struct EdgeSlot {
 /// standing for the `set`, `outer` and `acc` fields of the slots.
 struct Solver {
     n: usize,
-    adjacency: Vec<[(u32, u32); 3]>,
+    /// Per node: its tree (an index into `trees`) while it is an outermost tree node.
+    tree: Vec<u32>,
     edges: Vec<EdgeSlot>,
     slots: Vec<Slot>,
     /// Per vertex: liveness.
@@ -314,11 +318,17 @@ impl Solver {
                 }
             }
         }
+        let slots = (0..n as u32)
+            .map(|v| Slot {
+                adjacent: adjacency[v as usize],
+                ..Slot::new(v)
+            })
+            .collect();
         Solver {
             n,
-            adjacency,
+            tree: vec![NONE; n],
             edges,
-            slots: (0..n as u32).map(Slot::new).collect(),
+            slots,
             is_live: (0..n as u32).map(|v| graph.is_node(v)).collect(),
             set_next: vec![NONE; n],
             node_set: (0..n as u32).collect(),
@@ -366,7 +376,7 @@ impl Solver {
     /// The non-loop `(edge, neighbour)` pairs of vertex `v`.
     #[inline]
     fn edges_of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + use<> {
-        let pairs = self.adjacency[v as usize];
+        let pairs = self.slots[v as usize].adjacent;
         pairs.into_iter().filter(move |&(e, w)| e != NONE && w != v)
     }
 
@@ -505,7 +515,7 @@ impl Solver {
         self.slots[x as usize].join_time = self.time;
         self.stamp = self.stamp.wrapping_add(1);
         self.join_stamp[x as usize] = self.stamp;
-        self.slots[x as usize].tree = tree;
+        self.tree[x as usize] = tree;
         let first = self.trees[tree as usize];
         self.trees[tree as usize] = self.members.len() as u32;
         self.members.push((x, first));
@@ -650,7 +660,7 @@ impl Solver {
                 (PLUS, PLUS) => {
                     if s > 0 {
                         self.push_edge(e, u, v, s / 2);
-                    } else if self.slots[ou as usize].tree == self.slots[ov as usize].tree {
+                    } else if self.tree[ou as usize] == self.tree[ov as usize] {
                         if fractional {
                             self.half_cycle(e);
                         } else {
@@ -682,7 +692,7 @@ impl Solver {
     /// through tight edge `e`, its mate as `+`.
     fn grow(&mut self, e: u32, inner: u32, w: u32) {
         self.stats.grows += 1;
-        let tree = self.slots[self.outer_of(inner) as usize].tree;
+        let tree = self.tree[self.outer_of(inner) as usize];
         let x = self.outer_of(w);
         self.tree_edge[x as usize] = e;
         self.tree_vertex[x as usize] = w;
@@ -838,7 +848,7 @@ impl Solver {
         self.slots[big as usize].outer = blossom;
         self.children[bi - self.n] = children;
         self.cycle[bi - self.n] = cycle;
-        let tree = self.slots[lca as usize].tree;
+        let tree = self.tree[lca as usize];
         self.join(blossom, PLUS, tree);
         self.scan_plus_vertices(&minus_vertices);
     }
@@ -847,6 +857,7 @@ impl Solver {
     fn new_blossom(&mut self) -> u32 {
         let b = self.parent.len() as u32;
         self.slots.push(Slot::new(b));
+        self.tree.push(NONE);
         self.segment.push([NONE, NONE, 0]);
         self.slots[b as usize].outer = NONE;
         self.parent.push(NONE);
@@ -932,7 +943,7 @@ impl Solver {
         }
         self.live_blossom[bi] = false;
         self.slots[b as usize].label = FREE;
-        let tree = self.slots[b as usize].tree;
+        let tree = self.tree[b as usize];
         // The even path j -> 0 along the cycle: backward if j is even, forward otherwise.
         let mut on_path = vec![false; k];
         let mut path = Vec::with_capacity(k);
@@ -978,8 +989,8 @@ impl Solver {
     fn augment(&mut self, e: u32) {
         let [u, v] = self.edges[e as usize].ends;
         let trees = [
-            self.slots[self.outer_of(u) as usize].tree,
-            self.slots[self.outer_of(v) as usize].tree,
+            self.tree[self.outer_of(u) as usize],
+            self.tree[self.outer_of(v) as usize],
         ];
         for end in [u, v] {
             self.augment_to_root(end, e);
@@ -991,7 +1002,7 @@ impl Solver {
     /// cycle's top node to the root alternates (the root is matched, the top node exposed), the
     /// cycle's nodes become a half-edge cycle, and the tree dissolves.
     fn half_cycle(&mut self, e: u32) {
-        let tree = self.slots[self.outer_of(self.edges[e as usize].ends[0]) as usize].tree;
+        let tree = self.tree[self.outer_of(self.edges[e as usize].ends[0]) as usize];
         let (lca, nodes, edges) = self.odd_cycle(e);
         let old_mate = self.slots[lca as usize].mate;
         if old_mate != NONE {
@@ -1019,7 +1030,7 @@ impl Solver {
     /// Fractional phase: tight edge `e` from `inner` (in a tree) reaches `w` on a half-edge
     /// cycle. The tree path augments, `w` is matched along `e`, the rest of the cycle along it.
     fn augment_into_half_cycle(&mut self, e: u32, inner: u32, w: u32) {
-        let tree = self.slots[self.outer_of(inner) as usize].tree;
+        let tree = self.tree[self.outer_of(inner) as usize];
         self.augment_to_root(inner, e);
         self.slots[w as usize].mate = e;
         let id = self.half_cycle_of[w as usize];
@@ -1059,17 +1070,16 @@ impl Solver {
                 let (x, next) = self.members[entry as usize];
                 entry = next;
                 let live = !self.is_blossom(x) || self.live_blossom[x as usize - self.n];
-                let slot = self.slots[x as usize];
                 if live
                     && self.parent[x as usize] == NONE
-                    && slot.label != FREE
-                    && slot.tree == tree
+                    && self.slots[x as usize].label != FREE
+                    && self.tree[x as usize] == tree
                 {
                     self.settle(x);
+                    self.tree[x as usize] = NONE;
                     let slot = &mut self.slots[x as usize];
                     let was_minus = slot.label == MINUS;
                     slot.label = FREE;
-                    slot.tree = NONE;
                     if was_minus {
                         freed.push(x);
                     }
