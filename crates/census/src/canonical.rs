@@ -47,7 +47,12 @@ impl CanonicalForm {
 
     /// The number of vertices.
     pub fn vertex_count(&self) -> usize {
-        self.faces.iter().flatten().map(|&v| v as usize + 1).max().unwrap_or(0)
+        self.faces
+            .iter()
+            .flatten()
+            .map(|&v| v as usize + 1)
+            .max()
+            .unwrap_or(0)
     }
 
     /// The canonical face list as a triangulation.
@@ -71,13 +76,17 @@ const NONE: u32 = u32::MAX;
 
 impl<'a> Walker<'a> {
     fn new(t: &'a Triangulation) -> Self {
+        Self::from_parts(t.faces(), t.face_adjacency(), t.vertex_count())
+    }
+
+    fn from_parts(faces: &'a [[u32; 3]], across: Vec<[u32; 3]>, vertex_count: usize) -> Self {
         Self {
-            faces: t.faces(),
-            across: t.face_adjacency(),
-            label: vec![NONE; t.vertex_count()],
-            reached: vec![false; t.face_count()],
-            queue: Vec::with_capacity(t.face_count()),
-            code: Vec::with_capacity(t.face_count()),
+            faces,
+            across,
+            label: vec![NONE; vertex_count],
+            reached: vec![false; faces.len()],
+            queue: Vec::with_capacity(faces.len()),
+            code: Vec::with_capacity(faces.len()),
         }
     }
 
@@ -191,6 +200,38 @@ fn least_code(
         }
     }
     best
+}
+
+/// Whether the flag (face `root`, corners in its stored order) has the least code among all
+/// flags at the vertices of `degree` (whose class must be isomorphism-invariant and hold the
+/// root's first corner): the canonical-root test of the census search, which keeps one labelled
+/// copy per isomorphism class (all flags of an orbit of the automorphism group give the same
+/// labelled triangulation, and the search reaches each labelled triangulation once).
+/// `across[f][i]` is the face across the edge opposite corner i of face f.
+pub(crate) fn is_least_root(
+    faces: &[[u32; 3]],
+    across: Vec<[u32; 3]>,
+    vertex_count: usize,
+    root: usize,
+    start: impl Fn(u32) -> bool,
+) -> bool {
+    let mut walker = Walker::from_parts(faces, across, vertex_count);
+    walker.walk(root, faces[root], None);
+    let best = walker.code.clone();
+    for (f, face) in faces.iter().enumerate() {
+        for (i, &a) in face.iter().enumerate() {
+            if !start(a) {
+                continue;
+            }
+            let (b, c) = (face[(i + 1) % 3], face[(i + 2) % 3]);
+            for corners in [[a, b, c], [a, c, b]] {
+                if walker.walk(f, corners, Some(&best)) == Ordering::Less {
+                    return false;
+                }
+            }
+        }
+    }
+    true
 }
 
 /// The canonical form of `t` (mirror images identified).

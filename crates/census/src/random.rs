@@ -8,14 +8,20 @@ use rand_chacha::ChaCha8Rng;
 /// `t` after `splits` random vertex splits and `flips` random edge flips, interleaved at random
 /// (each a topology-preserving move: the result triangulates the same surface). Deterministic in
 /// `seed`. A split or flip whose result would not be simplicial is skipped.
-pub fn random_retriangulation(t: &Triangulation, splits: usize, flips: usize, seed: u64) -> Triangulation {
+pub fn random_retriangulation(
+    t: &Triangulation,
+    splits: usize,
+    flips: usize,
+    seed: u64,
+) -> Triangulation {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut current = t.clone();
     let (mut splits_left, mut flips_left) = (splits, flips);
     let mut attempts = 0usize;
     while (splits_left > 0 || flips_left > 0) && attempts < 100 * (splits + flips + 1) {
         attempts += 1;
-        let split = flips_left == 0 || (splits_left > 0 && rng.random_range(0..splits_left + flips_left) < splits_left);
+        let split = flips_left == 0
+            || (splits_left > 0 && rng.random_range(0..splits_left + flips_left) < splits_left);
         let faces = current.faces();
         if split {
             let v = rng.random_range(0..current.vertex_count()) as u32;

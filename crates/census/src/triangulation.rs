@@ -42,7 +42,12 @@ impl Triangulation {
                 }
             }
         }
-        let vertex_count = faces.iter().flatten().map(|&v| v as usize + 1).max().unwrap_or(0);
+        let vertex_count = faces
+            .iter()
+            .flatten()
+            .map(|&v| v as usize + 1)
+            .max()
+            .unwrap_or(0);
         let mut used = vec![false; vertex_count];
         for &v in faces.iter().flatten() {
             used[v as usize] = true;
@@ -329,7 +334,12 @@ impl Triangulation {
         if two.len() != 2 {
             return None;
         }
-        let apex = |f: usize| *self.faces[f].iter().find(|&&z| z != u && z != v).unwrap_or(&u);
+        let apex = |f: usize| {
+            *self.faces[f]
+                .iter()
+                .find(|&&z| z != u && z != v)
+                .unwrap_or(&u)
+        };
         let (x, y) = (apex(two[0]), apex(two[1]));
         if self.neighbours()[x as usize].contains(&y) {
             return None;

@@ -212,7 +212,8 @@ impl Enumerator {
         // free; the very first face is taken as given.
         let mut oriented = face;
         if self.orientable && !self.history.is_empty() {
-            let free = |o: [usize; 3]| (0..3).all(|i| self.directed[o[i]] & bit(o[(i + 1) % 3]) == 0);
+            let free =
+                |o: [usize; 3]| (0..3).all(|i| self.directed[o[i]] & bit(o[(i + 1) % 3]) == 0);
             if free([a, b, c]) {
                 oriented = face;
             } else if free([a, c, b]) {
@@ -382,13 +383,44 @@ impl Enumerator {
         self.history.iter().map(|a| a.face.map(u32::from))
     }
 
+    /// At a leaf: whether its labelling is the canonical one of its class, i.e. its root flag
+    /// (vertex 0, then 1, then 2: the first face placed) has the least code among the flags at the
+    /// vertices of maximum degree d ([`crate::canonical`]); each class then passes exactly once
+    /// per job.
+    pub fn is_canonical_leaf(&self) -> bool {
+        let faces: Vec<[u32; 3]> = self.faces().collect();
+        let mut face_of = vec![[u32::MAX; 2]; MAX_VERTICES * MAX_VERTICES];
+        for (f, face) in faces.iter().enumerate() {
+            for i in 0..3 {
+                let (x, y) = (face[i] as usize, face[(i + 1) % 3] as usize);
+                let slot = &mut face_of[x.min(y) * MAX_VERTICES + x.max(y)];
+                if slot[0] == u32::MAX {
+                    slot[0] = f as u32;
+                } else {
+                    slot[1] = f as u32;
+                }
+            }
+        }
+        let across: Vec<[u32; 3]> = faces
+            .iter()
+            .enumerate()
+            .map(|(f, face)| {
+                [0, 1, 2].map(|i| {
+                    let (x, y) = (face[(i + 1) % 3] as usize, face[(i + 2) % 3] as usize);
+                    let [g, h] = face_of[x.min(y) * MAX_VERTICES + x.max(y)];
+                    if g == f as u32 { h } else { g }
+                })
+            })
+            .collect();
+        let top = self.max_degree;
+        crate::canonical::is_least_root(&faces, across, self.n, 0, |v| {
+            self.degree(v as usize) == top
+        })
+    }
+
     /// Runs the search to the end, calling `leaf` on each labelled triangulation found; stops
     /// early (returning false) when `stop()` says so (asked every 4,096 nodes).
-    pub fn run(
-        &mut self,
-        leaf: &mut dyn FnMut(&Self),
-        stop: &dyn Fn() -> bool,
-    ) -> bool {
+    pub fn run(&mut self, leaf: &mut dyn FnMut(&Self), stop: &dyn Fn() -> bool) -> bool {
         self.nodes += 1;
         if self.nodes & 4095 == 0 && stop() {
             return false;

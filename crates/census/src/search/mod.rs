@@ -196,9 +196,11 @@ pub fn run_job(
     let (mut nodes, mut candidates) = (0, 0);
     if let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree) {
         let mut leaf = |e: &Enumerator| {
-            let faces: Vec<[u32; 3]> = e.faces().collect();
-            if let Ok(t) = Triangulation::new(faces) {
-                found.insert(canonical_form(&t));
+            if e.is_canonical_leaf() {
+                let faces: Vec<[u32; 3]> = e.faces().collect();
+                if let Ok(t) = Triangulation::new(faces) {
+                    found.insert(canonical_form(&t));
+                }
             }
         };
         if !e.run(&mut leaf, stop) {
@@ -221,8 +223,7 @@ pub fn run_job(
 /// Knuth's estimate of a job's search nodes: the mean of `probes` random probes.
 pub fn estimate_nodes(surface: SurfaceKind, job: Job, probes: usize, seed: u64) -> f64 {
     let chi = surface.euler_characteristic();
-    let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree)
-    else {
+    let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree) else {
         return 0.0;
     };
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
@@ -232,10 +233,7 @@ pub fn estimate_nodes(surface: SurfaceKind, job: Job, probes: usize, seed: u64) 
 
 /// The census of `surface`: every irreducible triangulation up to isomorphism (see the module
 /// documentation for the method and its completeness argument).
-pub fn census(
-    surface: SurfaceKind,
-    mut options: CensusOptions<'_>,
-) -> Result<Census, CensusError> {
+pub fn census(surface: SurfaceKind, mut options: CensusOptions<'_>) -> Result<Census, CensusError> {
     let (jobs, complete) = jobs(surface, options.max_vertices)?;
     let never = || false;
     let stop: &(dyn Fn() -> bool + Sync) = options.stop.unwrap_or(&never);
