@@ -61,7 +61,7 @@ pub fn parse_lutz_line(text: &str, line: usize) -> Result<Vec<[u32; 3]>, CensusE
         }
         let digits: String = chars[start..*i].iter().collect();
         match digits.parse::<u32>() {
-            Ok(v) if v >= 1 && v < u32::MAX => Ok(v - 1),
+            Ok(v) if (1..u32::MAX).contains(&v) => Ok(v - 1),
             Ok(_) => Err(error(start, "vertices are numbered from 1")),
             Err(_) => Err(error(start, "expected a vertex number")),
         }

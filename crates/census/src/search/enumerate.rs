@@ -22,6 +22,7 @@
 //!   neighbour;
 //! - for an orientable job the faces are oriented: the second face on an edge traverses it in the
 //!   direction opposite to the first.
+//!
 //! At a leaf (no open vertex) the labels must number n and the faces 2(n − χ) (so χ is right);
 //! a non-orientable job also rejects an orientable leaf.
 
@@ -34,7 +35,6 @@ const NONE: u8 = u8::MAX;
 #[derive(Clone, Copy)]
 struct Added {
     face: [u8; 3],
-    new_edges: u8,
     newly_closed: u64,
     new_label: bool,
 }
@@ -249,7 +249,6 @@ impl Enumerator {
         }
         let record = Added {
             face: oriented,
-            new_edges,
             newly_closed,
             new_label: false,
         };
@@ -296,8 +295,7 @@ impl Enumerator {
         };
         let [a, b, c] = added.face.map(usize::from);
         let pairs = [(a, b), (b, c), (c, a)];
-        // `new_edges` refers to the order the face was offered in; recompute from the pairs of
-        // the stored (possibly reversed) order by their endpoints.
+        // An edge that lost its last face goes too.
         for &(x, y) in &pairs {
             self.pop_apex(x, y);
             if self.faces_on(x, y) == 0 && self.adjacency[x] & bit(y) != 0 {
@@ -307,8 +305,7 @@ impl Enumerator {
             }
         }
         if self.orientable {
-            for i in 0..3 {
-                let (x, y) = (pairs[i].0, pairs[i].1);
+            for &(x, y) in &pairs {
                 self.directed[x] &= !bit(y);
             }
         }
@@ -316,7 +313,6 @@ impl Enumerator {
         if added.new_label {
             self.used -= 1;
         }
-        let _ = added.new_edges;
     }
 
     /// The open vertex of least label and the edge to extend: (v, p, apex of vp's one face).

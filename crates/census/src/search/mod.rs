@@ -71,27 +71,20 @@ pub struct Progress {
     pub classes: usize,
 }
 
+/// The callback [`CensusOptions::on_job`].
+pub type OnJob<'a> = &'a mut dyn FnMut(&JobResult, Progress);
+
 /// Options of [`census`].
+#[derive(Default)]
 pub struct CensusOptions<'a> {
     /// Search at most this many vertices (the census is then complete only up to it).
     pub max_vertices: Option<usize>,
     /// Jobs finished by an earlier run (their results are taken as they are).
     pub done: Vec<JobResult>,
     /// Called after each job finishes (for checkpoints and progress).
-    pub on_job: Option<&'a mut dyn FnMut(&JobResult, Progress)>,
+    pub on_job: Option<OnJob<'a>>,
     /// Asked every few thousand search nodes: true stops the run ([`CensusError::Cancelled`]).
     pub stop: Option<&'a (dyn Fn() -> bool + Sync)>,
-}
-
-impl Default for CensusOptions<'_> {
-    fn default() -> Self {
-        Self {
-            max_vertices: None,
-            done: Vec::new(),
-            on_job: None,
-            stop: None,
-        }
-    }
 }
 
 /// Per vertex count: classes found, chiral classes among them, candidates, nodes, seconds.

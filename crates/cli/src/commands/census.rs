@@ -257,7 +257,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             shown(folder)
         )));
     }
-    if !(args.budget > 0.0) {
+    if args.budget.is_nan() || args.budget <= 0.0 {
         return Err(invalid("--budget: a positive number of seconds is needed"));
     }
     let (jobs, _) = search::jobs(surface, args.max_vertices).map_err(|e| invalid(e.to_string()))?;
