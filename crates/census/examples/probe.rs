@@ -1,3 +1,4 @@
+//! Scratch: per-job nodes and times (replaced by census_bench).
 use surftopo_census::*;
 fn main() {
     let args: Vec<String> = std::env::args().collect();

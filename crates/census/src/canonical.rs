@@ -202,29 +202,36 @@ fn least_code(
     best
 }
 
-/// Whether the flag (face `root`, corners in its stored order) has the least code among all
-/// flags at the vertices of `degree` (whose class must be isomorphism-invariant and hold the
-/// root's first corner): the canonical-root test of the census search, which keeps one labelled
-/// copy per isomorphism class (all flags of an orbit of the automorphism group give the same
-/// labelled triangulation, and the search reaches each labelled triangulation once).
+/// Whether the flag (face `root`, corners in its stored order) has the least code among the
+/// flags (a, b, c) accepted by `start(flag, other apex of ab)` (an isomorphism-invariant set of
+/// flags holding the root): the canonical-root test of the census search, which keeps one
+/// labelled copy per isomorphism class (all flags of an orbit of the automorphism group give the
+/// same labelled triangulation, and the search reaches each labelled triangulation once).
 /// `across[f][i]` is the face across the edge opposite corner i of face f.
 pub(crate) fn is_least_root(
     faces: &[[u32; 3]],
     across: Vec<[u32; 3]>,
     vertex_count: usize,
     root: usize,
-    start: impl Fn(u32) -> bool,
+    start: impl Fn([u32; 3], u32) -> bool,
 ) -> bool {
     let mut walker = Walker::from_parts(faces, across, vertex_count);
     walker.walk(root, faces[root], None);
     let best = walker.code.clone();
     for (f, face) in faces.iter().enumerate() {
-        for (i, &a) in face.iter().enumerate() {
-            if !start(a) {
-                continue;
-            }
+        for i in 0..3 {
+            let a = face[i];
             let (b, c) = (face[(i + 1) % 3], face[(i + 2) % 3]);
-            for corners in [[a, b, c], [a, c, b]] {
+            for (corners, opposite) in [([a, b, c], (i + 2) % 3), ([a, c, b], (i + 1) % 3)] {
+                // The other apex of the edge a–corners[1]: the apex of the face across it.
+                let g = walker.across[f][opposite] as usize;
+                let other = *faces[g]
+                    .iter()
+                    .find(|&&z| z != corners[0] && z != corners[1])
+                    .expect("a face has a third corner");
+                if !start(corners, other) {
+                    continue;
+                }
                 if walker.walk(f, corners, Some(&best)) == Ordering::Less {
                     return false;
                 }

@@ -53,6 +53,8 @@ pub struct Enumerator {
     /// The apexes of the (up to two) faces on each edge, `apexes[u * 64 + w]`.
     apexes: Vec<[u8; 2]>,
     closed: u64,
+    /// Bit w of `full[u]` when the edge uw lies in two faces.
+    full: [u64; MAX_VERTICES],
     edges: usize,
     history: Vec<Added>,
     /// Search nodes visited.
@@ -87,6 +89,7 @@ impl Enumerator {
             directed: [0; MAX_VERTICES],
             apexes: vec![[NONE; 2]; MAX_VERTICES * MAX_VERTICES],
             closed: 0,
+            full: [0; MAX_VERTICES],
             edges: 0,
             history: Vec::with_capacity(4 * n),
             nodes: 0,
@@ -118,6 +121,10 @@ impl Enumerator {
                 slot[1] = apex;
             }
         }
+        if self.apexes[a * MAX_VERTICES + b][1] != NONE {
+            self.full[a] |= bit(b);
+            self.full[b] |= bit(a);
+        }
     }
 
     fn pop_apex(&mut self, a: usize, b: usize) {
@@ -129,6 +136,8 @@ impl Enumerator {
                 slot[0] = NONE;
             }
         }
+        self.full[a] &= !bit(b);
+        self.full[b] &= !bit(a);
     }
 
     fn degree(&self, v: usize) -> usize {
@@ -269,6 +278,9 @@ impl Enumerator {
         if self.n == 4 {
             return true; // the tetrahedron
         }
+        if !self.root_flag_order() {
+            return false;
+        }
         let mut rest = newly_closed;
         while rest != 0 {
             let x = rest.trailing_zeros() as usize;
@@ -281,6 +293,86 @@ impl Enumerator {
                 let y = closed_neighbours.trailing_zeros() as usize;
                 closed_neighbours &= closed_neighbours - 1;
                 if (self.adjacency[x] & self.adjacency[y]).count_ones() < 3 {
+                    return false;
+                }
+            }
+        }
+        self.open_edges_can_fail()
+    }
+
+    /// The root flag (0, 1, 2) is a *preferred* flag: among the vertices of degree d, vertex 0
+    /// has the largest sum of neighbour degrees; vertex 1 has the largest degree among the
+    /// neighbours of 0, and the apex 2 of the face 0 1 2 has at least the degree of the other apex
+    /// d of the edge 01. Every triangulation has a preferred flag at a vertex of maximum degree,
+    /// so labelling from one loses nothing; the search checks the two inequalities as soon as
+    /// both degrees are final (both vertices closed), and the canonical-root test at the leaves
+    /// compares the preferred flags only.
+    fn root_flag_order(&self) -> bool {
+        if self.closed & 0b10 != 0 {
+            let top = self.degree(1);
+            let mut others = self.adjacency[0] & self.closed & !0b10;
+            while others != 0 {
+                let i = others.trailing_zeros() as usize;
+                others &= others - 1;
+                if self.degree(i) > top {
+                    return false;
+                }
+            }
+        }
+        let d = self.max_degree;
+        if self.closed & bit(2) != 0 && self.closed & bit(d) != 0 && self.degree(d) > self.degree(2)
+        {
+            return false;
+        }
+        // Vertex 0 has the largest sum of neighbour degrees among the vertices of degree d:
+        // once 0's neighbours are closed its sum is final, and a closed vertex's sum can only
+        // grow (its neighbours are final, their degrees grow).
+        if self.adjacency[0] & !self.closed == 0 {
+            let own = self.neighbour_degree_sum(0);
+            let mut rivals = self.closed & !1;
+            while rivals != 0 {
+                let x = rivals.trailing_zeros() as usize;
+                rivals &= rivals - 1;
+                if self.degree(x) == d && self.neighbour_degree_sum(x) > own {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// The sum of the current degrees of v's neighbours.
+    fn neighbour_degree_sum(&self, v: usize) -> usize {
+        let mut m = self.adjacency[v];
+        let mut sum = 0;
+        while m != 0 {
+            sum += self.degree(m.trailing_zeros() as usize);
+            m &= m - 1;
+        }
+        sum
+    }
+
+    /// The look-ahead of irreducibility on the edges xy with x closed and y open: x's neighbours
+    /// are final, so y can only gain common neighbours among x's open neighbours not yet
+    /// adjacent to y, and at most as many as y's degree has room for (d − deg y); the edge needs
+    /// three common neighbours in the end.
+    fn open_edges_can_fail(&self) -> bool {
+        let mut closed = self.closed;
+        while closed != 0 {
+            let x = closed.trailing_zeros() as usize;
+            closed &= closed - 1;
+            let mut open_neighbours = self.adjacency[x] & !self.closed;
+            while open_neighbours != 0 {
+                let y = open_neighbours.trailing_zeros() as usize;
+                open_neighbours &= open_neighbours - 1;
+                let common = (self.adjacency[x] & self.adjacency[y]).count_ones() as usize;
+                if common >= 3 {
+                    continue;
+                }
+                let reachable = (self.adjacency[x] & !self.adjacency[y] & !self.closed & !bit(y))
+                    .count_ones() as usize;
+                let room = self.max_degree - self.degree(y);
+                if common + reachable.min(room) < 3 {
                     return false;
                 }
             }
@@ -315,14 +407,18 @@ impl Enumerator {
         }
     }
 
-    /// The open vertex of least label and the edge to extend: (v, p, apex of vp's one face).
-    fn next_edge(&self) -> Option<(usize, usize)> {
-        let labelled = if self.used == 64 {
+    /// The labels given so far, as a mask.
+    fn labelled(&self) -> u64 {
+        if self.used >= 64 {
             u64::MAX
         } else {
             bit(self.used) - 1
-        };
-        let open = labelled & !self.closed;
+        }
+    }
+
+    /// The open vertex of least label and the edge to extend: (v, p, apex of vp's one face).
+    fn next_edge(&self) -> Option<(usize, usize)> {
+        let open = self.labelled() & !self.closed;
         if open == 0 {
             return None;
         }
@@ -336,6 +432,30 @@ impl Enumerator {
             }
         }
         None
+    }
+
+    /// The apexes worth trying on the edge vp (a superset of those [`Self::try_apex`] accepts):
+    /// labelled open vertices other than v, p and the apex of vp's face, whose edges to v and p
+    /// are not yet in two faces, and adjacent to v (to p) when v (p) has its full degree; and the
+    /// next new label.
+    fn candidates(&self, v: usize, p: usize) -> u64 {
+        let labelled = self.labelled();
+        let r = self.apexes[v * MAX_VERTICES + p][0] as usize;
+        let mut mask =
+            labelled & !self.closed & !bit(v) & !bit(p) & !bit(r) & !self.full[v] & !self.full[p];
+        if self.degree(v) >= self.max_degree {
+            mask &= self.adjacency[v];
+        }
+        if self.degree(p) >= self.max_degree {
+            mask &= self.adjacency[p];
+        }
+        if self.used < self.n
+            && self.degree(v) < self.max_degree
+            && self.degree(p) < self.max_degree
+        {
+            mask |= bit(self.used);
+        }
+        mask
     }
 
     /// Tries the apex q on the edge vp; q == used means a new label.
@@ -367,11 +487,55 @@ impl Enumerator {
             && (self.orientable || !self.current_is_orientable())
     }
 
+    /// Whether the faces placed can be oriented coherently: propagation across edges (the
+    /// second face on an edge must traverse it opposite to the first).
     fn current_is_orientable(&self) -> bool {
-        let faces: Vec<[u32; 3]> = self.faces().collect();
-        crate::triangulation::Triangulation::new(faces)
-            .map(|t| t.is_orientable())
-            .unwrap_or(true)
+        let n = self.n;
+        let faces: Vec<[usize; 3]> = self
+            .history
+            .iter()
+            .map(|a| a.face.map(usize::from))
+            .collect();
+        let mut face_of = vec![[u8::MAX; 2]; n * n];
+        for (f, face) in faces.iter().enumerate() {
+            for i in 0..3 {
+                let (x, y) = (face[i], face[(i + 1) % 3]);
+                let slot = &mut face_of[x.min(y) * n + x.max(y)];
+                if slot[0] == u8::MAX {
+                    slot[0] = f as u8;
+                } else {
+                    slot[1] = f as u8;
+                }
+            }
+        }
+        // orientation[f]: 0 unset, 1 as stored, 2 reversed.
+        let mut orientation = vec![0u8; faces.len()];
+        orientation[0] = 1;
+        let mut stack = vec![0usize];
+        while let Some(f) = stack.pop() {
+            let face = faces[f];
+            let oriented = if orientation[f] == 1 {
+                face
+            } else {
+                [face[0], face[2], face[1]]
+            };
+            for i in 0..3 {
+                let (x, y) = (oriented[i], oriented[(i + 1) % 3]);
+                let [g0, g1] = face_of[x.min(y) * n + x.max(y)];
+                let g = usize::from(if usize::from(g0) == f { g1 } else { g0 });
+                // g must traverse y -> x: as stored when it has y followed by x.
+                let other = faces[g];
+                let stored_y_then_x = (0..3).any(|j| other[j] == y && other[(j + 1) % 3] == x);
+                let wanted = if stored_y_then_x { 1 } else { 2 };
+                if orientation[g] == 0 {
+                    orientation[g] = wanted;
+                    stack.push(g);
+                } else if orientation[g] != wanted {
+                    return false;
+                }
+            }
+        }
+        true
     }
 
     /// The faces placed so far.
@@ -380,16 +544,17 @@ impl Enumerator {
     }
 
     /// At a leaf: whether its labelling is the canonical one of its class, i.e. its root flag
-    /// (vertex 0, then 1, then 2: the first face placed) has the least code among the flags at the
-    /// vertices of maximum degree d ([`crate::canonical`]); each class then passes exactly once
-    /// per job.
+    /// (vertex 0, then 1, then 2: the first face placed) has the least code among the preferred
+    /// flags ([`Self::root_flag_order`]) at the vertices of maximum degree d
+    /// ([`crate::canonical`]); each class then passes exactly once per job.
     pub fn is_canonical_leaf(&self) -> bool {
         let faces: Vec<[u32; 3]> = self.faces().collect();
-        let mut face_of = vec![[u32::MAX; 2]; MAX_VERTICES * MAX_VERTICES];
+        let n = self.n;
+        let mut face_of = vec![[u32::MAX; 2]; n * n];
         for (f, face) in faces.iter().enumerate() {
             for i in 0..3 {
                 let (x, y) = (face[i] as usize, face[(i + 1) % 3] as usize);
-                let slot = &mut face_of[x.min(y) * MAX_VERTICES + x.max(y)];
+                let slot = &mut face_of[x.min(y) * n + x.max(y)];
                 if slot[0] == u32::MAX {
                     slot[0] = f as u32;
                 } else {
@@ -403,14 +568,35 @@ impl Enumerator {
             .map(|(f, face)| {
                 [0, 1, 2].map(|i| {
                     let (x, y) = (face[(i + 1) % 3] as usize, face[(i + 2) % 3] as usize);
-                    let [g, h] = face_of[x.min(y) * MAX_VERTICES + x.max(y)];
+                    let [g, h] = face_of[x.min(y) * n + x.max(y)];
                     if g == f as u32 { h } else { g }
                 })
             })
             .collect();
+        let degree: Vec<usize> = (0..self.n).map(|v| self.degree(v)).collect();
+        let largest_neighbour: Vec<usize> = (0..self.n)
+            .map(|v| {
+                let mut m = self.adjacency[v];
+                let mut best = 0;
+                while m != 0 {
+                    best = best.max(degree[m.trailing_zeros() as usize]);
+                    m &= m - 1;
+                }
+                best
+            })
+            .collect();
         let top = self.max_degree;
-        crate::canonical::is_least_root(&faces, across, self.n, 0, |v| {
-            self.degree(v as usize) == top
+        let sums: Vec<usize> = (0..self.n).map(|v| self.neighbour_degree_sum(v)).collect();
+        let best_sum = (0..self.n)
+            .filter(|&v| degree[v] == top)
+            .map(|v| sums[v])
+            .max();
+        crate::canonical::is_least_root(&faces, across, self.n, 0, |[a, b, c], other_apex| {
+            let (a, b, c) = (a as usize, b as usize, c as usize);
+            degree[a] == top
+                && Some(sums[a]) == best_sum
+                && degree[b] == largest_neighbour[a]
+                && degree[c] >= degree[other_apex as usize]
         })
     }
 
@@ -428,7 +614,10 @@ impl Enumerator {
             }
             return true;
         };
-        for q in 0..=self.used {
+        let mut candidates = self.candidates(v, p);
+        while candidates != 0 {
+            let q = candidates.trailing_zeros() as usize;
+            candidates &= candidates - 1;
             if self.try_apex(v, p, q) {
                 let go_on = self.run(leaf, stop);
                 self.undo();
@@ -449,7 +638,10 @@ impl Enumerator {
         let depth = self.history.len();
         while let Some((v, p)) = self.next_edge() {
             let mut children = Vec::new();
-            for q in 0..=self.used {
+            let mut candidates = self.candidates(v, p);
+            while candidates != 0 {
+                let q = candidates.trailing_zeros() as usize;
+                candidates &= candidates - 1;
                 if self.try_apex(v, p, q) {
                     self.undo();
                     children.push(q);

@@ -202,50 +202,59 @@ pub fn isomorphic_by_backtracking(a: &[[u32; 3]], b: &[[u32; 3]]) -> bool {
         }
         i += 1;
     }
-    let mut image = vec![u32::MAX; na.len()];
-    let mut used = vec![false; nb.len()];
-    fn extend(
-        k: usize,
-        order: &[u32],
-        na: &[BTreeSet<u32>],
-        nb: &[BTreeSet<u32>],
-        image: &mut Vec<u32>,
-        used: &mut Vec<bool>,
-        a: &[[u32; 3]],
-        faces_b: &HashSet<[u32; 3]>,
-    ) -> bool {
-        if k == order.len() {
-            return a.iter().all(|t| {
-                let mut s = t.map(|v| image[v as usize]);
+    let mut search = Backtrack {
+        image: vec![u32::MAX; na.len()],
+        used: vec![false; nb.len()],
+        order,
+        na,
+        nb,
+        faces_a: a,
+        faces_b,
+    };
+    search.extend(0)
+}
+
+/// The state of [`isomorphic_by_backtracking`].
+struct Backtrack<'a> {
+    order: Vec<u32>,
+    na: Vec<BTreeSet<u32>>,
+    nb: Vec<BTreeSet<u32>>,
+    image: Vec<u32>,
+    used: Vec<bool>,
+    faces_a: &'a [[u32; 3]],
+    faces_b: HashSet<[u32; 3]>,
+}
+
+impl Backtrack<'_> {
+    fn extend(&mut self, k: usize) -> bool {
+        if k == self.order.len() {
+            return self.faces_a.iter().all(|t| {
+                let mut s = t.map(|v| self.image[v as usize]);
                 s.sort();
-                faces_b.contains(&s)
+                self.faces_b.contains(&s)
             });
         }
-        let v = order[k] as usize;
-        for w in 0..nb.len() {
-            if used[w] || nb[w].len() != na[v].len() {
+        let v = self.order[k] as usize;
+        for w in 0..self.nb.len() {
+            if self.used[w] || self.nb[w].len() != self.na[v].len() {
                 continue;
             }
-            let consistent = na[v].iter().all(|&x| {
-                let ix = image[x as usize];
-                ix == u32::MAX || nb[w].contains(&ix)
-            }) && order[..k]
+            let consistent = self.order[..k]
                 .iter()
-                .all(|&x| na[v].contains(&x) == nb[w].contains(&image[x as usize]));
+                .all(|&x| self.na[v].contains(&x) == self.nb[w].contains(&self.image[x as usize]));
             if !consistent {
                 continue;
             }
-            image[v] = w as u32;
-            used[w] = true;
-            if extend(k + 1, order, na, nb, image, used, a, faces_b) {
+            self.image[v] = w as u32;
+            self.used[w] = true;
+            if self.extend(k + 1) {
                 return true;
             }
-            image[v] = u32::MAX;
-            used[w] = false;
+            self.image[v] = u32::MAX;
+            self.used[w] = false;
         }
         false
     }
-    extend(0, &order, &na, &nb, &mut image, &mut used, a, &faces_b)
 }
 
 /// A key that isomorphic triangulations share (vertex count, sorted degrees), to compare only
