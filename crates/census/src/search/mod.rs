@@ -88,7 +88,7 @@ pub struct CensusOptions<'a> {
 }
 
 /// Per vertex count: classes found, chiral classes among them, candidates, nodes, seconds.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct VertexCountFigures {
     /// n.
     pub vertices: usize,

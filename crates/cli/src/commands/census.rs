@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use surftopo_census::search::{self, estimate_nodes};
 use surftopo_census::{
-    BoundSource, Census, CensusError, CensusOptions, Job, JobResult, SurfaceKind, parse_lutz_line,
-    to_lutz, to_lutz_line,
+    BoundSource, Census, CensusError, CensusOptions, Job, JobResult, SurfaceKind,
+    VertexCountFigures, parse_lutz_line, to_lutz, to_lutz_line,
 };
 
 /// The arguments of `census`.
@@ -37,23 +37,6 @@ pub struct Args {
     pub json: JsonArg,
 }
 
-/// One vertex count's figures.
-#[derive(Serialize)]
-pub struct Row {
-    /// n.
-    pub vertices: usize,
-    /// Classes with n vertices.
-    pub classes: usize,
-    /// Chiral classes among them (orientable surfaces; 0 otherwise).
-    pub chiral: usize,
-    /// Labelled triangulations the search reached.
-    pub candidates: u64,
-    /// Search nodes.
-    pub nodes: u64,
-    /// Seconds.
-    pub seconds: f64,
-}
-
 /// What `--json` prints.
 #[derive(Serialize)]
 pub struct Report {
@@ -76,7 +59,7 @@ pub struct Report {
     /// Always true: a triangulation and its mirror image are one class.
     pub mirror_images_identified: bool,
     /// Per vertex count.
-    pub per_vertex_count: Vec<Row>,
+    pub per_vertex_count: Vec<VertexCountFigures>,
     /// Labelled triangulations the search reached.
     pub candidates: u64,
     /// Candidates rejected as isomorphic to another.
@@ -359,18 +342,7 @@ fn report(args: &Args, census: &Census, resumed_jobs: usize) -> anyhow::Result<(
             searched_up_to: census.searched_up_to,
             bound,
             mirror_images_identified: true,
-            per_vertex_count: census
-                .per_vertex_count
-                .iter()
-                .map(|f| Row {
-                    vertices: f.vertices,
-                    classes: f.classes,
-                    chiral: f.chiral,
-                    candidates: f.candidates,
-                    nodes: f.nodes,
-                    seconds: f.seconds,
-                })
-                .collect(),
+            per_vertex_count: census.per_vertex_count.clone(),
             candidates: census.candidates,
             duplicates: census.duplicates,
             nodes: census.nodes,
