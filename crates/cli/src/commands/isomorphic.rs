@@ -88,16 +88,25 @@ fn renumbered_message(error: &surftopo_census::CensusError, original: &[u32]) ->
     .to_string()
 }
 
-/// Runs `isomorphic`: exit 0 isomorphic, 1 not.
-pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
-    let a = read(&args.a)?;
-    let b = read(&args.b)?;
+/// Reads both meshes and decides whether they are isomorphic (canonical forms).
+pub fn decide(
+    a: &std::path::Path,
+    b: &std::path::Path,
+) -> anyhow::Result<(bool, Triangulation, Triangulation)> {
+    let a = read(a)?;
+    let b = read(b)?;
     let isomorphic = crate::progress::step("comparing canonical forms", || {
         a.vertex_count() == b.vertex_count()
             && a.face_count() == b.face_count()
             && a.is_orientable() == b.is_orientable()
             && canonical_form(&a) == canonical_form(&b)
     });
+    Ok((isomorphic, a, b))
+}
+
+/// Runs `isomorphic`: exit 0 isomorphic, 1 not.
+pub fn run(args: &Args) -> anyhow::Result<ExitCode> {
+    let (isomorphic, a, b) = decide(&args.a, &args.b)?;
     if args.json.json {
         crate::output::print_json(&Report {
             isomorphic,
