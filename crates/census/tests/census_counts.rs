@@ -132,3 +132,26 @@ fn stopped_runs_resume() {
     .unwrap();
     assert_eq!(resumed.triangulations.len(), 29);
 }
+
+// Past the published bound: no irreducible triangulation of the torus with 11 vertices, nor of
+// the projective plane with 8 or 9 (the default range already goes to Joret–Wood's 9).
+#[test]
+fn nothing_past_the_published_bounds() {
+    let c = census(
+        SurfaceKind::orientable(1),
+        CensusOptions {
+            max_vertices: Some(11),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(c.complete);
+    assert_eq!(c.searched_up_to, 11);
+    assert_eq!(c.triangulations.len(), 21);
+    let c = census(SurfaceKind::non_orientable(1), CensusOptions::default()).unwrap();
+    assert!(
+        c.per_vertex_count
+            .iter()
+            .any(|f| f.vertices == 9 && f.classes == 0)
+    );
+}

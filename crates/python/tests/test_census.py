@@ -110,3 +110,22 @@ def test_cut_census_and_errors():
     assert caught.value.vertex == 3
     with pytest.raises(surftopo.InvalidMeshError):
         surftopo.canonical_form(np.array([[0, 1, -1]]))
+
+
+def test_ctrl_c_stops_a_long_census():
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    child = subprocess.Popen(
+        [sys.executable, "-c", "import surftopo; surftopo.census('genus-2', max_vertices=14)"],
+        stderr=subprocess.PIPE,
+    )
+    time.sleep(1.5)
+    start = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    _, stderr = child.communicate(timeout=60)
+    assert child.returncode != 0
+    assert b"KeyboardInterrupt" in stderr
+    assert time.monotonic() - start < 30

@@ -5,8 +5,10 @@
 //! bound to the surface's largest vertex count of an irreducible triangulation, and each maximum
 //! degree d, one *job* ([`enumerate`]) lists every labelled triangulation with n vertices, the
 //! surface's Euler characteristic and orientability, maximum degree d, vertex 0 of degree d and
-//! link 1..d, in which every edge fails the link condition; isomorph rejection is by canonical
-//! form ([`crate::canonical_form`]).
+//! link 1..d, in which every edge fails the link condition; isomorph rejection keeps a leaf only
+//! when its root flag has the least code among the preferred flags (one labelled copy per class,
+//! [`enumerate::Enumerator::is_canonical_leaf`]), and the classes are stored by canonical form
+//! ([`crate::canonical_form`]).
 //!
 //! Completeness: (1) every triangulation has a vertex of maximum degree, which can be labelled 0
 //! with its link labelled 1..d, so every irreducible triangulation with n vertices and maximum
@@ -18,7 +20,8 @@
 //! torus (10), the Klein bottle (11) and the double torus (17) the largest vertex count of the
 //! published complete lists (Lawrencenko 1987; Lawrencenko–Negami 1997 and Sulanke 2006;
 //! Sulanke 2006), which the census therefore does not re-prove; [`crate::SurfaceKind::vertex_range`]
-//! holds them. A census cut at `max_vertices` below that end is complete only up to it and says so.
+//! holds them. A census cut at `max_vertices` below that end is complete only up to it and says so;
+//! `max_vertices` above it searches further (a check of the published bound: none is found).
 //!
 //! Jobs are independent: a run can be resumed from the jobs it finished ([`CensusOptions::done`]).
 
@@ -77,7 +80,8 @@ pub type OnJob<'a> = &'a mut dyn FnMut(&JobResult, Progress);
 /// Options of [`census`].
 #[derive(Default)]
 pub struct CensusOptions<'a> {
-    /// Search at most this many vertices (the census is then complete only up to it).
+    /// Search up to this many vertices (below the surface's bound the census is then complete
+    /// only up to it; above it the search goes past the bound).
     pub max_vertices: Option<usize>,
     /// Jobs finished by an earlier run (their results are taken as they are).
     pub done: Vec<JobResult>,
@@ -131,7 +135,7 @@ pub struct Census {
     pub seconds: f64,
 }
 
-/// The jobs of a census of `surface` up to `max_vertices` vertices (at most the surface's
+/// The jobs of a census of `surface` up to `max_vertices` vertices (default: the surface's
 /// bound), with whether they cover the whole range.
 pub fn jobs(
     surface: SurfaceKind,
@@ -139,7 +143,7 @@ pub fn jobs(
 ) -> Result<(Vec<Job>, bool), CensusError> {
     let range = surface.vertex_range();
     let (upper, complete) = match (range.max, max_vertices) {
-        (Some((bound, _)), Some(m)) => (bound.min(m), m >= bound),
+        (Some((bound, _)), Some(m)) => (m, m >= bound),
         (Some((bound, _)), None) => (bound, true),
         (None, Some(m)) => (m, false),
         (None, None) => {

@@ -22,7 +22,8 @@ pub struct Args {
     /// the run finishes.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// Search at most N vertices (the census is then complete up to N vertices only, and says so).
+    /// Search up to N vertices: below the surface's bound the census is complete up to N vertices
+    /// only (and says so); above it, the search goes on past the bound (a check: none is found).
     #[arg(long, value_name = "N")]
     pub max_vertices: Option<usize>,
     /// A checkpoint file (JSON) rewritten after each finished job; a run given an existing one
