@@ -269,8 +269,10 @@ fn write_report() {
                     format!("{seconds:.0} s")
                 } else if seconds < 3.0 * 86400.0 {
                     format!("{:.1} h", seconds / 3600.0)
+                } else if seconds < 1000.0 * 86400.0 {
+                    format!("{:.0} days", seconds / 86400.0)
                 } else {
-                    format!("{:.1e} years", seconds / (365.25 * 86400.0))
+                    format!("{:.0} years", seconds / (365.25 * 86400.0))
                 };
                 let _ = writeln!(md, "| {n} | {nodes:.2e} | {time} |");
             }
