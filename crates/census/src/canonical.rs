@@ -148,19 +148,23 @@ impl<'a> Walker<'a> {
     }
 }
 
-/// The vertices whose flags are the start flags: the least-populated class of the invariant
-/// (degree, sorted neighbour degrees), ties to the largest invariant.
-fn start_vertices(t: &Triangulation) -> Vec<u32> {
+/// The vertex invariant (degree, sorted degrees of the neighbours) of every vertex.
+fn invariants(t: &Triangulation) -> Vec<(usize, Vec<usize>)> {
     let neighbours = t.neighbours();
     let degree: Vec<usize> = neighbours.iter().map(Vec::len).collect();
-    let invariant: Vec<(usize, Vec<usize>)> = neighbours
+    neighbours
         .iter()
         .map(|list| {
             let mut around: Vec<usize> = list.iter().map(|&w| degree[w as usize]).collect();
             around.sort_unstable();
             (list.len(), around)
         })
-        .collect();
+        .collect()
+}
+
+/// The start class: the least-populated class of the invariant, ties to the largest invariant;
+/// its invariant and members.
+fn start_class(invariant: &[(usize, Vec<usize>)]) -> ((usize, Vec<usize>), Vec<u32>) {
     let mut classes: std::collections::BTreeMap<&(usize, Vec<usize>), Vec<u32>> =
         std::collections::BTreeMap::new();
     for (v, key) in invariant.iter().enumerate() {
@@ -170,8 +174,18 @@ fn start_vertices(t: &Triangulation) -> Vec<u32> {
         .into_iter()
         .rev()
         .min_by_key(|(_, members)| members.len())
-        .map(|(_, members)| members)
+        .map(|(key, members)| (key.clone(), members))
         .unwrap_or_default()
+}
+
+/// The vertices whose flags are the start flags, as a mask.
+fn start_vertices(t: &Triangulation) -> Vec<bool> {
+    let (_, members) = start_class(&invariants(t));
+    let mut mask = vec![false; t.vertex_count()];
+    for v in members {
+        mask[v as usize] = true;
+    }
+    mask
 }
 
 /// The least code over the start flags accepted by `keep(face, corners)`, and its labelling.
@@ -184,7 +198,7 @@ fn least_code(
     let mut best: Option<(Vec<u32>, Vec<u32>)> = None;
     for (f, face) in t.faces().iter().enumerate() {
         for (i, &a) in face.iter().enumerate() {
-            if !starts.contains(&a) {
+            if !starts[a as usize] {
                 continue;
             }
             let (b, c) = (face[(i + 1) % 3], face[(i + 2) % 3]);
@@ -265,15 +279,52 @@ fn relabelled(t: &Triangulation, label: &[u32]) -> CanonicalForm {
 /// Whether `a` and `b` are isomorphic as simplicial complexes (a vertex bijection mapping faces
 /// to faces; mirror images count as isomorphic).
 pub fn isomorphic(a: &Triangulation, b: &Triangulation) -> bool {
-    let sorted_degrees = |t: &Triangulation| {
-        let mut d = t.degrees();
-        d.sort_unstable();
-        d
+    if a.vertex_count() != b.vertex_count() || a.face_count() != b.face_count() {
+        return false;
+    }
+    let (invariant_a, invariant_b) = (invariants(a), invariants(b));
+    let sorted = |v: &[(usize, Vec<usize>)]| {
+        let mut v = v.to_vec();
+        v.sort_unstable();
+        v
     };
-    a.vertex_count() == b.vertex_count()
-        && a.face_count() == b.face_count()
-        && sorted_degrees(a) == sorted_degrees(b)
-        && canonical_form(a) == canonical_form(b)
+    if sorted(&invariant_a) != sorted(&invariant_b) {
+        return false;
+    }
+    // One flag of a's start class against every flag of b at the vertices of that class: the
+    // codes are equal for some b flag iff a and b are isomorphic (an isomorphism maps the flag
+    // into the class and keeps its code; equal codes rebuild equal labelled face lists).
+    let (key, members) = start_class(&invariant_a);
+    let Some(&v) = members.first() else {
+        return false;
+    };
+    let Some((f, face)) = a
+        .faces()
+        .iter()
+        .enumerate()
+        .find(|(_, face)| face.contains(&v))
+    else {
+        return false;
+    };
+    let i = face.iter().position(|&x| x == v).unwrap_or(0);
+    let mut walker = Walker::new(a);
+    walker.walk(f, [v, face[(i + 1) % 3], face[(i + 2) % 3]], None);
+    let code = walker.code.clone();
+    let mut walker = Walker::new(b);
+    for (g, face) in b.faces().iter().enumerate() {
+        for (j, &w) in face.iter().enumerate() {
+            if invariant_b[w as usize] != key {
+                continue;
+            }
+            let (x, y) = (face[(j + 1) % 3], face[(j + 2) % 3]);
+            for corners in [[w, x, y], [w, y, x]] {
+                if walker.walk(g, corners, Some(&code)) == Ordering::Equal {
+                    return true;
+                }
+            }
+        }
+    }
+    false
 }
 
 /// `Some(true)` when `t` is orientable and chiral (not isomorphic to its mirror image by an
