@@ -275,6 +275,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     bar.set_position(resumed_jobs as u64);
+    bar.enable_steady_tick(std::time::Duration::from_millis(500));
     let mut finished: Vec<JobResult> = done.clone();
     let checkpoint = args.checkpoint.clone();
     let mut checkpoint_error: Option<anyhow::Error> = None;
