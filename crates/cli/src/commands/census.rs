@@ -179,13 +179,13 @@ fn write_checkpoint(
 
 /// The estimated seconds of the jobs not yet done: Knuth's estimate of each job's nodes, times
 /// the time per node the probes themselves took.
-fn estimate_seconds(surface: SurfaceKind, jobs: &[Job]) -> (f64, f64) {
+fn estimate_seconds(surface: SurfaceKind, jobs: &[Job]) -> (Vec<f64>, f64) {
     let start = Instant::now();
     let probes = 200;
-    let nodes: f64 = jobs
+    let nodes: Vec<f64> = jobs
         .iter()
         .map(|&job| estimate_nodes(surface, job, probes, 1))
-        .sum();
+        .collect();
     // A probe visits one node per level, and a job's search has one level per face beyond
     // vertex 0's d: calibrate the time per node on the probing itself.
     let chi = surface.euler_characteristic();
@@ -196,7 +196,8 @@ fn estimate_seconds(surface: SurfaceKind, jobs: &[Job]) -> (f64, f64) {
         })
         .sum();
     let per_node = start.elapsed().as_secs_f64() / probe_nodes.max(1.0);
-    (nodes, nodes * per_node.max(5e-8))
+    let total: f64 = nodes.iter().sum();
+    (nodes, total * per_node.max(5e-8))
 }
 
 /// A duration in the largest fitting unit (seconds to years).
@@ -255,7 +256,8 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .copied()
         .filter(|j| !done.iter().any(|r| r.job == *j))
         .collect();
-    let (estimated_nodes, estimated_seconds) = estimate_seconds(surface, &todo);
+    let (job_nodes, estimated_seconds) = estimate_seconds(surface, &todo);
+    let estimated_nodes: f64 = job_nodes.iter().sum();
     if estimated_seconds > args.budget {
         return Err(invalid(format!(
             "the census of {surface} up to {} vertices is beyond reach: about {:.1e} search nodes, \
@@ -267,23 +269,31 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             crate::output::format_seconds(args.budget)
         )));
     }
-    let bar = indicatif::ProgressBar::new(jobs.len() as u64);
+    // The bar advances by each job's estimated search nodes (Knuth), so its ETA weighs the jobs.
+    let weight = |job: &Job| {
+        todo.iter()
+            .position(|j| j == job)
+            .map_or(0, |k| job_nodes[k].max(1.0) as u64)
+    };
+    let bar = indicatif::ProgressBar::new(todo.iter().map(weight).sum::<u64>().max(1));
     bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{bar:30} {pos}/{len} jobs, {msg} ({elapsed}, about {eta} left)",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        indicatif::ProgressStyle::with_template("{bar:30} {msg} ({elapsed}, about {eta} left)")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    bar.set_position(resumed_jobs as u64);
+    bar.set_message(format!("{resumed_jobs}/{} jobs", jobs.len()));
     bar.enable_steady_tick(std::time::Duration::from_millis(500));
     let mut finished: Vec<JobResult> = done.clone();
     let checkpoint = args.checkpoint.clone();
     let mut checkpoint_error: Option<anyhow::Error> = None;
     let mut on_job = |result: &JobResult, progress: search::Progress| {
-        bar.set_position(progress.done as u64);
+        bar.inc(weight(&progress.job));
         bar.set_message(format!(
-            "{} classes; last: {} vertices, degree {}",
-            progress.classes, progress.job.vertices, progress.job.max_degree
+            "{}/{} jobs, {} classes; last: {} vertices, degree {}",
+            progress.done,
+            progress.total,
+            progress.classes,
+            progress.job.vertices,
+            progress.job.max_degree
         ));
         finished.push(result.clone());
         if let Some(path) = &checkpoint
