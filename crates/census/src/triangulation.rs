@@ -118,6 +118,17 @@ impl Triangulation {
         Ok(triangulation)
     }
 
+    /// Wraps faces the census search built: a closed connected simplicial surface on `0..n` by
+    /// construction (the search's tests), so the checks of [`Self::new`] are left out in release
+    /// builds and asserted in debug builds.
+    pub(crate) fn from_search(vertex_count: usize, faces: Vec<[u32; 3]>) -> Self {
+        debug_assert!(Self::new(faces.clone()).is_ok());
+        Self {
+            vertex_count,
+            faces,
+        }
+    }
+
     /// The faces, as given.
     pub fn faces(&self) -> &[[u32; 3]] {
         &self.faces
@@ -224,6 +235,9 @@ impl Triangulation {
 
     /// `across[f][i]`: the face sharing with f the edge opposite its corner i.
     pub(crate) fn face_adjacency(&self) -> Vec<[u32; 3]> {
+        if self.vertex_count <= 128 {
+            return self.face_adjacency_dense();
+        }
         let mut first: HashMap<(u32, u32), u32> = HashMap::with_capacity(self.faces.len() * 2);
         let mut across = vec![[u32::MAX; 3]; self.faces.len()];
         for (f, face) in self.faces.iter().enumerate() {
@@ -242,6 +256,34 @@ impl Triangulation {
             }
         }
         across
+    }
+
+    /// [`Self::face_adjacency`] through an n × n table (small triangulations).
+    fn face_adjacency_dense(&self) -> Vec<[u32; 3]> {
+        let n = self.vertex_count;
+        let mut face_of = vec![[u32::MAX; 2]; n * n];
+        for (f, face) in self.faces.iter().enumerate() {
+            for i in 0..3 {
+                let (a, b) = edge_key(face[(i + 1) % 3], face[(i + 2) % 3]);
+                let slot = &mut face_of[a as usize * n + b as usize];
+                if slot[0] == u32::MAX {
+                    slot[0] = f as u32;
+                } else {
+                    slot[1] = f as u32;
+                }
+            }
+        }
+        self.faces
+            .iter()
+            .enumerate()
+            .map(|(f, face)| {
+                [0, 1, 2].map(|i| {
+                    let (a, b) = edge_key(face[(i + 1) % 3], face[(i + 2) % 3]);
+                    let [g, h] = face_of[a as usize * n + b as usize];
+                    if g == f as u32 { h } else { g }
+                })
+            })
+            .collect()
     }
 
     /// The edges (sorted pairs, each once) that satisfy the link condition: their ends have

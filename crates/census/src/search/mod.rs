@@ -194,10 +194,8 @@ pub fn run_job(
     if let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree) {
         let mut leaf = |e: &Enumerator| {
             if e.is_canonical_leaf() {
-                let faces: Vec<[u32; 3]> = e.faces().collect();
-                if let Ok(t) = Triangulation::new(faces) {
-                    found.insert(canonical_form(&t));
-                }
+                let t = Triangulation::from_search(job.vertices, e.faces().collect());
+                found.insert(canonical_form(&t));
             }
         };
         if !e.run(&mut leaf, stop) {
