@@ -15,6 +15,20 @@ pub struct LimitArgs {
     /// make (about 100 bytes each once built); checked before allocating.
     #[arg(long, global = true, default_value_t = crate::limits::DEFAULT_MAX_ELEMENTS)]
     pub max_elements: u64,
+    /// Stop with exit code 2 after this many seconds (a decimal), naming the step then running;
+    /// temporary files are removed and no output is half-written. Default: no limit.
+    #[arg(long, global = true, value_name = "SECONDS", value_parser = parse_seconds)]
+    pub time_limit: Option<f64>,
+}
+
+/// A positive, finite number of seconds.
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s > 0.0 && s.is_finite() && s < 1e9 => Ok(s),
+        _ => Err(format!(
+            "{text:?}: a number of seconds above 0 (below 1e9) is needed"
+        )),
+    }
 }
 
 impl LimitArgs {

@@ -146,7 +146,7 @@ fn weld_soup(
         let weld = soup.weld_exact();
         welded = weld.merged;
         if weld.conflicting > 0 {
-            eprintln!(
+            stderr_println!(
                 "warning: {source}: welding merged {} vertices whose per-vertex attributes differ \
                  from those of the vertex they were merged into; theirs are dropped",
                 weld.conflicting
@@ -251,16 +251,16 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
 pub fn log_report(path: &Path, loaded: &Loaded) {
     let name = name(path);
     if loaded.welded > 0 {
-        eprintln!("note: {name}: welded {} coincident vertices", loaded.welded);
+        stderr_println!("note: {name}: welded {} coincident vertices", loaded.welded);
     }
     if !loaded.report.dropped_vertices.is_empty() {
-        eprintln!(
+        stderr_println!(
             "note: {name}: dropped {} unreferenced vertices",
             loaded.report.dropped_vertices.len()
         );
     }
     if loaded.report.reoriented_faces > 0 {
-        eprintln!(
+        stderr_println!(
             "note: {name}: reoriented {} faces to make the orientation consistent",
             loaded.report.reoriented_faces
         );

@@ -4,8 +4,26 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use std::time::Duration;
 
-/// Runs `work` while a spinner shows `message`.
+/// The step running now (for `--time-limit`'s message): the innermost [`step`] in progress.
+static CURRENT: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// The step running now, if any.
+pub fn current() -> Option<String> {
+    CURRENT
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+        .last()
+        .cloned()
+}
+
+/// Runs `work` while a spinner shows `message` ([`current`] names it meanwhile).
 pub fn step<T>(message: &str, work: impl FnOnce() -> T) -> T {
+    let steps = || {
+        CURRENT
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    };
+    steps().push(message.to_string());
     let spinner = ProgressBar::new_spinner();
     spinner.set_style(
         ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
@@ -14,6 +32,7 @@ pub fn step<T>(message: &str, work: impl FnOnce() -> T) -> T {
     spinner.set_message(message.to_string());
     spinner.enable_steady_tick(Duration::from_millis(120));
     let result = work();
+    steps().pop();
     spinner.finish_and_clear();
     result
 }

@@ -276,6 +276,79 @@ fn a_failed_write_leaves_no_file_behind() {
 /// `demo` exits 0, names every capability (each algorithm of each paper, every output of
 /// `delaunay`, both `isometric` verdicts) on a line with a time, and its files check out
 /// independently of it.
+/// The files in `dir`, recursively, as paths relative to it.
+fn files_under(dir: &std::path::Path) -> Vec<String> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            found.extend(files_under(&path));
+        } else {
+            found.push(path.display().to_string());
+        }
+    }
+    found
+}
+
+/// A demo step that fails after others wrote their files (here a folder stands where the
+/// flipped triangulation goes) leaves none of the run's files, and keeps what was there before.
+#[test]
+fn a_failing_demo_step_removes_every_file_of_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("demo");
+    std::fs::create_dir_all(out.join("delaunay-flip.json")).unwrap();
+    std::fs::write(out.join("mine.txt"), "kept").unwrap();
+    let assert = surftopo()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).to_string();
+    assert!(stderr.contains("delaunay-flip.json"), "{stderr}");
+    assert_eq!(
+        files_under(&out),
+        [out.join("mine.txt").display().to_string()]
+    );
+    assert!(out.join("delaunay-flip.json").is_dir());
+}
+
+/// `demo --out` on a full disk (a 256 KiB tmpfs, mounted when the tests run as root; skipped
+/// with a note otherwise): exit 2 and no file left, the folder it created removed.
+#[test]
+fn demo_on_a_full_disk_leaves_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let mount = |args: &[&str]| {
+        std::process::Command::new(args[0])
+            .args(&args[1..])
+            .stderr(std::process::Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    let point = dir.path().display().to_string();
+    if !mount(&["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", &point]) {
+        eprintln!(
+            "note: no tmpfs could be mounted (not root?): the full-disk demo test is skipped"
+        );
+        return;
+    }
+    let out = dir.path().join("demo");
+    let result = surftopo()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let left = files_under(dir.path());
+    let out_exists = out.exists();
+    assert!(mount(&["umount", &point]), "umount {point}");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("No space left on device"), "{stderr}");
+    assert!(left.is_empty(), "left behind: {left:?}");
+    assert!(!out_exists);
+}
+
 #[test]
 fn demo_shows_every_capability() {
     let dir = tempfile::tempdir().unwrap();

@@ -89,7 +89,7 @@ pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
 };
 pub use flat::{RemovalReport, remove_flat_vertices};
-pub use format::{FORMAT_NAME, FORMAT_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle};
+pub use format::{FORMAT_NAME, FORMAT_VERSION, Number, PolygonDoc, PortalgonDoc, TriangleStyle};
 pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
     MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,

@@ -338,9 +338,10 @@ fn report(args: &Args, census: &Census, resumed_jobs: usize) -> anyhow::Result<(
         BoundSource::Theorem(s) | BoundSource::Published(s) => s.to_string(),
     });
     if !census.complete {
-        eprintln!(
+        stderr_println!(
             "note: the census of {} searched up to {} vertices only: it is complete up to there, not for the surface",
-            census.surface, census.searched_up_to
+            census.surface,
+            census.searched_up_to
         );
     }
     if args.json.json {

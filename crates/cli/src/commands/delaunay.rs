@@ -156,7 +156,7 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     }
     let name = crate::input::name(path);
     let bytes = crate::input::input_bytes(path)?;
-    let p = PortalgonDoc::read(&bytes[..])
+    let p = PortalgonDoc::from_slice(&bytes)
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
         .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
@@ -258,7 +258,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
-        let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
+        let doc = PortalgonDoc::from_slice(&bytes).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
@@ -392,15 +392,46 @@ fn flip_options(options: &Args) -> DelaunayOptions {
     }
 }
 
-/// A flipping failure: a numerical breakdown as itself (exit 4), anything else as invalid input.
+/// A flipping failure, naming the input: a numerical breakdown is a numerical failure (exit 4),
+/// degenerate lengths as [`geometry_error`] says, anything else invalid input (exit 2).
 fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
+    let name = crate::input::name(&options.input);
     match e {
-        DelaunayError::NumericalBreakdown { .. } => anyhow::Error::new(e),
-        other => invalid(format!(
-            "{}: {other}",
-            crate::failure::shown(&options.input)
+        DelaunayError::NumericalBreakdown { .. } => crate::failure::numerical(format!(
+            "{name}: {e} (double precision cannot finish flipping this input: try --method \
+             voronoi or dubois, --exact on exact input)"
         )),
+        DelaunayError::Geometry(e) => geometry_error(&options.input, &e),
+        other => invalid(format!("{name}: {other}")),
     }
+}
+
+/// Degenerate lengths of an input read in double precision (a zero-length side, a zero-area
+/// triangle, a broken triangle inequality): invalid input (exit 2), unless the input is a
+/// portalgon file whose exact corners make valid triangles (`generate flat-torus --x 1000000`:
+/// sides 1, x − 1 and x in double precision are flat): then double precision could not hold
+/// it, a numerical failure (exit 4) advising `--exact`.
+pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error {
+    let name = crate::input::name(input);
+    let exactly_valid = !crate::input::is_stdio(input)
+        && is_json_input(input).unwrap_or(false)
+        && load_exact(input).is_ok();
+    if exactly_valid {
+        crate::failure::numerical(format!(
+            "{name}: {e} in double precision, but its exact corners make valid triangles: use \
+             --exact (with --method voronoi or dubois)"
+        ))
+    } else {
+        invalid(format!("{name}: {e}"))
+    }
+}
+
+/// [`IntrinsicTriangulation::validate`] with [`geometry_error`]'s verdict.
+///
+/// # Errors
+/// Invalid input (exit 2) or a numerical failure (exit 4).
+pub fn validated(input: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
+    tri.validate().map_err(|e| geometry_error(input, &e))
 }
 
 /// `--method flip`.
@@ -504,7 +535,7 @@ fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyh
     check_wave_options(options, method)?;
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    tri.validate().map_err(|e| fail(&e))?;
+    validated(&options.input, &tri)?;
     let (p, _) = tri.to_portalgon();
     let (v, figures, reduced) =
         tessellate(&p, method, options.method.reduce_options(), &options.input)?;

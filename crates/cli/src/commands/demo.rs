@@ -31,39 +31,69 @@ const FLAT_TORUS_X_PLUS_1: &str = "1000000001";
 const FLAT_TORUS_X_PLUS_THIRD: &str = "3000000001/3";
 
 /// Runs every capability on the built-in examples, writing the results into `--out` (or a new
-/// temporary folder) and printing one line per step.
+/// temporary folder) and printing one line per step. A failing step (a full disk, an unwritable
+/// folder) removes every file the run wrote, and the folder when the run created it: nothing is
+/// left half done.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let dir = match &args.out {
+    let (dir, created) = match &args.out {
         Some(dir) => {
+            let created = !dir.exists();
             std::fs::create_dir_all(dir).map_err(|e| crate::failure::unwritable(dir, &e))?;
-            dir.clone()
+            (dir.clone(), created)
         }
-        None => new_temporary_folder()?,
+        None => (new_temporary_folder()?, true),
     };
-    let started = Instant::now();
-    emit(&format!(
-        "surftopo demo: every capability on built-in examples; results in {}\n",
-        crate::failure::shown(&dir)
-    ))?;
-    let demo = Demo { dir };
-    let input = demo.generate_input()?;
-    demo.info(&input)?;
-    demo.convert(&input)?;
-    demo.irreducible(&input)?;
-    demo.quad(&input)?;
-    let tori = demo.flat_tori()?;
-    demo.delaunay(&input, &tori)?;
-    demo.isometric(&input, &tori)?;
-    demo.census()?;
-    emit(&format!(
-        "done in {}\n",
-        format_seconds(started.elapsed().as_secs_f64())
-    ))
+    let demo = Demo {
+        dir,
+        written: std::cell::RefCell::default(),
+    };
+    let result = demo.steps();
+    if result.is_err() {
+        demo.remove_written(created);
+    }
+    result
 }
 
 /// The demo's output folder and its steps.
 struct Demo {
     dir: PathBuf,
+    /// The files the steps write that did not exist before the run, in the order named.
+    written: std::cell::RefCell<Vec<PathBuf>>,
+}
+
+impl Demo {
+    /// Every step, one line each.
+    fn steps(&self) -> anyhow::Result<()> {
+        let started = Instant::now();
+        emit(&format!(
+            "surftopo demo: every capability on built-in examples; results in {}\n",
+            crate::failure::shown(&self.dir)
+        ))?;
+        let input = self.generate_input()?;
+        self.info(&input)?;
+        self.convert(&input)?;
+        self.irreducible(&input)?;
+        self.quad(&input)?;
+        let tori = self.flat_tori()?;
+        self.delaunay(&input, &tori)?;
+        self.isometric(&input, &tori)?;
+        self.census()?;
+        emit(&format!(
+            "done in {}\n",
+            format_seconds(started.elapsed().as_secs_f64())
+        ))
+    }
+
+    /// After a failure: removes the files of [`Self::written`] (those that exist), then the
+    /// folder if the run `created` it and it is empty.
+    fn remove_written(&self, created: bool) {
+        for path in self.written.borrow().iter() {
+            let _ = std::fs::remove_file(path);
+        }
+        if created {
+            let _ = std::fs::remove_dir(&self.dir);
+        }
+    }
 }
 
 /// The flat tori of the demo, as portalgon JSON files by exact corners.
@@ -77,8 +107,15 @@ struct FlatTori {
 }
 
 impl Demo {
+    /// The path of an output of the run; recorded for [`Self::remove_written`] unless a file
+    /// of that name was there before the run.
     fn path(&self, name: &str) -> PathBuf {
-        self.dir.join(name)
+        let path = self.dir.join(name);
+        let mut written = self.written.borrow_mut();
+        if !written.contains(&path) && !path.exists() {
+            written.push(path.clone());
+        }
+        path
     }
 
     fn shown(&self, name: &str) -> String {

@@ -104,7 +104,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let objective = objective_named(&args.objective)?;
     let loaded = args.job.read()?;
     if !loaded.report.dropped_vertices.is_empty() {
-        eprintln!(
+        stderr_println!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
