@@ -129,3 +129,20 @@ def test_ctrl_c_stops_a_long_census():
     assert child.returncode != 0
     assert b"KeyboardInterrupt" in stderr
     assert time.monotonic() - start < 30
+
+
+def test_cli_census_file_reads_as_json_and_equals_the_package(cli, tmp_path):
+    """`surftopo census` writes Lutz's format, one JSON array per line (vertices from 1): read
+    with json and numpy, it equals surftopo.census (vertices from 0)."""
+    import json
+
+    from conftest import run_cli
+
+    out = tmp_path / "kb.txt"
+    run_cli(cli, "census", "klein-bottle", "-o", out)
+    lines = out.read_text().splitlines()
+    entries = surftopo.census("klein-bottle")
+    assert len(lines) == len(entries) == 29
+    for line, F in zip(lines, entries):
+        G = np.array(json.loads(line), dtype=np.int64) - 1
+        assert np.array_equal(G, F)
