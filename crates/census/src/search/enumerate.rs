@@ -19,7 +19,10 @@
 //!   contractible), and for each edge xy whose two ends are closed, x and y have at least three
 //!   common neighbours (the link condition fails: the edge is not contractible) — the
 //!   irreducibility test, final once both ends are closed since closed vertices get no new
-//!   neighbour;
+//!   neighbour; and its look-ahead on the edges from a closed vertex to an open one
+//!   ([`Enumerator::open_edges_can_fail`]);
+//! - the root flag (0, 1, 2) is preferred ([`Enumerator::root_flag_order`]), checked as the
+//!   degrees it compares become final;
 //! - for an orientable job the faces are oriented: the second face on an edge traverses it in the
 //!   direction opposite to the first.
 //!
@@ -307,7 +310,7 @@ impl Enumerator {
     /// so labelling from one loses nothing; the search checks the two inequalities as soon as
     /// both degrees are final (both vertices closed), and the canonical-root test at the leaves
     /// compares the preferred flags only.
-    fn root_flag_order(&self) -> bool {
+    pub(crate) fn root_flag_order(&self) -> bool {
         if self.closed & 0b10 != 0 {
             let top = self.degree(1);
             let mut others = self.adjacency[0] & self.closed & !0b10;
@@ -356,7 +359,7 @@ impl Enumerator {
     /// are final, so y can only gain common neighbours among x's open neighbours not yet
     /// adjacent to y, and at most as many as y's degree has room for (d − deg y); the edge needs
     /// three common neighbours in the end.
-    fn open_edges_can_fail(&self) -> bool {
+    pub(crate) fn open_edges_can_fail(&self) -> bool {
         let mut closed = self.closed;
         while closed != 0 {
             let x = closed.trailing_zeros() as usize;

@@ -10,11 +10,14 @@
 //! [`enumerate::Enumerator::is_canonical_leaf`]), and the classes are stored by canonical form
 //! ([`crate::canonical_form`]).
 //!
-//! Completeness: (1) every triangulation has a vertex of maximum degree, which can be labelled 0
-//! with its link labelled 1..d, so every irreducible triangulation with n vertices and maximum
-//! degree d is isomorphic to a labelled triangulation of job (n, d); (2) each job's search is
-//! exhaustive (see [`enumerate`]: it branches over every apex, and prunes only by necessary
-//! conditions); (3) canonical forms are equal exactly for isomorphic triangulations; (4) no
+//! Completeness: (1) every triangulation with maximum degree d has a preferred flag (a vertex of
+//! degree d with the largest neighbour-degree sum among those, its neighbour of largest degree,
+//! the apex of larger degree on that edge), from which it is labelled as job (n, d) labels: 0, then
+//! the link 1..d, then in the search's order; (2) each job's search is exhaustive over such
+//! labellings (see [`enumerate`]: it branches over every apex, and prunes only by necessary
+//! conditions and by the preferred-flag inequalities); (3) of the labelled copies of a class,
+//! exactly those from its least-code preferred flags pass the canonical-root test, and they are one
+//! labelled triangulation; canonical forms are equal exactly for isomorphic triangulations; (4) no
 //! irreducible triangulation has more vertices than the upper end of the range: a theorem for the
 //! sphere (Steinitz–Rademacher) and the projective plane (Joret–Wood's 13h − 4 = 9), and for the
 //! torus (10), the Klein bottle (11) and the double torus (17) the largest vertex count of the
