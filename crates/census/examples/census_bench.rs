@@ -107,51 +107,43 @@ fn main() {
             .expect("--max-vertices N")
             .parse()
             .expect("a number");
-        let done: Vec<(usize, usize)> = std::fs::read_to_string(JSONL)
-            .unwrap_or_default()
-            .lines()
-            .filter(|l| {
-                field(l, "kind") == Some("job")
-                    && field(l, "surface") == Some(surface.name().as_str())
-            })
-            .filter_map(|l| {
-                Some((
-                    field(l, "vertices")?.parse().ok()?,
-                    field(l, "max_degree")?.parse().ok()?,
-                ))
-            })
-            .collect();
+        let done = finished_jobs(
+            &std::fs::read_to_string(JSONL).unwrap_or_default(),
+            &surface.name(),
+        );
         let (jobs, _) = search::jobs(surface, Some(max)).expect("jobs");
         let skip_above: f64 =
             value("--skip-above").map_or(f64::INFINITY, |v| v.parse().expect("--skip-above NODES"));
         let never = || false;
         for job in jobs {
-            if done.contains(&(job.vertices, job.max_degree)) {
+            if is_done(&done, job) {
                 continue;
             }
             let estimate = estimate_nodes(surface, job, 2000, 7);
             if estimate > skip_above {
                 println!(
-                    "{name}: {} vertices, degree {}: skipped (estimated {estimate:.3e} nodes)",
-                    job.vertices, job.max_degree
+                    "{name}: {} vertices, degree {}, part {}: skipped (estimated {estimate:.3e} nodes)",
+                    job.vertices, job.max_degree, job.part
                 );
                 continue;
             }
             let r = run_job(surface, job, &never).expect("job");
             println!(
-                "{name}: {} vertices, degree {}: {} classes, {} nodes (estimated {:.3e}), {:.2} s",
+                "{name}: {} vertices, degree {}, part {}: {} classes, {} nodes (estimated {:.3e}), {:.2} s",
                 job.vertices,
                 job.max_degree,
+                job.part,
                 r.triangulations.len(),
                 r.nodes,
                 estimate,
                 r.seconds
             );
             append(&format!(
-                "{{\"kind\":\"job\",\"surface\":\"{}\",\"vertices\":{},\"max_degree\":{},\"classes\":{},\"nodes\":{},\"estimated_nodes\":{estimate:.0},\"seconds\":{:.3},\"load\":\"{}\",\"date\":\"{}\",\"command\":\"{command}\"}}",
+                "{{\"kind\":\"job\",\"surface\":\"{}\",\"vertices\":{},\"max_degree\":{},\"part\":{},\"classes\":{},\"nodes\":{},\"estimated_nodes\":{estimate:.0},\"seconds\":{:.3},\"load\":\"{}\",\"date\":\"{}\",\"command\":\"{command}\"}}",
                 surface.name(),
                 job.vertices,
                 job.max_degree,
+                job.part,
                 r.triangulations.len(),
                 r.nodes,
                 r.seconds,
@@ -161,6 +153,27 @@ fn main() {
         }
     }
     write_report();
+}
+
+/// The (vertex count, maximum degree, part) of the finished jobs of `surface` in the JSONL text;
+/// part `None` for a line that covers every part.
+fn finished_jobs(text: &str, surface: &str) -> Vec<(usize, usize, Option<usize>)> {
+    text.lines()
+        .filter(|l| field(l, "kind") == Some("job") && field(l, "surface") == Some(surface))
+        .filter_map(|l| {
+            Some((
+                field(l, "vertices")?.parse().ok()?,
+                field(l, "max_degree")?.parse().ok()?,
+                field(l, "part").and_then(|p| p.parse().ok()),
+            ))
+        })
+        .collect()
+}
+
+fn is_done(done: &[(usize, usize, Option<usize>)], job: Job) -> bool {
+    done.iter().any(|&(n, d, part)| {
+        n == job.vertices && d == job.max_degree && part.is_none_or(|p| p == job.part)
+    })
 }
 
 /// `results/census.md` from every line of `results/census.jsonl`, with Knuth's estimates for
@@ -207,16 +220,12 @@ fn write_report() {
         if jobs.is_empty() {
             continue;
         }
-        let mut per_n: BTreeMap<usize, (usize, u64, f64, usize)> = BTreeMap::new();
-        let mut run: Vec<(usize, usize)> = Vec::new();
+        let done = finished_jobs(&text, name);
+        let mut per_n: BTreeMap<usize, (usize, u64, f64)> = BTreeMap::new();
         for l in &jobs {
             let n: usize = field(l, "vertices")
                 .and_then(|v| v.parse().ok())
                 .unwrap_or(0);
-            let d: usize = field(l, "max_degree")
-                .and_then(|v| v.parse().ok())
-                .unwrap_or(0);
-            run.push((n, d));
             let e = per_n.entry(n).or_default();
             e.0 += field(l, "classes")
                 .and_then(|v| v.parse::<usize>().ok())
@@ -227,32 +236,28 @@ fn write_report() {
             e.2 += field(l, "seconds")
                 .and_then(|v| v.parse::<f64>().ok())
                 .unwrap_or(0.0);
-            e.3 += 1;
         }
         let total_nodes: u64 = per_n.values().map(|e| e.1).sum();
         let total_seconds: f64 = per_n.values().map(|e| e.2).sum();
         let per_node = total_seconds / total_nodes.max(1) as f64;
         let _ = writeln!(
             md,
-            "\n## {name}: classes found against time, per vertex count\n\nJobs (vertex count n, maximum degree d) run one by one (resumable: a rerun skips the jobs in the JSONL). Seconds are those of the search on a loaded machine (see the load column of the JSONL). A vertex count is complete when all its jobs ran.\n\n| vertices | classes | search nodes | seconds | jobs run / all |\n|---:|---:|---:|---:|---:|"
+            "\n## {name}: classes found against time, per vertex count\n\nJobs (vertex count n, maximum degree d, part: the subtree below one apex of the search's first branching) run one by one (resumable: a rerun skips the jobs in the JSONL; a line without a part covers every part of its (n, d)). Seconds are those of the search on a loaded machine (see the load column of the JSONL). A vertex count is complete when all its jobs ran.\n\n| vertices | classes | search nodes | seconds | jobs run / all |\n|---:|---:|---:|---:|---:|"
         );
-        let mut cumulative = 0;
-        for (n, (classes, nodes, seconds, count)) in &per_n {
-            cumulative += classes;
-            let all = search::jobs(surface, Some(*n))
-                .map(|(j, _)| j.iter().filter(|j| j.vertices == *n).count())
-                .unwrap_or(0);
-            let _ = writeln!(
-                md,
-                "| {n} | {classes} (total {cumulative}) | {nodes} | {seconds:.1} | {count} / {all} |"
-            );
-        }
         let upper = surface.vertex_range().max.map_or(16, |(m, _)| m).min(17);
         let (all, _) = search::jobs(surface, Some(upper)).expect("jobs");
-        let missing: Vec<Job> = all
-            .into_iter()
-            .filter(|j| !run.contains(&(j.vertices, j.max_degree)))
-            .collect();
+        let mut cumulative = 0;
+        for (n, (classes, nodes, seconds)) in &per_n {
+            cumulative += classes;
+            let of_n: Vec<&Job> = all.iter().filter(|j| j.vertices == *n).collect();
+            let run = of_n.iter().filter(|&&&j| is_done(&done, j)).count();
+            let _ = writeln!(
+                md,
+                "| {n} | {classes} (total {cumulative}) | {nodes} | {seconds:.1} | {run} / {} |",
+                of_n.len()
+            );
+        }
+        let missing: Vec<Job> = all.into_iter().filter(|&j| !is_done(&done, j)).collect();
         if !missing.is_empty() {
             let _ = writeln!(
                 md,

@@ -632,6 +632,35 @@ impl Enumerator {
         true
     }
 
+    /// The apexes the first branching (from the start state) accepts: a job's *parts*, each
+    /// the subtree below one of them ([`Self::enter_part`]). Empty when the start has no open
+    /// vertex.
+    pub fn root_choices(&mut self) -> Vec<usize> {
+        let Some((v, p)) = self.next_edge() else {
+            return Vec::new();
+        };
+        let mut choices = Vec::new();
+        let mut candidates = self.candidates(v, p);
+        while candidates != 0 {
+            let q = candidates.trailing_zeros() as usize;
+            candidates &= candidates - 1;
+            if self.try_apex(v, p, q) {
+                self.undo();
+                choices.push(q);
+            }
+        }
+        choices
+    }
+
+    /// Takes the first branching's apex `q` (one of [`Self::root_choices`]): the search then
+    /// covers that part only. False when `q` is not accepted.
+    pub fn enter_part(&mut self, q: usize) -> bool {
+        match self.next_edge() {
+            Some((v, p)) => self.try_apex(v, p, q),
+            None => false,
+        }
+    }
+
     /// Knuth's estimate of the number of search nodes (D. E. Knuth, "Estimating the efficiency
     /// of backtrack programs", Math. Comp. 29, 1975): one random root-to-leaf path, the sum over
     /// its depths of the product of the branching factors met. Unbiased; average many probes.

@@ -27,6 +27,7 @@
 //! `max_vertices` above it searches further (a check of the published bound: none is found).
 //!
 //! Jobs are independent: a run can be resumed from the jobs it finished ([`CensusOptions::done`]).
+//! A job is one part of an (n, d) search: the subtree below one apex of its first branching.
 
 pub mod enumerate;
 
@@ -39,13 +40,37 @@ use rand::SeedableRng;
 use std::collections::{BTreeMap, HashSet};
 use std::time::Instant;
 
-/// One job: vertex count and maximum degree.
+/// One job: vertex count, maximum degree, and the part of that search (the subtree below one
+/// apex of its first branching, [`Enumerator::root_choices`]), so that a long search is resumable
+/// part by part.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Job {
     /// n.
     pub vertices: usize,
     /// d: the maximum degree, that of vertex 0.
     pub max_degree: usize,
+    /// Which part of the (n, d) search: the index of the first branching's apex.
+    pub part: usize,
+}
+
+/// The enumerator of a job, entered into its part; `None` when the job has no search.
+fn enumerator(surface: SurfaceKind, job: Job) -> Option<Enumerator> {
+    let chi = surface.euler_characteristic();
+    let mut e = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree)?;
+    let choices = e.root_choices();
+    if choices.is_empty() {
+        // No branching at all: part 0 is the start state itself.
+        return (job.part == 0).then_some(e);
+    }
+    let q = *choices.get(job.part)?;
+    e.enter_part(q).then_some(e)
+}
+
+/// The number of parts of the (n, d) search (at least 1).
+fn part_count(surface: SurfaceKind, vertices: usize, max_degree: usize) -> usize {
+    let chi = surface.euler_characteristic();
+    Enumerator::new(vertices, chi, surface.orientable, max_degree)
+        .map_or(1, |mut e| e.root_choices().len().max(1))
 }
 
 /// What one finished job found.
@@ -175,10 +200,13 @@ pub fn jobs(
         let least = if exact { average } else { average + 1 };
         let least = least.max(if n == 4 { 3 } else { 4 });
         for d in least..n {
-            jobs.push(Job {
-                vertices: n,
-                max_degree: d,
-            });
+            for part in 0..part_count(surface, n, d) {
+                jobs.push(Job {
+                    vertices: n,
+                    max_degree: d,
+                    part,
+                });
+            }
         }
     }
     Ok((jobs, complete))
@@ -191,10 +219,9 @@ pub fn run_job(
     stop: &(dyn Fn() -> bool + Sync),
 ) -> Result<JobResult, CensusError> {
     let start = Instant::now();
-    let chi = surface.euler_characteristic();
     let mut found: HashSet<CanonicalForm> = HashSet::new();
     let (mut nodes, mut candidates) = (0, 0);
-    if let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree) {
+    if let Some(mut e) = enumerator(surface, job) {
         let mut leaf = |e: &Enumerator| {
             if e.is_canonical_leaf() {
                 let t = Triangulation::from_search(job.vertices, e.faces().collect());
@@ -220,8 +247,7 @@ pub fn run_job(
 
 /// Knuth's estimate of a job's search nodes: the mean of `probes` random probes.
 pub fn estimate_nodes(surface: SurfaceKind, job: Job, probes: usize, seed: u64) -> f64 {
-    let chi = surface.euler_characteristic();
-    let Some(mut e) = Enumerator::new(job.vertices, chi, surface.orientable, job.max_degree) else {
+    let Some(mut e) = enumerator(surface, job) else {
         return 0.0;
     };
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);

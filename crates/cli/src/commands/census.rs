@@ -78,6 +78,7 @@ pub struct Report {
 struct CheckpointJob {
     vertices: usize,
     max_degree: usize,
+    part: usize,
     nodes: u64,
     candidates: u64,
     seconds: f64,
@@ -134,6 +135,7 @@ fn read_checkpoint(path: &Path, surface: SurfaceKind) -> anyhow::Result<Vec<JobR
             job: Job {
                 vertices: job.vertices,
                 max_degree: job.max_degree,
+                part: job.part,
             },
             triangulations,
             nodes: job.nodes,
@@ -158,6 +160,7 @@ fn write_checkpoint(
             .map(|r| CheckpointJob {
                 vertices: r.job.vertices,
                 max_degree: r.job.max_degree,
+                part: r.job.part,
                 nodes: r.nodes,
                 candidates: r.candidates,
                 seconds: r.seconds,
@@ -288,12 +291,13 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let mut on_job = |result: &JobResult, progress: search::Progress| {
         bar.inc(weight(&progress.job));
         bar.set_message(format!(
-            "{}/{} jobs, {} classes; last: {} vertices, degree {}",
+            "{}/{} jobs, {} classes; last: {} vertices, degree {}, part {}",
             progress.done,
             progress.total,
             progress.classes,
             progress.job.vertices,
-            progress.job.max_degree
+            progress.job.max_degree,
+            progress.job.part
         ));
         finished.push(result.clone());
         if let Some(path) = &checkpoint
