@@ -42,19 +42,15 @@ impl Triangulation {
                 }
             }
         }
-        let vertex_count = faces
-            .iter()
-            .flatten()
-            .map(|&v| v as usize + 1)
-            .max()
-            .unwrap_or(0);
-        let mut used = vec![false; vertex_count];
-        for &v in faces.iter().flatten() {
-            used[v as usize] = true;
-        }
-        if let Some(v) = used.iter().position(|&u| !u) {
+        // The used vertices must be 0..n: found from the sorted distinct indices, so that a huge
+        // index allocates nothing in proportion to it.
+        let mut used: Vec<u32> = faces.iter().flatten().copied().collect();
+        used.sort_unstable();
+        used.dedup();
+        if let Some(v) = used.iter().enumerate().position(|(i, &v)| v as usize != i) {
             return Err(CensusError::UnusedVertex { vertex: v as u32 });
         }
+        let vertex_count = used.len();
         let mut seen: HashMap<[u32; 3], usize> = HashMap::with_capacity(faces.len());
         for (f, face) in faces.iter().enumerate() {
             let mut key = *face;

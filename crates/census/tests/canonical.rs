@@ -290,3 +290,9 @@ fn lutz_format_round_trip_and_errors() {
         "{err}"
     );
 }
+
+#[test]
+fn a_huge_vertex_index_is_an_error_not_an_allocation() {
+    let err = Triangulation::new(vec![[0, 1, 2], [0, 2, u32::MAX - 1], [0, 1, 3]]).unwrap_err();
+    assert_eq!(err, CensusError::UnusedVertex { vertex: 4 });
+}
