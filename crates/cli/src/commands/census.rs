@@ -182,25 +182,28 @@ fn write_checkpoint(
 
 /// The estimated seconds of the jobs not yet done: Knuth's estimate of each job's nodes, times
 /// the time per node the probes themselves took.
-fn estimate_seconds(surface: SurfaceKind, jobs: &[Job]) -> (Vec<f64>, f64) {
+/// The estimated search nodes of each job (Knuth's estimator, in job order) and the estimated
+/// seconds of them all, the time per node calibrated on the probing itself (a probe visits one
+/// node per level, a job's search one level per face beyond vertex 0's d). Stops as soon as the
+/// estimate passes 10,000 times `budget` (the jobs after are then not estimated: the figures
+/// are a lower bound, and the third value is false).
+fn estimate_seconds(surface: SurfaceKind, jobs: &[Job], budget: f64) -> (Vec<f64>, f64, bool) {
     let start = Instant::now();
     let probes = 200;
-    let nodes: Vec<f64> = jobs
-        .iter()
-        .map(|&job| estimate_nodes(surface, job, probes, 1))
-        .collect();
-    // A probe visits one node per level, and a job's search has one level per face beyond
-    // vertex 0's d: calibrate the time per node on the probing itself.
     let chi = surface.euler_characteristic();
-    let probe_nodes: f64 = jobs
-        .iter()
-        .map(|j| {
-            probes as f64 * (2 * (j.vertices as i64 - chi) - j.max_degree as i64).max(1) as f64
-        })
-        .sum();
-    let per_node = start.elapsed().as_secs_f64() / probe_nodes.max(1.0);
-    let total: f64 = nodes.iter().sum();
-    (nodes, total * per_node.max(5e-8))
+    let (mut nodes, mut probe_nodes) = (Vec::with_capacity(jobs.len()), 0.0);
+    let mut seconds = 0.0;
+    for &job in jobs {
+        nodes.push(estimate_nodes(surface, job, probes, 1));
+        probe_nodes +=
+            probes as f64 * (2 * (job.vertices as i64 - chi) - job.max_degree as i64).max(1) as f64;
+        let per_node = (start.elapsed().as_secs_f64() / probe_nodes).max(5e-8);
+        seconds = nodes.iter().sum::<f64>() * per_node;
+        if seconds > 1e4 * budget {
+            return (nodes, seconds, false);
+        }
+    }
+    (nodes, seconds, true)
 }
 
 /// A duration in the largest fitting unit (seconds to years).
@@ -259,13 +262,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         .copied()
         .filter(|j| !done.iter().any(|r| r.job == *j))
         .collect();
-    let (job_nodes, estimated_seconds) = estimate_seconds(surface, &todo);
+    let (job_nodes, estimated_seconds, whole) = estimate_seconds(surface, &todo, args.budget);
     let estimated_nodes: f64 = job_nodes.iter().sum();
+    let qualifier = if whole { "about" } else { "at least" };
     if estimated_seconds > args.budget {
         return Err(invalid(format!(
-            "the census of {surface} up to {} vertices is beyond reach: about {:.1e} search nodes, \
-             estimated {} on this machine (Knuth's estimator), over the budget of {}; lower \
-             --max-vertices, or raise --budget and use --checkpoint to make the run resumable",
+            "the census of {surface} up to {} vertices is beyond reach: estimated {qualifier} \
+             {:.1e} search nodes, {qualifier} {} on this machine (Knuth's estimator), over the \
+             budget of {}; lower --max-vertices, or raise --budget and use --checkpoint to make \
+             the run resumable",
             jobs.last().map_or(0, |j| j.vertices),
             estimated_nodes,
             long_time(estimated_seconds),
