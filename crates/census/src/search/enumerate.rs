@@ -310,7 +310,7 @@ impl Enumerator {
     /// so labelling from one loses nothing; the search checks the two inequalities as soon as
     /// both degrees are final (both vertices closed), and the canonical-root test at the leaves
     /// compares the preferred flags only.
-    pub(crate) fn root_flag_order(&self) -> bool {
+    pub fn root_flag_order(&self) -> bool {
         if self.closed & 0b10 != 0 {
             let top = self.degree(1);
             let mut others = self.adjacency[0] & self.closed & !0b10;
@@ -359,7 +359,7 @@ impl Enumerator {
     /// are final, so y can only gain common neighbours among x's open neighbours not yet
     /// adjacent to y, and at most as many as y's degree has room for (d − deg y); the edge needs
     /// three common neighbours in the end.
-    pub(crate) fn open_edges_can_fail(&self) -> bool {
+    pub fn open_edges_can_fail(&self) -> bool {
         let mut closed = self.closed;
         while closed != 0 {
             let x = closed.trailing_zeros() as usize;
@@ -549,7 +549,7 @@ impl Enumerator {
     /// At a leaf: whether its labelling is the canonical one of its class, i.e. its root flag
     /// (vertex 0, then 1, then 2: the first face placed) has the least code among the preferred
     /// flags ([`Self::root_flag_order`]) at the vertices of maximum degree d
-    /// ([`crate::canonical`]); each class then passes exactly once per job.
+    /// ([`crate::canonical_form`]); each class then passes exactly once per job.
     pub fn is_canonical_leaf(&self) -> bool {
         let faces: Vec<[u32; 3]> = self.faces().collect();
         let n = self.n;

@@ -89,7 +89,7 @@ pub struct JobResult {
     pub seconds: f64,
 }
 
-/// Progress of a census run, given to [`CensusOptions::progress`] after each job.
+/// Progress of a census run, given to [`CensusOptions::on_job`] after each job.
 #[derive(Clone, Copy, Debug)]
 pub struct Progress {
     /// The job just finished.
