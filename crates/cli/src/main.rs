@@ -79,6 +79,13 @@ enum Command {
     Isometric(commands::isometric::Args),
     /// Run every capability on a built-in example and write the results into a folder.
     Demo(commands::demo::Args),
+    /// Every irreducible triangulation of a closed surface up to isomorphism (mirror images
+    /// identified), one per line in Lutz's format; the count per vertex number on stdout.
+    Census(commands::census::Args),
+    /// Whether two triangulated closed surfaces (orientable or not) are isomorphic as simplicial
+    /// complexes, mirror images included: prints `isomorphic` (exit 0) or `not isomorphic`
+    /// (exit 1); exit 2 for invalid input.
+    Isomorphic(commands::isomorphic::Args),
 }
 
 fn run(command: Command) -> anyhow::Result<ExitCode> {
@@ -94,6 +101,8 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
             commands::isometric::run(&args).map(|v| ExitCode::from(v.exit_code()))
         }
         Command::Demo(args) => done(commands::demo::run(&args)),
+        Command::Census(args) => done(commands::census::run(&args)),
+        Command::Isomorphic(args) => commands::isomorphic::run(&args),
     }
 }
 

@@ -401,6 +401,8 @@ fn demo_shows_every_capability() {
         "delaunay --method auto ",
         "isometric --method dubois --exact",
         "isometric --method flip",
+        "census torus",
+        "isomorphic input.obj input.ply",
     ] {
         let line = stdout
             .lines()

@@ -6,6 +6,7 @@
 //! in `python/surftopo/`.
 
 mod arrays;
+mod census;
 mod errors;
 mod intrinsic;
 mod surface;
@@ -36,6 +37,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(intrinsic::_laplacian_timed, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::isometric, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::flat_torus, m)?)?;
+    m.add_function(wrap_pyfunction!(census::census, m)?)?;
+    m.add_function(wrap_pyfunction!(census::canonical_form, m)?)?;
     m.add_class::<intrinsic::Portalgon>()?;
     m.add_class::<intrinsic::Intrinsic>()?;
     Ok(())

@@ -79,6 +79,7 @@ impl Demo {
         let tori = self.flat_tori()?;
         self.delaunay(&input, &tori)?;
         self.isometric(&input, &tori)?;
+        self.census()?;
         emit(&format!(
             "done in {}\n",
             format_seconds(started.elapsed().as_secs_f64())
@@ -544,6 +545,46 @@ impl Demo {
             )?;
         }
         Ok(())
+    }
+}
+
+impl Demo {
+    /// `census torus` (the 21 irreducible triangulations of the torus, in Lutz's format), and
+    /// `isomorphic` on the input and its PLY conversion.
+    fn census(&self) -> anyhow::Result<()> {
+        let start = Instant::now();
+        let path = self.path("census-torus.txt");
+        let census = surftopo_census::census(
+            surftopo_census::SurfaceKind::orientable(1),
+            surftopo_census::CensusOptions::default(),
+        )
+        .map_err(|e| crate::failure::invalid(e.to_string()))?;
+        let text = surftopo_census::to_lutz(&census.triangulations);
+        crate::output::write_file(&path, |w| {
+            use std::io::Write;
+            w.write_all(text.as_bytes())?;
+            Ok(())
+        })?;
+        Self::line(
+            "census torus",
+            &format!(
+                "{} irreducible triangulations, 7 to 10 vertices -> census-torus.txt",
+                census.triangulations.len()
+            ),
+            start.elapsed().as_secs_f64(),
+        )?;
+        let start = Instant::now();
+        let (isomorphic, _, _) =
+            crate::commands::isomorphic::decide(&self.path("input.obj"), &self.path("input.ply"))?;
+        Self::line(
+            "isomorphic input.obj input.ply",
+            if isomorphic {
+                "isomorphic"
+            } else {
+                "not isomorphic"
+            },
+            start.elapsed().as_secs_f64(),
+        )
     }
 }
 

@@ -47,7 +47,9 @@ __all__ = [
     "PortalgonError",
     "SurftopoError",
     "annulus",
+    "canonical_form",
     "cavity_box",
+    "census",
     "disk",
     "flat_torus",
     "genus_surface",
@@ -159,6 +161,39 @@ def irreducible(
     >>> V2, F2, stats = surftopo.irreducible(*surftopo.klein_bottle())
     >>> stats["output"]["surfaces"][0]["name"], 8 <= len(V2) <= 11
     ('Klein bottle', True)
+    """
+
+def census(
+    surface: str, max_vertices: int | None = None
+) -> list[npt.NDArray[np.int64]]:
+    """Every irreducible triangulation of a closed surface, up to isomorphism.
+
+    ``surface`` is ``"sphere"``, ``"torus"``, ``"projective-plane"``, ``"klein-bottle"``,
+    ``"genus-G"`` or ``"nK"``. Each entry is an int64 ``(m, 3)`` face array on the vertices
+    ``0..n`` in canonical labelling (see :func:`canonical_form`), sorted by vertex count; a
+    triangulation and its mirror image are one entry. ``max_vertices`` cuts the search (the list
+    is then complete up to that many vertices only); a surface with no vertex bound within reach
+    (``"n3"``, ``"genus-2"`` and beyond) needs it, else :class:`InvalidInputError`. The method,
+    its completeness argument and its sources: ``surftopo census --help`` and the README.
+
+    >>> [len(F) for F in surftopo.census("projective-plane")]
+    [10, 12]
+    >>> len(surftopo.census("torus"))
+    21
+    """
+
+def canonical_form(faces: _Faces) -> npt.NDArray[np.int64]:
+    """The canonical form of a closed triangulated surface, orientable or not.
+
+    ``faces`` is an ``(m, 3)`` integer array on the vertices ``0..n`` (every index used). The
+    result, an int64 ``(m, 3)`` array with each row sorted and the rows sorted, is equal for two
+    face lists exactly when they are isomorphic as simplicial complexes (mirror images included).
+    A face list that is not a closed connected simplicial surface raises
+    :class:`InvalidMeshError` naming the face, edge or vertex.
+
+    >>> F = np.array([[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]])
+    >>> surftopo.canonical_form(F[:, ::-1][[3, 1, 2, 0]]).tolist()
+    [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]]
     """
 
 def quadrangulate(
