@@ -15,6 +15,20 @@ pub struct LimitArgs {
     /// make (about 100 bytes each once built); checked before allocating.
     #[arg(long, global = true, default_value_t = crate::limits::DEFAULT_MAX_ELEMENTS)]
     pub max_elements: u64,
+    /// Stop with exit code 2 after this many seconds (a decimal), naming the step then running;
+    /// temporary files are removed and no output is half-written. Default: no limit.
+    #[arg(long, global = true, value_name = "SECONDS", value_parser = parse_seconds)]
+    pub time_limit: Option<f64>,
+}
+
+/// A positive, finite number of seconds.
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s > 0.0 && s.is_finite() && s < 1e9 => Ok(s),
+        _ => Err(format!(
+            "{text:?}: a number of seconds above 0 (below 1e9) is needed"
+        )),
+    }
 }
 
 impl LimitArgs {
@@ -86,8 +100,8 @@ pub fn value_name(value: &impl clap::ValueEnum) -> String {
 /// vertex list (`irreducible`, `quad`), with the steps they share.
 #[derive(clap::Args, Debug)]
 pub struct MeshJobArgs {
-    /// Input mesh (a closed orientable triangulated surface; .obj, .off, .ply, .stl, optionally
-    /// .gz), `-` for standard input (format from the extension, else the content).
+    /// Input mesh (a triangulated surface; .obj, .off, .ply, .stl, optionally .gz), `-` for
+    /// standard input (format from the extension, else the content).
     pub mesh: std::path::PathBuf,
     /// Output mesh file (.obj, .off, .ply or .stl, optionally .gz), `-` for standard output (with
     /// --format).
@@ -110,9 +124,15 @@ impl MeshJobArgs {
         crate::output::check_outputs(&[("-o", self.output.as_path(), kind)])
     }
 
-    /// Reads and validates the input surface (welded with `--weld`).
+    /// Reads and validates the input surface (welded with `--weld`): closed, connected and
+    /// orientable.
     pub fn read(&self) -> anyhow::Result<crate::input::Loaded> {
         crate::input::read_surface(&self.mesh, self.weld.weld)
+    }
+
+    /// Reads and validates the input surface of any kind (welded with `--weld`).
+    pub fn read_covered(&self) -> anyhow::Result<crate::input::LoadedCovered> {
+        crate::input::read_covered(&self.mesh, self.weld.weld)
     }
 
     /// Writes the output mesh, then warns about the input's attributes it does not keep
@@ -121,12 +141,12 @@ impl MeshJobArgs {
         &self,
         command: &str,
         soup: &surftopo_io::PolygonSoup,
-        loaded: &crate::input::Loaded,
+        attributes: &surftopo_io::Attributes,
     ) -> anyhow::Result<()> {
         let output = self.output.as_path();
         crate::output::write_soup_as(output, soup, self.format.format)?;
-        crate::attributes::warn_not_read(&self.mesh, output, &loaded.attributes);
-        crate::attributes::warn_new_faces(command, output, &loaded.attributes);
+        crate::attributes::warn_not_read(&self.mesh, output, attributes);
+        crate::attributes::warn_new_faces(command, output, attributes);
         crate::attributes::warn_unwritable(output, self.format.format, soup);
         Ok(())
     }

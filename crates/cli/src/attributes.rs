@@ -36,7 +36,7 @@ pub fn renumbered(
 /// Warns that what the reader of `input` skipped is not in `output`.
 pub fn warn_not_read(input: &Path, output: &Path, attributes: &Attributes) {
     for what in &attributes.not_kept {
-        eprintln!(
+        stderr_println!(
             "warning: {}: {what}: not read, so not in {}",
             crate::input::name(input),
             crate::output::name(output)
@@ -48,7 +48,7 @@ pub fn warn_not_read(input: &Path, output: &Path, attributes: &Attributes) {
 /// the input's.
 pub fn warn_new_faces(command: &str, output: &Path, attributes: &Attributes) {
     for what in attributes.corner_descriptions() {
-        eprintln!(
+        stderr_println!(
             "warning: {}: {what}: dropped ({command} makes new faces; per-vertex attributes are kept)",
             crate::output::name(output)
         );
@@ -69,6 +69,6 @@ pub fn warn_unwritable(output: &Path, format: Option<MeshFormat>, soup: &Polygon
         return;
     };
     for what in soup.unwritable(format) {
-        eprintln!("warning: {}: {what}; dropped", crate::output::name(output));
+        stderr_println!("warning: {}: {what}; dropped", crate::output::name(output));
     }
 }

@@ -4,8 +4,7 @@ use crate::failure::invalid;
 use std::path::Path;
 use std::sync::Mutex;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::Surface;
-use surftopo_mesh::{BuildError, BuildReport, geometry};
+use surftopo_mesh::{BuildError, BuildReport, CoveredSurface, Lifting, Surface, geometry};
 
 /// A surface read from a file, with what building it changed.
 pub struct Loaded {
@@ -146,7 +145,7 @@ fn weld_soup(
         let weld = soup.weld_exact();
         welded = weld.merged;
         if weld.conflicting > 0 {
-            eprintln!(
+            stderr_println!(
                 "warning: {source}: welding merged {} vertices whose per-vertex attributes differ \
                  from those of the vertex they were merged into; theirs are dropped",
                 weld.conflicting
@@ -225,13 +224,24 @@ pub fn triangles(path: &Path, soup: &PolygonSoup) -> anyhow::Result<Vec<[u32; 3]
     })
 }
 
-/// Reads and validates a closed, connected, orientable triangulated surface.
+/// The command running, for messages ([`set_command`]).
+static COMMAND: std::sync::OnceLock<&'static str> = std::sync::OnceLock::new();
+
+/// Names the command running (`quad`, `delaunay`, ...), for the messages of [`load_surface`].
+pub fn set_command(command: &'static str) {
+    let _ = COMMAND.set(command);
+}
+
+/// Reads and validates a closed, connected, orientable triangulated surface; the refusal of a
+/// surface with boundary, non-orientable or in pieces says that the command running does not
+/// support it yet.
 pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
+    let command = COMMAND.get().copied().unwrap_or("surftopo");
     let (soup, welded) = read_soup(path, weld)?;
     let triangles = triangles(path, &soup)?;
     geometry::check_finite(&soup.positions).map_err(|e| invalid(locate(path, &soup, &e)))?;
     let (mesh, report) = surftopo_mesh::build(soup.positions.len(), &triangles)
-        .map_err(|e| invalid(locate(path, &soup, &e)))?;
+        .map_err(|e| invalid(not_supported(path, &soup, &triangles, command, &e)))?;
     let mut positions = vec![[0.0; 3]; mesh.vertex_slots()];
     for (old, new) in report.vertex_old_to_new.iter().enumerate() {
         if new.is_valid() {
@@ -249,27 +259,97 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
 
 /// Notes on stderr what building changed (reoriented faces, dropped or welded vertices).
 pub fn log_report(path: &Path, loaded: &Loaded) {
+    log_changes(path, loaded.welded, &loaded.report);
+}
+
+/// [`log_report`] from its parts.
+fn log_changes(path: &Path, welded: usize, report: &BuildReport) {
     let name = name(path);
-    if loaded.welded > 0 {
-        eprintln!("note: {name}: welded {} coincident vertices", loaded.welded);
+    if welded > 0 {
+        stderr_println!("note: {name}: welded {welded} coincident vertices");
     }
-    if !loaded.report.dropped_vertices.is_empty() {
-        eprintln!(
+    if !report.dropped_vertices.is_empty() {
+        stderr_println!(
             "note: {name}: dropped {} unreferenced vertices",
-            loaded.report.dropped_vertices.len()
+            report.dropped_vertices.len()
         );
     }
-    if loaded.report.reoriented_faces > 0 {
-        eprintln!(
+    if report.reoriented_faces > 0 {
+        stderr_println!(
             "note: {name}: reoriented {} faces to make the orientation consistent",
-            loaded.report.reoriented_faces
+            report.reoriented_faces
         );
     }
+}
+
+/// The message for a build error of `command`: a surface with boundary, non-orientable or in
+/// pieces is a valid surface that `command` does not support yet (with its classification and
+/// the first place that shows it); any other error is located as usual.
+fn not_supported(
+    path: &Path,
+    soup: &PolygonSoup,
+    triangles: &[[u32; 3]],
+    command: &str,
+    error: &BuildError,
+) -> String {
+    let what = match error {
+        BuildError::BoundaryEdge { .. } => "surfaces with boundary are",
+        BuildError::NonOrientable { .. } => "non-orientable surfaces are",
+        BuildError::Disconnected { .. } => "files of several pieces are",
+        _ => return locate(path, soup, error),
+    };
+    let kinds = surftopo_mesh::inspect(soup.positions.len(), triangles).surfaces;
+    let names: Vec<String> = kinds.iter().map(|k| k.name()).collect();
+    let name = name(path);
+    let located = locate(path, soup, error);
+    let place = located
+        .strip_prefix(&format!("{name}: "))
+        .unwrap_or(&located);
+    format!(
+        "{name}: {command}: {what} not supported yet (input: {}; `surftopo info` classifies it, \
+         `surftopo irreducible` takes it); {place}",
+        names.join(" + "),
+    )
 }
 
 /// Reads and validates a surface with a progress spinner, noting on stderr what building changed.
 pub fn read_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
     let loaded = crate::progress::step("reading", || load_surface(path, weld))?;
     log_report(path, &loaded);
+    Ok(loaded)
+}
+
+/// A surface of any kind read from a file (boundary loops, non-orientable, several pieces), with
+/// what building it changed.
+pub struct LoadedCovered {
+    /// The surface as its cover, with positions.
+    pub surface: CoveredSurface,
+    /// Reoriented faces (of orientable pieces), dropped vertices.
+    pub report: BuildReport,
+    /// Vertices merged by welding.
+    pub welded: usize,
+    /// The input's attributes, per-vertex ones on the surface's vertex ids (its classes).
+    pub attributes: surftopo_io::Attributes,
+}
+
+/// Reads and validates a triangulated compact surface of any kind, with a progress spinner,
+/// noting on stderr what building changed. Non-manifold edges and vertices, degenerate or
+/// duplicate faces are refused with their location.
+pub fn read_covered(path: &Path, weld: bool) -> anyhow::Result<LoadedCovered> {
+    let loaded = crate::progress::step("reading", || {
+        let (soup, welded) = read_soup(path, weld)?;
+        let triangles = triangles(path, &soup)?;
+        let (surface, report) = CoveredSurface::from_triangles(soup.positions.clone(), &triangles)
+            .map_err(|e| invalid(locate(path, &soup, &e)))?;
+        let classes = surface.cover.sheets.class_count();
+        let attributes = crate::attributes::on_mesh(&soup, &report, classes);
+        anyhow::Ok(LoadedCovered {
+            surface,
+            report,
+            welded,
+            attributes,
+        })
+    })?;
+    log_changes(path, loaded.welded, &loaded.report);
     Ok(loaded)
 }

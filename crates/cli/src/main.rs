@@ -6,6 +6,23 @@
 //! stderr when stdout carries a mesh, `-`), progress and notes to stderr; output files are written atomically, and SIGINT, SIGTERM or
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
+/// `eprintln!` that never panics: when stderr is closed or full (`2>/dev/full`) the text is
+/// lost and the command goes on (its exit code still tells the outcome).
+macro_rules! stderr_println {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
+/// `eprint!` that never panics (see [`stderr_println`]).
+macro_rules! stderr_print {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 mod args;
 mod attributes;
 mod commands;
@@ -31,9 +48,9 @@ struct Cli {
 
 /// The exit codes, at the end of `--help`.
 const EXIT_CODES: &str = "Exit codes: 0 success; 1 internal failure; 2 invalid input or usage, or an \
-output that cannot be written (missing folder, read-only or full disk, full stdout); 128+N stopped by \
-signal N, temporary files removed; 4 numerical failure (double precision could not finish: \
-`delaunay --method voronoi` without `--exact`). `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
+output that cannot be written (missing folder, read-only or full disk, full or closed stdout); 128+N stopped by \
+signal N, temporary files removed; 4 numerical failure (double precision could not finish on \
+valid input: use `--exact` on exact input, or another `--method`). `isometric`: 0 isometric, 1 not isometric, 2 invalid input, 3 \
 undecidable in double precision, 4 internal failure.";
 
 /// The subcommands; each owns its arguments (`commands::NAME::Args`).
@@ -62,6 +79,13 @@ enum Command {
     Isometric(commands::isometric::Args),
     /// Run every capability on a built-in example and write the results into a folder.
     Demo(commands::demo::Args),
+    /// Every irreducible triangulation of a closed surface up to isomorphism (mirror images
+    /// identified), one per line in Lutz's format; the count per vertex number on stdout.
+    Census(commands::census::Args),
+    /// Whether two triangulated closed surfaces (orientable or not) are isomorphic as simplicial
+    /// complexes, mirror images included: prints `isomorphic` (exit 0) or `not isomorphic`
+    /// (exit 1); exit 2 for invalid input.
+    Isomorphic(commands::isomorphic::Args),
 }
 
 fn run(command: Command) -> anyhow::Result<ExitCode> {
@@ -77,6 +101,8 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
             commands::isometric::run(&args).map(|v| ExitCode::from(v.exit_code()))
         }
         Command::Demo(args) => done(commands::demo::run(&args)),
+        Command::Census(args) => done(commands::census::run(&args)),
+        Command::Isomorphic(args) => commands::isomorphic::run(&args),
     }
 }
 
@@ -95,24 +121,52 @@ fn remove_temporaries_on_signals() {
     });
 }
 
+/// `--time-limit SECONDS`: a thread that, once the time is up, removes the temporary files of
+/// writes in progress and exits with code 2, naming the step then running (as the signal
+/// handler does, so no output is half-written: a write's rename waits for it or never happens).
+fn stop_after(seconds: f64) {
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs_f64(seconds));
+        let step = progress::current().map_or_else(String::new, |s| format!(" while {s}"));
+        surftopo_io::remove_temporaries_then(|| {
+            stderr_println!(
+                "error: stopped after {seconds} s (--time-limit){step}; temporary files removed"
+            );
+            std::process::exit(2)
+        })
+    });
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            eprintln!("error: a command is needed\n");
+            stderr_println!("error: a command is needed\n");
             let _ = e.print();
             return ExitCode::from(2);
         }
         Err(e) => e.exit(),
     };
     limits::set(cli.limits.limits());
+    input::set_command(match cli.command {
+        Command::Quad(_) => "quad",
+        Command::Delaunay(_) => "delaunay",
+        Command::Isometric(_) => "isometric",
+        Command::Generate(_) => "generate",
+        _ => "surftopo",
+    });
+    if output::stdout_was_closed() {
+        output::STDOUT_CLOSED.store(true, std::sync::atomic::Ordering::Relaxed);
+    }
     remove_temporaries_on_signals();
+    if let Some(seconds) = cli.limits.time_limit {
+        stop_after(seconds);
+    }
     let isometric = matches!(cli.command, Command::Isometric(_));
     match run(cli.command) {
         Ok(code) => code,
-        Err(error) if output::is_broken_pipe(&error) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {}", failure::message(&error));
+            stderr_println!("error: {}", failure::message(&error));
             ExitCode::from(failure::command_exit_code(&error, isometric))
         }
     }

@@ -347,37 +347,62 @@ fn note_stl_losses(path: &Path, soup: &PolygonSoup) {
         .filter(|&&c| f64::from(c as f32) != c)
         .count();
     if rounded > 0 {
-        eprintln!(
+        stderr_println!(
             "note: {}: STL holds single precision: {rounded} coordinates rounded",
             name(path)
         );
     }
     let polygons = soup.faces().filter(|f| f.len() > 3).count();
     if polygons > 0 {
-        eprintln!(
+        stderr_println!(
             "note: {}: STL holds triangles: {polygons} polygons cut into triangle fans",
             name(path)
         );
     }
 }
 
+/// Whether standard output was closed when the process started (`surftopo info m.obj >&-`).
+/// Rust's runtime then opens `/dev/null` read-write on descriptor 1, so writes would vanish
+/// silently; a shell's `>/dev/null` opens it write-only. Linux only (read from `/proc`);
+/// elsewhere `false`.
+pub fn stdout_was_closed() -> bool {
+    let is_null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == Path::new("/dev/null"));
+    let read_write = || {
+        let info = std::fs::read_to_string("/proc/self/fdinfo/1").unwrap_or_default();
+        info.lines()
+            .find_map(|l| l.strip_prefix("flags:"))
+            .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
+            .is_some_and(|flags| flags & 0o3 == 0o2)
+    };
+    is_null && read_write()
+}
+
+/// Set by `main` when [`stdout_was_closed`]: every write to stdout then fails (exit 2).
+pub static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
+
 /// Writes a mesh's bytes to standard output; failures as [`emit`]'s.
 fn write_stdout(bytes: &[u8]) -> anyhow::Result<()> {
     use std::io::Write;
+    if STDOUT_CLOSED.load(Ordering::Relaxed) {
+        return Err(crate::failure::invalid(
+            "stdout: not written: standard output is closed",
+        ));
+    }
     let mut out = std::io::stdout().lock();
     out.write_all(bytes)
         .and_then(|()| out.flush())
         .map_err(stdout_error)
 }
 
-/// A failed write to stdout: a closed pipe passes through (see [`is_broken_pipe`]), anything else
-/// names stdout (exit 2).
+/// A failed write to stdout, named (exit 2): a closed pipe (`surftopo convert m.obj - | head -c
+/// 10`: the output is not all delivered), a closed or full stdout.
 fn stdout_error(e: std::io::Error) -> anyhow::Error {
-    if e.kind() == std::io::ErrorKind::BrokenPipe {
-        anyhow::Error::new(e)
+    let cause = if e.kind() == std::io::ErrorKind::BrokenPipe {
+        "its reader closed the pipe before the end".to_string()
     } else {
-        crate::failure::invalid(format!("stdout: not written: {e}"))
-    }
+        e.to_string()
+    };
+    crate::failure::invalid(format!("stdout: not written: {cause}"))
 }
 
 /// How a matrix output is written, by its extension: `.npz` (SciPy's `save_npz` layout,
@@ -496,23 +521,14 @@ pub fn format_seconds(seconds: f64) -> String {
 }
 
 /// Writes results to stdout, or to stderr when stdout carries an output (`-`, see
-/// [`check_outputs`]). A closed pipe (`surftopo info x | head`) is not an error: see
-/// [`is_broken_pipe`]; any other failure (a full disk) names stdout, exit code 2.
+/// [`check_outputs`]). A failure (a closed pipe, a full disk) names stdout, exit code 2; on
+/// stderr the text is dropped when stderr cannot take it.
 pub fn emit(text: &str) -> anyhow::Result<()> {
     if STDOUT_CARRIES_OUTPUT.load(Ordering::Relaxed) {
-        eprint!("{text}");
+        stderr_print!("{text}");
         return Ok(());
     }
     write_stdout(text.as_bytes())
-}
-
-/// Whether an error is stdout's reader having gone away.
-pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
-    error.chain().any(|cause| {
-        cause
-            .downcast_ref::<std::io::Error>()
-            .is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe)
-    })
 }
 
 /// A progress message naming the output.

@@ -92,11 +92,6 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
         ),
         ("duplicate.obj", &format!("{TETRA}f 1 3 2\n"), "duplicate"),
         (
-            "boundary.obj",
-            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n",
-            "boundary edge",
-        ),
-        (
             "nonmanifold_edge.obj",
             &format!("{TETRA}v 1 1 1\nf 1 2 5\n"),
             "non-manifold edge",
@@ -107,21 +102,9 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
             "non-manifold vertex",
         ),
         (
-            "disconnected.obj",
-            &format!(
-                "{TETRA}v 5 0 0\nv 6 0 0\nv 5 1 0\nv 5 0 1\nf 5 7 6\nf 5 6 8\nf 6 7 8\nf 5 8 7\n"
-            ),
-            "connected components",
-        ),
-        (
             "nan.obj",
             &TETRA.replace("v 1 0 0", "v nan 0 0"),
             "non-finite",
-        ),
-        (
-            "quad.obj",
-            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
-            "boundary edge",
         ),
         (
             "garbage.obj",
@@ -131,13 +114,46 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
     ];
     // The projective plane (6 vertices, 10 triangles): closed but not orientable.
     let rp2 = "v 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 0\nv 0 1 1\nv 1 0 1\n\
-               f 1 2 3\nf 1 3 5\nf 1 5 6\nf 1 6 4\nf 1 4 2\nf 2 4 5\nf 2 5 3\nf 3 5 4\nf 3 4 6\nf 2 6 5\n";
+               f 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 6\nf 1 6 2\nf 2 3 5\nf 3 4 6\nf 4 5 2\nf 5 6 3\nf 6 2 4\n";
     let dir = tempfile::tempdir().unwrap();
-    let mut all: Vec<(String, String, String)> = cases
+    let all: Vec<(String, String, String)> = cases
         .iter()
         .map(|(n, t, m)| (n.to_string(), t.to_string(), m.to_string()))
         .collect();
-    all.push(("rp2.obj".into(), rp2.into(), "orient".into()));
+    // Surfaces with boundary, non-orientable or in pieces are no problems: `--strict` passes
+    // and each piece is classified.
+    let surfaces = [
+        (
+            "boundary.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n".to_string(),
+            vec!["disk"],
+        ),
+        (
+            "disconnected.obj",
+            format!(
+                "{TETRA}v 5 0 0\nv 6 0 0\nv 5 1 0\nv 5 0 1\nf 5 7 6\nf 5 6 8\nf 6 7 8\nf 5 8 7\n"
+            ),
+            vec!["sphere", "sphere"],
+        ),
+        (
+            "quad.obj",
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n".to_string(),
+            vec!["disk"],
+        ),
+        ("rp2.obj", rp2.to_string(), vec!["projective plane"]),
+    ];
+    for (name, text, names) in &surfaces {
+        let path = write(dir.path(), name, text);
+        let v = info_json(&path, &["--strict"]);
+        let got: Vec<&str> = v["surfaces"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(&got, names, "{name}");
+        assert_eq!(v["valid"], true, "{name}");
+    }
     for (name, text, message) in &all {
         let path = write(dir.path(), name, text);
         let out = surftopo()
@@ -167,12 +183,13 @@ fn malformed_inputs_exit_with_code_2_and_say_where() {
 #[test]
 fn a_face_error_names_the_line_of_the_face() {
     let dir = tempfile::tempdir().unwrap();
-    let text = "# comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n";
-    let path = write(dir.path(), "open.obj", text);
+    // A fin: a fourth face on the edge 1-2 of an open tetrahedron.
+    let text = "# comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 2 5\n";
+    let path = write(dir.path(), "fin.obj", text);
     let out = surftopo().arg("info").arg(&path).output().unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
-        stdout.contains("open.obj: line 6: boundary edge"),
+        stdout.contains("fin.obj: line 7: non-manifold edge"),
         "{stdout}"
     );
 }
@@ -276,6 +293,79 @@ fn a_failed_write_leaves_no_file_behind() {
 /// `demo` exits 0, names every capability (each algorithm of each paper, every output of
 /// `delaunay`, both `isometric` verdicts) on a line with a time, and its files check out
 /// independently of it.
+/// The files in `dir`, recursively, as paths relative to it.
+fn files_under(dir: &std::path::Path) -> Vec<String> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            found.extend(files_under(&path));
+        } else {
+            found.push(path.display().to_string());
+        }
+    }
+    found
+}
+
+/// A demo step that fails after others wrote their files (here a folder stands where the
+/// flipped triangulation goes) leaves none of the run's files, and keeps what was there before.
+#[test]
+fn a_failing_demo_step_removes_every_file_of_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("demo");
+    std::fs::create_dir_all(out.join("delaunay-flip.json")).unwrap();
+    std::fs::write(out.join("mine.txt"), "kept").unwrap();
+    let assert = surftopo()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).to_string();
+    assert!(stderr.contains("delaunay-flip.json"), "{stderr}");
+    assert_eq!(
+        files_under(&out),
+        [out.join("mine.txt").display().to_string()]
+    );
+    assert!(out.join("delaunay-flip.json").is_dir());
+}
+
+/// `demo --out` on a full disk (a 256 KiB tmpfs, mounted when the tests run as root; skipped
+/// with a note otherwise): exit 2 and no file left, the folder it created removed.
+#[test]
+fn demo_on_a_full_disk_leaves_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let mount = |args: &[&str]| {
+        std::process::Command::new(args[0])
+            .args(&args[1..])
+            .stderr(std::process::Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    let point = dir.path().display().to_string();
+    if !mount(&["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", &point]) {
+        eprintln!(
+            "note: no tmpfs could be mounted (not root?): the full-disk demo test is skipped"
+        );
+        return;
+    }
+    let out = dir.path().join("demo");
+    let result = surftopo()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let left = files_under(dir.path());
+    let out_exists = out.exists();
+    assert!(mount(&["umount", &point]), "umount {point}");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("No space left on device"), "{stderr}");
+    assert!(left.is_empty(), "left behind: {left:?}");
+    assert!(!out_exists);
+}
+
 #[test]
 fn demo_shows_every_capability() {
     let dir = tempfile::tempdir().unwrap();
@@ -311,6 +401,8 @@ fn demo_shows_every_capability() {
         "delaunay --method auto ",
         "isometric --method dubois --exact",
         "isometric --method flip",
+        "census torus",
+        "isomorphic input.obj input.ply",
     ] {
         let line = stdout
             .lines()
@@ -402,9 +494,14 @@ fn info_reads_polygon_meshes() {
         "open_cube.obj",
         &cube.replace("f 4 1 5 8\n", ""),
     );
-    let out = surftopo().arg("info").arg(&open).output().unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(stdout.contains("line 13: boundary edge"), "{stdout}");
+    // An open cube: a disk of 5 quads, its faces counted as polygons.
+    let v = info_json(&open, &[]);
+    assert_eq!(v["surfaces"][0]["name"], "disk");
+    assert_eq!(v["surfaces"][0]["faces"], 5);
+    assert_eq!(
+        (v["faces"].as_u64(), v["boundary_loops"].as_u64()),
+        (Some(5), Some(1))
+    );
 }
 
 #[test]
@@ -646,7 +743,7 @@ fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
 }
 
 #[test]
-fn irreducible_refuses_input_that_is_not_a_triangulated_closed_surface() {
+fn irreducible_refuses_input_that_is_not_a_triangulated_surface() {
     let dir = tempfile::tempdir().unwrap();
     let quad = write(
         dir.path(),
@@ -666,20 +763,20 @@ fn irreducible_refuses_input_that_is_not_a_triangulated_closed_surface() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let open = write(
+    let fin = write(
         dir.path(),
-        "open.obj",
-        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n",
+        "fin.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 2 5\n",
     );
     let out = surftopo()
         .arg("irreducible")
-        .arg(&open)
+        .arg(&fin)
         .arg("-o")
         .arg(dir.path().join("x.obj"))
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("boundary edge"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("line 6: non-manifold edge (0, 1)"));
     assert!(!dir.path().join("x.obj").exists());
 }
 

@@ -10,16 +10,13 @@ use std::path::Path;
 const TETRA: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
 
 /// The problem classes, in the order of the JSON keys.
-const CLASSES: [&str; 10] = [
+const CLASSES: [&str; 7] = [
     "non_finite_coordinates",
     "zero_area_faces",
     "degenerate_faces",
     "duplicate_faces",
-    "boundary_edges",
     "non_manifold_edges",
     "non_manifold_vertices",
-    "non_orientable",
-    "disconnected",
     "other_problems",
 ];
 
@@ -51,6 +48,8 @@ fn check_report(v: &Value) {
         "components",
         "closed",
         "orientable",
+        "boundary_loops",
+        "boundary_edges",
         "simplicial",
         "valid",
         "reoriented_faces",
@@ -58,7 +57,12 @@ fn check_report(v: &Value) {
         "welded_vertices",
     ];
     expected.extend(CLASSES);
-    expected.extend(["problems_total", "problems_truncated", "problems"]);
+    expected.extend([
+        "problems_total",
+        "problems_truncated",
+        "problems",
+        "surfaces",
+    ]);
     assert_eq!(keys, expected);
     let total = v["problems_total"].as_u64().unwrap();
     let sum: u64 = CLASSES.iter().map(|k| v[k].as_u64().unwrap()).sum();
@@ -127,13 +131,6 @@ fn every_problem_class_is_counted_under_its_key() {
             "duplicate of face 0",
         ),
         (
-            "boundary.obj",
-            TETRA.replace("f 1 4 3\n", ""),
-            "boundary_edges",
-            3,
-            "boundary edge",
-        ),
-        (
             "nonmanifold_edge.obj",
             format!("{TETRA}v 1 1 1\nf 1 2 5\n"),
             "non_manifold_edges",
@@ -146,14 +143,6 @@ fn every_problem_class_is_counted_under_its_key() {
             "non_manifold_vertices",
             1,
             "non-manifold vertex",
-        ),
-        ("rp2.obj", rp2.into(), "non_orientable", 1, "non-orientable"),
-        (
-            "two.obj",
-            two_tetras,
-            "disconnected",
-            1,
-            "connected components",
         ),
     ];
     let dir = tempfile::tempdir().unwrap();
@@ -185,6 +174,29 @@ fn every_problem_class_is_counted_under_its_key() {
             .output()
             .unwrap();
         assert_eq!(strict.status.code(), Some(2), "{name}");
+    }
+    // Valid surfaces (boundary, no orientation, pieces are not problems): every class 0, each
+    // piece classified, `--strict` passes.
+    for (name, text, names) in [
+        ("open.obj", TETRA.replace("f 1 4 3\n", ""), vec!["disk"]),
+        ("rp2.obj", rp2.to_string(), vec!["projective plane"]),
+        ("two.obj", two_tetras, vec!["sphere", "sphere"]),
+    ] {
+        let path = write(dir.path(), name, &text);
+        let v = info_json(&path);
+        check_report(&v);
+        let got: Vec<&str> = v["surfaces"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(got, names, "{name}");
+        surftopo()
+            .args(["info", "--strict"])
+            .arg(&path)
+            .assert()
+            .success();
     }
     // A valid file: every class 0, genus given, `--strict` passes.
     let path = write(dir.path(), "tetra.obj", TETRA);

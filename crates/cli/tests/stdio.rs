@@ -482,3 +482,66 @@ fn ascii_stl_on_stdin_is_welded_and_stdin_obeys_the_input_limit() {
     );
     assert!(stdout.is_empty());
 }
+
+/// A reader that closes the pipe early (`surftopo ... -o - | head -c 10`), a stdout closed from
+/// the start (`>&-`) and a full stdout (`>/dev/full`) are unwritable outputs: exit 2 with a
+/// message naming stdout. A full stderr (`2>/dev/full`) loses the messages, never panics.
+#[test]
+fn closed_and_full_stdout_exit_2_and_a_full_stderr_never_panics() {
+    let dir = tempfile::tempdir().unwrap();
+    let bin = assert_cmd::cargo::cargo_bin("surftopo");
+    // Several megabytes of OBJ: far more than a pipe's buffer.
+    let mut child = std::process::Command::new(&bin)
+        .args([
+            "generate", "torus", "--m", "300", "--n", "300", "-o", "-", "--format", "obj",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 10];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    let output = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("stdout: not written"), "{stderr}");
+    let mesh = generated_genus_surface(dir.path(), "g.ply", 1);
+    let shell = |script: &str| {
+        std::process::Command::new("sh")
+            .arg("-c")
+            .arg(script)
+            .env("SURFTOPO", &bin)
+            .env("MESH", &mesh)
+            .output()
+            .unwrap()
+    };
+    for script in [
+        r#"exec "$SURFTOPO" info "$MESH" >&-"#,
+        r#"exec "$SURFTOPO" info "$MESH" --json >&-"#,
+        r#"exec "$SURFTOPO" convert "$MESH" - --format off >&-"#,
+        r#"exec "$SURFTOPO" info "$MESH" >/dev/full"#,
+    ] {
+        let out = shell(script);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{script}: {stderr}");
+        assert!(
+            stderr.contains("error: stdout: not written"),
+            "{script}: {stderr}"
+        );
+    }
+    // stdout to /dev/null is a choice, not a closed stdout.
+    let out = shell(r#"exec "$SURFTOPO" info "$MESH" >/dev/null"#);
+    assert_eq!(out.status.code(), Some(0));
+    for (script, code) in [
+        (r#"exec "$SURFTOPO" info /nonexistent/m.obj 2>/dev/full"#, 2),
+        (r#"exec "$SURFTOPO" info "$MESH" 2>/dev/full"#, 0),
+        (
+            r#"exec "$SURFTOPO" convert "$MESH" - --format off >/dev/null 2>/dev/full"#,
+            0,
+        ),
+        (r#"exec "$SURFTOPO" info "$MESH" 2>&-"#, 0),
+    ] {
+        let out = shell(script);
+        assert_eq!(out.status.code(), Some(code), "{script}");
+    }
+}

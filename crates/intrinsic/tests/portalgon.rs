@@ -642,17 +642,34 @@ fn exact_coordinates_round_trip_through_json() {
     // The same file in f64: the nearest doubles.
     let f = doc.to_portalgon(1e-9).unwrap();
     assert_eq!(f.start(f.side(PolygonId(0), 1))[0], 3000000001.0 / 3.0);
-    // A JSON number is the exact value of its double: 0.1 is not 1/10.
+    // A JSON number literal is the decimal it spells in exact mode (0.1 is 1/10), its nearest
+    // double in f64.
     let tenth =
         PortalgonDoc::from_json(r#"{"polygons": [{"corners": [[0, 0], [0.1, 0], [0, 1]]}]}"#)
-            .unwrap()
-            .to_portalgon_in::<Rational>(0.0)
             .unwrap();
-    assert_eq!(
-        tenth.start(tenth.side(PolygonId(0), 1))[0],
-        Rational::from_f64(0.1).unwrap()
+    let exact = tenth.to_portalgon_in::<Rational>(0.0).unwrap();
+    assert_eq!(exact.start(exact.side(PolygonId(0), 1))[0], r("1/10"));
+    let double = tenth.to_portalgon(1e-9).unwrap();
+    assert_eq!(double.start(double.side(PolygonId(0), 1))[0], 0.1);
+    // The double nearest 1/10, written exactly, is a string (its shortest text would be 1/10).
+    let near_tenth = Rational::from_f64(0.1).unwrap();
+    let mut q = surftopo_intrinsic::Portalgon::<Rational>::empty();
+    q.add_polygon(&[
+        [r("0"), r("0")],
+        [near_tenth.clone(), r("0")],
+        [r("0"), r("1")],
+    ])
+    .unwrap();
+    let written = PortalgonDoc::from_portalgon(&q).to_json().unwrap();
+    assert!(
+        written.contains(r#"["3602879701896397/36028797018963968",0.0]"#),
+        "{written}"
     );
-    assert_ne!(tenth.start(tenth.side(PolygonId(0), 1))[0], r("1/10"));
+    let back = PortalgonDoc::from_json(&written)
+        .unwrap()
+        .to_portalgon_in::<Rational>(0.0)
+        .unwrap();
+    assert_eq!(back.start(back.side(PolygonId(0), 1))[0], near_tenth);
     // Version-1 files are read as before; lengths are refused in exact mode.
     let t3 = PortalgonDoc::from_json(T3).unwrap();
     assert!(matches!(

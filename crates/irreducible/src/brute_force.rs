@@ -15,7 +15,10 @@ use std::time::Instant;
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
-use surftopo_mesh::{EdgeId, LinkScratch, SurfaceMesh};
+use surftopo_mesh::{
+    Contraction, EdgeId, Lifting, LinkScratch, Plain, SurfaceMesh, contract_lifts,
+    satisfies_link_condition,
+};
 
 use crate::tally::TestTally;
 use crate::{IrreducibleError, Reduction, check_simplicial};
@@ -33,31 +36,59 @@ use crate::{IrreducibleError, Reduction, check_simplicial};
 pub fn brute_force(mut mesh: SurfaceMesh, seed: u64) -> Result<Reduction, IrreducibleError> {
     check_simplicial(&mesh)?;
     let start = Instant::now();
+    let plain = Plain {
+        slots: mesh.vertex_slots(),
+    };
+    let (history, tally, contractions) = run(&mut mesh, &plain, seed);
+    Ok(Reduction::finish(
+        mesh,
+        history,
+        &tally,
+        contractions,
+        start,
+    ))
+}
+
+/// BF on the surface a mesh covers (see [`crate::reduce_surface`]): the edges of the surface
+/// (not the cones', one per mirror pair) are shuffled, the link condition is the surface's
+/// ([`satisfies_link_condition`]), contractions are made on every lift.
+pub(crate) fn run<L: Lifting>(
+    mesh: &mut SurfaceMesh,
+    lifting: &L,
+    seed: u64,
+) -> (Vec<Contraction>, TestTally, u64) {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut edges: Vec<EdgeId> = mesh.edges().collect();
+    let mut edges: Vec<EdgeId> = mesh
+        .edges()
+        .filter(|&e| {
+            lifting.edge_key(e) == e && !mesh.edge_vertices(e).iter().any(|&v| lifting.is_apex(v))
+        })
+        .collect();
     edges.shuffle(&mut rng);
     let mut failed = Vec::with_capacity(edges.len());
     let mut scratch = LinkScratch::default();
     let mut tally = TestTally::new(mesh.edge_slots());
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
+    let mut contractions = 0;
     loop {
-        let before = history.len();
+        let before = contractions;
         for e in edges.drain(..) {
             if !mesh.is_edge_live(e) {
                 continue;
             }
             tally.record(e);
             let h = e.halfedge();
-            if mesh.satisfies_link_condition(h, &mut scratch) {
-                history.push(mesh.contract_unchecked(h));
+            if satisfies_link_condition(mesh, lifting, h, &mut scratch) {
+                contract_lifts(mesh, lifting, h, &mut history);
+                contractions += 1;
             } else {
                 failed.push(e);
             }
         }
         std::mem::swap(&mut edges, &mut failed);
-        if history.len() == before {
+        if contractions == before {
             break;
         }
     }
-    Ok(Reduction::finish(mesh, history, &tally, start))
+    (history, tally, contractions)
 }

@@ -1,4 +1,4 @@
-//! surftopo-irreducible: irreducible triangulations of closed orientable surfaces by edge contractions.
+//! surftopo-irreducible: irreducible triangulations of compact surfaces by edge contractions.
 //!
 //! Paper: S. Ramaswami and M. Siqueira, "A fast algorithm for computing irreducible
 //! triangulations of closed surfaces in E^d", preprint (Rutgers University, Camden, and
@@ -26,9 +26,13 @@
 //! [`Counters`] (link-condition tests ℓ, edges tested more than once ε, contractions, seconds).
 //! [`is_irreducible`] is an independent check of the result.
 //!
-//! Input must be a closed, connected, orientable *simplicial* surface: the mesh type guarantees the
-//! first three (see `surftopo_mesh::build`); loops, multi-edges and the two-triangle sphere are
-//! refused with an [`IrreducibleError`] naming the offending element, before any work is done.
+//! [`reduce`] takes a closed, connected, orientable *simplicial* surface (a [`SurfaceMesh`]), as
+//! the paper does; [`reduce_surface`] takes any compact surface (boundary loops, non-orientable
+//! components, several pieces) as its [`ClosedCover`] and runs the same algorithms on it with Dey,
+//! Edelsbrunner, Guha and Nekhayev's link condition for complexes with boundary; its result is
+//! checked by [`is_irreducible_surface`], written from the triangles alone. Loops, multi-edges and
+//! the two-triangle sphere are refused with an [`IrreducibleError`] naming the offending element,
+//! before any work is done.
 
 mod brute_force;
 mod edge_lists;
@@ -44,9 +48,9 @@ pub use error::IrreducibleError;
 pub use ramaswami_siqueira::ramaswami_siqueira;
 pub use schipper::{LinkDictionaries, LinkTest, schipper, schipper_traced};
 pub use validate::check_simplicial;
-pub use verify::is_irreducible;
+pub use verify::{is_irreducible, is_irreducible_surface};
 
-pub use surftopo_mesh::{Contraction, SurfaceMesh};
+pub use surftopo_mesh::{ClosedCover, Contraction, SurfaceMesh};
 
 /// Which algorithm [`reduce`] runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -114,11 +118,23 @@ pub struct Counters {
     pub link_tests: u64,
     /// ε: number of edges (edge ids) tested more than once. Always 0 for RS.
     pub edges_tested_more_than_once: u64,
-    /// Number of edge contractions (= length of the history).
+    /// Number of edge contractions of the surface (the length of the history, or half of it on a
+    /// doubled non-orientable component, where each is made on both lifts).
     pub contractions: u64,
     /// Seconds spent in the algorithm alone (as the paper's `run()`): the input check is excluded,
     /// the algorithm's own set-up (attributes, dictionaries, shuffle) is included.
     pub seconds: f64,
+}
+
+impl Counters {
+    fn of(tally: &tally::TestTally, contractions: u64, start: std::time::Instant) -> Self {
+        Counters {
+            link_tests: tally.link_tests,
+            edges_tested_more_than_once: tally.repeated_edges,
+            contractions,
+            seconds: start.elapsed().as_secs_f64(),
+        }
+    }
 }
 
 /// The result of a reduction.
@@ -140,14 +156,10 @@ impl Reduction {
         mesh: SurfaceMesh,
         history: Vec<Contraction>,
         tally: &tally::TestTally,
+        contractions: u64,
         start: std::time::Instant,
     ) -> Self {
-        let counters = Counters {
-            link_tests: tally.link_tests,
-            edges_tested_more_than_once: tally.repeated_edges,
-            contractions: history.len() as u64,
-            seconds: start.elapsed().as_secs_f64(),
-        };
+        let counters = Counters::of(tally, contractions, start);
         Self {
             mesh,
             history,
@@ -167,4 +179,63 @@ pub fn reduce(mesh: SurfaceMesh, algorithm: Algorithm) -> Result<Reduction, Irre
         Algorithm::Schipper => schipper(mesh),
         Algorithm::BruteForce { seed } => brute_force(mesh, seed),
     }
+}
+
+/// The result of [`reduce_surface`].
+#[derive(Clone, Debug)]
+pub struct SurfaceReduction {
+    /// The irreducible triangulation, as its cover with tombstones: surviving vertices keep
+    /// their classes (the input's vertex ids); [`ClosedCover::surface_triangles`] lists it.
+    pub cover: ClosedCover,
+    /// The contractions of the cover's mesh in order (both lifts of each contraction of a
+    /// doubled component, one after the other); replaying `split_vertex` from last to first
+    /// gives back the input cover.
+    pub history: Vec<Contraction>,
+    /// ℓ, ε, contractions (of the surface) and seconds.
+    pub counters: Counters,
+}
+
+/// An irreducible triangulation of any compact surface: closed or with boundary, orientable or
+/// not, in one piece or several (each reduced on its own), with the chosen algorithm.
+///
+/// What the paper covers and what is ours: the paper treats closed orientable surfaces (its DCEL
+/// is orientable; its conclusion states that the algorithm extends to non-orientable ones with
+/// the same bounds in the Euler genus h, and names surfaces with boundary as the next step). Here
+/// every algorithm runs unchanged on the surface's [`ClosedCover`]: its vertices are the cover's
+/// vertex classes, each contraction is made on every lift, and the link condition is the one of
+/// Dey, Edelsbrunner, Guha and Nekhayev for complexes with boundary, with the apexes closing the
+/// boundary loops counted as one vertex ω that is never processed nor contracted (so RS and S
+/// treat ω as a vertex of degree ∞ that is always trapped; RS's decision 9 finds the critical
+/// cycles through ω from the lte side). A component is irreducible when no edge satisfies that
+/// condition: a closed surface as in the paper; a disk reduces to one triangle.
+///
+/// # Errors
+/// [`IrreducibleError`] if the cover's mesh is not simplicial (nothing is done then; a cover
+/// built from a soup always is).
+pub fn reduce_surface(
+    mut cover: ClosedCover,
+    algorithm: Algorithm,
+) -> Result<SurfaceReduction, IrreducibleError> {
+    if cover.is_plain() {
+        let reduction = reduce(cover.mesh, algorithm)?;
+        return Ok(SurfaceReduction {
+            cover: ClosedCover::plain(reduction.mesh),
+            history: reduction.history,
+            counters: reduction.counters,
+        });
+    }
+    check_simplicial(&cover.mesh)?;
+    let start = std::time::Instant::now();
+    let (mesh, sheets) = (&mut cover.mesh, &cover.sheets);
+    let (history, tally, contractions) = match algorithm {
+        Algorithm::RamaswamiSiqueira => ramaswami_siqueira::run(mesh, sheets),
+        Algorithm::Schipper => schipper::run_lifted(mesh, sheets, |_, _, _| {}),
+        Algorithm::BruteForce { seed } => brute_force::run(mesh, sheets, seed),
+    };
+    let counters = Counters::of(&tally, contractions, start);
+    Ok(SurfaceReduction {
+        cover,
+        history,
+        counters,
+    })
 }

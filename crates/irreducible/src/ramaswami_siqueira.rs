@@ -61,12 +61,27 @@
 //!    The two versions gave identical histories on 101 inputs (all shared meshes, genus up to
 //!    3,500); the time bound of Theorem 12 is unchanged, since the cost is at most the paper's.
 //!
+//! 9. **Surfaces beyond the paper** ([`crate::reduce_surface`]): K is the surface a closed
+//!    oriented mesh covers; every vertex of the pseudocode is a vertex class (both lifts of a
+//!    vertex of a doubled non-orientable component; all apexes closing the boundary form one
+//!    class ω), attributes are kept per class, rotations are read at a lift (a lift's star is
+//!    the vertex's star), and CONTRACT contracts both lifts. ω is processed from the start (p =
+//!    true), so no edge to it enters lue and none is tested or contracted; its critical cycles
+//!    (u, z, ω) make an interior edge between two boundary vertices non-contractible, which is
+//!    Dey et al.'s rule. Lines 33–41 of Algorithm 4.5 find the cycles through a new neighbour
+//!    z = ω from the lte side always (ω's link is every boundary vertex, so the paper's scan of
+//!    lk(z) would be long and would need all apexes). Degrees are those of the coned surface, so
+//!    Proposition 6 holds as stated (a boundary vertex of degree 3 is an ear: its two boundary
+//!    edges contract).
+//!
 //! Attributes are one flat array of small structs indexed by vertex id (no hashing): d, p, n, c,
 //! o, t of Table 1, with `u32::MAX` standing for the paper's −1 and nil.
 
 use std::time::Instant;
 
-use surftopo_mesh::{Contraction, HalfedgeId, SurfaceMesh, VertexId};
+use surftopo_mesh::{
+    Contraction, HalfedgeId, Lifting, Plain, SurfaceMesh, VertexId, contract_lifts,
+};
 
 use crate::edge_lists::{EdgeLists, List};
 use crate::tally::TestTally;
@@ -110,10 +125,29 @@ struct Attributes {
 pub fn ramaswami_siqueira(mut mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
     check_simplicial(&mesh)?;
     let start = Instant::now();
-    let mut rs = Rs::initialization(&mut mesh);
+    let plain = Plain {
+        slots: mesh.vertex_slots(),
+    };
+    let (stack, tally, contractions) = run(&mut mesh, &plain);
+    Ok(Reduction::finish(mesh, stack, &tally, contractions, start))
+}
+
+/// RS on the surface a mesh covers (see [`crate::reduce_surface`]): every vertex below is a
+/// vertex class of the surface, every edit is made on every lift; returns the history, the tally
+/// and the number of contractions of the surface.
+pub(crate) fn run<L: Lifting>(
+    mesh: &mut SurfaceMesh,
+    lifting: &L,
+) -> (Vec<Contraction>, TestTally, u64) {
+    let mut rs = Rs::initialization(mesh, lifting);
     rs.contractions();
-    let Rs { stack, st, .. } = rs;
-    Ok(Reduction::finish(mesh, stack, &st.tally, start))
+    let Rs {
+        stack,
+        st,
+        contractions,
+        ..
+    } = rs;
+    (stack, st.tally, contractions)
 }
 
 /// Everything but the mesh, so that the mesh can be read while the state changes.
@@ -130,9 +164,13 @@ struct State {
     tally: TestTally,
 }
 
-struct Rs<'m> {
-    /// K, the current triangulation.
+struct Rs<'m, L> {
+    /// K, the current triangulation (as the mesh that covers it).
     mesh: &'m mut SurfaceMesh,
+    /// How the mesh stands for K: vertex classes are K's vertices.
+    lifting: &'m L,
+    /// Contractions of K made.
+    contractions: u64,
     st: State,
     /// S: the contraction records.
     stack: Vec<Contraction>,
@@ -193,10 +231,12 @@ impl State {
     }
 }
 
-impl<'m> Rs<'m> {
+impl<'m, L: Lifting> Rs<'m, L> {
     /// INITIALIZATION (Algorithm 4.1): d, p, n, c, o, t of every vertex; Q is the id order.
-    fn initialization(mesh: &'m mut SurfaceMesh) -> Self {
-        let slots = mesh.vertex_slots();
+    /// The apexes closing the boundary form one vertex, processed from the start (never
+    /// processed, never contracted).
+    fn initialization(mesh: &'m mut SurfaceMesh, lifting: &'m L) -> Self {
+        let slots = lifting.class_count();
         let mut attr = vec![
             Attributes {
                 d: 0,
@@ -211,11 +251,17 @@ impl<'m> Rs<'m> {
         for i in 0..mesh.halfedge_slots() {
             let v = mesh.origin(HalfedgeId::new(i));
             if v.is_valid() {
-                attr[v.idx()].d += 1;
+                attr[lifting.class(v) as usize].d += 1;
             }
         }
         for (i, a) in attr.iter_mut().enumerate() {
-            a.p = !mesh.is_vertex_live(VertexId::new(i));
+            let lift = lifting.lift(i as u32);
+            a.p = !(lift.is_valid() && mesh.is_vertex_live(lift))
+                || lifting.apex_class() == Some(i as u32);
+            // Both lifts of a doubled vertex were counted.
+            if lifting.doubled() && !a.p && lifting.mirror(mesh.vertex_halfedge(lift)).is_some() {
+                a.d /= 2;
+            }
         }
         let edges = mesh.edge_slots();
         Rs {
@@ -231,6 +277,8 @@ impl<'m> Rs<'m> {
             temp: Vec::new(),
             hits: Vec::new(),
             mesh,
+            lifting,
+            contractions: 0,
         }
     }
 
@@ -245,11 +293,12 @@ impl<'m> Rs<'m> {
 
     /// Lines 7–35 of Algorithm 4.2: contracts edges at u until u is trapped.
     fn process(&mut self, u: VertexId) {
+        let (mesh, lifting) = (&*self.mesh, self.lifting);
         let st = &mut self.st;
         st.u = u;
         // Lines 7–19: lue holds the edges to unprocessed neighbours, degree-3 ones first.
-        for h in self.mesh.outgoing(u) {
-            let v = self.mesh.dest(h);
+        for h in mesh.outgoing(lifting.lift(u.0)) {
+            let v = VertexId(lifting.class(mesh.dest(h)));
             let a = &mut st.attr[v.idx()];
             a.n = u.0;
             a.o = st.ts;
@@ -322,19 +371,23 @@ impl<'m> Rs<'m> {
     /// is also added to c(z) when [u, z] was tested before v became a neighbour of u. Contracts
     /// [u, v] when c(v) = 0, else appends it to lte. O(d(v)).
     fn process_vertex_of_degree_gt3(&mut self, v: VertexId) {
-        let mesh = &*self.mesh;
+        let (mesh, lifting) = (&*self.mesh, self.lifting);
+        let class = |w: VertexId| VertexId(lifting.class(w));
         let st = &mut self.st;
         let u = st.u;
         let h = st.to[v.idx()];
-        debug_assert_eq!((mesh.origin(h), mesh.dest(h)), (u, v));
-        let first = st.tally.record(h.edge());
+        debug_assert_eq!((class(mesh.origin(h)), class(mesh.dest(h))), (u, v));
+        let first = st.tally.record(lifting.edge_key(h.edge()));
         debug_assert!(first, "edge {:?} = [{u:?}, {v:?}] tested twice", h.edge());
-        let (x, y) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
+        let (x, y) = (
+            class(mesh.opposite_vertex(h)),
+            class(mesh.opposite_vertex(h.twin())),
+        );
         let ov = st.attr[v.idx()].o;
         debug_assert_eq!(st.attr[v.idx()].c, 0, "Proposition 8 (6)");
         let mut cv = 0;
-        for hz in mesh.outgoing(v) {
-            let z = mesh.dest(hz);
+        for hz in mesh.outgoing(mesh.dest(h)) {
+            let z = class(mesh.dest(hz));
             if z == u || z == x || z == y {
                 continue;
             }
@@ -359,20 +412,25 @@ impl<'m> Rs<'m> {
     /// processed neighbours z of u for the edges [u, w] of lte. Returns the link {x, y} of [u, v].
     /// O(d(v) + Σ d(z) over the new processed neighbours z).
     fn contract(&mut self, v: VertexId) -> [VertexId; 2] {
+        let lifting = self.lifting;
+        let class = |w: VertexId| VertexId(lifting.class(w));
         let st = &mut self.st;
         let u = st.u;
         let h = st.to[v.idx()];
         let (x, y) = {
             let mesh = &*self.mesh;
-            debug_assert_eq!((mesh.origin(h), mesh.dest(h)), (u, v));
-            (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()))
+            debug_assert_eq!((class(mesh.origin(h)), class(mesh.dest(h))), (u, v));
+            (
+                class(mesh.opposite_vertex(h)),
+                class(mesh.opposite_vertex(h.twin())),
+            )
         };
         st.ts += 1;
         let ts = st.ts;
         // Lines 4–11 (and temp, which COLLAPSE fills in the paper): the new neighbours Π_uv.
         self.temp.clear();
-        for hz in self.mesh.outgoing(v) {
-            let z = self.mesh.dest(hz);
+        for hz in self.mesh.outgoing(self.mesh.dest(h)) {
+            let z = class(self.mesh.dest(hz));
             if z == u || z == x || z == y {
                 continue;
             }
@@ -386,8 +444,9 @@ impl<'m> Rs<'m> {
             self.temp.push(hz);
         }
         st.attr[v.idx()].p = true;
-        // Lines 13–15: the record of S, and COLLAPSE (Algorithm 4.7).
-        self.stack.push(self.mesh.contract_unchecked(h));
+        // Lines 13–15: the record of S, and COLLAPSE (Algorithm 4.7), on every lift.
+        contract_lifts(self.mesh, lifting, h, &mut self.stack);
+        self.contractions += 1;
         // Lines 16–24.
         let dv = st.attr[v.idx()].d;
         st.attr[x.idx()].d -= 1;
@@ -403,27 +462,35 @@ impl<'m> Rs<'m> {
         // Lines 25–43.
         let mesh = &*self.mesh;
         for &hz in &self.temp {
-            let z = mesh.dest(hz);
+            let z = class(mesh.dest(hz));
             if !st.attr[z.idx()].p {
                 st.insert_unprocessed(z);
                 continue;
             }
-            let (x2, y2) = (mesh.opposite_vertex(hz), mesh.opposite_vertex(hz.twin()));
-            if lte_links_are_shorter(st, st.attr[z.idx()].d) {
-                // Decision 8: the same w, found from the (unprocessed, low-degree) lte side.
+            let (x2, y2) = (
+                class(mesh.opposite_vertex(hz)),
+                class(mesh.opposite_vertex(hz.twin())),
+            );
+            // The apexes are one vertex ω whose link is every boundary vertex: always from the
+            // lte side (decision 9).
+            if lifting.apex_class() == Some(z.0) || lte_links_are_shorter(st, st.attr[z.idx()].d) {
+                // Decision 8: the same w, found from the (unprocessed, low-degree) lte side. Any
+                // lift of w has the same neighbouring classes.
                 self.hits.clear();
-                self.hits.extend(
-                    st.lists
-                        .iter(List::Lte)
-                        .map(VertexId)
-                        .filter(|&w| w != x2 && w != y2 && mesh.neighbors(w).any(|k| k == z)),
-                );
+                self.hits
+                    .extend(st.lists.iter(List::Lte).map(VertexId).filter(|&w| {
+                        w != x2
+                            && w != y2
+                            && mesh
+                                .neighbors(lifting.lift(w.0))
+                                .any(|k| lifting.class(k) == z.0)
+                    }));
                 for &w in &self.hits {
                     st.increment(w);
                 }
             } else {
-                for hw in mesh.outgoing(z) {
-                    let w = mesh.dest(hw);
+                for hw in mesh.outgoing(mesh.dest(hz)) {
+                    let w = class(mesh.dest(hw));
                     if w == u || w == x2 || w == y2 {
                         continue;
                     }

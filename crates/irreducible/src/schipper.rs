@@ -23,7 +23,9 @@
 use std::collections::BTreeSet;
 use std::time::Instant;
 
-use surftopo_mesh::{EdgeId, HalfedgeId, SurfaceMesh, VertexId};
+use surftopo_mesh::{
+    Contraction, EdgeId, HalfedgeId, Lifting, Plain, SurfaceMesh, VertexId, contract_lifts,
+};
 
 use crate::tally::TestTally;
 use crate::{IrreducibleError, Reduction, check_simplicial};
@@ -74,91 +76,168 @@ pub fn schipper_traced(mesh: SurfaceMesh) -> Result<(Reduction, Vec<LinkTest>), 
 
 fn run(
     mut mesh: SurfaceMesh,
-    mut on_test: impl FnMut(&SurfaceMesh, HalfedgeId, usize),
+    on_test: impl FnMut(&SurfaceMesh, HalfedgeId, usize),
 ) -> Result<Reduction, IrreducibleError> {
     check_simplicial(&mesh)?;
     let start = Instant::now();
-    let mut dict = LinkDictionaries::new(&mesh);
-    let mut by_degree: BTreeSet<(u32, u32)> =
-        mesh.vertices().map(|v| (dict.degree(v), v.0)).collect();
+    let plain = Plain {
+        slots: mesh.vertex_slots(),
+    };
+    let (history, tally, contractions) = run_lifted(&mut mesh, &plain, on_test);
+    Ok(Reduction::finish(
+        mesh,
+        history,
+        &tally,
+        contractions,
+        start,
+    ))
+}
+
+/// S on the surface a mesh covers (see [`crate::reduce_surface`]): the vertices are the vertex
+/// classes (the apexes closing the boundary are never chosen, and edges to them are not the
+/// surface's: never tested), the link condition is Dey et al.'s with the apexes as one vertex,
+/// contractions are made on every lift. `on_test` sees each test with the number of
+/// contractions made before it.
+pub(crate) fn run_lifted<L: Lifting>(
+    mesh: &mut SurfaceMesh,
+    lifting: &L,
+    mut on_test: impl FnMut(&SurfaceMesh, HalfedgeId, usize),
+) -> (Vec<Contraction>, TestTally, u64) {
+    let class = |v: VertexId| VertexId(lifting.class(v));
+    let mut dict = LinkDictionaries::of(mesh, lifting);
+    // (degree, vertex) packed as `degree << 32 | vertex`: the same order, one integer compare.
+    let key = |degree: u32, v: u32| u64::from(degree) << 32 | u64::from(v);
+    let mut by_degree: BTreeSet<u64> = (0..lifting.class_count() as u32)
+        .filter(|&c| lifting.apex_class() != Some(c))
+        .filter(|&c| lifting.lift(c).is_valid() && mesh.is_vertex_live(lifting.lift(c)))
+        .map(|c| key(dict.degree(VertexId(c)), c))
+        .collect();
     let mut tally = TestTally::new(mesh.edge_slots());
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
+    let mut contractions = 0u64;
     let mut fan: Vec<HalfedgeId> = Vec::new();
-    while let Some(&(degree, vi)) = by_degree.first() {
+    while let Some(&first) = by_degree.first() {
+        let vi = first as u32;
         let v = VertexId(vi);
         fan.clear();
-        fan.extend(mesh.outgoing(v));
+        fan.extend(
+            mesh.outgoing(lifting.lift(vi))
+                .filter(|&h| !lifting.is_apex(mesh.dest(h))),
+        );
         let found = fan.iter().copied().find(|&h| {
-            tally.record(h.edge());
-            on_test(&mesh, h, history.len());
-            dict.link_condition(&mesh, h)
+            tally.record(lifting.edge_key(h.edge()));
+            on_test(mesh, h, contractions as usize);
+            dict.link_condition_of(mesh, lifting, h)
         });
         let Some(h) = found else {
-            by_degree.remove(&(degree, vi)); // v is trapped, and stays so (Lemma 5)
+            by_degree.remove(&first); // v is trapped, and stays so (Lemma 5)
             continue;
         };
-        let w = mesh.dest(h);
-        let (x, y) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
-        let old = [w, x, y].map(|z| (dict.degree(z), z.0));
-        history.push(mesh.contract_unchecked(h.twin())); // v identified with w
+        let w = class(mesh.dest(h));
+        let (x, y) = (
+            class(mesh.opposite_vertex(h)),
+            class(mesh.opposite_vertex(h.twin())),
+        );
+        let old = [w, x, y].map(|z| key(dict.degree(z), z.0));
+        contract_lifts(mesh, lifting, h.twin(), &mut history); // v identified with w
+        contractions += 1;
         dict.contract(v, w, [x, y]);
-        by_degree.remove(&(degree, vi));
-        for (key, z) in old.into_iter().zip([w, x, y]) {
-            if by_degree.remove(&key) {
-                by_degree.insert((dict.degree(z), z.0));
+        by_degree.remove(&first);
+        for (old_key, z) in old.into_iter().zip([w, x, y]) {
+            if by_degree.remove(&old_key) {
+                by_degree.insert(key(dict.degree(z), z.0));
             }
         }
     }
-    Ok(Reduction::finish(mesh, history, &tally, start))
+    (history, tally, contractions)
 }
 
-/// S's dictionaries D_u (Section 3 of the paper): for every vertex slot, the ids of the vertices of
-/// its link lk(u, K), sorted; empty for a removed vertex. Public so that the bench's variants of S
+/// S's dictionaries D_u (Section 3 of the paper): for every vertex slot (vertex class, on a
+/// covered surface), the vertices of its link lk(u, K), sorted; empty for a removed vertex and
+/// for the apexes' class (never tested, so not kept). Public so that the bench's variants of S
 /// (`schipper_epsilon`, `schipper_time`) use the same dictionaries as [`schipper`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct LinkDictionaries(Vec<Vec<u32>>);
+pub struct LinkDictionaries {
+    links: Vec<Vec<u32>>,
+    /// The apexes' class, `u32::MAX` when there is none.
+    apex: u32,
+}
 
 impl LinkDictionaries {
     /// The dictionaries of `mesh`, one per vertex slot. O(n lg d).
     pub fn new(mesh: &SurfaceMesh) -> Self {
-        let dict = (0..mesh.vertex_slots())
-            .map(|i| {
-                let v = VertexId::new(i);
-                if !mesh.is_vertex_live(v) {
+        Self::of(
+            mesh,
+            &Plain {
+                slots: mesh.vertex_slots(),
+            },
+        )
+    }
+
+    /// The dictionaries of the surface `mesh` covers, one per vertex class. O(n lg d).
+    pub fn of<L: Lifting>(mesh: &SurfaceMesh, lifting: &L) -> Self {
+        let links = (0..lifting.class_count() as u32)
+            .map(|c| {
+                let v = lifting.lift(c);
+                if lifting.apex_class() == Some(c) || !v.is_valid() || !mesh.is_vertex_live(v) {
                     return Vec::new();
                 }
-                let mut link: Vec<u32> = mesh.neighbors(v).map(|w| w.0).collect();
+                let mut link: Vec<u32> = mesh.neighbors(v).map(|w| lifting.class(w)).collect();
                 link.sort_unstable();
                 link
             })
             .collect();
-        Self(dict)
+        Self {
+            links,
+            apex: lifting.apex_class().unwrap_or(u32::MAX),
+        }
     }
 
     /// The degree of `v`: the size of D_v.
     #[inline]
     pub fn degree(&self, v: VertexId) -> u32 {
-        self.0[v.idx()].len() as u32
+        self.links[v.idx()].len() as u32
     }
 
     /// The link condition for `h = v → w` in `mesh`, whose dictionaries these are: K is not T4 and
     /// no vertex of D_v but w and the two vertices opposite [v, w] belongs to D_w. O(d_v lg d_w).
     #[inline]
     pub fn link_condition(&self, mesh: &SurfaceMesh, h: HalfedgeId) -> bool {
-        let (v, w) = (mesh.origin(h), mesh.dest(h));
-        let (dv, dw) = (&self.0[v.idx()], &self.0[w.idx()]);
+        let plain = Plain {
+            slots: mesh.vertex_slots(),
+        };
+        self.link_condition_of(mesh, &plain, h)
+    }
+
+    /// [`Self::link_condition`] on the surface `mesh` covers, on vertex classes: the apexes are
+    /// one vertex (Dey et al.'s ω), and an edge at an apex is never contractible.
+    #[inline]
+    pub fn link_condition_of<L: Lifting>(
+        &self,
+        mesh: &SurfaceMesh,
+        lifting: &L,
+        h: HalfedgeId,
+    ) -> bool {
+        let (v, w) = (lifting.class(mesh.origin(h)), lifting.class(mesh.dest(h)));
+        if lifting.apex_class().is_some_and(|a| a == v || a == w) {
+            return false;
+        }
+        let (dv, dw) = (&self.links[v as usize], &self.links[w as usize]);
         if dv.len() == 3 && dw.len() == 3 {
             return false; // K is T4 (Proposition 6)
         }
-        let (x, y) = (mesh.opposite_vertex(h).0, mesh.opposite_vertex(h.twin()).0);
+        let (x, y) = (
+            lifting.class(mesh.opposite_vertex(h)),
+            lifting.class(mesh.opposite_vertex(h.twin())),
+        );
         !dv.iter()
-            .any(|&z| z != w.0 && z != x && z != y && dw.binary_search(&z).is_ok())
+            .any(|&z| z != w && z != x && z != y && dw.binary_search(&z).is_ok())
     }
 
     /// The update for contracting the edge between `removed` and `kept` into `kept`, `opposite`
     /// being the edge's two opposite vertices: D_removed is emptied and returned, `removed` leaves
     /// the other dictionaries, and `kept` and each vertex of D_removed but `kept` and `opposite`
-    /// enter each other's.
+    /// enter each other's (the apexes' dictionary is not kept).
     pub fn contract(
         &mut self,
         removed: VertexId,
@@ -166,16 +245,20 @@ impl LinkDictionaries {
         opposite: [VertexId; 2],
     ) -> Vec<u32> {
         let [x, y] = opposite;
-        let link = std::mem::take(&mut self.0[removed.idx()]);
+        let link = std::mem::take(&mut self.links[removed.idx()]);
         for z in [kept, x, y] {
-            dict_remove(&mut self.0[z.idx()], removed.0);
+            if z.0 != self.apex {
+                dict_remove(&mut self.links[z.idx()], removed.0);
+            }
         }
         for &z in &link {
             if z != kept.0 && z != x.0 && z != y.0 {
-                let dz = &mut self.0[z as usize];
-                dict_remove(dz, removed.0);
-                dict_insert(dz, kept.0);
-                dict_insert(&mut self.0[kept.idx()], z);
+                if z != self.apex {
+                    let dz = &mut self.links[z as usize];
+                    dict_remove(dz, removed.0);
+                    dict_insert(dz, kept.0);
+                }
+                dict_insert(&mut self.links[kept.idx()], z);
             }
         }
         link

@@ -22,14 +22,14 @@ pub enum GraphError {
         /// Number of edges in the input.
         edge_count: usize,
     },
-    /// An edge names a node that does not exist.
+    /// An edge of the list names a node beyond the node count.
     #[error("edge {edge}: node {node} out of range ({node_count} nodes)")]
     NodeOutOfRange {
-        /// The offending edge.
+        /// The edge's index in the list.
         edge: u32,
         /// The node index it names.
         node: u32,
-        /// Number of nodes of the graph.
+        /// The node count given.
         node_count: u32,
     },
     /// An edge joins a node to itself.

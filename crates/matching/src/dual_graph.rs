@@ -280,11 +280,28 @@ impl<'g, G: DualGraph + ?Sized> CompactDual<'g, G> {
     }
 }
 
+/// The [`DualGraph`] methods that read a flat adjacency array, the field `adjacency` of the
+/// implementing type (`[(edge, neighbour); 3]` per node slot): its length is the node slots.
+macro_rules! flat_adjacency_methods {
+    () => {
+        #[inline]
+        fn node_slots(&self) -> usize {
+            self.adjacency.len()
+        }
+        #[inline]
+        fn adjacent(&self, v: u32) -> [(u32, u32); 3] {
+            self.adjacency[v as usize]
+        }
+        #[inline]
+        fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
+            Some(&self.adjacency)
+        }
+    };
+}
+pub(crate) use flat_adjacency_methods;
+
 impl<G: DualGraph + ?Sized> DualGraph for CompactDual<'_, G> {
-    #[inline]
-    fn node_slots(&self) -> usize {
-        self.adjacency.len()
-    }
+    flat_adjacency_methods!();
     #[inline]
     fn edge_slots(&self) -> usize {
         self.graph.edge_slots()
@@ -300,14 +317,6 @@ impl<G: DualGraph + ?Sized> DualGraph for CompactDual<'_, G> {
     #[inline]
     fn node_count(&self) -> usize {
         self.graph.node_count()
-    }
-    #[inline]
-    fn adjacent(&self, v: u32) -> [(u32, u32); 3] {
-        self.adjacency[v as usize]
-    }
-    #[inline]
-    fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
-        Some(&self.adjacency)
     }
     #[inline]
     fn endpoints(&self, e: u32) -> [u32; 2] {

@@ -33,14 +33,14 @@ pub enum MatchingError {
         /// Number of edges of the graph.
         edge_count: usize,
     },
-    /// An edge names a node that does not exist.
-    #[error("edge {edge}: node {node} out of range ({node_count} nodes)")]
-    NodeOutOfRange {
-        /// The offending edge.
+    /// A matched edge of a raw edge list has an end beyond the node count.
+    #[error("matched edge {edge} ends at node {end}, beyond the {node_count} nodes")]
+    MatchedEdgeEndOutOfRange {
+        /// The matched edge.
         edge: u32,
-        /// The node index it names.
-        node: u32,
-        /// Number of nodes.
+        /// Its end out of range.
+        end: u32,
+        /// The node count given.
         node_count: u32,
     },
     /// A matched edge is a loop (it would cover its node twice).
@@ -157,9 +157,9 @@ fn verify_edge_list(
         }
         for node in [a, b] {
             let Some(slot) = cover.get_mut(node as usize) else {
-                return Err(MatchingError::NodeOutOfRange {
+                return Err(MatchingError::MatchedEdgeEndOutOfRange {
                     edge: e,
-                    node,
+                    end: node,
                     node_count,
                 });
             };

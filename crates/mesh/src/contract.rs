@@ -25,7 +25,7 @@ pub struct Contraction {
     /// Stored half-edges of the faces `[u,v,x]`, `[u,v,y]` and of the faces across `[v,x]` and `[v,y]`.
     face_halfedges: [HalfedgeId; 4],
     vertices: [VertexId; 4],
-    faces: [FaceId; 4],
+    pub(crate) faces: [FaceId; 4],
 }
 
 impl Contraction {
@@ -66,12 +66,12 @@ impl Contraction {
 /// Reusable marks for link-condition tests (generation-stamped, so a test costs O(degree)).
 #[derive(Clone, Debug, Default)]
 pub struct LinkScratch {
-    mark: Vec<u32>,
+    pub(crate) mark: Vec<u32>,
     stamp: u32,
 }
 
 impl LinkScratch {
-    fn next_stamp(&mut self, slots: usize) -> u32 {
+    pub(crate) fn next_stamp(&mut self, slots: usize) -> u32 {
         if self.mark.len() < slots {
             self.mark.resize(slots, 0);
         }

@@ -121,6 +121,11 @@ pub fn edge_lengths(mesh: &SurfaceMesh, positions: &[Point3]) -> Vec<f64> {
 /// Area of a face from positions.
 pub fn face_area(mesh: &SurfaceMesh, positions: &[Point3], f: FaceId) -> f64 {
     let [a, b, c] = mesh.face_vertices(f).map(|v| positions[v.idx()]);
+    triangle_area(a, b, c)
+}
+
+/// The area of triangle (a, b, c).
+pub fn triangle_area(a: Point3, b: Point3, c: Point3) -> f64 {
     let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
     let w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
     let n = [

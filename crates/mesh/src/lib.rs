@@ -1,7 +1,11 @@
-//! surftopo-mesh: index-based half-edge triangulations of closed surfaces.
+//! surftopo-mesh: index-based half-edge triangulations of compact surfaces.
 //!
 //! - [`SurfaceMesh`]: the topology (struct of arrays, `twin(h) = h ^ 1`, tombstones).
-//! - [`build()`] / [`inspect`]: from a triangle soup, with typed validation errors ([`BuildError`]).
+//! - [`build()`] / [`inspect`]: from a triangle soup, with typed validation errors ([`BuildError`]);
+//!   [`inspect`] classifies each component ([`SurfaceKind`]).
+//! - [`ClosedCover`]: any compact surface (boundary loops, non-orientable, several components) as
+//!   a closed oriented mesh that covers it, with its [`Lifting`]; edits of the surface on every
+//!   lift ([`contract_lifts`], [`flip_lifts`], [`split_lifts`], [`satisfies_link_condition`]).
 //! - Edits with their checks: [`SurfaceMesh::flip`], [`SurfaceMesh::contract`] /
 //!   [`SurfaceMesh::split_vertex`], [`SurfaceMesh::compact`], [`geometry::reorder_morton`].
 //! - [`geometry`]: positions and edge lengths beside the topology; [`Surface`]: a mesh with its
@@ -12,6 +16,7 @@
 mod build;
 mod compact;
 mod contract;
+mod cover;
 pub mod decimal;
 mod error;
 mod flip;
@@ -26,10 +31,15 @@ mod topology;
 mod union_find;
 
 pub use build::{
-    BuildReport, Inspection, MAX_LISTED_PROBLEMS, ProblemCounts, build, build_topology, inspect,
+    BuildReport, Inspection, MAX_LISTED_PROBLEMS, ProblemCounts, SurfaceKind, build,
+    build_topology, face_components, inspect,
 };
 pub use compact::Renumbering;
 pub use contract::{Contraction, LinkScratch};
+pub use cover::{
+    ClosedCover, CoveredSurface, Lifting, Plain, Sheets, contract_lifts, flip_lifts,
+    satisfies_link_condition, split_lifts,
+};
 pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};

@@ -233,12 +233,6 @@ impl SurfaceMesh {
         }
         true
     }
-
-    /// The tetrahedron boundary as a mesh (the smallest simplicial closed surface).
-    pub fn tetrahedron() -> Self {
-        crate::build::build_topology(4, &[[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])
-            .expect("the tetrahedron is a valid closed surface")
-    }
 }
 
 /// Iterator over the outgoing half-edges of a vertex (see [`SurfaceMesh::outgoing`]).

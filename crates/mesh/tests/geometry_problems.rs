@@ -75,14 +75,21 @@ fn problems_lists_non_finite_coordinates_then_zero_area_faces() {
 
 #[test]
 fn counts_sum_to_the_total_and_geometric_problems_come_first() {
-    // An open tetrahedron (3 boundary edges), then 150 zero-area faces found by geometry.
-    let mut ins = inspect(4, &TETRA[..3]);
-    assert_eq!(ins.counts.boundary_edges, 3);
-    assert!(ins.genus().is_none());
+    // An open tetrahedron (a disk: 3 boundary edges, not problems) with a fourth face on one
+    // of its edges (a non-manifold edge), then 150 zero-area faces found by geometry.
+    let ins = inspect(4, &TETRA[..3]);
+    assert_eq!((ins.boundary_edges, ins.problem_count), (3, 0));
+    assert_eq!(ins.surfaces[0].name(), "disk");
+    assert_eq!(ins.genus(), Some(0));
+    let mut fin = TETRA[..3].to_vec();
+    fin.push([0, 1, 4]);
+    let mut ins = inspect(5, &fin);
+    assert_eq!(ins.counts.non_manifold_edges, 1);
+    assert!(ins.genus().is_none() && ins.surfaces.is_empty());
     ins.add_problems_first((0..150).map(|face| BuildError::ZeroArea { face }));
     assert_eq!(ins.counts.zero_area_faces, 150);
-    assert_eq!(ins.problem_count, 153);
-    assert_eq!(ins.counts.total(), 153);
+    assert_eq!(ins.problem_count, 151);
+    assert_eq!(ins.counts.total(), 151);
     assert_eq!(ins.counts.geometric(), 150);
     assert_eq!(ins.problems.len(), MAX_LISTED_PROBLEMS);
     assert!(ins.is_truncated());

@@ -19,7 +19,8 @@ use surftopo_quad::QuadError;
 /// Why a call failed, before it becomes a Python exception.
 #[derive(Debug)]
 pub enum Failure {
-    /// The soup is not a closed connected orientable surface.
+    /// The soup is not a triangulated surface, or not one the function takes (closed,
+    /// connected, orientable).
     Build(BuildError),
     /// A face index outside `0..vertex_count` (negative or too large for the array's dtype).
     Index {
@@ -298,7 +299,23 @@ impl Failure {
 impl std::fmt::Display for Failure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Failure::Build(e) => e.fmt(f),
+            Failure::Build(e) => {
+                // Surfaces the called function does not take yet, though they are surfaces.
+                let unsupported = match e {
+                    BuildError::BoundaryEdge { .. } => Some("surfaces with boundary are"),
+                    BuildError::NonOrientable { .. } => Some("non-orientable surfaces are"),
+                    BuildError::Disconnected { .. } => Some("several pieces are"),
+                    _ => None,
+                };
+                if let Some(what) = unsupported {
+                    write!(
+                        f,
+                        "{what} not supported yet here (info classifies them, irreducible takes \
+                         them): "
+                    )?;
+                }
+                e.fmt(f)
+            }
             Failure::Index {
                 face,
                 value,

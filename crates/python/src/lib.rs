@@ -6,6 +6,7 @@
 //! in `python/surftopo/`.
 
 mod arrays;
+mod census;
 mod errors;
 mod intrinsic;
 mod surface;
@@ -25,11 +26,19 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(surface::torus, m)?)?;
     m.add_function(wrap_pyfunction!(surface::genus_surface, m)?)?;
     m.add_function(wrap_pyfunction!(surface::cavity_box, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::disk, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::annulus, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::mobius_band, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::projective_plane, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::klein_bottle, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::non_orientable, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::intrinsic_delaunay, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::laplacian, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::_laplacian_timed, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::isometric, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::flat_torus, m)?)?;
+    m.add_function(wrap_pyfunction!(census::census, m)?)?;
+    m.add_function(wrap_pyfunction!(census::canonical_form, m)?)?;
     m.add_class::<intrinsic::Portalgon>()?;
     m.add_class::<intrinsic::Intrinsic>()?;
     Ok(())

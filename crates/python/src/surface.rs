@@ -12,9 +12,8 @@ use pyo3::types::PyDict;
 use std::path::PathBuf;
 use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
-use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{self, CavityBox};
-use surftopo_mesh::{BuildReport, SurfaceMesh, geometry};
+use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, Surface, SurfaceKind, geometry};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{QuadAlgorithm, quadrangulate_by_quality, quadrangulate_with_quality};
 
@@ -177,6 +176,8 @@ pub fn info<'py>(
     d.set_item("components", inspection.components)?;
     d.set_item("closed", inspection.is_closed())?;
     d.set_item("orientable", inspection.orientable)?;
+    d.set_item("boundary_loops", inspection.boundary_loops)?;
+    d.set_item("boundary_edges", inspection.boundary_edges)?;
     d.set_item("simplicial", !inspection.has_degenerate_faces())?;
     d.set_item("valid", inspection.is_valid())?;
     d.set_item("reoriented_faces", inspection.reoriented_faces)?;
@@ -193,20 +194,44 @@ pub fn info<'py>(
         .map(ToString::to_string)
         .collect();
     d.set_item("problems", problems)?;
+    d.set_item("surfaces", surfaces(py, &inspection.surfaces)?)?;
     Ok(d)
 }
 
-/// `{"vertices", "edges", "faces", "genus"}` of a mesh (the CLI's `input` and `output`).
-fn counts<'py>(py: Python<'py>, mesh: &SurfaceMesh) -> PyResult<Bound<'py, PyDict>> {
+/// One dict per connected component, with the keys of `surftopo info --json`'s `surfaces`.
+fn surfaces<'py>(py: Python<'py>, kinds: &[SurfaceKind]) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    kinds
+        .iter()
+        .map(|k| {
+            let d = PyDict::new(py);
+            d.set_item("faces", k.faces)?;
+            d.set_item("euler_characteristic", k.euler_characteristic)?;
+            d.set_item("orientable", k.orientable)?;
+            d.set_item("boundary_loops", k.boundary_loops)?;
+            d.set_item("genus", k.genus)?;
+            d.set_item("crosscaps", k.crosscaps)?;
+            d.set_item("euler_genus", k.euler_genus)?;
+            d.set_item("name", k.name())?;
+            Ok(d)
+        })
+        .collect()
+}
+
+/// The CLI's `input` and `output` counts of a surface's triangles: vertices, edges, faces, genus
+/// (one orientable piece; else `None`), Euler characteristic and the pieces' classifications.
+fn counts<'py>(py: Python<'py>, inspection: &Inspection) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("vertices", mesh.vertex_count())?;
-    d.set_item("edges", mesh.edge_count())?;
-    d.set_item("faces", mesh.face_count())?;
-    d.set_item("genus", mesh.genus())?;
+    d.set_item("vertices", inspection.vertices)?;
+    d.set_item("edges", inspection.edges)?;
+    d.set_item("faces", inspection.faces)?;
+    d.set_item("genus", inspection.genus())?;
+    d.set_item("euler_characteristic", inspection.euler_characteristic())?;
+    d.set_item("surfaces", surfaces(py, &inspection.surfaces)?)?;
     Ok(d)
 }
 
-/// An irreducible triangulation of the surface `(V, F)` by topology-preserving edge contractions.
+/// An irreducible triangulation of the surface `(V, F)` by topology-preserving edge contractions:
+/// any compact surface (boundary loops, non-orientable, several pieces; each piece reduced).
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, algorithm = "rs", seed = 1))]
 pub fn irreducible<'py>(
@@ -226,27 +251,39 @@ pub fn irreducible<'py>(
         ],
     )
     .map_err(|f| f.into_pyerr(py))?;
-    let input = input_surface(py, vertices, faces)?;
-    let input_counts = counts(py, &input.surface.mesh)?;
-    let Input {
-        surface,
-        input_index,
-    } = input;
-    let reduction = py
-        .detach(|| surftopo_irreducible::reduce(surface.mesh, algorithm))
-        .map_err(|e| Failure::Irreducible(e).into_pyerr(py))?;
-    let kept: Vec<i64> = reduction
-        .mesh
-        .vertices()
-        .map(|v| i64::from(input_index[v.idx()]))
-        .collect();
-    let output_counts = counts(py, &reduction.mesh)?;
-    let counters = reduction.counters;
-    let reduced = Surface {
-        mesh: reduction.mesh,
-        positions: surface.positions,
+    let vertices = VertexArray::extract(vertices)?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let positions = vertices.positions().into_owned();
+    let count = |t: &[[u32; 3]]| {
+        let n = t.iter().flatten().max().map_or(0, |&v| v as usize + 1);
+        surftopo_mesh::inspect(n, t)
     };
+    let reduced = py
+        .detach(|| -> Result<_, Failure> {
+            let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
+            let input_index = input_index(&report);
+            let input = count(&surface.cover.surface_triangles());
+            let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
+                .map_err(Failure::Irreducible)?;
+            let reduced = CoveredSurface {
+                cover: reduction.cover,
+                positions: surface.positions,
+            };
+            let output = count(&reduced.cover.surface_triangles());
+            Ok((reduced, input_index, input, output, reduction.counters))
+        })
+        .map_err(|f| f.into_pyerr(py))?;
+    let (reduced, input_index, input, output, counters) = reduced;
+    // The surviving vertices in class order, which `to_triangles` numbers densely.
+    let mut kept_classes: Vec<u32> = reduced.cover.surface_triangles().concat();
+    kept_classes.sort_unstable();
+    kept_classes.dedup();
+    let kept: Vec<i64> = kept_classes
+        .iter()
+        .map(|&c| i64::from(input_index[c as usize]))
+        .collect();
     let (positions, triangles) = reduced.to_triangles();
+    let (input_counts, output_counts) = (counts(py, &input)?, counts(py, &output)?);
     let stats = PyDict::new(py);
     stats.set_item("algorithm", algorithm.name())?;
     stats.set_item("input", input_counts)?;
@@ -340,10 +377,10 @@ const MAX_TRIANGLES: u64 = 200_000_000;
 
 /// A generated surface as `(V, F)`, or an `InvalidInputError` when it would have more than
 /// [`MAX_TRIANGLES`] triangles.
-fn generated<'py>(
+fn generated<'py, S: Into<CoveredSurface>>(
     py: Python<'py>,
     triangles: u64,
-    make: impl FnOnce() -> Surface + Send,
+    make: impl FnOnce() -> S + Send,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     if triangles > MAX_TRIANGLES {
         return Err(invalid(format!(
@@ -351,7 +388,7 @@ fn generated<'py>(
         ))
         .into_pyerr(py));
     }
-    let (positions, triangles) = py.detach(|| make().to_triangles());
+    let (positions, triangles) = py.detach(|| make().into().to_triangles());
     Ok((
         positions_array(py, &positions).into_any(),
         index_array(py, &triangles).into_any(),
@@ -415,5 +452,85 @@ pub fn cavity_box(
     let fitted = CavityBox::fit(cavities, holes, triangles.min(MAX_TRIANGLES + 1));
     generated(py, fitted.triangle_count().max(triangles), move || {
         fitted.generate()
+    })
+}
+
+/// Refuses a grid of `m x n` below the least sizes `(m0, n0)`.
+fn check_grid(py: Python<'_>, what: &str, m: u32, n: u32, least: (u32, u32)) -> PyResult<()> {
+    if m < least.0 || n < least.1 {
+        return Err(invalid(format!(
+            "{what}: m must be at least {} and n at least {}",
+            least.0, least.1
+        ))
+        .into_pyerr(py));
+    }
+    Ok(())
+}
+
+/// The unit square as an `n x n` grid: a disk (`2 n^2` triangles), `n >= 1`.
+#[pyfunction]
+#[pyo3(signature = (n = 8))]
+pub fn disk(py: Python<'_>, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    check_grid(py, "disk", n, n, (1, 1))?;
+    generated(py, 2 * u64::from(n).pow(2), move || generators::disk(n))
+}
+
+/// An open cylinder: an annulus as an `m x n` grid (`2 m n` triangles), `m >= 3`, `n >= 1`.
+#[pyfunction]
+#[pyo3(signature = (m = 24, n = 4))]
+pub fn annulus(py: Python<'_>, m: u32, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    check_grid(py, "annulus", m, n, (3, 1))?;
+    generated(py, 2 * u64::from(m) * u64::from(n), move || {
+        generators::annulus(m, n)
+    })
+}
+
+/// A Möbius band as an `m x n` grid glued with a half twist (`2 m n` triangles), `m >= 5`,
+/// `n >= 1`.
+#[pyfunction]
+#[pyo3(signature = (m = 24, n = 4))]
+pub fn mobius_band(
+    py: Python<'_>,
+    m: u32,
+    n: u32,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    check_grid(py, "mobius_band", m, n, (5, 1))?;
+    generated(py, 2 * u64::from(m) * u64::from(n), move || {
+        generators::mobius_band(m, n)
+    })
+}
+
+/// The 6-vertex projective plane (10 triangles).
+#[pyfunction]
+pub fn projective_plane(py: Python<'_>) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    generated(py, 10, generators::projective_plane)
+}
+
+/// A Klein bottle as an `m x n` grid on the figure-8 immersion (`2 m n` triangles), `m, n >= 3`.
+#[pyfunction]
+#[pyo3(signature = (m = 24, n = 12))]
+pub fn klein_bottle(
+    py: Python<'_>,
+    m: u32,
+    n: u32,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    check_grid(py, "klein_bottle", m, n, (3, 3))?;
+    generated(py, 2 * u64::from(m) * u64::from(n), move || {
+        generators::klein_bottle(m, n)
+    })
+}
+
+/// The non-orientable surface N_k with `crosscaps >= 1` crosscaps (`8k + 2` triangles).
+#[pyfunction]
+#[pyo3(signature = (crosscaps = 3))]
+pub fn non_orientable(
+    py: Python<'_>,
+    crosscaps: u32,
+) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+    if crosscaps == 0 {
+        return Err(invalid("non_orientable: crosscaps must be at least 1").into_pyerr(py));
+    }
+    generated(py, 8 * u64::from(crosscaps) + 2, move || {
+        generators::crosscaps(crosscaps)
     })
 }

@@ -8,10 +8,12 @@ import pytest
 
 import surftopo
 from verify import (
+    classify,
     edges_of,
     euler_characteristic,
     is_closed_oriented,
     is_irreducible,
+    is_irreducible_surface,
     quads_pair_triangles,
 )
 
@@ -35,9 +37,13 @@ def test_irreducible(name, algorithm):
     kept = stats["vertex_indices"]
     assert np.array_equal(V2, V[kept]) and len(set(kept.tolist())) == len(kept)
     genus = (2 - chi) // 2
-    assert stats["input"] == {
+    counts = {k: stats["input"][k] for k in ("vertices", "edges", "faces", "genus")}
+    assert counts == {
         "vertices": len(V), "edges": len(edges_of(F)), "faces": len(F), "genus": genus
     }
+    assert [s["name"] for s in stats["output"]["surfaces"]] == [
+        s["name"] for s in stats["input"]["surfaces"]
+    ]
     assert stats["output"]["vertices"] == len(V2) and stats["output"]["faces"] == len(F2)
     assert stats["contractions"] == len(V) - len(V2)
     assert stats["algorithm"] == algorithm
@@ -111,25 +117,36 @@ def test_info():
     info = surftopo.info(V, F)
     assert list(info) == [
         "vertices", "edges", "faces", "genus", "euler_characteristic", "components", "closed",
-        "orientable", "simplicial", "valid", "reoriented_faces", "unreferenced_vertices",
-        "welded_vertices", "non_finite_coordinates", "zero_area_faces", "degenerate_faces", "duplicate_faces", "boundary_edges", "non_manifold_edges",
-        "non_manifold_vertices", "non_orientable", "disconnected", "other_problems",
-        "problems_total", "problems_truncated", "problems",
+        "orientable", "boundary_loops", "boundary_edges", "simplicial", "valid",
+        "reoriented_faces", "unreferenced_vertices", "welded_vertices", "non_finite_coordinates",
+        "zero_area_faces", "degenerate_faces", "duplicate_faces", "non_manifold_edges",
+        "non_manifold_vertices", "other_problems", "problems_total", "problems_truncated",
+        "problems", "surfaces",
     ]
     assert (info["vertices"], info["edges"], info["faces"], info["genus"]) == (24, 72, 48, 1)
     assert info["valid"] and info["problems"] == []
-    broken = surftopo.info(V, F[1:])
-    assert not broken["valid"] and broken["genus"] is None and not broken["closed"]
-    assert broken["boundary_edges"] == 3 and broken["problems_total"] >= 1
-    assert broken["problems"][0].startswith("boundary edge")
+    # A face removed: a torus with one boundary loop, no problem.
+    holed = surftopo.info(V, F[1:])
+    assert holed["valid"] and holed["genus"] == 1 and not holed["closed"]
+    assert (holed["boundary_edges"], holed["boundary_loops"]) == (3, 1)
+    assert holed["surfaces"] == [{
+        "faces": 47, "euler_characteristic": -1, "orientable": True, "boundary_loops": 1,
+        "genus": 1, "crosscaps": None, "euler_genus": 2, "name": "genus 1 with 1 boundary loop",
+    }]
+    # A fin: a face on an edge that has two already.
+    fin = np.vstack([F, [[F[0][0], F[0][1], len(V)]]])
+    broken = surftopo.info(np.vstack([V, [[9.0, 9.0, 9.0]]]), fin)
+    assert not broken["valid"] and broken["surfaces"] == [] and broken["genus"] is None
+    assert broken["non_manifold_edges"] == 1
+    assert broken["problems"][0].startswith("non-manifold edge")
     # Welding: the same torus with one vertex duplicated in place.
     W = np.vstack([V, V[:1]])
     G = F.copy()
     G[F == 0] = len(V)
     G[0] = F[0]
-    assert not surftopo.info(W, G)["valid"]
+    assert not surftopo.info(W, G)["closed"]
     welded = surftopo.info(W, G, weld=True)
-    assert welded["valid"] and welded["welded_vertices"] == 1
+    assert welded["valid"] and welded["closed"] and welded["welded_vertices"] == 1
 
 
 @pytest.mark.parametrize("extension", ["obj", "off", "ply", "obj.gz"])
@@ -176,3 +193,32 @@ def test_unreferenced_vertices_keep_input_indices():
     assert 3 not in stats["vertex_indices"].tolist()
     assert np.array_equal(V2, W[stats["vertex_indices"]])
     assert surftopo.info(W, G)["unreferenced_vertices"] == 1
+
+
+GENERAL = {
+    "disk(4)": (lambda: surftopo.disk(4), [(1, True, 1)], range(3, 4)),
+    "annulus(8, 3)": (lambda: surftopo.annulus(8, 3), [(0, True, 2)], None),
+    "mobius_band(8, 2)": (lambda: surftopo.mobius_band(8, 2), [(0, False, 1)], range(5, 7)),
+    "projective_plane()": (surftopo.projective_plane, [(1, False, 0)], range(6, 8)),
+    "klein_bottle(8, 6)": (lambda: surftopo.klein_bottle(8, 6), [(0, False, 0)], range(8, 12)),
+    "non_orientable(3)": (lambda: surftopo.non_orientable(3), [(-1, False, 0)], None),
+}
+
+
+@pytest.mark.parametrize("name", GENERAL)
+@pytest.mark.parametrize("algorithm", ["rs", "schipper", "brute-force"])
+def test_irreducible_of_every_surface(name, algorithm):
+    make, pieces, vertex_counts = GENERAL[name]
+    V, F = make()
+    assert classify(F) == pieces
+    names = [s["name"] for s in surftopo.info(V, F)["surfaces"]]
+    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=3)
+    assert classify(F2) == pieces and is_irreducible_surface(F2)
+    assert [s["name"] for s in stats["output"]["surfaces"]] == names
+    assert np.array_equal(V2, V[stats["vertex_indices"]])
+    if vertex_counts is not None:
+        assert len(V2) in vertex_counts
+    # Two pieces at once: each reduced.
+    W, G, _ = surftopo.irreducible(np.vstack([V, V + 5.0]), np.vstack([F, F + len(V)]),
+                                   algorithm=algorithm)
+    assert classify(G) == sorted(pieces * 2) and is_irreducible_surface(G)

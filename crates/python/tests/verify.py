@@ -43,6 +43,88 @@ def is_irreducible(F: np.ndarray) -> bool:
     return all(len(neighbours[u] & neighbours[v]) > 2 for (u, v) in edges_of(F))
 
 
+def classify(F: np.ndarray) -> list[tuple[int, bool, int]]:
+    """(Euler characteristic, orientable, boundary loops) of each connected component, sorted:
+    breadth-first search over faces through shared edges, a sign flipped across an edge that the
+    two faces run the same way, boundary loops as cycles of edges in one face."""
+    faces = F.tolist()
+    on_edge = defaultdict(list)
+    for f, face in enumerate(faces):
+        for i in range(3):
+            a, b = face[i], face[(i + 1) % 3]
+            on_edge[(min(a, b), max(a, b))].append((f, a < b))
+    sign: dict = {}
+    pieces = []
+    for start in range(len(faces)):
+        if start in sign:
+            continue
+        sign[start] = False
+        queue, members, orientable = [start], [], True
+        while queue:
+            f = queue.pop()
+            members.append(f)
+            face = faces[f]
+            for i in range(3):
+                a, b = face[i], face[(i + 1) % 3]
+                for g, forward in on_edge[(min(a, b), max(a, b))]:
+                    if g == f:
+                        continue
+                    want = sign[f] ^ (forward == (a < b))
+                    if g not in sign:
+                        sign[g] = want
+                        queue.append(g)
+                    elif sign[g] != want:
+                        orientable = False
+        vertices = {v for f in members for v in faces[f]}
+        edges = {(min(a, b), max(a, b)) for f in members
+                 for a, b in zip(faces[f], faces[f][1:] + faces[f][:1])}
+        boundary = [e for e in edges if len(on_edge[e]) == 1]
+        parent = {v: v for e in boundary for v in e}
+
+        def find(v):
+            while parent[v] != v:
+                v = parent[v]
+            return v
+
+        for a, b in boundary:
+            parent[find(a)] = find(b)
+        loops = len({find(v) for v in parent})
+        pieces.append((len(vertices) - len(edges) + len(members), orientable, loops))
+    return sorted(pieces)
+
+
+def is_irreducible_surface(F: np.ndarray) -> bool:
+    """No edge contracts keeping the topology, by Dey, Edelsbrunner, Guha and Nekhayev's rule:
+    with the boundary coned over one vertex ω, an edge ab contracts iff the common neighbours of
+    a and b are exactly the vertices opposite ab, and no edge wz has both a-w-z and b-w-z faces."""
+    omega = -1
+    faces = {tuple(sorted(f)) for f in F.tolist()}
+    count = edges_of(F)
+    opposite = defaultdict(set)
+    for a, b, c in F.tolist():
+        for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
+            opposite[(min(u, v), max(u, v))].add(w)
+    neighbours = defaultdict(set)
+    for a, b in count:
+        neighbours[a].add(b)
+        neighbours[b].add(a)
+    for (a, b), n in count.items():
+        if n == 1:
+            opposite[(a, b)].add(omega)
+            faces.add(tuple(sorted((a, b, omega))))
+            neighbours[a].add(omega)
+            neighbours[b].add(omega)
+    for (a, b) in count:
+        common = neighbours[a] & neighbours[b]
+        if common != opposite[(a, b)]:
+            continue
+        pairs = [(w, z) for w in common for z in common if w < z]
+        if not any(tuple(sorted((a, w, z))) in faces and tuple(sorted((b, w, z))) in faces
+                   for w, z in pairs):
+            return False
+    return True
+
+
 def quads_pair_triangles(Q: np.ndarray, F: np.ndarray) -> bool:
     """Every quad (a, b, c, d) is two input triangles glued along a diagonal, counter-clockwise as
     the input, and every input triangle is in exactly one quad."""

@@ -1,6 +1,6 @@
 """Peer triangle-to-quad converters for the quality benchmark (never used by the tests).
 
-    python quad_peers.py gmsh|blender IN.off OUT.off
+    python quad_peers.py gmsh|gmsh-blossom|blender IN.off OUT.off
 
 Reads a triangle mesh (OFF), converts it with the chosen peer, writes the resulting polygon mesh
 (the tool's vertices after the call; quads and the triangles left) as OFF and prints one JSON line
@@ -10,6 +10,10 @@ conversion call alone (mesh loading excluded).
 - gmsh: Gmsh's Blossom recombination (the Blossom-Quad method of Remacle et al. 2012):
   the triangles become one discrete surface, `Mesh.RecombinationAlgorithm = 1` (Blossom),
   `Mesh.RecombineMinimumQuality = 0` (every pair may be used), then `gmsh.model.mesh.recombine()`.
+- gmsh-blossom: the same without the topological optimisation and the node repositioning and
+  smoothing that follow the pairing (`Mesh.RecombineOptimizeTopology = 0`,
+  `Mesh.RecombineNodeRepositioning = 0`, `Mesh.Smoothing = 0`): the quads are pairs of the input's
+  own triangles, as `surftopo quad --objective quality` makes them.
 - blender: Blender's "Triangles to Quads" (`bmesh.ops.join_triangles`) with the operator's
   default thresholds (40 degrees for face and shape angles).
 
@@ -50,7 +54,7 @@ def write_off(path, verts, faces):
             f.write(f"{len(face)} {' '.join(map(str, face))}\n")
 
 
-def run_gmsh(verts, faces):
+def run_gmsh(verts, faces, pairing_only=False):
     import gmsh
 
     gmsh.initialize(["-noenv"])
@@ -64,6 +68,10 @@ def run_gmsh(verts, faces):
     )
     gmsh.option.setNumber("Mesh.RecombinationAlgorithm", 1)
     gmsh.option.setNumber("Mesh.RecombineMinimumQuality", 0)
+    if pairing_only:
+        gmsh.option.setNumber("Mesh.RecombineOptimizeTopology", 0)
+        gmsh.option.setNumber("Mesh.RecombineNodeRepositioning", 0)
+        gmsh.option.setNumber("Mesh.Smoothing", 0)
     start, cpu = time.perf_counter(), time.process_time()
     gmsh.model.mesh.recombine()
     seconds = (time.perf_counter() - start, time.process_time() - cpu)
@@ -108,11 +116,15 @@ def run_blender(verts, faces):
 
 
 def main():
-    if len(sys.argv) != 4 or sys.argv[1] not in ("gmsh", "blender"):
+    runs = {
+        "gmsh": run_gmsh,
+        "gmsh-blossom": lambda v, f: run_gmsh(v, f, pairing_only=True),
+        "blender": run_blender,
+    }
+    if len(sys.argv) != 4 or sys.argv[1] not in runs:
         raise SystemExit(__doc__)
     verts, faces = read_off(sys.argv[2])
-    run = run_gmsh if sys.argv[1] == "gmsh" else run_blender
-    verts, out, seconds = run(verts, faces)
+    verts, out, seconds = runs[sys.argv[1]](verts, faces)
     write_off(sys.argv[3], verts, out)
     print(json.dumps({"seconds": seconds[0], "cpu_seconds": seconds[1]}))
 

@@ -246,6 +246,125 @@ pub fn check_closed_oriented_manifold(polygons: &[Vec<u32>]) -> Result<i64, Stri
     Ok(vertices - edges + polygons.len() as i64)
 }
 
+/// One connected component of a triangulated surface, as [`classify_surface`] finds it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Piece {
+    /// V − E + F.
+    pub euler_characteristic: i64,
+    /// Whether its faces can be oriented consistently.
+    pub orientable: bool,
+    /// Its boundary loops.
+    pub boundary_loops: usize,
+}
+
+/// Independent classification of a triangulated surface (triangles over any vertex ids; a
+/// compact 2-manifold, possibly with boundary, possibly non-orientable, in pieces): one [`Piece`]
+/// per connected component, sorted. Only hash maps over index pairs and a breadth-first search.
+///
+/// # Errors
+/// A description of the first defect that keeps the triangles from being a surface: an edge in
+/// more than two faces, or a boundary vertex on more than two boundary edges.
+pub fn classify_surface(triangles: &[[u32; 3]]) -> Result<Vec<Piece>, String> {
+    use std::collections::{HashMap, HashSet};
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    // Per undirected edge: the faces on it, and whether each runs it from min to max.
+    let mut on_edge: HashMap<(u32, u32), Vec<(usize, bool)>> = HashMap::new();
+    for (f, t) in triangles.iter().enumerate() {
+        for i in 0..3 {
+            let (a, b) = (t[i], t[(i + 1) % 3]);
+            on_edge.entry(key(a, b)).or_default().push((f, a < b));
+        }
+    }
+    let mut boundary_degree: HashMap<u32, usize> = HashMap::new();
+    for (&(a, b), faces) in &on_edge {
+        match faces.len() {
+            1 => {
+                for v in [a, b] {
+                    *boundary_degree.entry(v).or_default() += 1;
+                }
+            }
+            2 => {}
+            n => return Err(format!("edge ({a}, {b}) is in {n} faces")),
+        }
+    }
+    if let Some((v, d)) = boundary_degree.iter().find(|&(_, &d)| d != 2) {
+        return Err(format!("vertex {v} is on {d} boundary edges"));
+    }
+    let mut sign: Vec<Option<bool>> = vec![None; triangles.len()];
+    let mut pieces = Vec::new();
+    for start in 0..triangles.len() {
+        if sign[start].is_some() {
+            continue;
+        }
+        sign[start] = Some(false);
+        let mut queue = vec![start];
+        let (mut faces, mut orientable) = (Vec::new(), true);
+        while let Some(f) = queue.pop() {
+            faces.push(f);
+            let t = triangles[f];
+            for i in 0..3 {
+                let (a, b) = (t[i], t[(i + 1) % 3]);
+                for &(g, forward) in &on_edge[&key(a, b)] {
+                    if g == f {
+                        continue;
+                    }
+                    // Consistent orientations run a shared edge in opposite directions.
+                    let want = sign[f].unwrap() ^ (forward == (a < b));
+                    match sign[g] {
+                        None => {
+                            sign[g] = Some(want);
+                            queue.push(g);
+                        }
+                        Some(s) if s != want => orientable = false,
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        let vertices: HashSet<u32> = faces.iter().flat_map(|&f| triangles[f]).collect();
+        let edges: HashSet<(u32, u32)> = faces
+            .iter()
+            .flat_map(|&f| {
+                let t = triangles[f];
+                (0..3).map(move |i| key(t[i], t[(i + 1) % 3]))
+            })
+            .collect();
+        // Boundary loops: walk the boundary edges of this piece as cycles.
+        let boundary: Vec<(u32, u32)> = edges
+            .iter()
+            .copied()
+            .filter(|e| on_edge[e].len() == 1)
+            .collect();
+        let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
+        for &(a, b) in &boundary {
+            next.entry(a).or_default().push(b);
+            next.entry(b).or_default().push(a);
+        }
+        let (mut seen, mut loops) = (HashSet::new(), 0);
+        for &(a, _) in &boundary {
+            if !seen.insert(a) {
+                continue;
+            }
+            loops += 1;
+            let mut stack = vec![a];
+            while let Some(v) = stack.pop() {
+                for &w in &next[&v] {
+                    if seen.insert(w) {
+                        stack.push(w);
+                    }
+                }
+            }
+        }
+        pieces.push(Piece {
+            euler_characteristic: vertices.len() as i64 - edges.len() as i64 + faces.len() as i64,
+            orientable,
+            boundary_loops: loops,
+        });
+    }
+    pieces.sort();
+    Ok(pieces)
+}
+
 #[cfg(test)]
 mod tests {
     use super::check_closed_oriented_manifold;

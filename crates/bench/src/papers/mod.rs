@@ -23,6 +23,7 @@ pub mod numbers;
 pub mod plot;
 pub mod quad;
 pub mod report;
+pub mod surfaces;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -72,7 +73,7 @@ impl Options {
 
     /// Whether the report `suite` runs.
     pub fn runs_suite(&self, suite: &str) -> bool {
-        let suites = ["irreducible", "quad", "intrinsic"];
+        let suites = ["irreducible", "quad", "intrinsic", "surfaces"];
         let named: Vec<&String> = self
             .only
             .iter()
@@ -84,7 +85,7 @@ impl Options {
     /// Whether the input `name` runs (`--only` names no input, or names this one or its model:
     /// `--only Botijo` runs `Botijo` and `Botijo (simplified)`).
     pub fn runs_input(&self, name: &str) -> bool {
-        let suites = ["irreducible", "quad", "intrinsic"];
+        let suites = ["irreducible", "quad", "intrinsic", "surfaces"];
         let inputs: Vec<&String> = self
             .only
             .iter()
@@ -130,6 +131,9 @@ pub fn run(options: &Options) -> anyhow::Result<()> {
     }
     if options.runs_suite("intrinsic") {
         intrinsic::run(options, meshes.as_deref())?;
+    }
+    if options.runs_suite("surfaces") {
+        surfaces::run(options)?;
     }
     if options.only.is_empty() {
         state_whole_run(&options.out)?;

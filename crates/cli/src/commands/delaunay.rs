@@ -12,9 +12,10 @@ use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_LENGTH_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutput, DelaunayOutputs,
-    DelaunayRequest, DelaunayStats, IntrinsicDelaunayError, IntrinsicTriangulation, Portalgon,
-    PortalgonDoc, PortalgonError, RequestError, SparseMatrix, TriangleStyle,
+    DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod, DelaunayOutput,
+    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
+    IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError, RequestError, SparseMatrix,
+    TriangleStyle,
 };
 
 /// The arguments of `delaunay`.
@@ -153,7 +154,7 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     }
     let name = crate::input::name(path);
     let bytes = crate::input::input_bytes(path)?;
-    let p = PortalgonDoc::read(&bytes[..])
+    let p = PortalgonDoc::from_slice(&bytes)
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
         .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
@@ -178,7 +179,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
-        let doc = PortalgonDoc::read(&bytes[..]).map_err(|e| invalid(format!("{name}: {e}")))?;
+        let doc = PortalgonDoc::from_slice(&bytes).map_err(|e| invalid(format!("{name}: {e}")))?;
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
@@ -290,24 +291,58 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     report(options, &out)
 }
 
-/// A failure of the run: a refused request as its options, a numerical failure of double
-/// precision with advice (exit 4), flipping's numerical breakdown as itself, anything else as
-/// invalid input naming the input.
+/// A failure of the run, naming the input: a refused request as its options; a numerical
+/// failure of double precision with advice (exit 4): flipping's breakdown, the `f64` wave's
+/// refusals and Theorem 1's failures in `f64`; degenerate lengths as [`geometry_error`] says;
+/// anything else invalid input (exit 2).
 fn run_error(options: &Args, e: IntrinsicDelaunayError) -> anyhow::Error {
-    let input = crate::failure::shown(&options.input);
+    let name = crate::input::name(&options.input);
     match e {
         IntrinsicDelaunayError::Request(e) => request_error(e),
-        IntrinsicDelaunayError::Flip(
-            e @ surftopo_intrinsic::DelaunayError::NumericalBreakdown { .. },
-        ) => anyhow::Error::new(e),
+        IntrinsicDelaunayError::Flip(e @ DelaunayError::NumericalBreakdown { .. }) => {
+            crate::failure::numerical(format!(
+                "{name}: {e} (double precision cannot finish flipping this input: try --method \
+                 voronoi or dubois, --exact on exact input)"
+            ))
+        }
+        IntrinsicDelaunayError::Flip(DelaunayError::Geometry(e))
+        | IntrinsicDelaunayError::Geometry(e) => geometry_error(&options.input, &e),
         e if e.is_numerical() => crate::failure::numerical(format!(
             "{}: {e} (a numerical failure of double precision: try --exact on exact input, or \
              --method flip)",
             options.input.display()
         )),
-        IntrinsicDelaunayError::Flip(e) => invalid(format!("{input}: {e}")),
+        IntrinsicDelaunayError::Flip(e) => invalid(format!("{name}: {e}")),
         e => invalid(format!("{}: {e}", options.input.display())),
     }
+}
+
+/// Degenerate lengths of an input read in double precision (a zero-length side, a zero-area
+/// triangle, a broken triangle inequality): invalid input (exit 2), unless the input is a
+/// portalgon file whose exact corners make valid triangles (`generate flat-torus --x 1000000`:
+/// sides 1, x − 1 and x in double precision are flat): then double precision could not hold
+/// it, a numerical failure (exit 4) advising `--exact`.
+pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error {
+    let name = crate::input::name(input);
+    let exactly_valid = !crate::input::is_stdio(input)
+        && is_json_input(input).unwrap_or(false)
+        && load_exact(input).is_ok();
+    if exactly_valid {
+        crate::failure::numerical(format!(
+            "{name}: {e} in double precision, but its exact corners make valid triangles: use \
+             --exact (with --method voronoi or dubois)"
+        ))
+    } else {
+        invalid(format!("{name}: {e}"))
+    }
+}
+
+/// [`IntrinsicTriangulation::validate`] with [`geometry_error`]'s verdict.
+///
+/// # Errors
+/// Invalid input (exit 2) or a numerical failure (exit 4).
+pub fn validated(input: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<()> {
+    tri.validate().map_err(|e| geometry_error(input, &e))
 }
 
 /// Writes the outputs asked for (under temporary names, renamed together): `-o` (exact corners

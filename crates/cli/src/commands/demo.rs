@@ -1,7 +1,8 @@
 //! `surftopo demo`: every capability on built-in examples, needing no file.
 //!
 //! The examples are generated: a genus-2 brick with irregular connectivity (816
-//! triangles, small enough for the brute force and the exact quality pairing to stay quick),
+//! triangles, small enough for the brute force and the exact quality pairing to stay quick), a
+//! Klein bottle and a torus with two holes,
 //! a small broken mesh for `info`'s problem classes, and Dubois' flat tori T_x, T_{x+1} and
 //! T_{x+1/3} (x = 10^9, exact corners). Each step calls the command's own code (its `run`, or the
 //! library functions it calls) and prints one line: what was run, the result and its time.
@@ -31,38 +32,70 @@ const FLAT_TORUS_X_PLUS_1: &str = "1000000001";
 const FLAT_TORUS_X_PLUS_THIRD: &str = "3000000001/3";
 
 /// Runs every capability on the built-in examples, writing the results into `--out` (or a new
-/// temporary folder) and printing one line per step.
+/// temporary folder) and printing one line per step. A failing step (a full disk, an unwritable
+/// folder) removes every file the run wrote, and the folder when the run created it: nothing is
+/// left half done.
 pub fn run(args: &Args) -> anyhow::Result<()> {
-    let dir = match &args.out {
+    let (dir, created) = match &args.out {
         Some(dir) => {
+            let created = !dir.exists();
             std::fs::create_dir_all(dir).map_err(|e| crate::failure::unwritable(dir, &e))?;
-            dir.clone()
+            (dir.clone(), created)
         }
-        None => new_temporary_folder()?,
+        None => (new_temporary_folder()?, true),
     };
-    let started = Instant::now();
-    emit(&format!(
-        "surftopo demo: every capability on built-in examples; results in {}\n",
-        crate::failure::shown(&dir)
-    ))?;
-    let demo = Demo { dir };
-    let input = demo.generate_input()?;
-    demo.info(&input)?;
-    demo.convert(&input)?;
-    demo.irreducible(&input)?;
-    demo.quad(&input)?;
-    let tori = demo.flat_tori()?;
-    demo.delaunay(&input, &tori)?;
-    demo.isometric(&input, &tori)?;
-    emit(&format!(
-        "done in {}\n",
-        format_seconds(started.elapsed().as_secs_f64())
-    ))
+    let demo = Demo {
+        dir,
+        written: std::cell::RefCell::default(),
+    };
+    let result = demo.steps();
+    if result.is_err() {
+        demo.remove_written(created);
+    }
+    result
 }
 
 /// The demo's output folder and its steps.
 struct Demo {
     dir: PathBuf,
+    /// The files the steps write that did not exist before the run, in the order named.
+    written: std::cell::RefCell<Vec<PathBuf>>,
+}
+
+impl Demo {
+    /// Every step, one line each.
+    fn steps(&self) -> anyhow::Result<()> {
+        let started = Instant::now();
+        emit(&format!(
+            "surftopo demo: every capability on built-in examples; results in {}\n",
+            crate::failure::shown(&self.dir)
+        ))?;
+        let input = self.generate_input()?;
+        self.info(&input)?;
+        self.convert(&input)?;
+        self.irreducible(&input)?;
+        self.other_surfaces()?;
+        self.quad(&input)?;
+        let tori = self.flat_tori()?;
+        self.delaunay(&input, &tori)?;
+        self.isometric(&input, &tori)?;
+        self.census()?;
+        emit(&format!(
+            "done in {}\n",
+            format_seconds(started.elapsed().as_secs_f64())
+        ))
+    }
+
+    /// After a failure: removes the files of [`Self::written`] (those that exist), then the
+    /// folder if the run `created` it and it is empty.
+    fn remove_written(&self, created: bool) {
+        for path in self.written.borrow().iter() {
+            let _ = std::fs::remove_file(path);
+        }
+        if created {
+            let _ = std::fs::remove_dir(&self.dir);
+        }
+    }
 }
 
 /// The flat tori of the demo, as portalgon JSON files by exact corners.
@@ -76,8 +109,15 @@ struct FlatTori {
 }
 
 impl Demo {
+    /// The path of an output of the run; recorded for [`Self::remove_written`] unless a file
+    /// of that name was there before the run.
     fn path(&self, name: &str) -> PathBuf {
-        self.dir.join(name)
+        let path = self.dir.join(name);
+        let mut written = self.written.borrow_mut();
+        if !written.contains(&path) && !path.exists() {
+            written.push(path.clone());
+        }
+        path
     }
 
     fn shown(&self, name: &str) -> String {
@@ -102,7 +142,9 @@ impl Demo {
         let input = self.path("input.obj");
         let start = Instant::now();
         let kind = generate::Kind::Genus { genus: 2, size: 2 };
-        let surface = generate::modify(generate::generate(&kind)?, &modifiers(1000))?;
+        let surface = generate::modify(generate::generate(&kind)?, &modifiers(1000))?
+            .into_plain()
+            .ok_or_else(|| anyhow::anyhow!("the genus-2 brick is closed and orientable"))?;
         crate::output::write_surface(&input, &surface)?;
         let mesh = &surface.mesh;
         Self::line(
@@ -197,24 +239,84 @@ impl Demo {
 
     /// `irreducible` with each algorithm of the irreducible-triangulations paper.
     fn irreducible(&self, input: &Path) -> anyhow::Result<()> {
-        let surface = crate::input::load_surface(input, false)?.surface;
+        let loaded = crate::input::load_surface(input, false)?;
+        let pieces = surftopo_mesh::inspect(
+            loaded.surface.mesh.vertex_slots(),
+            &loaded.surface.to_triangles().1,
+        )
+        .surfaces;
+        let surface = loaded.surface.into();
         for algorithm in Algorithm::all(1) {
-            let (reduced, report) = irreducible::reduce_surface(&surface, algorithm)?;
+            let (reduced, report, _) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
             let name = format!("irreducible-{}.obj", algorithm.name());
-            crate::output::write_surface(&self.path(&name), &reduced)?;
+            crate::output::write_soup(&self.path(&name), &reduced)?;
             Self::line(
                 &format!("irreducible --algorithm {}", algorithm.name()),
                 &format!(
-                    "{}: {} vertices, {} faces, genus {} (at most 26g - 4 = 48 vertices); {} contractions, {} link tests, {} edges tested twice",
+                    "{}: {} vertices, {} faces, {} (at most 26g - 4 = 48 vertices); {} contractions, {} link tests, {} edges tested twice",
                     self.shown(&name),
                     report.output.vertices,
                     report.output.faces,
-                    report.output.genus,
+                    report.output.names(),
                     report.contractions,
                     report.link_tests,
                     report.edges_tested_more_than_once
                 ),
                 report.seconds,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// A Klein bottle and a torus with two holes, each generated, classified by `info` and
+    /// reduced by RS: irreducible triangulations beyond closed orientable surfaces.
+    fn other_surfaces(&self) -> anyhow::Result<()> {
+        let cases = [
+            (
+                "klein-bottle + irreducible",
+                "klein-bottle.obj",
+                generate::Kind::KleinBottle { m: 12, n: 6 },
+                generate::Modifiers {
+                    splits: 200,
+                    ..modifiers(0)
+                },
+            ),
+            (
+                "torus --cut-holes 2 + irreducible",
+                "open-torus.obj",
+                generate::Kind::Torus { m: 24, n: 12 },
+                generate::Modifiers {
+                    cut_holes: 2,
+                    ..modifiers(300)
+                },
+            ),
+        ];
+        for (label, name, kind, modifiers) in cases {
+            let start = Instant::now();
+            let surface = generate::modify(generate::generate(&kind)?, &modifiers)?;
+            let (positions, triangles) = surface.to_triangles();
+            let path = self.path(name);
+            crate::output::write_soup(
+                &path,
+                &surftopo_io::PolygonSoup::from_triangles(positions, &triangles),
+            )?;
+            let pieces = surftopo_mesh::inspect(surface.positions.len(), &triangles).surfaces;
+            let (reduced, report, _) =
+                irreducible::reduce_covered(&surface, &pieces, Algorithm::RamaswamiSiqueira)?;
+            let reduced_name = name.replace(".obj", "-irreducible.obj");
+            crate::output::write_soup(&self.path(&reduced_name), &reduced)?;
+            Self::line(
+                label,
+                &format!(
+                    "{}: {}, {} vertices; irreducible {}: {} vertices, {} contractions",
+                    self.shown(name),
+                    report.input.names(),
+                    report.input.vertices,
+                    self.shown(&reduced_name),
+                    report.output.vertices,
+                    report.contractions
+                ),
+                start.elapsed().as_secs_f64(),
             )?;
         }
         Ok(())
@@ -446,6 +548,46 @@ impl Demo {
     }
 }
 
+impl Demo {
+    /// `census torus` (the 21 irreducible triangulations of the torus, in Lutz's format), and
+    /// `isomorphic` on the input and its PLY conversion.
+    fn census(&self) -> anyhow::Result<()> {
+        let start = Instant::now();
+        let path = self.path("census-torus.txt");
+        let census = surftopo_census::census(
+            surftopo_census::SurfaceKind::orientable(1),
+            surftopo_census::CensusOptions::default(),
+        )
+        .map_err(|e| crate::failure::invalid(e.to_string()))?;
+        let text = surftopo_census::to_lutz(&census.triangulations);
+        crate::output::write_file(&path, |w| {
+            use std::io::Write;
+            w.write_all(text.as_bytes())?;
+            Ok(())
+        })?;
+        Self::line(
+            "census torus",
+            &format!(
+                "{} irreducible triangulations, 7 to 10 vertices -> census-torus.txt",
+                census.triangulations.len()
+            ),
+            start.elapsed().as_secs_f64(),
+        )?;
+        let start = Instant::now();
+        let (isomorphic, _, _) =
+            crate::commands::isomorphic::decide(&self.path("input.obj"), &self.path("input.ply"))?;
+        Self::line(
+            "isomorphic input.obj input.ply",
+            if isomorphic {
+                "isomorphic"
+            } else {
+                "not isomorphic"
+            },
+            start.elapsed().as_secs_f64(),
+        )
+    }
+}
+
 /// A new folder `surftopo-demo-<pid>[-k]` in the system's temporary directory (created, never
 /// one that exists already).
 fn new_temporary_folder() -> anyhow::Result<PathBuf> {
@@ -474,6 +616,8 @@ fn modifiers(flips: usize) -> generate::Modifiers {
         simplify: None,
         flips,
         splits: 0,
+        cut_holes: 0,
+        copies: 1,
         shuffle_faces: false,
         seed: 7,
     }

@@ -1,13 +1,14 @@
-//! `surftopo generate`: every surface generator, with optional subdivision, simplification,
-//! random flips, random vertex splits and a random face order, applied in that order.
+//! `surftopo generate`: every surface generator (closed, with boundary, non-orientable, in
+//! pieces), with optional subdivision, simplification, random flips, random vertex splits, holes,
+//! copies and a random face order, applied in that order.
 
 use crate::output::OutputKind;
 use clap::Subcommand;
 use std::path::PathBuf;
 use surftopo_intrinsic::geometry::Scalar as _;
 use surftopo_intrinsic::{self as intrinsic, IntrinsicTriangulation};
-use surftopo_mesh::Surface;
 use surftopo_mesh::generators;
+use surftopo_mesh::{CoveredSurface, Surface};
 
 /// The arguments of `generate`.
 #[derive(clap::Args, Debug)]
@@ -86,6 +87,54 @@ pub enum Kind {
         #[arg(long, default_value_t = 4)]
         shear: u32,
     },
+    /// The unit square as an n x n grid: a disk (2 n^2 triangles).
+    Disk {
+        /// Grid size (at least 1).
+        #[arg(long, default_value_t = 8)]
+        n: u32,
+    },
+    /// An open cylinder: an annulus as an m x n grid (2 m n triangles).
+    Annulus {
+        /// Grid size around (at least 3).
+        #[arg(long, default_value_t = 24)]
+        m: u32,
+        /// Grid size along (at least 1).
+        #[arg(long, default_value_t = 4)]
+        n: u32,
+    },
+    /// A Möbius band as an m x n grid glued with a half twist (2 m n triangles).
+    MobiusBand {
+        /// Grid size along the core circle (at least 5).
+        #[arg(long, default_value_t = 24)]
+        m: u32,
+        /// Grid size across (at least 1).
+        #[arg(long, default_value_t = 4)]
+        n: u32,
+    },
+    /// The 6-vertex projective plane (10 triangles; refine it with --subdivide, --splits).
+    ProjectivePlane,
+    /// A Klein bottle as an m x n grid on the figure-8 immersion (2 m n triangles).
+    KleinBottle {
+        /// Grid size along the tube (at least 3).
+        #[arg(long, default_value_t = 24)]
+        m: u32,
+        /// Grid size around the tube (at least 3).
+        #[arg(long, default_value_t = 12)]
+        n: u32,
+    },
+    /// The non-orientable surface N_k: a connected sum of k 6-vertex projective planes
+    /// (3k + 3 vertices, 8k + 2 triangles).
+    NonOrientable {
+        /// The number k of crosscaps (at least 1).
+        #[arg(long, default_value_t = 3)]
+        crosscaps: u32,
+    },
+    /// Any mesh file, for the modifiers (e.g. holes cut into a closed mesh).
+    Mesh {
+        /// The mesh (.obj, .off, .ply, .stl, optionally .gz; any triangulated surface).
+        #[arg(long)]
+        input: PathBuf,
+    },
     /// Random intrinsic flips of any input (an isometric re-triangulation), as portalgon JSON.
     IntrinsicFlips {
         /// A mesh or portalgon JSON file.
@@ -100,7 +149,7 @@ pub enum Kind {
 /// What a generator makes: a surface with positions, or an intrinsic triangulation (lengths only).
 pub enum Generated {
     /// Topology and 3D positions.
-    Surface(Surface),
+    Surface(CoveredSurface),
     /// Topology and edge lengths.
     Intrinsic(IntrinsicTriangulation),
 }
@@ -130,11 +179,19 @@ pub struct Modifiers {
     /// Random vertex splits applied after the flips.
     #[arg(long, default_value_t = 0, global = true)]
     pub splits: usize,
+    /// Holes cut after the splits: each removes the faces around a random vertex at least three
+    /// edges from the boundary and from the other holes (a new boundary loop each; genus g with b
+    /// boundary loops from a genus-g surface). Refused when fewer fit.
+    #[arg(long, default_value_t = 0, global = true)]
+    pub cut_holes: usize,
+    /// Copies side by side (a file of several pieces), made after the holes.
+    #[arg(long, default_value_t = 1, global = true)]
+    pub copies: u32,
     /// List the triangles in a random order, last (the same surface; measures how algorithms
     /// depend on the face order of a file).
     #[arg(long, global = true)]
     pub shuffle_faces: bool,
-    /// Seed of the random simplification, flips, splits and face order.
+    /// Seed of the random simplification, flips, splits, holes and face order.
     #[arg(long, default_value_t = 1, global = true)]
     pub seed: u64,
 }
@@ -143,11 +200,13 @@ pub struct Modifiers {
 fn check_intrinsic_modifiers(modifiers: &Modifiers) -> anyhow::Result<()> {
     if modifiers.subdivide > 0
         || modifiers.splits > 0
+        || modifiers.cut_holes > 0
+        || modifiers.copies != 1
         || modifiers.simplify.is_some()
         || modifiers.shuffle_faces
     {
         return Err(crate::failure::invalid(
-            "--subdivide, --simplify, --splits and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
+            "--subdivide, --simplify, --splits, --cut-holes, --copies and --shuffle-faces need a surface mesh; this generator makes an intrinsic triangulation",
         ));
     }
     Ok(())
@@ -207,7 +266,7 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
                 &format!("sheared-torus --m {m} --n {n}"),
                 2 * u64::from(*m) * u64::from(*n),
             )?;
-            Generated::Surface(generators::sheared_torus(*m, *n, *shear))
+            Generated::Surface(generators::sheared_torus(*m, *n, *shear).into())
         }
         Kind::IntrinsicFlips { input, count } => {
             let mut tri = crate::commands::delaunay::load_intrinsic(input, false)?;
@@ -220,11 +279,62 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
 }
 
 /// Generates the surface of `kind` (without modifiers); intrinsic kinds are refused.
-pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
+pub fn generate(kind: &Kind) -> anyhow::Result<CoveredSurface> {
+    let grid = |name: &str, m: u32, n: u32, least: (u32, u32)| {
+        if m < least.0 || n < least.1 {
+            return Err(crate::failure::invalid(format!(
+                "{name}: --m must be at least {} and --n at least {}",
+                least.0, least.1
+            )));
+        }
+        check_size(
+            &format!("{name} --m {m} --n {n}"),
+            2 * u64::from(m) * u64::from(n),
+        )
+    };
+    Ok(match kind {
+        Kind::Disk { n } => {
+            grid("disk", *n, *n, (1, 1))?;
+            generators::disk(*n)
+        }
+        Kind::Annulus { m, n } => {
+            grid("annulus", *m, *n, (3, 1))?;
+            generators::annulus(*m, *n)
+        }
+        Kind::MobiusBand { m, n } => {
+            grid("mobius-band", *m, *n, (5, 1))?;
+            generators::mobius_band(*m, *n)
+        }
+        Kind::ProjectivePlane => generators::projective_plane(),
+        Kind::KleinBottle { m, n } => {
+            grid("klein-bottle", *m, *n, (3, 3))?;
+            generators::klein_bottle(*m, *n)
+        }
+        Kind::NonOrientable { crosscaps } => {
+            if *crosscaps == 0 {
+                return Err(crate::failure::invalid(
+                    "non-orientable: --crosscaps must be at least 1",
+                ));
+            }
+            check_size(
+                &format!("non-orientable --crosscaps {crosscaps}"),
+                8 * u64::from(*crosscaps) + 2,
+            )?;
+            generators::crosscaps(*crosscaps)
+        }
+        Kind::Mesh { input } => crate::input::read_covered(input, false)?.surface,
+        other => generate_closed(other)?.into(),
+    })
+}
+
+/// Generates the closed orientable surface of `kind` (without modifiers).
+fn generate_closed(kind: &Kind) -> anyhow::Result<Surface> {
     Ok(match *kind {
         Kind::FlatTorus { .. } | Kind::ShearedTorus { .. } | Kind::IntrinsicFlips { .. } => {
             return match generate_any(kind, 0)? {
-                Generated::Surface(surface) => Ok(surface),
+                Generated::Surface(surface) => surface
+                    .into_plain()
+                    .ok_or_else(|| crate::failure::invalid("not a closed orientable surface")),
                 Generated::Intrinsic(_) => Err(crate::failure::invalid(
                     "an intrinsic triangulation has no positions",
                 )),
@@ -281,6 +391,7 @@ pub fn generate(kind: &Kind) -> anyhow::Result<Surface> {
             )?;
             generators::cavity_box(cavities, holes, triangles)
         }
+        _ => unreachable!("the other kinds are generated by `generate`"),
     })
 }
 
@@ -310,31 +421,57 @@ fn check_flips(option: &str, count: u64, edges: usize) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Applies the modifiers to a generated surface: subdivision, simplification, flips, splits, face
-/// order.
-pub fn modify(mut surface: Surface, modifiers: &Modifiers) -> anyhow::Result<Surface> {
+/// Applies the modifiers to a generated surface: subdivision, simplification, flips, splits,
+/// holes, copies, face order.
+pub fn modify(
+    mut surface: CoveredSurface,
+    modifiers: &Modifiers,
+) -> anyhow::Result<CoveredSurface> {
+    let faces = |s: &CoveredSurface| s.cover.surface_faces().count() as u64;
     if modifiers.subdivide > 0 {
-        let grown = (surface.mesh.face_count() as u64)
-            .saturating_mul(4u64.saturating_pow(modifiers.subdivide));
+        let grown = faces(&surface).saturating_mul(4u64.saturating_pow(modifiers.subdivide));
         check_size(&format!("--subdivide {}", modifiers.subdivide), grown)?;
-        surface = generators::subdivide_midpoint(&surface, modifiers.subdivide);
+        surface = generators::subdivide_midpoint_covered(&surface, modifiers.subdivide);
     }
     if let Some(target) = modifiers.simplify {
-        surface = generators::simplify(&surface, target, modifiers.seed);
+        surface = generators::simplify_covered(&surface, target, modifiers.seed);
     }
     if modifiers.flips > 0 {
-        check_flips("--flips", modifiers.flips as u64, surface.mesh.edge_count())?;
-        surface = generators::random_flips(&surface, modifiers.flips, modifiers.seed);
+        let edges = (faces(&surface) * 3).div_ceil(2) as usize;
+        check_flips("--flips", modifiers.flips as u64, edges)?;
+        surface = generators::random_flips_covered(&surface, modifiers.flips, modifiers.seed);
     }
     if modifiers.splits > 0 {
         check_size(
             &format!("--splits {}", modifiers.splits),
-            surface.mesh.face_count() as u64 + 2 * modifiers.splits as u64,
+            faces(&surface) + 2 * modifiers.splits as u64,
         )?;
-        surface = generators::random_vertex_splits(&surface, modifiers.splits, modifiers.seed);
+        surface =
+            generators::random_vertex_splits_covered(&surface, modifiers.splits, modifiers.seed);
+    }
+    if modifiers.cut_holes > 0 {
+        let (holed, cut) = generators::cut_holes(&surface, modifiers.cut_holes, modifiers.seed);
+        if cut < modifiers.cut_holes {
+            return Err(crate::failure::invalid(format!(
+                "--cut-holes {}: only {cut} holes fit (each needs a vertex three edges from the \
+                 boundary and from the other holes): refine the surface first (--subdivide)",
+                modifiers.cut_holes
+            )));
+        }
+        surface = holed;
+    }
+    if modifiers.copies != 1 {
+        if modifiers.copies == 0 {
+            return Err(crate::failure::invalid("--copies must be at least 1"));
+        }
+        check_size(
+            &format!("--copies {}", modifiers.copies),
+            faces(&surface).saturating_mul(u64::from(modifiers.copies)),
+        )?;
+        surface = generators::copies(&surface, modifiers.copies);
     }
     if modifiers.shuffle_faces {
-        surface = generators::shuffle_faces(&surface, modifiers.seed);
+        surface = generators::shuffle_faces_covered(&surface, modifiers.seed);
     }
     Ok(surface)
 }
@@ -364,8 +501,21 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         Generated::Surface(surface) => {
             let surface =
                 crate::progress::step("applying the modifiers", || modify(surface, modifiers))?;
-            crate::output::write_surface_as(output, &surface, modifiers.format)?;
-            (surface.mesh, "")
+            let (positions, triangles) = surface.to_triangles();
+            let soup = surftopo_io::PolygonSoup::from_triangles(positions, &triangles);
+            crate::output::write_soup_as(output, &soup, modifiers.format)?;
+            let counts = crate::commands::irreducible::Counts::of(&triangles);
+            let genus = counts
+                .genus
+                .map_or(String::new(), |g| format!(", genus {g}"));
+            return crate::output::emit(&format!(
+                "wrote {}: {} vertices, {} edges, {} faces{genus} ({})\n",
+                crate::output::name(output),
+                counts.vertices,
+                counts.edges,
+                counts.faces,
+                counts.names()
+            ));
         }
         Generated::Intrinsic(mut tri) => {
             check_intrinsic_modifiers(modifiers)?;

@@ -1,16 +1,16 @@
 //! `surftopo info`: counts, topology and every problem found, valid mesh or not.
 //!
 //! Polygon meshes (quads from `surftopo quad`) are inspected through their fan triangulation, which
-//! has the same Euler characteristic, closedness, orientability and vertex fans; the edge count is
-//! corrected for the added diagonals. (A diagonal that coincides with an existing edge shows up as a
-//! non-manifold edge.)
+//! has the same Euler characteristic, closedness, orientability and vertex fans; the face and edge
+//! counts (of the whole and of each piece) are corrected for the added diagonals. (A diagonal that
+//! coincides with an existing edge shows up as a non-manifold edge.)
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::input::{fan_triangles, locate, read_soup_with, renumber_face};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use surftopo_mesh::ProblemCounts;
+use surftopo_mesh::{ProblemCounts, SurfaceKind};
 
 /// The arguments of `info`.
 #[derive(clap::Args, Debug)]
@@ -22,9 +22,47 @@ pub struct Args {
     pub json: JsonArg,
     #[command(flatten)]
     pub weld: WeldArg,
-    /// Exit with code 2 when the mesh is not a valid closed orientable surface.
+    /// Exit with code 2 when any problem is found (the faces are not a triangulated surface, or
+    /// a coordinate is not finite, or a face has zero area).
     #[arg(long)]
     pub strict: bool,
+}
+
+/// One connected component, classified (the `surfaces` entries of `--json`).
+#[derive(Serialize, Clone, Debug)]
+pub struct SurfaceJson {
+    /// Its faces.
+    pub faces: usize,
+    /// V − E + F.
+    pub euler_characteristic: i64,
+    /// Whether it has a consistent orientation.
+    pub orientable: bool,
+    /// Its boundary loops.
+    pub boundary_loops: usize,
+    /// g with χ = 2 − 2g − b (null when non-orientable).
+    pub genus: Option<u64>,
+    /// k with χ = 2 − k − b (null when orientable).
+    pub crosscaps: Option<u64>,
+    /// 2g or k.
+    pub euler_genus: u64,
+    /// sphere, torus, genus-g surface, projective plane, Klein bottle, N_k, disk, annulus,
+    /// Möbius band, "genus g with b boundary loops", "N_k with b boundary loops".
+    pub name: String,
+}
+
+impl From<&SurfaceKind> for SurfaceJson {
+    fn from(k: &SurfaceKind) -> Self {
+        SurfaceJson {
+            faces: k.faces,
+            euler_characteristic: k.euler_characteristic,
+            orientable: k.orientable,
+            boundary_loops: k.boundary_loops,
+            genus: k.genus,
+            crosscaps: k.crosscaps,
+            euler_genus: k.euler_genus,
+            name: k.name(),
+        }
+    }
 }
 
 /// The facts `info` reports (JSON keys as named; the text labels are the same words).
@@ -36,7 +74,7 @@ pub struct Info {
     pub edges: usize,
     /// Faces.
     pub faces: usize,
-    /// Genus, when the faces form a closed connected orientable surface (whatever the
+    /// Genus, when the faces form one orientable surface, closed or not (whatever the
     /// coordinates: non-finite ones and zero-area faces leave it defined).
     pub genus: Option<i64>,
     /// V - E + F.
@@ -45,11 +83,16 @@ pub struct Info {
     pub components: usize,
     /// Every edge in exactly two faces.
     pub closed: bool,
-    /// A consistent orientation exists.
+    /// A consistent orientation exists (of every component).
     pub orientable: bool,
+    /// Boundary loops (over all components; 0 when the faces are not a surface).
+    pub boundary_loops: usize,
+    /// Edges in one face.
+    pub boundary_edges: usize,
     /// All faces triangles, none degenerate or duplicate (a simplicial complex).
     pub simplicial: bool,
-    /// A closed connected orientable surface surftopo accepts: no problem found.
+    /// No problem found: a triangulated surface (boundary, non-orientable pieces and several
+    /// components allowed) with finite coordinates and no zero-area face.
     pub valid: bool,
     /// Faces that would be reversed for a consistent orientation (not a problem: commands
     /// reorient them).
@@ -69,6 +112,9 @@ pub struct Info {
     pub problems_truncated: bool,
     /// The problems (at most 100), each saying where and what.
     pub problems: Vec<String>,
+    /// One classification per connected component, in the order of their first face (empty
+    /// when the faces do not form a surface).
+    pub surfaces: Vec<SurfaceJson>,
 }
 
 /// The class counts, serialised as one key per class in [`ProblemCounts::entries`] order.
@@ -128,6 +174,10 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         .collect();
     let faces = (0..soup.face_count()).map(|k| soup.face(k));
     inspection.add_problems_first(surftopo_mesh::geometry::problems(&soup.positions, faces));
+    let mut surfaces: Vec<SurfaceJson> = inspection.surfaces.iter().map(Into::into).collect();
+    if !all_triangles {
+        polygon_counts(soup.positions.len(), &triangles, &polygon_of, &mut surfaces);
+    }
 
     let simplicial = all_triangles && !inspection.has_degenerate_faces();
     let valid = inspection.is_valid();
@@ -140,6 +190,8 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         components: inspection.components,
         closed: inspection.is_closed(),
         orientable: inspection.orientable,
+        boundary_loops: inspection.boundary_loops,
+        boundary_edges: inspection.boundary_edges,
         simplicial,
         valid,
         reoriented_faces: inspection.reoriented_faces,
@@ -153,7 +205,28 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
             .iter()
             .map(|p| locate(path, &soup, p))
             .collect(),
+        surfaces,
     })
+}
+
+/// The faces of each piece counted as polygons, not as the triangles of their fans.
+fn polygon_counts(
+    vertex_count: usize,
+    triangles: &[[u32; 3]],
+    polygon_of: &[u32],
+    surfaces: &mut [SurfaceJson],
+) {
+    let Some(component) = surftopo_mesh::face_components(vertex_count, triangles) else {
+        return;
+    };
+    for s in surfaces.iter_mut() {
+        s.faces = 0;
+    }
+    for (t, &c) in component.iter().enumerate() {
+        if t == 0 || polygon_of[t] != polygon_of[t - 1] {
+            surfaces[c as usize].faces += 1;
+        }
+    }
 }
 
 /// The text report: one line per fact, labelled with its JSON key's words (`_` read as a space).
@@ -169,15 +242,16 @@ fn text(path: &Path, info: &Info) -> String {
     line("faces", &info.faces);
     match info.genus {
         Some(g) => line("genus", &g),
-        None => line(
-            "genus",
-            &"- (the faces do not form a closed connected orientable surface)",
-        ),
+        None => line("genus", &"- (the faces do not form one orientable surface)"),
     }
     line("euler_characteristic", &info.euler_characteristic);
     line("components", &info.components);
     line("closed", &yes(info.closed));
     line("orientable", &yes(info.orientable));
+    line("boundary_loops", &info.boundary_loops);
+    if info.boundary_edges > 0 {
+        line("boundary_edges", &info.boundary_edges);
+    }
     line("simplicial", &yes(info.simplicial));
     line("valid", &yes(info.valid));
     for (key, n) in [
@@ -203,6 +277,24 @@ fn text(path: &Path, info: &Info) -> String {
         line(
             "problems_truncated",
             &format!("yes (the first {} listed)", info.problems.len()),
+        );
+    }
+    for (k, piece) in info.surfaces.iter().enumerate() {
+        let detail = match (piece.genus, piece.crosscaps) {
+            (Some(g), _) => format!("orientable, genus {g}"),
+            (_, Some(c)) => format!("non-orientable, {c} crosscaps"),
+            _ => String::new(),
+        };
+        line(
+            &format!("surface {k}"),
+            &format!(
+                "{}: {} faces, χ {}, {detail}, {} boundary loops, Euler genus {}",
+                piece.name,
+                piece.faces,
+                piece.euler_characteristic,
+                piece.boundary_loops,
+                piece.euler_genus
+            ),
         );
     }
     let mut s = format!("{}\n{s}", crate::input::name(path));

@@ -1,11 +1,12 @@
-//! `surftopo irreducible`: an irreducible triangulation by topology-preserving edge contractions.
+//! `surftopo irreducible`: an irreducible triangulation of any compact surface by
+//! topology-preserving edge contractions.
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
 use serde::Serialize;
-use surftopo_irreducible::{Algorithm, Counters, reduce};
-use surftopo_mesh::Surface;
-use surftopo_mesh::{Renumbering, SurfaceMesh};
+use surftopo_io::PolygonSoup;
+use surftopo_irreducible::{Algorithm, Counters};
+use surftopo_mesh::{CoveredSurface, VertexId};
 
 /// The arguments of `irreducible`.
 #[derive(clap::Args, Debug)]
@@ -21,7 +22,7 @@ pub struct Args {
     pub algorithm: String,
 }
 
-/// V, E, F and genus of a mesh.
+/// V, E, F, genus and the classification of a triangulated surface.
 #[derive(Serialize)]
 pub struct Counts {
     /// Vertices.
@@ -30,19 +31,47 @@ pub struct Counts {
     pub edges: usize,
     /// Faces.
     pub faces: usize,
-    /// Genus.
-    pub genus: i64,
+    /// Genus, when the surface is one orientable piece (closed or not).
+    pub genus: Option<i64>,
+    /// V − E + F.
+    pub euler_characteristic: i64,
+    /// One classification per connected component.
+    pub surfaces: Vec<crate::commands::info::SurfaceJson>,
 }
 
 impl Counts {
-    /// The counts of a mesh's live elements.
-    pub fn of(mesh: &SurfaceMesh) -> Self {
+    /// The counts of a surface's triangles (any vertex ids).
+    pub fn of(triangles: &[[u32; 3]]) -> Self {
+        let vertices = triangles
+            .iter()
+            .flatten()
+            .max()
+            .map_or(0, |&v| v as usize + 1);
+        Self::of_pieces(&surftopo_mesh::inspect(vertices, triangles).surfaces)
+    }
+
+    /// The counts of a surface from the classification of its pieces.
+    pub fn of_pieces(pieces: &[surftopo_mesh::SurfaceKind]) -> Self {
+        let sum = |f: fn(&surftopo_mesh::SurfaceKind) -> usize| pieces.iter().map(f).sum();
+        let (vertices, edges, faces): (usize, usize, usize) =
+            (sum(|k| k.vertices), sum(|k| k.edges), sum(|k| k.faces));
         Self {
-            vertices: mesh.vertex_count(),
-            edges: mesh.edge_count(),
-            faces: mesh.face_count(),
-            genus: mesh.genus(),
+            vertices,
+            edges,
+            faces,
+            genus: match pieces {
+                [one] => one.genus.map(|g| g as i64),
+                _ => None,
+            },
+            euler_characteristic: vertices as i64 - edges as i64 + faces as i64,
+            surfaces: pieces.iter().map(Into::into).collect(),
         }
+    }
+
+    /// The surfaces' names, joined by ` + `.
+    pub fn names(&self) -> String {
+        let names: Vec<&str> = self.surfaces.iter().map(|s| s.name.as_str()).collect();
+        names.join(" + ")
     }
 }
 
@@ -68,34 +97,34 @@ pub struct Report {
     pub seed: Option<u64>,
 }
 
-/// Reduces `surface` to an irreducible triangulation; returns it (its vertices are the surviving
-/// input vertices with their positions) and the report.
-pub fn reduce_surface(
-    surface: &Surface,
+/// Reduces `surface` (any compact surface, whose pieces are classified as `pieces`: the
+/// [`surftopo_mesh::BuildReport::surfaces`] of its building) to an irreducible triangulation;
+/// returns it (its vertices are the surviving input vertices with their positions, numbered
+/// densely in input order), the report, and the map from the input's vertex ids (classes) to
+/// the output's (`INVALID` for removed vertices): the survivors' attributes follow it.
+pub fn reduce_covered(
+    surface: &CoveredSurface,
+    pieces: &[surftopo_mesh::SurfaceKind],
     algorithm: Algorithm,
-) -> anyhow::Result<(Surface, Report)> {
-    reduce_surface_renumbered(surface, algorithm)
-        .map(|(irreducible, report, _)| (irreducible, report))
-}
-
-/// [`reduce_surface`], also returning the renumbering from the input's vertex ids to the
-/// irreducible triangulation's (dense) ones: the survivors' attributes follow it.
-pub fn reduce_surface_renumbered(
-    surface: &Surface,
-    algorithm: Algorithm,
-) -> anyhow::Result<(Surface, Report, Renumbering)> {
-    let input = Counts::of(&surface.mesh);
-    let reduction = reduce(surface.mesh.clone(), algorithm).map_err(|e| invalid(e.to_string()))?;
+) -> anyhow::Result<(PolygonSoup, Report, Vec<VertexId>)> {
+    let input = Counts::of_pieces(pieces);
+    let reduction = surftopo_irreducible::reduce_surface(surface.cover.clone(), algorithm)
+        .map_err(|e| invalid(e.to_string()))?;
     let Counters {
         link_tests,
         edges_tested_more_than_once,
         contractions,
         seconds,
     } = reduction.counters;
+    let reduced = CoveredSurface {
+        cover: reduction.cover,
+        positions: surface.positions.clone(),
+    };
+    let triangles = reduced.cover.surface_triangles();
     let report = Report {
         algorithm: algorithm.name(),
         input,
-        output: Counts::of(&reduction.mesh),
+        output: Counts::of(&triangles),
         link_tests,
         edges_tested_more_than_once,
         contractions,
@@ -105,12 +134,18 @@ pub fn reduce_surface_renumbered(
             _ => None,
         },
     };
-    let mut irreducible = Surface {
-        mesh: reduction.mesh,
-        positions: surface.positions.clone(),
-    };
-    let renumbering = irreducible.compact();
-    Ok((irreducible, report, renumbering))
+    let (positions, dense) = reduced.to_triangles();
+    let mut old_to_new = vec![VertexId::INVALID; surface.positions.len()];
+    for (t, d) in triangles.iter().zip(&dense) {
+        for (&c, &n) in t.iter().zip(d) {
+            old_to_new[c as usize] = VertexId(n);
+        }
+    }
+    Ok((
+        PolygonSoup::from_triangles(positions, &dense),
+        report,
+        old_to_new,
+    ))
 }
 
 /// Runs `irreducible`.
@@ -119,30 +154,24 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     args.job.check_output()?;
     let algorithm = Algorithm::from_name(&args.algorithm, args.job.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
-    let loaded = args.job.read()?;
-    let (irreducible, report, renumbering) = crate::progress::step("contracting", || {
-        reduce_surface_renumbered(&loaded.surface, algorithm)
+    let loaded = args.job.read_covered()?;
+    let (mut soup, report, old_to_new) = crate::progress::step("contracting", || {
+        reduce_covered(&loaded.surface, &loaded.report.surfaces, algorithm)
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
-    // Compacted: vertex ids are dense and in order, as `to_triangles` numbers them.
-    let (positions, triangles) = irreducible.to_triangles();
-    let mut soup = surftopo_io::PolygonSoup::from_triangles(positions, &triangles);
-    soup.attributes = crate::attributes::renumbered(
-        &loaded.attributes,
-        soup.vertex_count(),
-        &renumbering.vertices,
-    );
-    args.job.write("irreducible", &soup, &loaded)?;
+    soup.attributes =
+        crate::attributes::renumbered(&loaded.attributes, soup.vertex_count(), &old_to_new);
+    args.job.write("irreducible", &soup, &loaded.attributes)?;
     if args.job.json.json {
         crate::output::print_json(&report)?;
     } else {
         crate::output::emit(&format!(
-            "{}: {} vertices, {} edges, {} faces, genus {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
+            "{}: {} vertices, {} edges, {} faces, {} (from {} vertices): {} contractions, {} link tests, {} edges tested more than once, {} ({})\n",
             crate::output::name(output),
             report.output.vertices,
             report.output.edges,
             report.output.faces,
-            report.output.genus,
+            report.output.names(),
             report.input.vertices,
             report.contractions,
             report.link_tests,

@@ -189,7 +189,7 @@ fn decide_by_tessellations(
             ))
         });
     }
-    let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
+    let (first, second) = (load_valid(a, weld)?, load_valid(b, weld)?);
     let resolved = match method.method {
         Method::Auto
             if choose_method_for_triangulation(&first) == DelaunayMethod::Dubois
@@ -252,7 +252,7 @@ pub fn run(args: &Args) -> anyhow::Result<Verdict> {
         })?;
     } else {
         crate::output::emit(&format!("{verdict}\n"))?;
-        eprintln!("{decision}");
+        stderr_println!("{decision}");
     }
     Ok(Verdict(decision))
 }
@@ -274,10 +274,27 @@ pub fn decide_args(args: &Args) -> anyhow::Result<IsometryDecision> {
         length_tolerance: args.tolerance,
         ..IsometryOptions::default()
     };
-    if method.method == Method::Flip {
-        let (first, second) = (load_intrinsic(a, weld)?, load_intrinsic(b, weld)?);
-        decide(a, b, &first, &second, &options)
+    let decision = if method.method == Method::Flip {
+        load_valid(a, weld)
+            .and_then(|first| Ok((first, load_valid(b, weld)?)))
+            .and_then(|(first, second)| decide(a, b, &first, &second, &options))
     } else {
         decide_by_tessellations(a, b, weld, *method, &options)
+    };
+    match decision {
+        Err(e) if crate::failure::exit_code(&e) == crate::failure::NUMERICAL_FAILURE => {
+            Ok(IsometryDecision::Undecidable(crate::failure::message(&e)))
+        }
+        other => other,
     }
+}
+
+/// An input read in double precision whose lengths make valid triangles, as `delaunay` asks
+/// ([`crate::commands::delaunay::validated`]): degenerate input is refused (exit 2), or, when
+/// only double precision makes it degenerate (exact corners), a numerical failure that
+/// [`decide_args`] reports as undecidable in double precision (exit 3).
+fn load_valid(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
+    let tri = load_intrinsic(path, weld)?;
+    crate::commands::delaunay::validated(path, &tri)?;
+    Ok(tri)
 }

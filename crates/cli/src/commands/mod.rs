@@ -1,5 +1,6 @@
 //! One module per subcommand.
 
+pub mod census;
 pub mod convert;
 pub mod delaunay;
 pub mod demo;
@@ -7,4 +8,5 @@ pub mod generate;
 pub mod info;
 pub mod irreducible;
 pub mod isometric;
+pub mod isomorphic;
 pub mod quad;

@@ -104,7 +104,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let objective = objective_named(&args.objective)?;
     let loaded = args.job.read()?;
     if !loaded.report.dropped_vertices.is_empty() {
-        eprintln!(
+        stderr_println!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
@@ -115,7 +115,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
     let mut soup = quad_soup(&loaded.surface, result);
     soup.attributes.vertex = loaded.attributes.vertex.clone();
-    args.job.write("quad", &soup, &loaded)?;
+    args.job.write("quad", &soup, &loaded.attributes)?;
     let stats = &result.stats;
     if args.job.json.json {
         crate::output::print_json(&paired.figures(&args.objective))?;

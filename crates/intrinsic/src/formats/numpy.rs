@@ -105,8 +105,9 @@ pub fn write_npz<W: Write>(out: W, m: &SparseMatrix) -> io::Result<()> {
     write_zip(out, &entries)
 }
 
-/// Writes a zip archive of uncompressed (`stored`) entries: local headers with their data, the
-/// central directory, its end record. Times are 1980-01-01 00:00, so the same entries give the
+/// Writes a zip archive of uncompressed (`stored`) entries: local headers (30 bytes and the
+/// name) with their data, the central directory (46 bytes and the name per entry), its end
+/// record (22 bytes). Times are 1980-01-01 00:00, so the same entries give the
 /// same bytes.
 fn write_zip<W: Write>(mut out: W, entries: &[(&str, Vec<u8>)]) -> io::Result<()> {
     let too_large = || io::Error::new(io::ErrorKind::InvalidInput, "too large for a .npz (4 GiB)");
@@ -142,7 +143,7 @@ fn write_zip<W: Write>(mut out: W, entries: &[(&str, Vec<u8>)]) -> io::Result<()
         central.extend_from_slice(b"PK\x01\x02");
         central.extend_from_slice(&20u16.to_le_bytes()); // version made by
         central.extend_from_slice(&common);
-        central.extend_from_slice(&[0; 8]); // comment length, disk, internal attributes
+        central.extend_from_slice(&[0; 6]); // comment length, disk, internal attributes
         central.extend_from_slice(&0u32.to_le_bytes()); // external attributes
         central.extend_from_slice(&offset.to_le_bytes());
         central.extend_from_slice(name.as_bytes());
@@ -191,6 +192,17 @@ mod tests {
         );
     }
 
+    fn u16_at(bytes: &[u8], at: usize) -> usize {
+        usize::from(u16::from_le_bytes([bytes[at], bytes[at + 1]]))
+    }
+
+    fn u32_at(bytes: &[u8], at: usize) -> usize {
+        u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap()) as usize
+    }
+
+    /// Walks the archive as a zip reader does (APPNOTE 4.3.7, 4.3.12, 4.3.16): from the end
+    /// record to the central directory, each of its 46-byte headers to its local header, whose
+    /// name, sizes and crc must agree; the directory must end where the end record says.
     #[test]
     fn zip_directory_points_at_its_entries() {
         let m = SparseMatrix::from_triplets(2, &[(0, 0, 2.0), (1, 0, -1.0), (1, 1, 3.0)]);
@@ -198,11 +210,37 @@ mod tests {
         write_npz(&mut bytes, &m).unwrap();
         let end = bytes.len() - 22;
         assert_eq!(&bytes[end..end + 4], b"PK\x05\x06");
-        let count = u16::from_le_bytes([bytes[end + 10], bytes[end + 11]]);
-        assert_eq!(count, 5);
-        let start = u32::from_le_bytes(bytes[end + 16..end + 20].try_into().unwrap()) as usize;
-        assert_eq!(&bytes[start..start + 4], b"PK\x01\x02");
-        assert_eq!(&bytes[..4], b"PK\x03\x04");
+        assert_eq!(u16_at(&bytes, end + 10), 5);
+        let (size, start) = (u32_at(&bytes, end + 12), u32_at(&bytes, end + 16));
+        assert_eq!(start + size, end, "the directory ends at the end record");
+        let mut at = start;
+        let mut names = Vec::new();
+        while at < end {
+            assert_eq!(&bytes[at..at + 4], b"PK\x01\x02");
+            let name_len = u16_at(&bytes, at + 28);
+            let extra_and_comment = u16_at(&bytes, at + 30) + u16_at(&bytes, at + 32);
+            let (crc, stored) = (u32_at(&bytes, at + 16), u32_at(&bytes, at + 20));
+            let local = u32_at(&bytes, at + 42);
+            let name = &bytes[at + 46..at + 46 + name_len];
+            assert_eq!(&bytes[local..local + 4], b"PK\x03\x04");
+            assert_eq!(u16_at(&bytes, local + 26), name_len);
+            assert_eq!(&bytes[local + 30..local + 30 + name_len], name);
+            let data = local + 30 + name_len + u16_at(&bytes, local + 28);
+            assert_eq!(crc32fast::hash(&bytes[data..data + stored]) as usize, crc);
+            names.push(String::from_utf8(name.to_vec()).unwrap());
+            at += 46 + name_len + extra_and_comment;
+        }
+        assert_eq!(at, end);
+        assert_eq!(
+            names,
+            [
+                "format.npy",
+                "shape.npy",
+                "data.npy",
+                "indices.npy",
+                "indptr.npy"
+            ]
+        );
         // A crc-32 of a known string (the zip/PNG polynomial).
         assert_eq!(crc32fast::hash(b"123456789"), 0xCBF4_3926);
     }

@@ -29,10 +29,11 @@
 //!   which keeps the surface oriented. A side appears in at most one pair; sides in no pair are
 //!   boundary. Matched sides must have equal lengths up to a relative tolerance
 //!   (`|a - b| <= tolerance · max(a, b)`, default [`crate::DEFAULT_LENGTH_TOLERANCE`] = 1e-9).
-//! - Every coordinate and length is a [`Number`]: a JSON number (the exact value of its double) or
-//!   a string holding an exact decimal or fraction (`"1000000000.333"`, `"3000000001/3"`); exact
-//!   mode ([`PortalgonDoc::to_portalgon_in`] with rationals) reads them exactly, and the writer
-//!   writes a number when the value is a double, a `"p/q"` string otherwise.
+//! - Every coordinate and length is a [`Number`]: a JSON number (the decimal it spells in exact
+//!   mode, its nearest double in double precision) or a string holding an exact decimal or
+//!   fraction (`"1000000000.333"`, `"3000000001/3"`); exact mode ([`PortalgonDoc::to_portalgon_in`]
+//!   with rationals) reads them exactly, and the writer writes a number when the value is what
+//!   its shortest text spells, a `"p/q"` string otherwise.
 //! - `format` and `version` may be omitted; if present they must be `"surftopo-portalgon"` and 1.
 //!   An optional `comment` string is kept. Unknown fields are errors (typos do not pass silently).
 //!
@@ -44,7 +45,7 @@
 
 use crate::error::PortalgonError;
 use crate::formats::text_blocks::{block_count, block_range, write_blocks};
-use crate::geometry::{Point, Rational, Scalar};
+use crate::geometry::{ParseRationalError, Point, Rational, Scalar};
 use crate::portalgon::{PolygonId, Portalgon, check_polygon};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::convert::{TriangleGluing, is_clockwise, triangulation_from_gluing};
@@ -73,55 +74,141 @@ fn format_version() -> u32 {
     FORMAT_VERSION
 }
 
-/// A coordinate or a length of a portalgon file: a JSON number, read as the exact value of the
-/// double it parses to, or a string holding an exact rational (an integer, a decimal with an
-/// optional exponent, or a fraction `"p/q"`; [`Rational`]'s syntax).
+/// A coordinate or a length of a portalgon file: a JSON number, or a string holding an exact
+/// rational (an integer, a decimal with an optional exponent, or a fraction `"p/q"`;
+/// [`Rational`]'s syntax).
 ///
-/// Written as a JSON number when the value is exactly a double (so `f64` output is as before, bit
-/// for bit), as a `"p/q"` (or integer) string otherwise.
+/// A JSON number literal is the exact decimal it spells (`0.1` is 1/10, `1000000000000000001`
+/// that integer) for exact arithmetic, and its nearest double (the correctly rounded value, as
+/// every JSON reader takes it) for double precision: [`Number::Double`] when the two are the
+/// same value, [`Number::Decimal`] otherwise. Written as a JSON number when the value is a
+/// double or a decimal read as one (its exact digits), as a `"p/q"` (or integer) string
+/// otherwise, so `f64` output is as before, bit for bit.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Number {
     /// The exact value of a double (a JSON number).
     Double(f64),
+    /// A JSON number literal whose exact value is not a double: `exact` in exact arithmetic,
+    /// `nearest` (correctly rounded; infinite beyond the range of doubles) in double precision.
+    Decimal {
+        /// The decimal, exactly.
+        exact: Rational,
+        /// The double nearest to it.
+        nearest: f64,
+    },
     /// An exact rational that is not a double (a JSON string).
     Exact(Rational),
 }
 
 impl Number {
-    /// The value of a scalar: a double for `f64`; for rationals a double when exactly one
-    /// (`Exact` otherwise). `Double(NaN)` for a non-finite double (rejected when written).
+    /// The value of a scalar: a double for `f64`; for rationals a double when it is one whose
+    /// shortest decimal text is its exact value (`0.5`, `3.0`: read back exactly as a number
+    /// literal), `Exact` otherwise (the double nearest 0.1, whose shortest text `0.1` is 1/10,
+    /// is written `"3602879701896397/36028797018963968"`). `Double(NaN)` for a non-finite
+    /// double (rejected when written).
     pub fn from_scalar<S: Scalar>(v: &S) -> Self {
         if !S::EXACT {
             return Number::Double(v.to_f64());
         }
         match v.to_rational() {
             Some(r) => match r.as_exact_f64() {
-                Some(x) => Number::Double(x),
-                None => Number::Exact(r),
+                Some(x) if Self::shortest_text_is_exact(x) => Number::Double(x),
+                _ => Number::Exact(r),
             },
             None => Number::Double(f64::NAN),
         }
     }
 
+    /// Whether the shortest decimal text of `x` (what the writers write) spells `x` exactly.
+    fn shortest_text_is_exact(x: f64) -> bool {
+        let mut text = Vec::new();
+        push_f64(&mut text, x);
+        let text = std::str::from_utf8(&text).expect("ASCII");
+        match crate::geometry::small_literal(text, x) {
+            Some(decimal) => decimal.is_none(),
+            None => text
+                .parse::<Rational>()
+                .is_ok_and(|r| r.as_exact_f64() == Some(x)),
+        }
+    }
+
+    /// A JSON number literal (`-12`, `0.1`, `2.5e-3`, as JSON spells numbers): a
+    /// [`Number::Double`] when its exact value is its nearest double, else a
+    /// [`Number::Decimal`].
+    ///
+    /// # Errors
+    /// The text is not a number, or its exact value has more bits than
+    /// [`crate::geometry::MAX_INPUT_BITS`] allows.
+    pub fn from_literal(text: &str) -> Result<Self, String> {
+        let nearest: f64 = text
+            .parse()
+            .map_err(|_| format!("not a number: {text:?}"))?;
+        match crate::geometry::small_literal(text, nearest) {
+            Some(None) => return Ok(Number::Double(nearest)),
+            Some(Some(exact)) => return Ok(Number::Decimal { exact, nearest }),
+            None => {}
+        }
+        let exact: Rational = text
+            .parse()
+            .map_err(|e: ParseRationalError| e.to_string())?;
+        if exact.as_exact_f64() == Some(nearest) {
+            return Ok(Number::Double(nearest));
+        }
+        Ok(Number::Decimal { exact, nearest })
+    }
+
     /// The nearest double.
     pub fn to_f64(&self) -> f64 {
         match self {
-            Number::Double(x) => *x,
+            Number::Double(x) | Number::Decimal { nearest: x, .. } => *x,
             Number::Exact(r) => r.to_f64(),
         }
     }
 
-    /// The value in the scalar type `S` (exact for rationals; `None` for a non-finite double).
+    /// The value in the scalar type `S`: exact for rationals; a number literal's nearest
+    /// double otherwise; `None` for a non-finite double.
     pub fn to_scalar<S: Scalar>(&self) -> Option<S> {
         match self {
             Number::Double(x) => S::from_f64(*x),
+            Number::Decimal { exact, .. } if S::EXACT => Some(S::from_rational(exact)),
+            Number::Decimal { nearest, .. } => S::from_f64(*nearest),
             Number::Exact(r) => Some(S::from_rational(r)),
         }
     }
 
-    /// Whether the value is finite (strings always are).
+    /// Whether double precision reads this number as written: a double or a number literal
+    /// (not an exact string, whose double-precision reading is exact arithmetic rounded once).
+    fn is_literal(&self) -> bool {
+        !matches!(self, Number::Exact(_))
+    }
+
+    /// Whether the value is finite (strings and decimals always are).
     pub fn is_finite(&self) -> bool {
-        matches!(self, Number::Exact(_)) || self.to_f64().is_finite()
+        !matches!(self, Number::Double(x) if !x.is_finite())
+    }
+
+    /// The JSON text of the value: a number for a double or a decimal, a string otherwise.
+    fn json_text(&self) -> String {
+        match self {
+            Number::Double(x) => {
+                let mut buf = Vec::new();
+                push_f64(&mut buf, *x);
+                String::from_utf8(buf).expect("ASCII")
+            }
+            Number::Decimal { exact, nearest } => {
+                // The shortest text of the nearest double when it spells the decimal (`0.1`,
+                // `1e300`), else every digit.
+                let short = Number::Double(*nearest).json_text();
+                if short.parse::<Rational>().as_ref() == Ok(exact) {
+                    short
+                } else {
+                    exact
+                        .to_decimal()
+                        .expect("a decimal read from a literal has a finite decimal expansion")
+                }
+            }
+            Number::Exact(r) => format!("\"{r}\""),
+        }
     }
 }
 
@@ -135,34 +222,34 @@ impl Serialize for Number {
     fn serialize<Z: Serializer>(&self, serializer: Z) -> Result<Z::Ok, Z::Error> {
         match self {
             Number::Double(x) => serializer.serialize_f64(*x),
+            Number::Decimal { .. } => serde_json::value::RawValue::from_string(self.json_text())
+                .map_err(serde::ser::Error::custom)?
+                .serialize(serializer),
             Number::Exact(r) => serializer.serialize_str(&r.to_string()),
         }
     }
 }
 
 impl<'de> Deserialize<'de> for Number {
+    /// The JSON text of the value as written (`serde_json`'s raw values), so that a number
+    /// literal is read exactly ([`Number::from_literal`]); a string holds a [`Rational`].
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Visitor;
-        impl serde::de::Visitor<'_> for Visitor {
-            type Value = Number;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("a number, or a string holding an exact decimal or fraction p/q")
-            }
-            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Number, E> {
-                Ok(Number::Double(v))
-            }
-            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Number, E> {
-                Ok(Number::Double(v as f64))
-            }
-            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Number, E> {
-                Ok(Number::Double(v as f64))
-            }
-            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Number, E> {
-                let r: Rational = v.parse().map_err(E::custom)?;
-                Ok(Number::from_scalar(&r))
-            }
+        use serde::de::Error;
+        let raw = Box::<serde_json::value::RawValue>::deserialize(deserializer)?;
+        let text = raw.get();
+        if text.starts_with('"') {
+            let s: std::borrow::Cow<'_, str> =
+                serde_json::from_str(text).map_err(D::Error::custom)?;
+            let r: Rational = s.parse().map_err(D::Error::custom)?;
+            return Ok(Number::from_scalar(&r));
         }
-        deserializer.deserialize_any(Visitor)
+        if !text.starts_with(|c: char| c == '-' || c.is_ascii_digit()) {
+            return Err(D::Error::custom(format!(
+                "expected a number, or a string holding an exact decimal or fraction p/q, found {}",
+                surftopo_mesh::printable(&text.chars().take(40).collect::<String>())
+            )));
+        }
+        Number::from_literal(text).map_err(D::Error::custom)
     }
 }
 
@@ -218,6 +305,16 @@ impl PortalgonDoc {
     /// [`PortalgonError::Json`] (with line and column), [`PortalgonError::Version`].
     pub fn from_json(text: &str) -> Result<Self, PortalgonError> {
         let doc: Self = serde_json::from_str(text).map_err(|e| json_error(&e))?;
+        doc.check_header()?;
+        Ok(doc)
+    }
+
+    /// Parses JSON text in memory (faster than [`Self::read`] on a reader).
+    ///
+    /// # Errors
+    /// As [`Self::from_json`]; [`PortalgonError::Json`] for text that is not UTF-8.
+    pub fn from_slice(bytes: &[u8]) -> Result<Self, PortalgonError> {
+        let doc: Self = serde_json::from_slice(bytes).map_err(|e| json_error(&e))?;
         doc.check_header()?;
         Ok(doc)
     }
@@ -479,7 +576,7 @@ impl PortalgonDoc {
         let mut sides = Vec::with_capacity(self.polygons.len());
         for (polygon, p) in self.polygons.iter().enumerate() {
             let l = match (&p.corners, &p.lengths) {
-                (Some(c), _) if c.iter().flatten().all(|x| matches!(x, Number::Double(_))) => {
+                (Some(c), _) if c.iter().flatten().all(Number::is_literal) => {
                     let c: Vec<Point<f64>> = scalar_corners(polygon, c)?;
                     if is_clockwise(&c) {
                         return Err(PortalgonError::NotCounterClockwise {
@@ -761,15 +858,11 @@ fn push_pair(buf: &mut Vec<u8>, [p, i]: [usize; 2], [q, j]: [usize; 2]) {
     buf.extend_from_slice(b"]]");
 }
 
-/// A [`Number`]: a JSON number for a double, a string for an exact rational.
+/// A [`Number`]: a JSON number for a double or a decimal, a string for an exact rational.
 fn push_number(buf: &mut Vec<u8>, x: &Number) {
     match x {
         Number::Double(v) => push_f64(buf, *v),
-        Number::Exact(r) => {
-            buf.push(b'"');
-            buf.extend_from_slice(r.to_string().as_bytes());
-            buf.push(b'"');
-        }
+        other => buf.extend_from_slice(other.json_text().as_bytes()),
     }
 }
 
@@ -948,9 +1041,16 @@ mod tests {
         let mut written = Vec::new();
         doc.write(&mut written, false).unwrap();
         assert_eq!(written, serde_bytes(&doc));
+        // Read back, the text is the same (1e300 and 5e-324 now as the decimals they spell,
+        // with the same nearest doubles).
+        let back = PortalgonDoc::from_json(std::str::from_utf8(&written).unwrap()).unwrap();
+        assert_eq!(back.to_json().unwrap().as_bytes(), &written[..]);
+        let corners = back.polygons[0].corners.as_ref().unwrap();
+        assert_eq!(corners[1][1].to_f64(), 1e300);
+        assert_eq!(corners[2][0].to_f64(), 5e-324);
         assert_eq!(
-            PortalgonDoc::from_json(std::str::from_utf8(&written).unwrap()).unwrap(),
-            doc
+            corners[1][0],
+            doc.polygons[0].corners.as_ref().unwrap()[1][0]
         );
     }
 

@@ -23,7 +23,8 @@ mod rational;
 mod scalar;
 
 pub use double_double::DoubleDouble;
-pub use rational::{ParseRationalError, Rational};
+pub(crate) use rational::small_literal;
+pub use rational::{MAX_INPUT_BITS, ParseRationalError, Rational};
 pub use scalar::Scalar;
 
 use std::cmp::Ordering;

@@ -32,10 +32,107 @@ enum Repr {
     Big(RBig),
 }
 
+/// The most bits an exact number read from text may have: those of its numerator and
+/// denominator together, as written (a fraction `p/q`: `p` and `q`; a decimal `d.ddde±k`: its
+/// digits and the power of ten), about 1,233 decimal digits. Dubois' T_x at x = 10¹⁰⁰⁰ takes
+/// 3,322; a longer number is refused before it is parsed, so that exact arithmetic never starts
+/// on numbers whose products it could not hold.
+pub const MAX_INPUT_BITS: u64 = 4096;
+
 /// Why a string is not a rational number.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("not an exact number (an integer, a decimal or a fraction p/q with q > 0): {0:?}")]
-pub struct ParseRationalError(pub String);
+pub enum ParseRationalError {
+    /// Not an integer, a decimal or a fraction.
+    #[error("not an exact number (an integer, a decimal or a fraction p/q with q > 0): {0:?}")]
+    Syntax(String),
+    /// More bits than [`MAX_INPUT_BITS`].
+    #[error(
+        "an exact number of about {bits} bits ({start}...): exact numbers in input are limited to \
+         {MAX_INPUT_BITS} bits (about 1,233 decimal digits) in numerator and denominator together"
+    )]
+    TooLarge {
+        /// Its size in bits, as written (at least).
+        bits: u64,
+        /// Its first characters.
+        start: String,
+    },
+}
+
+/// log₂(10), rounded up in the third decimal: digit counts to bit counts.
+const BITS_PER_DIGIT: f64 = 3.322;
+
+/// Refuses `s` when `digits` decimal digits and a power of ten `10^power` would exceed
+/// [`MAX_INPUT_BITS`] (counted before anything is parsed).
+fn check_input_size(s: &str, digits: usize, power: u64) -> Result<(), ParseRationalError> {
+    let bits = ((digits as f64 + power as f64) * BITS_PER_DIGIT) as u64;
+    if bits > MAX_INPUT_BITS + 4 {
+        return Err(ParseRationalError::TooLarge {
+            bits,
+            start: s.chars().take(20).collect(),
+        });
+    }
+    Ok(())
+}
+
+/// A JSON number literal (`text`, JSON's syntax) against the double `nearest` it rounds to,
+/// decided on its digits without big integers when it has at most 19 significant digits and a
+/// small exponent: `Some(None)` when its value is `nearest` exactly, `Some(Some(r))` with its
+/// value `r` otherwise; `None` when undecided here (then [`Rational`]'s parser decides).
+pub(crate) fn small_literal(text: &str, nearest: f64) -> Option<Option<Rational>> {
+    let negative = text.starts_with('-');
+    let unsigned = text.strip_prefix('-').unwrap_or(text);
+    let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
+        Some(i) => (&unsigned[..i], unsigned[i + 1..].parse::<i64>().ok()?),
+        None => (unsigned, 0),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let mut m = 0u64;
+    let mut significant = 0usize;
+    for b in int_part.bytes().chain(frac_part.bytes()) {
+        if m > 0 || b != b'0' {
+            significant += 1;
+            if significant > 19 || !b.is_ascii_digit() {
+                return None;
+            }
+            m = 10 * m + u64::from(b - b'0');
+        }
+    }
+    if m == 0 {
+        return Some(None); // zero
+    }
+    let mut e10 = exponent.checked_sub(frac_part.len() as i64)?;
+    while m.is_multiple_of(10) {
+        m /= 10;
+        e10 += 1;
+    }
+    let signed = |v: i64| if negative { -v } else { v };
+    if e10 >= 0 {
+        let value = u128::from(m).checked_mul(10u128.checked_pow(u32::try_from(e10).ok()?)?)?;
+        // A correctly rounded double equals the value whenever the value is a double.
+        if nearest.is_finite() && nearest.abs() < 2f64.powi(127) && nearest.abs() as u128 == value {
+            return Some(None);
+        }
+        let value = i64::try_from(value).ok()?;
+        return Some(Some(Rational::from_i64(signed(value))));
+    }
+    let k = u32::try_from(-e10).ok().filter(|&k| k <= 18)?;
+    let q = m.is_multiple_of(5u64.pow(k)).then(|| m / 5u64.pow(k)); // value = q / 2^k when dyadic
+    if q.is_some_and(|q| q >> q.trailing_zeros() < 1 << 53) {
+        return Some(None);
+    }
+    // m / 10^k reduced: only the factors 2 and 5 of m can cancel.
+    let twos = m.trailing_zeros().min(k);
+    let (mut m, mut den) = (m >> twos, 10u64.pow(k) >> twos);
+    let mut fives = 0;
+    while fives < k && m.is_multiple_of(5) {
+        (m, den, fives) = (m / 5, den / 5, fives + 1);
+    }
+    let (num, den) = (i64::try_from(m).ok()?, i64::try_from(den).ok()?);
+    Some(Some(Rational(Repr::Small {
+        num: signed(num),
+        den,
+    })))
+}
 
 /// The greatest common divisor; `gcd(0, b) = b`. A power of two shortcuts; operands that fit
 /// 64 bits run the 64-bit loop.
@@ -156,6 +253,34 @@ impl Rational {
         (x.is_finite() && RBig::try_from(x).ok().as_ref() == Some(&r)).then_some(x)
     }
 
+    /// The exact decimal text of the value (`-0.125`, `1000000000000000001`) when its
+    /// denominator divides a power of ten; `None` otherwise.
+    pub fn to_decimal(&self) -> Option<String> {
+        let (num, den) = self.parts();
+        let twos = den.trailing_zeros().unwrap_or(0);
+        let mut rest = den >> twos;
+        let five = UBig::from(5u8);
+        let mut fives = 0usize;
+        while rest > UBig::ONE {
+            let (q, r) = (&rest / &five, &rest % &five);
+            if r != UBig::ZERO {
+                return None;
+            }
+            rest = q;
+            fives += 1;
+        }
+        let places = twos.max(fives);
+        let scale = (UBig::ONE << (places - twos)) * five.pow(places - fives);
+        let sign = if num < IBig::ZERO { "-" } else { "" };
+        let digits = (num.unsigned_abs() * scale).to_string();
+        if places == 0 {
+            return Some(format!("{sign}{digits}"));
+        }
+        let padded = format!("{digits:0>width$}", width = places + 1);
+        let (int_part, frac_part) = padded.split_at(padded.len() - places);
+        Some(format!("{sign}{int_part}.{frac_part}"))
+    }
+
     /// The number of bits of the numerator plus those of the denominator (a measure of size).
     pub fn bits(&self) -> u64 {
         match &self.0 {
@@ -206,16 +331,41 @@ fn parse_integer(s: &str) -> Option<IBig> {
     IBig::from_str_radix(s, 10).ok()
 }
 
-/// Parses `[sign]digits[.digits][(e|E)[sign]digits]` exactly.
-fn parse_decimal(s: &str) -> Option<RBig> {
+/// The number of significant decimal digits of an integer's text (leading zeros and sign
+/// aside).
+fn significant_digits(s: &str) -> usize {
+    s.trim_start_matches(['+', '-'])
+        .trim_start_matches('0')
+        .len()
+}
+
+/// Parses `[sign]digits[.digits][(e|E)[sign]digits]` exactly; `Ok(None)` when it is not
+/// that, an error past [`MAX_INPUT_BITS`] (before the digits are parsed).
+fn parse_decimal(s: &str) -> Result<Option<RBig>, ParseRationalError> {
+    let Some((digits, shift)) = decimal_parts(s) else {
+        return Ok(None);
+    };
+    check_input_size(s, significant_digits(&digits), shift.unsigned_abs())?;
+    let Ok(digits) = IBig::from_str_radix(&format!("0{digits}"), 10) else {
+        return Ok(None);
+    };
+    let power = UBig::from(10u32).pow(shift.unsigned_abs() as usize);
+    let value = if shift >= 0 {
+        RBig::from(digits * IBig::from(power))
+    } else {
+        RBig::from_parts(digits, power)
+    };
+    Ok(Some(if s.starts_with('-') { -value } else { value }))
+}
+
+/// The digits of a decimal `[sign]digits[.digits][(e|E)[sign]digits]` (integer and fraction
+/// parts together, unparsed) and its power of ten.
+fn decimal_parts(s: &str) -> Option<(String, i64)> {
     let (mantissa, exponent) = match s.find(['e', 'E']) {
-        Some(i) => (&s[..i], s[i + 1..].parse::<i32>().ok()?),
+        Some(i) => (&s[..i], s[i + 1..].parse::<i64>().ok()?),
         None => (s, 0),
     };
-    let (negative, unsigned) = match mantissa.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
-    };
+    let unsigned = mantissa.strip_prefix(['-', '+']).unwrap_or(mantissa);
     let (int_part, frac_part) = unsigned.split_once('.').unwrap_or((unsigned, ""));
     if int_part.is_empty() && frac_part.is_empty() {
         return None;
@@ -224,38 +374,33 @@ fn parse_decimal(s: &str) -> Option<RBig> {
     if !all_digits(int_part) || !all_digits(frac_part) {
         return None;
     }
-    // Exponents beyond this would build numbers of more than ~33,000 digits: refuse them.
-    if exponent.unsigned_abs() > 100_000 {
-        return None;
-    }
-    let digits = IBig::from_str_radix(&format!("0{int_part}{frac_part}"), 10).ok()?;
-    let shift = i64::from(exponent) - frac_part.len() as i64;
-    let power = UBig::from(10u32).pow(shift.unsigned_abs() as usize);
-    let value = if shift >= 0 {
-        RBig::from(digits * IBig::from(power))
-    } else {
-        RBig::from_parts(digits, power)
-    };
-    Some(if negative { -value } else { value })
+    Some((
+        format!("{int_part}{frac_part}"),
+        exponent.checked_sub(frac_part.len() as i64)?,
+    ))
 }
 
 impl FromStr for Rational {
     type Err = ParseRationalError;
 
+    /// Parses an integer, a decimal or a fraction `p/q`; refuses, before parsing the digits,
+    /// one of more than [`MAX_INPUT_BITS`].
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let err = || ParseRationalError(s.to_string());
+        let err = || ParseRationalError::Syntax(s.chars().take(100).collect());
         let t = s.trim();
         if let Some((p, q)) = t.split_once('/') {
+            let (p, q) = (p.trim(), q.trim());
+            check_input_size(t, significant_digits(p) + significant_digits(q), 0)?;
             let (p, q) = (
-                parse_integer(p.trim()).ok_or_else(err)?,
-                parse_integer(q.trim()).ok_or_else(err)?,
+                parse_integer(p).ok_or_else(err)?,
+                parse_integer(q).ok_or_else(err)?,
             );
             if q <= IBig::ZERO {
                 return Err(err());
             }
             return Ok(Rational::from_rbig(RBig::from_parts_signed(p, q)));
         }
-        parse_decimal(t).map(Rational::from_rbig).ok_or_else(err)
+        parse_decimal(t)?.map(Rational::from_rbig).ok_or_else(err)
     }
 }
 
@@ -618,6 +763,26 @@ mod tests {
             proptest::prop_assert_eq!(x.cmp(&y), bx.cmp(&by));
             proptest::prop_assert_eq!(x.to_f64(), bx.to_f64().value());
         }
+    }
+
+    /// dashu-int before 0.5.1 reserved a gcd's scratch memory from the operands' first lengths
+    /// and panicked ("not enough memory allocated") when a later Euclidean step divided by a
+    /// much shorter remainder: here `x = 5y + s`, `y` of 10,000 bits and `s` of 5,000.
+    #[test]
+    fn quotients_of_long_operands_with_a_short_remainder_do_not_panic() {
+        let y = (UBig::ONE << 10_000) - UBig::from(12_345u32);
+        let s = (UBig::ONE << 5_000) + UBig::from(7u32);
+        let x = UBig::from(5u8) * &y + &s;
+        let (rx, ry) = (
+            Rational::from_rbig(RBig::from(x.clone())),
+            Rational::from_rbig(RBig::from(y.clone())),
+        );
+        let q = rx / ry;
+        assert_eq!(
+            q.to_rbig(),
+            RBig::from_parts(IBig::from(x), y),
+            "x / y reduced by dashu's gcd"
+        );
     }
 
     #[test]

@@ -20,6 +20,7 @@ use std::time::Instant;
 
 use prefetch_index::prefetch_index;
 
+use super::band::Band;
 use super::repair::{DFS_BUDGET, DepthFirst};
 use super::{PAIRED, Pairs};
 use crate::augment::{Outcome, PREFETCH_AHEAD};
@@ -45,68 +46,6 @@ pub(super) const GUIDED_EVEN_CONTACTS: usize = 32;
 
 /// The guided depth-first search may visit this many times the nodes of its band.
 const GUIDED_DFS_FACTOR: usize = 4;
-
-/// The nodes within some distance of a path ([`Band::mark`]), each with a key: its distance to
-/// the path's far end along the path, plus its depth.
-#[derive(Clone, Debug, Default)]
-pub(super) struct Band {
-    /// Per node slot, made at the first guided search: `[generation, key]`, in the band when the
-    /// generation is the current one.
-    marks: Vec<[u32; 2]>,
-    generation: u32,
-    /// The nodes of the current band.
-    queue: Vec<u32>,
-}
-
-impl Band {
-    /// The key of `v` when it is in the band.
-    #[inline]
-    pub(super) fn key(&self, v: u32) -> Option<u32> {
-        match self.marks[v as usize] {
-            [g, key] if g == self.generation => Some(key),
-            _ => None,
-        }
-    }
-
-    /// Whether `v` is in the band.
-    #[inline]
-    fn contains(&self, v: u32) -> bool {
-        self.marks[v as usize][0] == self.generation
-    }
-
-    /// Marks the nodes within `width` of `path` as the band (a new generation) and keys each by
-    /// its distance to the path's far end: along the path from the path node it was reached
-    /// from, plus its depth. Returns the number of nodes in the band.
-    fn mark<G: DualGraph + ?Sized>(&mut self, graph: &G, path: &[u32], width: u32) -> usize {
-        self.generation += 1;
-        let generation = self.generation;
-        let mut queue = std::mem::take(&mut self.queue);
-        queue.clear();
-        let last = path.len() - 1;
-        for (i, &p) in path.iter().enumerate() {
-            self.marks[p as usize] = [generation, (last - i) as u32];
-            queue.push(p);
-        }
-        let mut head = 0;
-        for _ in 0..width {
-            let layer_end = queue.len();
-            while head < layer_end {
-                let x = queue[head];
-                head += 1;
-                let key = self.marks[x as usize][1] + 1;
-                for (_, y) in graph.adjacent(x) {
-                    if self.marks[y as usize][0] != generation {
-                        self.marks[y as usize] = [generation, key];
-                        queue.push(y);
-                    }
-                }
-            }
-        }
-        let labelled = queue.len();
-        self.queue = queue;
-        labelled
-    }
-}
 
 /// The guided completion's own state: the waves and the band, made at the first guided search.
 #[derive(Default)]
@@ -140,7 +79,7 @@ impl GuidedCompletion {
                 let slots = pairs.graph.node_slots();
                 self.owner = vec![0; slots];
                 self.parent = vec![NONE; slots];
-                self.band.marks = vec![[0, 0]; slots];
+                self.band = Band::new(slots);
             }
             self.waves(pairs, depth_first, deferred);
             deferred.retain(|&v| pairs.is_free(v));
@@ -161,7 +100,7 @@ impl GuidedCompletion {
         for (name, len) in [
             ("owner", self.owner.len()),
             ("parent", self.parent.len()),
-            ("band", self.band.marks.len()),
+            ("band", self.band.slots()),
         ] {
             if len != 0 && len != slots {
                 return Err(format!("{name} has {len} entries for {slots} node slots"));
@@ -170,17 +109,7 @@ impl GuidedCompletion {
         if let Some(v) = self.owner.iter().position(|&o| o != 0) {
             return Err(format!("node {v} keeps the wave label {}", self.owner[v]));
         }
-        if let Some(v) = self
-            .band
-            .marks
-            .iter()
-            .position(|&[g, _]| g > self.band.generation)
-        {
-            return Err(format!(
-                "node {v} is marked by a band of a later generation"
-            ));
-        }
-        Ok(())
+        self.band.check_invariants()
     }
 
     /// The waves' counterpart of the greedy's read-ahead, on their queue: the adjacency of the
@@ -444,10 +373,7 @@ mod tests {
         GuidedCompletion {
             owner: vec![0; slots],
             parent: vec![NONE; slots],
-            band: Band {
-                marks: vec![[0, 0]; slots],
-                ..Band::default()
-            },
+            band: Band::new(slots),
             ..GuidedCompletion::default()
         }
     }
@@ -466,8 +392,7 @@ mod tests {
             assert!(band >= path.len());
             // Confined to an empty band, Edmonds finds nothing.
             let holes = pairs.mates.clone();
-            let mut empty = guided.band.clone();
-            empty.generation += 1;
+            let empty = guided.band.emptied();
             assert_eq!(edmonds_in_band(&mut pairs, &empty, root), None);
             assert_eq!(pairs.mates, holes);
             // Each band search alone pairs the holes.

@@ -14,6 +14,8 @@
 //! | 4. the guided completion: the deferred nodes are paired two by two by searches near the shortest paths between them | `guided.rs` | `GuidedCompletion` |
 //! | 5. the rest: the Forest strategy of [`crate::augment`] with the retired trees reopened | `augment.rs` | `Search` |
 //!
+//! Phases 3 and 4 both search in a band around a path (`band.rs`: `Band`), which neither owns.
+//!
 //! Phases 0 and 1 need no search at all, on the files they recognise; a coarse graph of phase 1
 //! with no perfect pairing falls back to phase 2 on the finer graph. Phases 2 to 5 share the
 //! matching ([`Pairs`]: the mates, the free degrees, the counts and the figures). Phase 5 is a
@@ -28,6 +30,7 @@
 //! one per pair of deferred nodes); plus phase 5 when a guided search fails (see
 //! [`crate::augment`]).
 
+mod band;
 mod file_order;
 mod greedy;
 mod guided;

@@ -13,7 +13,7 @@
 //! failed are far apart.
 
 use super::Pairs;
-use super::guided::Band;
+use super::band::Band;
 use crate::augment::Outcome;
 use crate::dual_graph::{DualGraph, NONE};
 

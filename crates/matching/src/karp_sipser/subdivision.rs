@@ -28,7 +28,7 @@
 //! their id order (it isolates thousands of triangles on icosphere(7), whose repairs then reach
 //! several times the graph); with the lift there is no search at all.
 
-use crate::dual_graph::{DualGraph, NONE, Pairing};
+use crate::dual_graph::{DualGraph, NONE, Pairing, flat_adjacency_methods};
 
 /// The blocks of four of a finer graph as the nodes of a coarser one ([`coarsen`]); node `k` is
 /// the block `4k..4k + 4`.
@@ -41,10 +41,7 @@ pub(super) struct CoarseDual {
 }
 
 impl DualGraph for CoarseDual {
-    #[inline]
-    fn node_slots(&self) -> usize {
-        self.adjacency.len()
-    }
+    flat_adjacency_methods!();
     #[inline]
     fn edge_slots(&self) -> usize {
         self.ends.len()
@@ -60,14 +57,6 @@ impl DualGraph for CoarseDual {
     #[inline]
     fn node_count(&self) -> usize {
         self.adjacency.len()
-    }
-    #[inline]
-    fn adjacent(&self, v: u32) -> [(u32, u32); 3] {
-        self.adjacency[v as usize]
-    }
-    #[inline]
-    fn flat_adjacency(&self) -> Option<&[[(u32, u32); 3]]> {
-        Some(&self.adjacency)
     }
     #[inline]
     fn endpoints(&self, e: u32) -> [u32; 2] {

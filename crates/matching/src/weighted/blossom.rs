@@ -28,8 +28,8 @@
 //!    time it joined; its dual is brought up to date when it leaves its tree, is shrunk into a
 //!    blossom or is expanded). The vertices of each outermost node form a set sharing one
 //!    accumulated dual change; a shrink merges the children's sets into the largest (union by
-//!    size: only the other children's vertices are relabelled), an expansion rebuilds its
-//!    children's sets. Events, keyed by the time they become possible: an
+//!    size: only the other children's vertices are relabelled), an expansion splits the set back
+//!    into its children's (one of them keeping it: again only the others are relabelled). Events, keyed by the time they become possible: an
 //!    edge from a `+` node to a free node becomes tight (GROW), an edge between two `+` nodes
 //!    becomes tight (SHRINK in one tree, AUGMENT between two: both trees dissolve), a `−`
 //!    blossom's dual reaches 0 (EXPAND). Stale events are dropped or re-queued when popped.
@@ -50,10 +50,21 @@
 //! Augmenting through blossoms follows the standard rotation of the blossom's cycle (Galil 1986,
 //! Section 4), done with an explicit stack so that deeply nested blossoms cannot overflow the
 //! call stack.
+//!
+//! # Speed (ours, not from the papers)
+//! The searches are bound by memory reads: events come out of the queue in time order, far
+//! apart in the graph. So the fields a reduced cost needs lie together in one record per id
+//! (`Slot`: an outermost vertex's whole `π` in one record), an edge event carries its two ends,
+//! the next event's records are read ahead while one is handled, and the event queue moves an
+//! item at most 7 times (`radix_heap`). A dissolved tree's former `+` nodes are not scanned again:
+//! their edges to other trees' `+` nodes already have events, which come early and are queued
+//! again when popped. Measured against LEMON and Gmsh by `crates/quad/examples/quality_bench.rs`.
 
 use std::time::Instant;
 
 use super::certificate::{BlossomDual, Certificate};
+use prefetch_index::prefetch_index;
+
 use super::radix_heap::RadixHeap;
 use super::{WeightedError, check_costs};
 use crate::dual_graph::{DualGraph, NONE};
@@ -107,49 +118,104 @@ pub struct MinCostMatching {
     pub stats: BlossomStats,
 }
 
-/// An event of a search: the time (dual change of the tree) at which it becomes possible.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+/// An event of a search, queued under the time (the dual change since the search began) at
+/// which it becomes possible.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Event {
-    time: i64,
-    kind: u8,
     /// Edge (EDGE_EVENT) or blossom (EXPAND_EVENT).
     id: u32,
-    /// The blossom's join stamp (EXPAND_EVENT), to recognise stale events.
-    stamp: u32,
+    /// The edge's two ends (EDGE_EVENT), carried so that the event's vertices are read without
+    /// the edge's record first; or the blossom's join stamp and `NONE` (EXPAND_EVENT), to
+    /// recognise stale events.
+    a: u32,
+    b: u32,
+    kind: u8,
+}
+
+/// The hot state of one id of the node range, read together when a reduced cost is evaluated or
+/// a vertex is scanned: for a vertex id, the vertex's own fields and neighbours; for any id, the
+/// fields of the vertex set and of the node of that id. An outermost vertex is its own set and
+/// node, so its reduced-cost terms and its neighbours lie in one record of one cache line.
+#[derive(Clone, Copy, Debug)]
+#[repr(align(64))]
+struct Slot {
+    /// Vertex: its stored `π` (see `Solver::pi_now`).
+    pi: i64,
+    /// Set: the dual change its vertices' `π` owe it (`set_acc` of the `Solver` doc).
+    acc: i64,
+    /// Node: the time it joined its tree (or was last settled).
+    join_time: i64,
+    /// Vertex: its three `(edge, neighbour)` pairs (`NONE` pairs for a removed node), read by
+    /// every scan of the vertex right after its record.
+    adjacent: [(u32, u32); 3],
+    /// Vertex: its set.
+    set: u32,
+    /// Vertex: its matched edge (`NONE` if exposed).
+    mate: u32,
+    /// Set: its outermost node (`set_outer` of the `Solver` doc).
+    outer: u32,
+    /// Node: `FREE`, `PLUS` or `MINUS`.
+    label: u8,
+}
+
+impl Slot {
+    /// The record of id `i` before any search: its own set and node, free, exposed, no
+    /// neighbours.
+    fn new(i: u32) -> Self {
+        Slot {
+            pi: 0,
+            acc: 0,
+            join_time: 0,
+            adjacent: [(NONE, NONE); 3],
+            set: i,
+            mate: NONE,
+            outer: i,
+            label: FREE,
+        }
+    }
+}
+
+/// An edge slot: its ends and doubled cost.
+#[derive(Clone, Copy, Debug)]
+struct EdgeSlot {
+    ends: [u32; 2],
+    cost: i64,
 }
 
 /// The solver's state: nodes `0..n` are the graph's node slots (vertices), `n..` blossoms.
+/// The per-id fields read on every reduced cost live together in `slots` ([`Slot`]); the
+/// vertex-set scheme is described at `node_set`, with `set_of`, `set_outer` and `set_acc`
+/// standing for the `set`, `outer` and `acc` fields of the slots.
 struct Solver {
     n: usize,
-    adjacency: Vec<[(u32, u32); 3]>,
-    ends: Vec<[u32; 2]>,
-    /// Doubled costs per edge slot.
-    cost: Vec<i64>,
-    /// Per vertex: liveness, outermost blossom (or itself), `π`, mate edge.
+    /// Per node: its tree (an index into `trees`) while it is an outermost tree node.
+    tree: Vec<u32>,
+    edges: Vec<EdgeSlot>,
+    slots: Vec<Slot>,
+    /// Per vertex: liveness.
     is_live: Vec<bool>,
     /// Per vertex: its vertex set (see `set_*`) and the next vertex of that set's list.
-    set_of: Vec<u32>,
     set_next: Vec<u32>,
-    pi: Vec<i64>,
-    mate: Vec<u32>,
     /// Vertex sets, one per outermost node, ids in the node range: the vertices of an outermost
     /// node form one set (`node_set`), a list (`set_head` … `set_tail` through `set_next`,
     /// `set_size` long) whose node is `set_outer`. A vertex's `π` is `pi + set_acc[its set] +
     /// the running tree offset of its node`: `set_acc` gathers the dual changes of the
     /// outermost nodes the set has stood for. A shrink merges the children's sets into the
     /// largest (relabelling only the others' vertices, so a vertex is relabelled O(log n) times
-    /// between expansions); an expansion rebuilds its children's sets.
+    /// between expansions); an expansion splits the blossom's list back into its children's
+    /// (`segment`), one child keeping the blossom's set, so that it too relabels only the
+    /// others' vertices.
     node_set: Vec<u32>,
+    /// Per node nested in a blossom: its list (`[head, tail, size]`) when the blossom was made,
+    /// a contiguous segment of the blossom's list (the lists are joined end to end), restored
+    /// as the node's list when the blossom is expanded.
+    segment: Vec<[u32; 3]>,
     set_head: Vec<u32>,
     set_tail: Vec<u32>,
     set_size: Vec<u32>,
-    set_outer: Vec<u32>,
-    set_acc: Vec<i64>,
     /// Per node (vertex or blossom).
     parent: Vec<u32>,
     y: Vec<i64>,
-    label: Vec<u8>,
-    join_time: Vec<i64>,
     join_stamp: Vec<u32>,
     tree_edge: Vec<u32>,
     tree_vertex: Vec<u32>,
@@ -161,22 +227,27 @@ struct Solver {
     children: Vec<Vec<u32>>,
     cycle: Vec<Vec<(u32, u32, u32)>>,
     live_blossom: Vec<bool>,
-    /// Per outermost tree node: its tree (an index into `trees`).
-    tree: Vec<u32>,
     /// Fractional phase: per vertex its half-edge cycle (`NONE` if none), and per cycle its
     /// vertices in order with the edge to the next.
     half_cycle_of: Vec<u32>,
     half_cycles: Vec<Vec<(u32, u32)>>,
-    /// Per tree: the nodes that joined it (some since nested or expanded), and whether it is
-    /// still growing.
-    trees: Vec<Vec<u32>>,
+    /// Per tree: the first entry of the list of the nodes that joined it (some since nested or
+    /// expanded) in `members`; and how many trees are still growing.
+    trees: Vec<u32>,
     active_trees: usize,
+    /// The lists of `trees`, all in one arena: entry `i` is a node and the index of the next
+    /// entry of its tree's list (`NONE` at the end); `trees[t]` is the first entry of tree `t`.
+    members: Vec<(u32, u32)>,
+    /// The `−` nodes freed by a dissolve (a buffer kept between calls).
+    freed: Vec<u32>,
     /// Search state.
     time: i64,
     stamp: u32,
     mark_stamp: u32,
     heap: RadixHeap<Event>,
     scratch: Vec<u32>,
+    /// Buffers of `odd_cycle`'s two tree paths.
+    paths: [Vec<u32>; 2],
     stats: BlossomStats,
 }
 
@@ -207,17 +278,17 @@ pub fn min_cost_perfect_matching<G: DualGraph + ?Sized>(
     solver.round_half_cycles();
     solver.stats.fractional_seconds = start.elapsed().as_secs_f64();
     solver.stats.exposed_after_fractional = (0..solver.n)
-        .filter(|&v| solver.is_live[v] && solver.mate[v] == NONE)
+        .filter(|&v| solver.is_live[v] && solver.slots[v].mate == NONE)
         .count();
     solver.grow_forest(false)?;
     solver.stats.search_seconds = start.elapsed().as_secs_f64();
-    let mut edges: Vec<u32> = (0..solver.n)
-        .filter(|&v| graph.is_node(v as u32))
-        .map(|v| solver.mate[v])
-        .filter(|&e| e != NONE)
+    // In increasing order: each matched edge from the mate of its first end.
+    let edges: Vec<u32> = (0..solver.edges.len() as u32)
+        .filter(|&e| {
+            let [u, _] = solver.edges[e as usize].ends;
+            u != NONE && solver.slots[u as usize].mate == e
+        })
         .collect();
-    edges.sort_unstable();
-    edges.dedup();
     let cost = edges.iter().map(|&e| costs[e as usize]).sum();
     let certificate = solver.certificate();
     solver.stats.blossoms = certificate.blossoms.len();
@@ -233,35 +304,40 @@ impl Solver {
     fn new<G: DualGraph + ?Sized>(graph: &G, costs: &[i64]) -> Self {
         let n = graph.node_slots();
         let adjacency = graph.adjacency_table().adjacent;
-        let mut ends = vec![[NONE, NONE]; graph.edge_slots()];
+        let mut edges: Vec<EdgeSlot> = costs
+            .iter()
+            .map(|&c| EdgeSlot {
+                ends: [NONE, NONE],
+                cost: 2 * c.max(0),
+            })
+            .collect();
         for (v, pairs) in adjacency.iter().enumerate() {
             for &(e, w) in pairs {
                 if e != NONE {
-                    ends[e as usize] = [v as u32, w];
+                    edges[e as usize].ends = [v as u32, w];
                 }
             }
         }
-        let cost = costs.iter().map(|&c| 2 * c.max(0)).collect();
+        let slots = (0..n as u32)
+            .map(|v| Slot {
+                adjacent: adjacency[v as usize],
+                ..Slot::new(v)
+            })
+            .collect();
         Solver {
             n,
-            adjacency,
-            ends,
-            cost,
+            tree: vec![NONE; n],
+            edges,
+            slots,
             is_live: (0..n as u32).map(|v| graph.is_node(v)).collect(),
-            set_of: (0..n as u32).collect(),
             set_next: vec![NONE; n],
             node_set: (0..n as u32).collect(),
+            segment: (0..n as u32).map(|v| [v, v, 1]).collect(),
             set_head: (0..n as u32).collect(),
             set_tail: (0..n as u32).collect(),
             set_size: vec![1; n],
-            set_outer: (0..n as u32).collect(),
-            set_acc: vec![0; n],
-            pi: vec![0; n],
-            mate: vec![NONE; n],
             parent: vec![NONE; n],
             y: vec![0; n],
-            label: vec![FREE; n],
-            join_time: vec![0; n],
             join_stamp: vec![0; n],
             tree_edge: vec![NONE; n],
             tree_vertex: vec![NONE; n],
@@ -270,16 +346,18 @@ impl Solver {
             children: Vec::new(),
             cycle: Vec::new(),
             live_blossom: Vec::new(),
-            tree: vec![NONE; n],
             half_cycle_of: vec![NONE; n],
             half_cycles: Vec::new(),
             trees: Vec::new(),
             active_trees: 0,
+            members: Vec::new(),
+            freed: Vec::new(),
             time: 0,
             stamp: 0,
             mark_stamp: 0,
             heap: RadixHeap::new(),
             scratch: Vec::new(),
+            paths: [Vec::new(), Vec::new()],
             stats: BlossomStats::default(),
         }
     }
@@ -291,68 +369,78 @@ impl Solver {
 
     #[inline]
     fn other_end(&self, e: u32, v: u32) -> u32 {
-        let [a, b] = self.ends[e as usize];
+        let [a, b] = self.edges[e as usize].ends;
         if a == v { b } else { a }
     }
 
     /// The non-loop `(edge, neighbour)` pairs of vertex `v`.
     #[inline]
     fn edges_of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + use<> {
-        let pairs = self.adjacency[v as usize];
+        let pairs = self.slots[v as usize].adjacent;
         pairs.into_iter().filter(move |&(e, w)| e != NONE && w != v)
     }
 
     fn greedy_init(&mut self) {
         for v in 0..self.n as u32 {
-            let min = self.edges_of(v).map(|(e, _)| self.cost[e as usize]).min();
+            let min = self
+                .edges_of(v)
+                .map(|(e, _)| self.edges[e as usize].cost)
+                .min();
             if let Some(min) = min {
                 self.y[v as usize] = min / 2;
             }
         }
         for v in 0..self.n as u32 {
-            if self.mate[v as usize] != NONE {
+            if self.slots[v as usize].mate != NONE {
                 continue;
             }
-            let slack =
-                |s: &Self, e: u32, w: u32| s.cost[e as usize] - s.y[v as usize] - s.y[w as usize];
+            let slack = |s: &Self, e: u32, w: u32| {
+                s.edges[e as usize].cost - s.y[v as usize] - s.y[w as usize]
+            };
             let Some(min) = self.edges_of(v).map(|(e, w)| slack(self, e, w)).min() else {
                 continue;
             };
             self.y[v as usize] += min;
             let pick = self
                 .edges_of(v)
-                .find(|&(e, w)| slack(self, e, w) == 0 && self.mate[w as usize] == NONE);
+                .find(|&(e, w)| slack(self, e, w) == 0 && self.slots[w as usize].mate == NONE);
             if let Some((e, w)) = pick {
-                self.mate[v as usize] = e;
-                self.mate[w as usize] = e;
+                self.slots[v as usize].mate = e;
+                self.slots[w as usize].mate = e;
             }
         }
         // Augmenting paths of three tight edges: exposed v, w = x matched, z exposed.
         for v in 0..self.n as u32 {
-            if self.mate[v as usize] != NONE {
+            if self.slots[v as usize].mate != NONE {
                 continue;
             }
             let tight = |s: &Self, e: u32, a: u32, b: u32| {
-                s.cost[e as usize] == s.y[a as usize] + s.y[b as usize]
+                s.edges[e as usize].cost == s.y[a as usize] + s.y[b as usize]
             };
             'paths: for (e, w) in self.edges_of(v) {
-                let m = self.mate[w as usize];
+                let m = self.slots[w as usize].mate;
                 if m == NONE || !tight(self, e, v, w) {
                     continue;
                 }
                 let x = self.other_end(m, w);
                 for (f, z) in self.edges_of(x) {
-                    if z != w && z != v && self.mate[z as usize] == NONE && tight(self, f, x, z) {
-                        self.mate[v as usize] = e;
-                        self.mate[w as usize] = e;
-                        self.mate[x as usize] = f;
-                        self.mate[z as usize] = f;
+                    if z != w
+                        && z != v
+                        && self.slots[z as usize].mate == NONE
+                        && tight(self, f, x, z)
+                    {
+                        self.slots[v as usize].mate = e;
+                        self.slots[w as usize].mate = e;
+                        self.slots[x as usize].mate = f;
+                        self.slots[z as usize].mate = f;
                         break 'paths;
                     }
                 }
             }
         }
-        self.pi.copy_from_slice(&self.y[..self.n]);
+        for (slot, &y) in self.slots.iter_mut().zip(&self.y) {
+            slot.pi = y;
+        }
     }
 
     /// The vertices of outermost node `x`, from its set's list, into `out` (cleared first).
@@ -373,34 +461,14 @@ impl Solver {
     /// The outermost node holding vertex `v`.
     #[inline]
     fn outer_of(&self, v: u32) -> u32 {
-        self.set_outer[self.set_of[v as usize] as usize]
-    }
-
-    /// The vertices of any node `x` (itself for a vertex), from the blossom tree, into `out`
-    /// (cleared first).
-    fn collect_vertices_nested(&self, x: u32, out: &mut Vec<u32>) {
-        out.clear();
-        if !self.is_blossom(x) {
-            out.push(x);
-            return;
-        }
-        let mut stack = vec![x];
-        while let Some(b) = stack.pop() {
-            for &c in &self.children[b as usize - self.n] {
-                if self.is_blossom(c) {
-                    stack.push(c);
-                } else {
-                    out.push(c);
-                }
-            }
-        }
+        self.slots[self.slots[v as usize].set as usize].outer
     }
 
     /// The dual change of outermost node `x` since it joined its tree (0 if free).
     #[inline]
     fn offset(&self, x: u32) -> i64 {
-        let d = self.time - self.join_time[x as usize];
-        match self.label[x as usize] {
+        let d = self.time - self.slots[x as usize].join_time;
+        match self.slots[x as usize].label {
             PLUS => d,
             MINUS => -d,
             _ => 0,
@@ -409,15 +477,15 @@ impl Solver {
 
     #[inline]
     fn pi_now(&self, v: u32) -> i64 {
-        let set = self.set_of[v as usize] as usize;
-        self.pi[v as usize] + self.set_acc[set] + self.offset(self.set_outer[set])
+        let set = self.slots[v as usize].set as usize;
+        self.slots[v as usize].pi + self.slots[set].acc + self.offset(self.slots[set].outer)
     }
 
     /// Reduced cost of edge `e` between two different outermost nodes, now.
     #[inline]
-    fn slack(&self, e: u32) -> i64 {
-        let [u, v] = self.ends[e as usize];
-        self.cost[e as usize] - self.pi_now(u) - self.pi_now(v)
+    /// (`u` and `v` are its ends, in either order.)
+    fn slack(&self, e: u32, u: u32, v: u32) -> i64 {
+        self.edges[e as usize].cost - self.pi_now(u) - self.pi_now(v)
     }
 
     /// Applies the lazy dual change of outermost node `x` to its dual and to its `acc` (the
@@ -425,37 +493,42 @@ impl Solver {
     fn settle(&mut self, x: u32) {
         let d = self.offset(x);
         self.y[x as usize] += d;
-        self.set_acc[self.node_set[x as usize] as usize] += d;
-        self.join_time[x as usize] = self.time;
+        self.slots[self.node_set[x as usize] as usize].acc += d;
+        self.slots[x as usize].join_time = self.time;
     }
 
-    /// Queues an event `delay` after now.
-    fn push_event(&mut self, delay: i64, kind: u8, id: u32, stamp: u32) {
-        let time = self.time + delay;
+    /// Queues an event for edge `e` between vertices `u` and `v`, `delay` after now.
+    #[inline]
+    fn push_edge(&mut self, e: u32, u: u32, v: u32, delay: i64) {
         let event = Event {
-            time,
-            kind,
-            id,
-            stamp,
+            id: e,
+            a: u,
+            b: v,
+            kind: EDGE_EVENT,
         };
-        self.heap.push(time as u64, event);
-    }
-
-    fn push_edge(&mut self, e: u32, delay: i64) {
-        self.push_event(delay, EDGE_EVENT, e, 0);
+        self.heap.push((self.time + delay) as u64, event);
     }
 
     /// Labels outermost node `x` as a node of `tree`.
     fn join(&mut self, x: u32, label: u8, tree: u32) {
-        self.label[x as usize] = label;
-        self.join_time[x as usize] = self.time;
+        self.slots[x as usize].label = label;
+        self.slots[x as usize].join_time = self.time;
         self.stamp = self.stamp.wrapping_add(1);
         self.join_stamp[x as usize] = self.stamp;
         self.tree[x as usize] = tree;
-        self.trees[tree as usize].push(x);
+        let first = self.trees[tree as usize];
+        self.trees[tree as usize] = self.members.len() as u32;
+        self.members.push((x, first));
         self.stats.tree_nodes += 1;
         if label == MINUS && self.is_blossom(x) {
-            self.push_event(self.y[x as usize], EXPAND_EVENT, x, self.stamp);
+            let event = Event {
+                id: x,
+                a: self.stamp,
+                b: NONE,
+                kind: EXPAND_EVENT,
+            };
+            self.heap
+                .push((self.time + self.y[x as usize]) as u64, event);
         }
     }
 
@@ -478,12 +551,12 @@ impl Solver {
                 if other == own {
                     continue;
                 }
-                match self.label[other as usize] {
-                    FREE => self.push_edge(e, self.slack(e)),
+                match self.slots[other as usize].label {
+                    FREE => self.push_edge(e, v, w, self.slack(e, v, w)),
                     PLUS => {
-                        let s = self.slack(e);
+                        let s = self.slack(e, v, w);
                         debug_assert!(s % 2 == 0, "odd reduced cost {s} between + nodes");
-                        self.push_edge(e, s / 2);
+                        self.push_edge(e, v, w, s / 2);
                     }
                     _ => {}
                 }
@@ -498,8 +571,8 @@ impl Solver {
         for &v in &vertices {
             for (e, w) in self.edges_of(v) {
                 let other = self.outer_of(w);
-                if other != x && self.label[other as usize] == PLUS {
-                    self.push_edge(e, self.slack(e));
+                if other != x && self.slots[other as usize].label == PLUS {
+                    self.push_edge(e, v, w, self.slack(e, v, w));
                 }
             }
         }
@@ -519,20 +592,26 @@ impl Solver {
     fn grow_forest(&mut self, fractional: bool) -> Result<(), WeightedError> {
         self.time = 0;
         self.heap.clear();
+        // Every tree of a previous phase has dissolved.
+        self.trees.clear();
+        self.members.clear();
+        self.members.reserve(2 * self.n);
         let roots: Vec<u32> = (0..self.n as u32)
-            .filter(|&v| self.is_live[v as usize] && self.mate[v as usize] == NONE)
+            .filter(|&v| self.is_live[v as usize] && self.slots[v as usize].mate == NONE)
             .collect();
         if fractional {
             self.stats.exposed_after_greedy = roots.len();
         }
         for &r in &roots {
             // All roots of one parity (see the module doc): lowering a dual keeps feasibility.
-            if (self.pi[r as usize] + self.set_acc[self.set_of[r as usize] as usize]) % 2 != 0 {
-                self.pi[r as usize] -= 1;
+            if (self.slots[r as usize].pi + self.slots[self.slots[r as usize].set as usize].acc) % 2
+                != 0
+            {
+                self.slots[r as usize].pi -= 1;
                 self.y[r as usize] -= 1;
             }
             let tree = self.trees.len() as u32;
-            self.trees.push(Vec::new());
+            self.trees.push(NONE);
             self.join(r, PLUS, tree);
         }
         self.active_trees = roots.len();
@@ -540,20 +619,28 @@ impl Solver {
             self.scan_plus(r);
         }
         while self.active_trees > 0 {
-            let Some((_, event)) = self.heap.pop() else {
+            let Some((time, event)) = self.heap.pop() else {
                 let node = (0..self.n as u32)
-                    .find(|&v| self.is_live[v as usize] && self.mate[v as usize] == NONE)
+                    .find(|&v| self.is_live[v as usize] && self.slots[v as usize].mate == NONE)
                     .unwrap_or(0);
                 return Err(WeightedError::NoPerfectMatching { node });
             };
             self.stats.events += 1;
-            debug_assert!(event.time >= self.time, "events go forward in time");
-            self.time = event.time;
+            debug_assert!(time as i64 >= self.time, "events go forward in time");
+            self.time = time as i64;
+            if let Some(next) = self.heap.peek() {
+                // The next event's records, read ahead (an event's vertices are far apart).
+                if next.kind == EDGE_EVENT {
+                    prefetch_index(&self.slots, next.a as usize);
+                    prefetch_index(&self.slots, next.b as usize);
+                    prefetch_index(&self.edges, next.id as usize);
+                }
+            }
             if event.kind == EXPAND_EVENT {
                 let b = event.id;
                 if self.parent[b as usize] != NONE
-                    || self.label[b as usize] != MINUS
-                    || self.join_stamp[b as usize] != event.stamp
+                    || self.slots[b as usize].label != MINUS
+                    || self.join_stamp[b as usize] != event.a
                     || !self.live_blossom[b as usize - self.n]
                 {
                     continue;
@@ -561,19 +648,18 @@ impl Solver {
                 self.expand(b);
                 continue;
             }
-            let e = event.id;
-            let [u, v] = self.ends[e as usize];
+            let (e, u, v) = (event.id, event.a, event.b);
             let (ou, ov) = (self.outer_of(u), self.outer_of(v));
             if ou == ov {
                 continue;
             }
-            let (lu, lv) = (self.label[ou as usize], self.label[ov as usize]);
-            let s = self.slack(e);
+            let (lu, lv) = (self.slots[ou as usize].label, self.slots[ov as usize].label);
+            let s = self.slack(e, u, v);
             debug_assert!(s >= 0, "negative reduced cost {s} on edge {e}");
             match (lu, lv) {
                 (PLUS, PLUS) => {
                     if s > 0 {
-                        self.push_edge(e, s / 2);
+                        self.push_edge(e, u, v, s / 2);
                     } else if self.tree[ou as usize] == self.tree[ov as usize] {
                         if fractional {
                             self.half_cycle(e);
@@ -586,7 +672,7 @@ impl Solver {
                 }
                 (PLUS, FREE) | (FREE, PLUS) => {
                     if s > 0 {
-                        self.push_edge(e, s);
+                        self.push_edge(e, u, v, s);
                         continue;
                     }
                     let (inner, outside) = if lu == PLUS { (u, v) } else { (v, u) };
@@ -612,9 +698,9 @@ impl Solver {
         self.tree_vertex[x as usize] = w;
         self.join(x, MINUS, tree);
         let b = self.base[x as usize];
-        let m = self.mate[b as usize];
+        let m = self.slots[b as usize].mate;
         let partner = self.outer_of(self.other_end(m, b));
-        debug_assert_eq!(self.label[partner as usize], FREE);
+        debug_assert_eq!(self.slots[partner as usize].label, FREE);
         self.join(partner, PLUS, tree);
         self.scan_plus(partner);
     }
@@ -622,7 +708,7 @@ impl Solver {
     /// The `+` parent of `+` node `x` in the tree (`NONE` for the root).
     fn plus_parent(&self, x: u32) -> u32 {
         let b = self.base[x as usize];
-        let m = self.mate[b as usize];
+        let m = self.slots[b as usize].mate;
         if m == NONE {
             return NONE;
         }
@@ -631,11 +717,23 @@ impl Solver {
         self.outer_of(self.other_end(self.tree_edge[minus as usize], tv))
     }
 
+    /// The outermost nodes from `from` up its tree to `top` (both included), into `out`.
+    fn path_up(&self, from: u32, top: u32, out: &mut Vec<u32>) {
+        out.clear();
+        out.push(from);
+        let mut x = from;
+        while x != top {
+            let (_, _, up) = self.parent_link(x);
+            x = self.outer_of(up);
+            out.push(x);
+        }
+    }
+
     /// The edge from node `x` to its tree parent, as `(edge, vertex in x, vertex in parent)`.
     fn parent_link(&self, x: u32) -> (u32, u32, u32) {
-        if self.label[x as usize] == PLUS {
+        if self.slots[x as usize].label == PLUS {
             let b = self.base[x as usize];
-            let m = self.mate[b as usize];
+            let m = self.slots[b as usize].mate;
             (m, b, self.other_end(m, b))
         } else {
             let e = self.tree_edge[x as usize];
@@ -651,7 +749,7 @@ impl Solver {
     /// and its edges as `(edge, vertex in node i, vertex in node i + 1)`.
     #[allow(clippy::type_complexity)]
     fn odd_cycle(&mut self, e: u32) -> (u32, Vec<u32>, Vec<(u32, u32, u32)>) {
-        let [u, v] = self.ends[e as usize];
+        let [u, v] = self.edges[e as usize].ends;
         let (ou, ov) = (self.outer_of(u), self.outer_of(v));
         // Lowest common ancestor, stepping up alternately from both sides.
         self.mark_stamp = self.mark_stamp.wrapping_add(2);
@@ -673,19 +771,10 @@ impl Solver {
                 b = self.plus_parent(b);
             }
         };
-        // The two paths up to the LCA, through the `−` nodes.
-        let path_to = |s: &Self, from: u32| {
-            let mut path = vec![from];
-            let mut x = from;
-            while x != lca {
-                let (_, _, up) = s.parent_link(x);
-                x = s.outer_of(up);
-                path.push(x);
-            }
-            path
-        };
-        let path_u = path_to(self, ou);
-        let path_v = path_to(self, ov);
+        // The two paths up to the LCA, through the `−` nodes (buffers kept between calls).
+        let [mut path_u, mut path_v] = std::mem::take(&mut self.paths);
+        self.path_up(ou, lca, &mut path_u);
+        self.path_up(ov, lca, &mut path_v);
         let mut children = Vec::with_capacity(path_u.len() + path_v.len() - 1);
         let mut cycle = Vec::with_capacity(children.capacity());
         for i in (0..path_u.len()).rev() {
@@ -701,6 +790,7 @@ impl Solver {
             let (edge, here, up) = self.parent_link(x);
             cycle.push((edge, here, up));
         }
+        self.paths = [path_u, path_v];
         (lca, children, cycle)
     }
 
@@ -720,13 +810,18 @@ impl Solver {
         let mut minus_vertices = Vec::new();
         let mut vertices = std::mem::take(&mut self.scratch);
         for &c in &children {
-            if self.label[c as usize] == MINUS {
+            if self.slots[c as usize].label == MINUS {
                 self.collect_vertices(c, &mut vertices);
                 minus_vertices.extend_from_slice(&vertices);
             }
         }
         self.scratch = vertices;
-        // Merge the children's sets into the largest one.
+        // Merge the children's sets into the largest one: its list, then the others' in turn, each
+        // child's list kept as its segment of the blossom's.
+        for &c in &children {
+            let set = self.node_set[c as usize] as usize;
+            self.segment[c as usize] = [self.set_head[set], self.set_tail[set], self.set_size[set]];
+        }
         let big = children
             .iter()
             .map(|&c| self.node_set[c as usize])
@@ -737,11 +832,11 @@ impl Solver {
             if set == big {
                 continue;
             }
-            let delta = self.set_acc[set as usize] - self.set_acc[big as usize];
+            let delta = self.slots[set as usize].acc - self.slots[big as usize].acc;
             let mut w = self.set_head[set as usize];
             while w != NONE {
-                self.pi[w as usize] += delta;
-                self.set_of[w as usize] = big;
+                self.slots[w as usize].pi += delta;
+                self.slots[w as usize].set = big;
                 w = self.set_next[w as usize];
             }
             let tail = self.set_tail[big as usize];
@@ -750,7 +845,7 @@ impl Solver {
             self.set_size[big as usize] += self.set_size[set as usize];
         }
         self.node_set[bi] = big;
-        self.set_outer[big as usize] = blossom;
+        self.slots[big as usize].outer = blossom;
         self.children[bi - self.n] = children;
         self.cycle[bi - self.n] = cycle;
         let tree = self.tree[lca as usize];
@@ -761,10 +856,12 @@ impl Solver {
     /// A new blossom slot (slots are never reused, so that the trees' node lists stay valid).
     fn new_blossom(&mut self) -> u32 {
         let b = self.parent.len() as u32;
+        self.slots.push(Slot::new(b));
+        self.tree.push(NONE);
+        self.segment.push([NONE, NONE, 0]);
+        self.slots[b as usize].outer = NONE;
         self.parent.push(NONE);
         self.y.push(0);
-        self.label.push(FREE);
-        self.join_time.push(0);
         self.join_stamp.push(0);
         self.tree_edge.push(NONE);
         self.tree_vertex.push(NONE);
@@ -773,13 +870,10 @@ impl Solver {
         self.children.push(Vec::new());
         self.cycle.push(Vec::new());
         self.live_blossom.push(true);
-        self.tree.push(NONE);
         self.node_set.push(NONE);
         self.set_head.push(NONE);
         self.set_tail.push(NONE);
         self.set_size.push(0);
-        self.set_outer.push(NONE);
-        self.set_acc.push(0);
         b
     }
 
@@ -804,30 +898,51 @@ impl Solver {
             .iter()
             .position(|&c| c == child)
             .expect("the entry vertex lies in a child");
-        // Each child gets a set of its own (id: its node id), taking over the blossom's share
-        // of its vertices' `π`.
-        let owed = self.set_acc[self.node_set[b as usize] as usize];
-        let mut vertices = std::mem::take(&mut self.scratch);
+        // The children's lists are their segments of the blossom's list (see `segment`). The
+        // child holding the node whose id names the blossom's set keeps that set (a dead blossom's
+        // id, or the blossom's own, may go to any child: the largest); the others get sets of
+        // their own (id: their node id), owing what the blossom's set owed. So only the other
+        // children's vertices are relabelled, and no `π` changes.
+        let set = self.node_set[b as usize];
+        let owed = self.slots[set as usize].acc;
+        let holder =
+            if set == b || (self.is_blossom(set) && !self.live_blossom[set as usize - self.n]) {
+                None
+            } else {
+                let mut x = set;
+                while self.parent[x as usize] != b {
+                    x = self.parent[x as usize];
+                }
+                Some(x)
+            };
+        let keep = holder.unwrap_or_else(|| {
+            *children
+                .iter()
+                .max_by_key(|&&c| (self.segment[c as usize][2], std::cmp::Reverse(c)))
+                .expect("a blossom has children")
+        });
         for &c in &children {
             self.parent[c as usize] = NONE;
-            self.label[c as usize] = FREE;
-            self.collect_vertices_nested(c, &mut vertices);
-            let ci = c as usize;
-            self.node_set[ci] = c;
-            self.set_outer[ci] = c;
-            self.set_acc[ci] = 0;
-            self.set_size[ci] = vertices.len() as u32;
-            self.set_head[ci] = vertices[0];
-            self.set_tail[ci] = *vertices.last().expect("a child has vertices");
-            for (i, &w) in vertices.iter().enumerate() {
-                self.pi[w as usize] += owed;
-                self.set_of[w as usize] = c;
-                self.set_next[w as usize] = vertices.get(i + 1).copied().unwrap_or(NONE);
+            self.slots[c as usize].label = FREE;
+            let [head, tail, size] = self.segment[c as usize];
+            self.set_next[tail as usize] = NONE;
+            let own = if c == keep { set } else { c };
+            self.node_set[c as usize] = own;
+            self.set_head[own as usize] = head;
+            self.set_tail[own as usize] = tail;
+            self.set_size[own as usize] = size;
+            self.slots[own as usize].outer = c;
+            if own != set {
+                self.slots[own as usize].acc = owed;
+                let mut w = head;
+                while w != NONE {
+                    self.slots[w as usize].set = own;
+                    w = self.set_next[w as usize];
+                }
             }
         }
-        self.scratch = vertices;
         self.live_blossom[bi] = false;
-        self.label[b as usize] = FREE;
+        self.slots[b as usize].label = FREE;
         let tree = self.tree[b as usize];
         // The even path j -> 0 along the cycle: backward if j is even, forward otherwise.
         let mut on_path = vec![false; k];
@@ -872,7 +987,7 @@ impl Solver {
     /// to the two roots alternate (every blossom on them rotated to its new base), and both trees
     /// dissolve.
     fn augment(&mut self, e: u32) {
-        let [u, v] = self.ends[e as usize];
+        let [u, v] = self.edges[e as usize].ends;
         let trees = [
             self.tree[self.outer_of(u) as usize],
             self.tree[self.outer_of(v) as usize],
@@ -887,19 +1002,19 @@ impl Solver {
     /// cycle's top node to the root alternates (the root is matched, the top node exposed), the
     /// cycle's nodes become a half-edge cycle, and the tree dissolves.
     fn half_cycle(&mut self, e: u32) {
-        let tree = self.tree[self.outer_of(self.ends[e as usize][0]) as usize];
+        let tree = self.tree[self.outer_of(self.edges[e as usize].ends[0]) as usize];
         let (lca, nodes, edges) = self.odd_cycle(e);
-        let old_mate = self.mate[lca as usize];
+        let old_mate = self.slots[lca as usize].mate;
         if old_mate != NONE {
             let z = self.other_end(old_mate, lca);
             let p = self.tree_edge[z as usize];
             let entry = self.other_end(p, z);
             self.augment_to_root(entry, p);
-            self.mate[z as usize] = p;
+            self.slots[z as usize].mate = p;
         }
         let id = self.half_cycles.len() as u32;
         for &c in &nodes {
-            self.mate[c as usize] = NONE;
+            self.slots[c as usize].mate = NONE;
             self.half_cycle_of[c as usize] = id;
         }
         self.half_cycles.push(
@@ -917,7 +1032,7 @@ impl Solver {
     fn augment_into_half_cycle(&mut self, e: u32, inner: u32, w: u32) {
         let tree = self.tree[self.outer_of(inner) as usize];
         self.augment_to_root(inner, e);
-        self.mate[w as usize] = e;
+        self.slots[w as usize].mate = e;
         let id = self.half_cycle_of[w as usize];
         self.match_half_cycle(id, w);
         self.dissolve(&[tree]);
@@ -934,37 +1049,49 @@ impl Solver {
         for j in 0..k / 2 {
             let (a, edge) = cycle[(i + 1 + 2 * j) % k];
             let (b, _) = cycle[(i + 2 + 2 * j) % k];
-            self.mate[a as usize] = edge;
-            self.mate[b as usize] = edge;
+            self.slots[a as usize].mate = edge;
+            self.slots[b as usize].mate = edge;
         }
         for &(c, _) in &cycle {
             self.half_cycle_of[c as usize] = NONE;
         }
     }
 
-    /// Ends the growth of `trees`: their nodes' duals settled and labels cleared; the edges from
-    /// the other trees' `+` nodes to the freed nodes now shrink at rate 1.
+    /// Ends the growth of `trees`: their nodes' duals settled and labels cleared. The edges from
+    /// the other trees' `+` nodes to the freed nodes now shrink at rate 1: those to a former `+`
+    /// node already have an event (queued when the second of their ends became `+`), which comes
+    /// early and is queued again when popped; those to a former `−` node had none, so the `−`
+    /// nodes are scanned.
     fn dissolve(&mut self, trees: &[u32]) {
-        let mut freed = Vec::new();
+        let mut freed = std::mem::take(&mut self.freed);
         for &tree in trees {
-            for x in std::mem::take(&mut self.trees[tree as usize]) {
+            let mut entry = std::mem::replace(&mut self.trees[tree as usize], NONE);
+            while entry != NONE {
+                let (x, next) = self.members[entry as usize];
+                entry = next;
                 let live = !self.is_blossom(x) || self.live_blossom[x as usize - self.n];
                 if live
                     && self.parent[x as usize] == NONE
-                    && self.label[x as usize] != FREE
+                    && self.slots[x as usize].label != FREE
                     && self.tree[x as usize] == tree
                 {
                     self.settle(x);
-                    self.label[x as usize] = FREE;
                     self.tree[x as usize] = NONE;
-                    freed.push(x);
+                    let slot = &mut self.slots[x as usize];
+                    let was_minus = slot.label == MINUS;
+                    slot.label = FREE;
+                    if was_minus {
+                        freed.push(x);
+                    }
                 }
             }
         }
         self.active_trees -= trees.len();
-        for x in freed {
+        for &x in &freed {
             self.scan_free(x);
         }
+        freed.clear();
+        self.freed = freed;
     }
 
     /// Flips the tree path from vertex `entry` (matched along `edge` from now on) up to its root.
@@ -972,9 +1099,9 @@ impl Solver {
         let mut x = self.outer_of(entry);
         loop {
             let old_base = self.base[x as usize];
-            let old_mate = self.mate[old_base as usize];
+            let old_mate = self.slots[old_base as usize].mate;
             self.rotate(x, entry);
-            self.mate[entry as usize] = edge;
+            self.slots[entry as usize].mate = edge;
             if old_mate == NONE {
                 break;
             }
@@ -982,7 +1109,7 @@ impl Solver {
             let p = self.tree_edge[minus as usize];
             let pv = self.tree_vertex[minus as usize];
             self.rotate(minus, pv);
-            self.mate[pv as usize] = p;
+            self.slots[pv as usize].mate = p;
             entry = self.other_end(p, pv);
             x = self.outer_of(entry);
             edge = p;
@@ -1021,8 +1148,8 @@ impl Solver {
                 if s.is_blossom(cb) {
                     stack.push((cb, bb));
                 }
-                s.mate[a as usize] = edge;
-                s.mate[bb as usize] = edge;
+                s.slots[a as usize].mate = edge;
+                s.slots[bb as usize].mate = edge;
             };
             if i % 2 == 1 {
                 let mut m = i + 1;

@@ -157,8 +157,29 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     matched: &[u32],
     certificate: &Certificate,
 ) -> Result<i64, CertificateError> {
-    let node_slots = graph.node_slots();
-    let edge_slots = graph.edge_slots();
+    check_sizes(graph, costs, certificate)?;
+    let cover = perfect_cover(graph, matched)?;
+    let family = Family::new(graph, certificate)?;
+    let (primal, inside_here) = check_edges(graph, costs, certificate, &family, &cover)?;
+    family.check_slackness(inside_here)?;
+    let dual: i128 = (0..graph.node_slots())
+        .filter(|&v| graph.is_node(v as u32))
+        .map(|v| i128::from(certificate.node_duals[v]))
+        .sum::<i128>()
+        + family.sets.iter().map(|s| i128::from(s.dual)).sum::<i128>();
+    if primal != dual {
+        return Err(CertificateError::ObjectiveGap { primal, dual });
+    }
+    Ok((primal / 2) as i64)
+}
+
+/// One cost per edge slot, one dual and one set per node slot.
+fn check_sizes<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+    certificate: &Certificate,
+) -> Result<(), CertificateError> {
+    let (node_slots, edge_slots) = (graph.node_slots(), graph.edge_slots());
     if costs.len() != edge_slots {
         return Err(CertificateError::Size(format!(
             "{} costs for {edge_slots} edge slots",
@@ -172,11 +193,18 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
             certificate.node_blossom.len()
         )));
     }
+    Ok(())
+}
 
-    // Primal: a perfect matching.
-    let mut cover = vec![NO_SET; node_slots];
+/// The primal check: `matched` are live non-loop edges covering every live node once. Returns
+/// each node slot's matched edge (`NO_SET` for none).
+fn perfect_cover<G: DualGraph + ?Sized>(
+    graph: &G,
+    matched: &[u32],
+) -> Result<Vec<u32>, CertificateError> {
+    let mut cover = vec![NO_SET; graph.node_slots()];
     for &e in matched {
-        if (e as usize) >= edge_slots || !graph.is_edge(e) {
+        if (e as usize) >= graph.edge_slots() || !graph.is_edge(e) {
             return Err(CertificateError::BadEdge { edge: e });
         }
         let [a, b] = graph.endpoints(e);
@@ -194,73 +222,136 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
             cover[v as usize] = e;
         }
     }
-    for v in 0..node_slots as u32 {
-        if graph.is_node(v) && cover[v as usize] == NO_SET {
-            return Err(CertificateError::Uncovered { node: v });
-        }
+    match (0..graph.node_slots() as u32).find(|&v| graph.is_node(v) && cover[v as usize] == NO_SET)
+    {
+        Some(node) => Err(CertificateError::Uncovered { node }),
+        None => Ok(cover),
     }
+}
 
-    // The laminar family: a forest of sets.
-    let sets = &certificate.blossoms;
-    let set_count = sets.len();
-    for (s, set) in sets.iter().enumerate() {
-        if set.parent != NO_SET && set.parent as usize >= set_count {
-            return Err(CertificateError::BadSetIndex(format!("set {s}")));
+/// The certificate's laminar family, checked to be a forest of odd sets of at least three nodes
+/// with non-negative duals, and what the edge checks need of it.
+struct Family<'a> {
+    sets: &'a [BlossomDual],
+    /// Per set: its depth in the forest (0 at the top).
+    depth: Vec<u32>,
+    /// The sets, deepest first (children before parents).
+    order: Vec<u32>,
+    /// Per set: the sum of its dual and its ancestors'.
+    above: Vec<i128>,
+    /// Per set: its node count.
+    size: Vec<u64>,
+}
+
+impl<'a> Family<'a> {
+    fn new<G: DualGraph + ?Sized>(
+        graph: &G,
+        certificate: &'a Certificate,
+    ) -> Result<Self, CertificateError> {
+        let sets = &certificate.blossoms[..];
+        let set_count = sets.len();
+        for (s, set) in sets.iter().enumerate() {
+            if set.parent != NO_SET && set.parent as usize >= set_count {
+                return Err(CertificateError::BadSetIndex(format!("set {s}")));
+            }
+            if set.dual < 0 {
+                return Err(CertificateError::NegativeSetDual {
+                    set: s as u32,
+                    dual: set.dual,
+                });
+            }
         }
-        if set.dual < 0 {
-            return Err(CertificateError::NegativeSetDual {
+        for (v, &s) in certificate.node_blossom.iter().enumerate() {
+            if s != NO_SET && (s as usize >= set_count || !graph.is_node(v as u32)) {
+                return Err(CertificateError::BadSetIndex(format!("node {v}")));
+            }
+        }
+        let depth = set_depths(sets)?;
+        let mut order: Vec<u32> = (0..set_count as u32).collect();
+        order.sort_by_key(|&s| std::cmp::Reverse(depth[s as usize]));
+        let mut above = vec![0i128; set_count];
+        for &s in order.iter().rev() {
+            let parent = sets[s as usize].parent;
+            let up = if parent == NO_SET {
+                0
+            } else {
+                above[parent as usize]
+            };
+            above[s as usize] = up + i128::from(sets[s as usize].dual);
+        }
+        let mut size = vec![0u64; set_count];
+        for &s in &certificate.node_blossom {
+            if s != NO_SET {
+                size[s as usize] += 1;
+            }
+        }
+        let family = Family {
+            sets,
+            depth,
+            order,
+            above,
+            size,
+        };
+        let size = family.sum_up(family.size.clone());
+        if let Some(s) = size.iter().position(|&k| k < 3 || k.is_multiple_of(2)) {
+            return Err(CertificateError::SetSize {
                 set: s as u32,
-                dual: set.dual,
+                size: size[s],
             });
         }
-    }
-    for v in 0..node_slots {
-        let s = certificate.node_blossom[v];
-        if s != NO_SET && (s as usize >= set_count || !graph.is_node(v as u32)) {
-            return Err(CertificateError::BadSetIndex(format!("node {v}")));
-        }
-    }
-    let depth = set_depths(sets)?;
-    // Sets ordered deepest first, so that children come before parents.
-    let mut order: Vec<u32> = (0..set_count as u32).collect();
-    order.sort_by_key(|&s| std::cmp::Reverse(depth[s as usize]));
-    // Sum of the duals of a set and all its ancestors (parents before children).
-    let mut above = vec![0i128; set_count];
-    for &s in order.iter().rev() {
-        let parent = sets[s as usize].parent;
-        let up = if parent == NO_SET {
-            0
-        } else {
-            above[parent as usize]
-        };
-        above[s as usize] = up + i128::from(sets[s as usize].dual);
-    }
-    // Set sizes.
-    let mut size = vec![0u64; set_count];
-    for v in 0..node_slots {
-        let s = certificate.node_blossom[v];
-        if s != NO_SET {
-            size[s as usize] += 1;
-        }
-    }
-    for &s in &order {
-        let parent = sets[s as usize].parent;
-        if parent != NO_SET {
-            size[parent as usize] += size[s as usize];
-        }
-    }
-    if let Some(s) = size.iter().position(|&k| k < 3 || k.is_multiple_of(2)) {
-        return Err(CertificateError::SetSize {
-            set: s as u32,
-            size: size[s],
-        });
+        Ok(Family { size, ..family })
     }
 
-    // Dual feasibility and tightness of matched edges; matched edges per smallest common set.
-    let set_sum = |s: u32| if s == NO_SET { 0 } else { above[s as usize] };
-    let mut inside_here = vec![0u64; set_count];
+    /// Per set, `own` summed over the set and the sets inside it.
+    fn sum_up(&self, mut own: Vec<u64>) -> Vec<u64> {
+        for &s in &self.order {
+            let parent = self.sets[s as usize].parent;
+            if parent != NO_SET {
+                own[parent as usize] += own[s as usize];
+            }
+        }
+        own
+    }
+
+    /// The sum of the duals of `s` and its ancestors (0 for `NO_SET`).
+    fn dual_above(&self, s: u32) -> i128 {
+        if s == NO_SET {
+            0
+        } else {
+            self.above[s as usize]
+        }
+    }
+
+    /// Complementary slackness of the sets: every set with a positive dual has `(|S| − 1) / 2`
+    /// matched edges inside, given the matched edges whose smallest common set each set is.
+    fn check_slackness(&self, inside_here: Vec<u64>) -> Result<(), CertificateError> {
+        let inside = self.sum_up(inside_here);
+        match (0..self.sets.len())
+            .find(|&s| self.sets[s].dual > 0 && 2 * inside[s] + 1 != self.size[s])
+        {
+            Some(s) => Err(CertificateError::SetNotFull {
+                set: s as u32,
+                size: self.size[s],
+                dual: self.sets[s].dual,
+                inside: inside[s],
+            }),
+            None => Ok(()),
+        }
+    }
+}
+
+/// Dual feasibility of every non-loop edge and tightness of the matched ones. Returns twice the
+/// matching's cost and, per set, the matched edges whose smallest common set it is.
+fn check_edges<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+    certificate: &Certificate,
+    family: &Family,
+    cover: &[u32],
+) -> Result<(i128, Vec<u64>), CertificateError> {
+    let mut inside_here = vec![0u64; family.sets.len()];
     let mut primal: i128 = 0;
-    for e in 0..edge_slots as u32 {
+    for e in 0..graph.edge_slots() as u32 {
         if !graph.is_edge(e) {
             continue;
         }
@@ -272,8 +363,9 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
             certificate.node_blossom[u as usize],
             certificate.node_blossom[v as usize],
         );
-        let common = smallest_common_set(sets, &depth, su, sv);
-        let crossing = set_sum(su) + set_sum(sv) - 2 * set_sum(common);
+        let common = smallest_common_set(family.sets, &family.depth, su, sv);
+        let crossing =
+            family.dual_above(su) + family.dual_above(sv) - 2 * family.dual_above(common);
         let reduced = 2 * i128::from(costs[e as usize])
             - i128::from(certificate.node_duals[u as usize])
             - i128::from(certificate.node_duals[v as usize])
@@ -291,35 +383,7 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
             }
         }
     }
-
-    // Complementary slackness of the sets.
-    let mut inside = inside_here;
-    for &s in &order {
-        let parent = sets[s as usize].parent;
-        if parent != NO_SET {
-            inside[parent as usize] += inside[s as usize];
-        }
-    }
-    for s in 0..set_count {
-        if sets[s].dual > 0 && 2 * inside[s] + 1 != size[s] {
-            return Err(CertificateError::SetNotFull {
-                set: s as u32,
-                size: size[s],
-                dual: sets[s].dual,
-                inside: inside[s],
-            });
-        }
-    }
-
-    let dual: i128 = (0..node_slots)
-        .filter(|&v| graph.is_node(v as u32))
-        .map(|v| i128::from(certificate.node_duals[v]))
-        .sum::<i128>()
-        + sets.iter().map(|s| i128::from(s.dual)).sum::<i128>();
-    if primal != dual {
-        return Err(CertificateError::ObjectiveGap { primal, dual });
-    }
-    Ok((primal / 2) as i64)
+    Ok((primal, inside_here))
 }
 
 /// Depth of every set in the parent forest (0 for top-level sets), rejecting cycles: each set's

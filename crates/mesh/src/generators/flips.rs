@@ -1,7 +1,9 @@
 //! Random simplicial edge flips: irregular connectivity on a fixed vertex set.
 
-use crate::Surface;
-use crate::ids::EdgeId;
+use crate::cover::{CoveredSurface, Lifting, flip_lifts};
+use crate::geometry::Point3;
+use crate::ids::{EdgeId, VertexId};
+use crate::{Surface, SurfaceMesh};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -16,24 +18,33 @@ use rand_chacha::ChaCha8Rng;
 /// O(flips * degree) time when a constant fraction of the edges is flippable. Same seed, same
 /// result.
 pub fn random_flips(surface: &Surface, flips: usize, seed: u64) -> Surface {
+    random_flips_covered(&surface.clone().into(), flips, seed)
+        .into_plain()
+        .expect("flips keep a closed orientable surface so")
+}
+
+/// [`random_flips`] on any compact surface: boundary edges are never flipped (nor the edges of
+/// the cones closing the boundary), and a flip of a non-orientable component is made on both
+/// lifts ([`flip_lifts`]). Edges are drawn among the cover's edges, those that are not the
+/// surface's (cone and mirror edges) skipped like unflippable ones.
+pub fn random_flips_covered(surface: &CoveredSurface, flips: usize, seed: u64) -> CoveredSurface {
     let mut out = surface.clone();
     out.compact();
-    let mesh = &mut out.mesh;
-    let positions = &out.positions;
-    let edges = mesh.edge_count();
+    let CoveredSurface { cover, positions } = &mut out;
+    let edges = cover.mesh.edge_count();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let (mut done, mut failures) = (0usize, 0usize);
     while done < flips && edges > 0 {
         let e = EdgeId::new(rng.random_range(0..edges));
-        if mesh.can_flip_simplicial(e) && keeps_area(mesh, positions, e) {
-            mesh.flip(e).expect("checked by can_flip_simplicial");
+        if flippable(&cover.mesh, &cover.sheets, positions, e) {
+            flip_lifts(&mut cover.mesh, &mut cover.sheets, e).expect("checked by flippable");
             done += 1;
             failures = 0;
         } else {
             failures += 1;
             if failures >= edges {
-                let flippable = |e| mesh.can_flip_simplicial(e) && keeps_area(mesh, positions, e);
-                if !mesh.edges().any(flippable) {
+                let (mesh, sheets) = (&cover.mesh, &cover.sheets);
+                if !mesh.edges().any(|e| flippable(mesh, sheets, positions, e)) {
                     break;
                 }
                 failures = 0;
@@ -43,31 +54,62 @@ pub fn random_flips(surface: &Surface, flips: usize, seed: u64) -> Surface {
     out
 }
 
-/// Whether the two triangles made by flipping `e`, (d, c, a) and (c, d, b), both have an area
-/// above a relative threshold (1e-12 of the squared longest side).
-fn keeps_area(mesh: &crate::SurfaceMesh, positions: &[crate::geometry::Point3], e: EdgeId) -> bool {
+/// Whether `e` is an edge of the surface (the first of its mirror pair, not at an apex, not on
+/// the boundary) whose flip keeps the surface simplicial and both new triangles fat.
+fn flippable<L: Lifting>(mesh: &SurfaceMesh, lifting: &L, positions: &[Point3], e: EdgeId) -> bool {
+    if lifting.edge_key(e) != e || !can_flip_simplicial(mesh, lifting, e) {
+        return false;
+    }
     let h = e.halfedge();
-    let p = |v: crate::VertexId| positions[v.idx()];
-    let (a, b) = (p(mesh.origin(h)), p(mesh.dest(h)));
-    let (c, d) = (
-        p(mesh.opposite_vertex(h)),
-        p(mesh.opposite_vertex(h.twin())),
-    );
-    let fat =
-        |x: crate::geometry::Point3, y: crate::geometry::Point3, z: crate::geometry::Point3| {
-            let u = [y[0] - x[0], y[1] - x[1], y[2] - x[2]];
-            let w = [z[0] - x[0], z[1] - x[1], z[2] - x[2]];
-            let n = [
-                u[1] * w[2] - u[2] * w[1],
-                u[2] * w[0] - u[0] * w[2],
-                u[0] * w[1] - u[1] * w[0],
-            ];
-            let area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-            let longest = [u, w, [z[0] - y[0], z[1] - y[1], z[2] - y[2]]]
-                .iter()
-                .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
-                .fold(0.0, f64::max);
-            area2 > 1e-24 * longest * longest
-        };
+    let corners = [
+        mesh.origin(h),
+        mesh.dest(h),
+        mesh.opposite_vertex(h),
+        mesh.opposite_vertex(h.twin()),
+    ];
+    if corners.iter().any(|&v| lifting.is_apex(v)) {
+        return false;
+    }
+    let [a, b, c, d] = corners.map(|v| positions[lifting.class(v) as usize]);
     fat(d, c, a) && fat(c, d, b)
+}
+
+/// [`SurfaceMesh::can_flip_simplicial`] on the covered surface: adjacency of vertex classes.
+fn can_flip_simplicial<L: Lifting>(mesh: &SurfaceMesh, lifting: &L, e: EdgeId) -> bool {
+    if !mesh.can_flip(e) {
+        return false;
+    }
+    let h = e.halfedge();
+    let (a, b) = (mesh.origin(h), mesh.dest(h));
+    let (c, d) = (mesh.opposite_vertex(h), mesh.opposite_vertex(h.twin()));
+    if lifting.class(c) == lifting.class(d) || mesh.degree(a) <= 3 || mesh.degree(b) <= 3 {
+        return false;
+    }
+    let (small, other) = if mesh.degree(c) <= mesh.degree(d) {
+        (c, d)
+    } else {
+        (d, c)
+    };
+    let other = lifting.class(other);
+    !mesh
+        .neighbors(small)
+        .any(|w: VertexId| lifting.class(w) == other)
+}
+
+/// Whether triangle (x, y, z) has an area above a relative threshold (1e-12 of the squared
+/// longest side).
+fn fat(x: Point3, y: Point3, z: Point3) -> bool {
+    let u = [y[0] - x[0], y[1] - x[1], y[2] - x[2]];
+    let w = [z[0] - x[0], z[1] - x[1], z[2] - x[2]];
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let area2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    let longest = [u, w, [z[0] - y[0], z[1] - y[1], z[2] - y[2]]]
+        .iter()
+        .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        .fold(0.0, f64::max);
+    area2 > 1e-24 * longest * longest
 }

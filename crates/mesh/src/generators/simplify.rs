@@ -10,6 +10,7 @@
 
 use crate::Surface;
 use crate::contract::LinkScratch;
+use crate::cover::{CoveredSurface, Lifting, contract_lifts, satisfies_link_condition};
 use crate::ids::EdgeId;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -28,22 +29,38 @@ use rand_chacha::ChaCha8Rng;
 /// O(n * degree) time when a constant fraction of the edges is contractible in every pass. Same
 /// seed, same result.
 pub fn simplify(surface: &Surface, target_faces: usize, seed: u64) -> Surface {
+    simplify_covered(&surface.clone().into(), target_faces, seed)
+        .into_plain()
+        .expect("contractions keep a closed orientable surface so")
+}
+
+/// [`simplify`] on any compact surface: the link condition is the surface's
+/// ([`satisfies_link_condition`]: Dey et al.'s rule with the boundary coned), edges of the cover
+/// that are not the surface's are skipped, a contraction of a non-orientable component is made
+/// on both lifts ([`contract_lifts`]), and the face count is the surface's.
+pub fn simplify_covered(
+    surface: &CoveredSurface,
+    target_faces: usize,
+    seed: u64,
+) -> CoveredSurface {
     let mut out = surface.clone();
     out.compact();
-    let mesh = &mut out.mesh;
+    let cover = &mut out.cover;
+    let mut faces = cover.surface_faces().count();
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut scratch = LinkScratch::default();
-    let mut order: Vec<EdgeId> = mesh.edges().collect();
-    while mesh.face_count() > target_faces {
+    let mut history = Vec::new();
+    let mut order: Vec<EdgeId> = cover.mesh.edges().collect();
+    while faces > target_faces {
         for i in (1..order.len()).rev() {
             order.swap(i, rng.random_range(0..=i));
         }
         let mut contracted = false;
         for &e in &order {
-            if mesh.face_count() <= target_faces {
+            if faces <= target_faces {
                 break;
             }
-            if !mesh.is_edge_live(e) {
+            if !cover.mesh.is_edge_live(e) || cover.sheets.edge_key(e) != e {
                 continue;
             }
             let h = if rng.random_bool(0.5) {
@@ -51,15 +68,20 @@ pub fn simplify(surface: &Surface, target_faces: usize, seed: u64) -> Surface {
             } else {
                 e.halfedge().twin()
             };
-            if mesh.satisfies_link_condition(h, &mut scratch) {
-                mesh.contract_unchecked(h);
+            if satisfies_link_condition(&cover.mesh, &cover.sheets, h, &mut scratch) {
+                let boundary = [h, h.twin()]
+                    .iter()
+                    .any(|&k| cover.sheets.is_apex(cover.mesh.opposite_vertex(k)));
+                history.clear();
+                contract_lifts(&mut cover.mesh, &cover.sheets, h, &mut history);
+                faces -= if boundary { 1 } else { 2 };
                 contracted = true;
             }
         }
         if !contracted {
             break;
         }
-        order.retain(|&e| mesh.is_edge_live(e));
+        order.retain(|&e| cover.mesh.is_edge_live(e));
     }
     out.compact();
     out

@@ -1,6 +1,7 @@
 //! Random vertex splits (the inverse of edge contractions, with fresh ids).
 
 use crate::Surface;
+use crate::cover::{CoveredSurface, Lifting, split_lifts};
 use crate::geometry::Point3;
 use crate::ids::{HalfedgeId, VertexId};
 use rand::{RngExt, SeedableRng};
@@ -22,14 +23,36 @@ use rand_chacha::ChaCha8Rng;
 /// destination (possible only in a non-simplicial input) is skipped. Ids are dense. O(splits *
 /// degree). Same seed, same result.
 pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surface {
+    random_vertex_splits_covered(&surface.clone().into(), splits, seed)
+        .into_plain()
+        .expect("splits keep a closed orientable surface so")
+}
+
+/// [`random_vertex_splits`] on any compact surface: `u` is drawn among the surface's vertices
+/// (not the apexes closing the boundary), x or y may be an apex (the split of a boundary vertex
+/// then adds a boundary edge), a split of a non-orientable component is made on both lifts
+/// ([`split_lifts`]), and the placement ignores the apexes.
+pub fn random_vertex_splits_covered(
+    surface: &CoveredSurface,
+    splits: usize,
+    seed: u64,
+) -> CoveredSurface {
     let mut out = surface.clone();
     out.compact();
-    let simplicial_input = cfg!(debug_assertions) && out.mesh.is_simplicial();
-    let Surface { mesh, positions } = &mut out;
+    let simplicial_input = cfg!(debug_assertions) && out.cover.mesh.is_simplicial();
+    let CoveredSurface { cover, positions } = &mut out;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut ring: Vec<HalfedgeId> = Vec::new();
     for _ in 0..splits {
-        let u = VertexId::new(rng.random_range(0..mesh.vertex_count()));
+        let classes = cover.sheets.class_count();
+        let class = loop {
+            let c = rng.random_range(0..classes) as u32;
+            if cover.sheets.apex_class() != Some(c) {
+                break c;
+            }
+        };
+        let mesh = &cover.mesh;
+        let u = cover.sheets.lift(class);
         ring.clear();
         ring.extend(mesh.outgoing(u));
         let i = rng.random_range(0..ring.len());
@@ -50,47 +73,56 @@ pub fn random_vertex_splits(surface: &Surface, splits: usize, seed: u64) -> Surf
         // Faces of u at x and at y, for the fallback positions below.
         let face_at_x = [u, mesh.dest(to_x), mesh.dest(mesh.next(to_x))];
         let face_at_y = [u, mesh.dest(to_y), mesh.dest(mesh.next(to_y))];
-        let record = mesh
-            .split_vertex_new(to_y, to_x)
+        let (new_class, record) = split_lifts(&mut cover.mesh, &mut cover.sheets, to_y, to_x)
             .expect("two outgoing half-edges of u with distinct destinations");
+        let (mesh, sheets) = (&cover.mesh, &cover.sheets);
         let v = record.removed();
+        let at = |w: VertexId| positions[sheets.class(w) as usize];
         let (mut sum, mut count) = ([0.0; 3], 0.0);
-        for w in mesh.neighbors(v).filter(|&w| w != u) {
-            let p = positions[w.idx()];
+        for w in mesh.neighbors(v).filter(|&w| w != u && !sheets.is_apex(w)) {
+            let p = at(w);
             sum = [0, 1, 2].map(|k| sum[k] + p[k]);
             count += 1.0;
         }
-        let pu = positions[u.idx()];
+        let pu = at(u);
         let midpoint: Point3 = [0, 1, 2].map(|k| 0.5 * (pu[k] + sum[k] / count));
         let centroid = |face: [VertexId; 3]| {
-            let [a, b, c] = face.map(|w| positions[w.idx()]);
-            [0, 1, 2].map(|k| (a[k] + b[k] + c[k]) / 3.0)
+            if face.iter().any(|&w| sheets.is_apex(w)) {
+                return None;
+            }
+            let [a, b, c] = face.map(at);
+            Some([0, 1, 2].map(|k| (a[k] + b[k] + c[k]) / 3.0))
         };
         // The midpoint of u and the centroid of the other neighbours, unless that makes a
         // (nearly) zero-area triangle at v (neighbours balanced around u, as on a regular grid,
         // put it on u or on a line through two of them): then the centroid of a face of u, which
         // lies strictly inside that face.
-        let candidates = [midpoint, centroid(face_at_x), centroid(face_at_y)];
-        debug_assert_eq!(v.idx(), positions.len());
+        let candidates = [Some(midpoint), centroid(face_at_x), centroid(face_at_y)];
+        debug_assert_eq!(new_class as usize, positions.len());
         positions.push(midpoint);
-        for p in candidates {
-            positions[v.idx()] = p;
-            if star_has_area(mesh, positions, v) {
+        for p in candidates.into_iter().flatten() {
+            positions[new_class as usize] = p;
+            if star_has_area(cover, positions, v) {
                 break;
             }
         }
     }
-    debug_assert!(!simplicial_input || out.mesh.is_simplicial());
+    debug_assert!(!simplicial_input || out.cover.mesh.is_simplicial());
     out
 }
 
-/// Whether every face around `v` has an area above 1e-12 of its longest side squared.
-fn star_has_area(mesh: &crate::SurfaceMesh, positions: &[Point3], v: VertexId) -> bool {
-    use crate::geometry::{distance, face_area};
+/// Whether every face of the surface around `v` has an area above 1e-12 of its longest side
+/// squared.
+fn star_has_area(cover: &crate::ClosedCover, positions: &[Point3], v: VertexId) -> bool {
+    use crate::geometry::{distance, triangle_area};
+    let mesh = &cover.mesh;
     mesh.outgoing(v).all(|h| {
-        let f = mesh.face(h);
-        let [a, b, c] = mesh.face_vertices(f).map(|w| positions[w.idx()]);
+        let face = mesh.face_vertices(mesh.face(h));
+        if face.iter().any(|&w| cover.sheets.is_apex(w)) {
+            return true;
+        }
+        let [a, b, c] = face.map(|w| positions[cover.class(w) as usize]);
         let longest = distance(a, b).max(distance(b, c)).max(distance(c, a));
-        face_area(mesh, positions, f) > 0.5e-12 * longest * longest
+        triangle_area(a, b, c) > 0.5e-12 * longest * longest
     })
 }

@@ -1,8 +1,9 @@
-"""surftopo: triangulations of closed surfaces, numpy in, numpy and scipy.sparse out.
+"""surftopo: triangulated surfaces, numpy in, numpy and scipy.sparse out.
 
-Irreducible triangulations, quadrangulations and intrinsic Delaunay triangulations (with their
-cotan Laplacian and mass matrix) of closed, connected, orientable triangle meshes, computed by the
-surftopo Rust libraries with the GIL released. See ``help(surftopo.laplacian)`` and the type stubs
+Irreducible triangulations (of any compact surface: boundary loops, non-orientable, several
+pieces), quadrangulations and intrinsic Delaunay triangulations (with their cotan Laplacian and
+mass matrix; closed, connected, orientable meshes), computed by the surftopo Rust libraries with
+the GIL released. See ``help(surftopo.laplacian)`` and the type stubs
 for every function; invalid input raises a subclass of :class:`InvalidInputError` (a
 :class:`ValueError`) that names the face, edge or vertex.
 

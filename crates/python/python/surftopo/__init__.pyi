@@ -46,7 +46,11 @@ __all__ = [
     "Portalgon",
     "PortalgonError",
     "SurftopoError",
+    "annulus",
+    "canonical_form",
     "cavity_box",
+    "census",
+    "disk",
     "flat_torus",
     "genus_surface",
     "icosphere",
@@ -54,7 +58,11 @@ __all__ = [
     "intrinsic_delaunay",
     "irreducible",
     "isometric",
+    "klein_bottle",
     "laplacian",
+    "mobius_band",
+    "non_orientable",
+    "projective_plane",
     "quadrangulate",
     "read_mesh",
     "tetrahedron",
@@ -103,21 +111,26 @@ def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, An
     """Counts, topology and every problem found, valid surface or not.
 
     The keys of ``surftopo info --json``: ``vertices``, ``edges``, ``faces``, ``genus`` (``None``
-    unless valid), ``euler_characteristic``, ``components``, ``closed``, ``orientable``,
-    ``simplicial``, ``valid``, ``reoriented_faces``, ``unreferenced_vertices``,
-    ``welded_vertices``, one count per problem class (``non_finite_coordinates``,
-    ``zero_area_faces``, ``degenerate_faces``, ``duplicate_faces``,
-    ``boundary_edges``, ``non_manifold_edges``, ``non_manifold_vertices``, ``non_orientable``,
-    ``disconnected``, ``other_problems``), ``problems_total``, ``problems_truncated`` and
-    ``problems`` (at most 100 messages, each naming the face, edge or vertex). ``weld=True``
-    first merges vertices with exactly equal positions.
+    unless the faces form one orientable surface), ``euler_characteristic``, ``components``,
+    ``closed``, ``orientable``, ``boundary_loops``, ``boundary_edges``, ``simplicial``, ``valid``
+    (no problem: a triangulated surface, boundary, non-orientable pieces and several components
+    allowed), ``reoriented_faces``, ``unreferenced_vertices``, ``welded_vertices``, one count per
+    problem class (``non_finite_coordinates``, ``zero_area_faces``, ``degenerate_faces``,
+    ``duplicate_faces``, ``non_manifold_edges``, ``non_manifold_vertices``, ``other_problems``),
+    ``problems_total``, ``problems_truncated``, ``problems`` (at most 100 messages, each naming
+    the face, edge or vertex) and ``surfaces``: one dict per connected component with
+    ``faces``, ``euler_characteristic``, ``orientable``, ``boundary_loops``, ``genus`` (``None``
+    when non-orientable), ``crosscaps`` (``None`` when orientable), ``euler_genus`` and ``name``.
+    ``weld=True`` first merges vertices with exactly equal positions.
 
     >>> V, F = surftopo.torus(24, 12)
     >>> d = surftopo.info(V, F)
     >>> d["genus"], d["valid"], d["faces"]
     (1, True, 576)
-    >>> surftopo.info(V, F[1:])["problems"][0]
-    'boundary edge (0, 12) of face 22: the surface is not closed'
+    >>> [s["name"] for s in surftopo.info(V, F[1:])["surfaces"]]
+    ['genus 1 with 1 boundary loop']
+    >>> surftopo.info(*surftopo.klein_bottle())["surfaces"][0]["crosscaps"]
+    2
     """
 
 def irreducible(
@@ -126,9 +139,12 @@ def irreducible(
     """An irreducible triangulation of the surface by topology-preserving edge contractions.
 
     Every edge of the result fails the link condition, so none can be contracted without changing
-    the topology: the tetrahedron for genus 0, 7 to 10 vertices for the torus. ``algorithm`` is
-    ``"rs"`` (Ramaswami–Siqueira, O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by
-    ``seed``; the CLI's default seed is also 1).
+    the topology: the tetrahedron for genus 0, 7 to 10 vertices for the torus, 6 or 7 for the
+    projective plane, a single triangle for a disk. Any compact surface is taken: boundary loops
+    (the link condition of Dey et al. with the boundary coned over one vertex), non-orientable
+    surfaces, several pieces (each reduced). ``algorithm`` is ``"rs"`` (Ramaswami–Siqueira,
+    O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by ``seed``; the CLI's default seed
+    is also 1).
 
     Returns ``(V2, F2, stats)``: ``V2`` the surviving vertices with their positions, ``F2`` the
     triangles as indices into ``V2``, and ``stats`` the keys of ``surftopo irreducible --json``
@@ -138,10 +154,46 @@ def irreducible(
 
     >>> V, F = surftopo.torus(24, 12)
     >>> V2, F2, stats = surftopo.irreducible(V, F)
-    >>> stats["output"]
+    >>> {k: stats["output"][k] for k in ("vertices", "edges", "faces", "genus")}
     {'vertices': 7, 'edges': 21, 'faces': 14, 'genus': 1}
     >>> bool((V2 == V[stats["vertex_indices"]]).all())
     True
+    >>> V2, F2, stats = surftopo.irreducible(*surftopo.klein_bottle())
+    >>> stats["output"]["surfaces"][0]["name"], 8 <= len(V2) <= 11
+    ('Klein bottle', True)
+    """
+
+def census(
+    surface: str, max_vertices: int | None = None
+) -> list[npt.NDArray[np.int64]]:
+    """Every irreducible triangulation of a closed surface, up to isomorphism.
+
+    ``surface`` is ``"sphere"``, ``"torus"``, ``"projective-plane"``, ``"klein-bottle"``,
+    ``"genus-G"`` or ``"nK"``. Each entry is an int64 ``(m, 3)`` face array on the vertices
+    ``0..n`` in canonical labelling (see :func:`canonical_form`), sorted by vertex count; a
+    triangulation and its mirror image are one entry. ``max_vertices`` cuts the search (the list
+    is then complete up to that many vertices only); a surface with no vertex bound within reach
+    (``"n3"``, ``"genus-2"`` and beyond) needs it, else :class:`InvalidInputError`. The method,
+    its completeness argument and its sources: ``surftopo census --help`` and the README.
+
+    >>> [len(F) for F in surftopo.census("projective-plane")]
+    [10, 12]
+    >>> len(surftopo.census("torus"))
+    21
+    """
+
+def canonical_form(faces: _Faces) -> npt.NDArray[np.int64]:
+    """The canonical form of a closed triangulated surface, orientable or not.
+
+    ``faces`` is an ``(m, 3)`` integer array on the vertices ``0..n`` (every index used). The
+    result, an int64 ``(m, 3)`` array with each row sorted and the rows sorted, is equal for two
+    face lists exactly when they are isomorphic as simplicial complexes (mirror images included).
+    A face list that is not a closed connected simplicial surface raises
+    :class:`InvalidMeshError` naming the face, edge or vertex.
+
+    >>> F = np.array([[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]])
+    >>> surftopo.canonical_form(F[:, ::-1][[3, 1, 2, 0]]).tolist()
+    [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]]
     """
 
 def quadrangulate(
@@ -353,6 +405,36 @@ def cavity_box(
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
     """The papers' brick with ``cavities`` square cavities and ``holes`` through-holes (genus
     ``holes``), refined to about ``triangles`` triangles."""
+
+def disk(n: int = 8) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The unit square as an ``n x n`` grid: a disk (``2 n^2`` triangles), ``n >= 1``."""
+
+def annulus(m: int = 24, n: int = 4) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """An open cylinder: an annulus as an ``m x n`` grid (``2 m n`` triangles), ``m >= 3``,
+    ``n >= 1``."""
+
+def mobius_band(m: int = 24, n: int = 4) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A Möbius band as an ``m x n`` grid glued with a half twist (``2 m n`` triangles),
+    ``m >= 5``, ``n >= 1``.
+
+    >>> surftopo.info(*surftopo.mobius_band())["surfaces"][0]["name"]
+    'Möbius band'
+    """
+
+def projective_plane() -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The 6-vertex projective plane (10 triangles, every two vertices adjacent)."""
+
+def klein_bottle(m: int = 24, n: int = 12) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """A Klein bottle as an ``m x n`` grid on the figure-8 immersion (``2 m n`` triangles),
+    ``m, n >= 3``."""
+
+def non_orientable(crosscaps: int = 3) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """The non-orientable surface N_k with ``crosscaps`` crosscaps: a connected sum of 6-vertex
+    projective planes (``8k + 2`` triangles).
+
+    >>> surftopo.info(*surftopo.non_orientable(3))["surfaces"][0]["name"]
+    'N_3'
+    """
 
 def flat_torus(x: float, m: int = 1) -> Portalgon:
     """The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two

@@ -1,288 +1,34 @@
-//! Building a [`SurfaceMesh`] from a triangle soup, with validation.
-//!
-//! The directed corner edges are paired after two counting sorts (by larger, then by smaller
-//! vertex: O(n), no comparison sort); a walk around each vertex checks its fan, a union-find counts
-//! components, and a breadth-first search over faces orients them when needed.
-//! Every problem is collected ([`inspect`]); [`build`] fails on the first one.
+//! The corner pairing: a triangle soup's corners (directed edges) paired into half-edges, with
+//! every problem and fact found on the way (steps 1 to 6 below).
 
+use super::Inspection;
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::topology::SurfaceMesh;
 use crate::union_find::UnionFind;
 use std::borrow::Cow;
 
-/// At most this many problems are listed by [`inspect`] (counts are always complete).
-pub const MAX_LISTED_PROBLEMS: usize = 100;
-
-/// What building a mesh changed about its input.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct BuildReport {
-    /// Faces whose orientation was reversed to make the orientation consistent.
-    pub reoriented_faces: usize,
-    /// Input vertices that no face uses; they were dropped.
-    pub dropped_vertices: Vec<u32>,
-    /// Input vertex index -> mesh vertex id (`INVALID` for dropped vertices).
-    pub vertex_old_to_new: Vec<VertexId>,
-}
-
-/// Everything [`inspect`] finds out about a triangle soup, valid or not.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Inspection {
-    /// Referenced vertices.
-    pub vertices: usize,
-    /// Distinct undirected edges.
-    pub edges: usize,
-    /// Faces.
-    pub faces: usize,
-    /// Connected components (faces joined through shared edges).
-    pub components: usize,
-    /// Edges in exactly one face.
-    pub boundary_edges: usize,
-    /// Edges in more than two faces.
-    pub non_manifold_edges: usize,
-    /// Vertices whose faces form more than one fan (only checked when edges are manifold).
-    pub non_manifold_vertices: usize,
-    /// Whether a consistent orientation exists (over the manifold part).
-    pub orientable: bool,
-    /// Faces that would be reversed to orient the surface consistently.
-    pub reoriented_faces: usize,
-    /// Unreferenced vertices.
-    pub dropped_vertices: usize,
-    /// The problems found, at most [`MAX_LISTED_PROBLEMS`], in input order of discovery.
-    pub problems: Vec<BuildError>,
-    /// Total number of problems found.
-    pub problem_count: usize,
-    /// The problems found, counted by class (they sum to `problem_count`).
-    pub counts: ProblemCounts,
-}
-
-/// The problems of an [`Inspection`] counted by class, one count per kind of [`BuildError`]
-/// that [`inspect`] and the geometric checks ([`crate::geometry::problems`]) report. The field
-/// names are the keys of `surftopo info --json` and, read with spaces for `_`, its text labels.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ProblemCounts {
-    /// Coordinates that are NaN or infinite, one per coordinate (a vertex `nan nan nan` counts
-    /// three): [`BuildError::NonFinite`].
-    pub non_finite_coordinates: usize,
-    /// Faces of exactly zero area (collinear vertices): [`BuildError::ZeroArea`].
-    pub zero_area_faces: usize,
-    /// Faces repeating a vertex: [`BuildError::RepeatedVertex`].
-    pub degenerate_faces: usize,
-    /// Faces on the same vertices as an earlier face: [`BuildError::DuplicateFace`].
-    pub duplicate_faces: usize,
-    /// Edges in one face: [`BuildError::BoundaryEdge`].
-    pub boundary_edges: usize,
-    /// Edges in more than two faces: [`BuildError::NonManifoldEdge`].
-    pub non_manifold_edges: usize,
-    /// Vertices whose faces form several fans: [`BuildError::NonManifoldVertex`].
-    pub non_manifold_vertices: usize,
-    /// 1 when no consistent orientation exists ([`BuildError::NonOrientable`], reported once, at
-    /// the first conflict found).
-    pub non_orientable: usize,
-    /// 1 when the faces form several connected components ([`BuildError::Disconnected`],
-    /// reported once; [`Inspection::components`] says how many).
-    pub disconnected: usize,
-    /// Any other problem: a vertex index out of range, no face at all, more elements than
-    /// `u32` ids address (none of which comes from a file: the readers refuse such files, and
-    /// `surftopo info` with them).
-    pub other_problems: usize,
-}
-
-impl ProblemCounts {
-    /// Counts one problem in its class.
-    pub fn add(&mut self, problem: &BuildError) {
-        let count = match problem {
-            BuildError::NonFinite { .. } => &mut self.non_finite_coordinates,
-            BuildError::ZeroArea { .. } => &mut self.zero_area_faces,
-            BuildError::RepeatedVertex { .. } => &mut self.degenerate_faces,
-            BuildError::DuplicateFace { .. } => &mut self.duplicate_faces,
-            BuildError::BoundaryEdge { .. } => &mut self.boundary_edges,
-            BuildError::NonManifoldEdge { .. } => &mut self.non_manifold_edges,
-            BuildError::NonManifoldVertex { .. } => &mut self.non_manifold_vertices,
-            BuildError::NonOrientable { .. } => &mut self.non_orientable,
-            BuildError::Disconnected { .. } => &mut self.disconnected,
-            BuildError::IndexOutOfRange { .. }
-            | BuildError::Empty
-            | BuildError::TooLarge { .. }
-            | BuildError::SideUnglued { .. }
-            | BuildError::SideGluedTwice { .. }
-            | BuildError::NotAsGiven { .. }
-            | BuildError::NotTriangle { .. } => &mut self.other_problems,
-        };
-        *count += 1;
-    }
-
-    /// `(key, count)` per class, in the order `surftopo info` prints them; the key is the
-    /// field's name.
-    pub fn entries(&self) -> [(&'static str, usize); 10] {
-        [
-            ("non_finite_coordinates", self.non_finite_coordinates),
-            ("zero_area_faces", self.zero_area_faces),
-            ("degenerate_faces", self.degenerate_faces),
-            ("duplicate_faces", self.duplicate_faces),
-            ("boundary_edges", self.boundary_edges),
-            ("non_manifold_edges", self.non_manifold_edges),
-            ("non_manifold_vertices", self.non_manifold_vertices),
-            ("non_orientable", self.non_orientable),
-            ("disconnected", self.disconnected),
-            ("other_problems", self.other_problems),
-        ]
-    }
-
-    /// The problems of the geometry (non-finite coordinates, zero-area faces); the others are
-    /// of the combinatorics.
-    pub fn geometric(&self) -> usize {
-        self.non_finite_coordinates + self.zero_area_faces
-    }
-
-    /// All problems, every class.
-    pub fn total(&self) -> usize {
-        self.entries().iter().map(|&(_, n)| n).sum()
-    }
-}
-
-impl Inspection {
-    /// Whether every edge has exactly two faces.
-    pub fn is_closed(&self) -> bool {
-        self.boundary_edges == 0 && self.non_manifold_edges == 0
-    }
-    /// Euler characteristic `V - E + F`.
-    pub fn euler_characteristic(&self) -> i64 {
-        self.vertices as i64 - self.edges as i64 + self.faces as i64
-    }
-    /// Whether no problem was found: the soup is a closed, connected, orientable surface that
-    /// [`build()`] accepts.
-    pub fn is_valid(&self) -> bool {
-        self.problem_count == 0
-    }
-    /// Whether the combinatorics are those of a closed, connected, orientable surface: no
-    /// problem but the geometric ones ([`ProblemCounts::geometric`]: non-finite coordinates,
-    /// zero-area faces), which leave the topology defined.
-    pub fn is_combinatorially_valid(&self) -> bool {
-        self.problem_count == self.counts.geometric()
-    }
-    /// The genus `(2 - χ) / 2` when the combinatorics are valid
-    /// ([`Self::is_combinatorially_valid`]), `None` otherwise.
-    pub fn genus(&self) -> Option<i64> {
-        self.is_combinatorially_valid()
-            .then(|| (2 - self.euler_characteristic()) / 2)
-    }
-    /// Whether a problem makes the faces a non-simplicial complex: a face repeating a vertex, or
-    /// two faces on the same three vertices.
-    pub fn has_degenerate_faces(&self) -> bool {
-        self.problems.iter().any(|p| {
-            matches!(
-                p,
-                BuildError::RepeatedVertex { .. } | BuildError::DuplicateFace { .. }
-            )
-        })
-    }
-    /// Whether more problems were found than [`Self::problems`] lists (at most
-    /// [`MAX_LISTED_PROBLEMS`]).
-    pub fn is_truncated(&self) -> bool {
-        self.problem_count > self.problems.len()
-    }
-    /// Counts problems found outside the soup's combinatorics (non-finite coordinates, zero-area
-    /// faces: [`crate::geometry::problems`]) and lists them before the others, the list still
-    /// cut at [`MAX_LISTED_PROBLEMS`].
-    pub fn add_problems_first(&mut self, problems: impl IntoIterator<Item = BuildError>) {
-        let later = std::mem::take(&mut self.problems);
-        for e in problems {
-            self.push(e);
-        }
-        let room = MAX_LISTED_PROBLEMS - self.problems.len();
-        self.problems.extend(later.into_iter().take(room));
-    }
-    fn push(&mut self, e: BuildError) {
-        self.problem_count += 1;
-        self.counts.add(&e);
-        if self.problems.len() < MAX_LISTED_PROBLEMS {
-            self.problems.push(e);
-        }
-    }
-}
-
-/// Inspects a triangle soup without building anything: counts and every problem found.
-pub fn inspect(vertex_count: usize, triangles: &[[u32; 3]]) -> Inspection {
-    CornerPairing::run(vertex_count, triangles).inspection
-}
-
-/// Builds a closed, connected, orientable surface from a triangle soup.
-///
-/// Unreferenced vertices are dropped (see [`BuildReport::vertex_old_to_new`]); faces are reoriented
-/// to agree with the majority orientation when needed. Face ids equal input face indices.
-///
-/// # Errors
-/// The first problem found, naming the input face, vertex or edge (see [`BuildError`]).
-pub fn build(
-    vertex_count: usize,
-    triangles: &[[u32; 3]],
-) -> Result<(SurfaceMesh, BuildReport), BuildError> {
-    let mut p = CornerPairing::run(vertex_count, triangles);
-    if let Some(e) = p.inspection.problems.first() {
-        return Err(e.clone());
-    }
-    let mut report = BuildReport {
-        reoriented_faces: p.inspection.reoriented_faces,
-        dropped_vertices: std::mem::take(&mut p.dropped),
-        vertex_old_to_new: std::mem::take(&mut p.old_to_new),
-    };
-    let mesh = if report.reoriented_faces > 0 {
-        let mut oriented = std::mem::take(&mut p.remapped).into_owned();
-        for (t, &flip) in oriented.iter_mut().zip(&p.flip) {
-            if flip {
-                t.swap(1, 2);
-            }
-        }
-        let again = CornerPairing::run(p.inspection.vertices, &oriented);
-        debug_assert_eq!(again.inspection.reoriented_faces, 0);
-        if let Some(e) = again.inspection.problems.first() {
-            return Err(e.clone());
-        }
-        again.into_mesh()
-    } else {
-        p.into_mesh()
-    };
-    report.reoriented_faces = report.reoriented_faces.min(triangles.len());
-    Ok((mesh, report))
-}
-
-/// Builds the topology of a soup that is known to be valid and consistently oriented, with no
-/// unreferenced vertices, so that vertex and face ids are the soup's as given.
-///
-/// # Errors
-/// As [`build`]; [`BuildError::NotAsGiven`] if faces would need reorienting or vertices
-/// dropping.
-pub fn build_topology(
-    vertex_count: usize,
-    triangles: &[[u32; 3]],
-) -> Result<SurfaceMesh, BuildError> {
-    let (mesh, report) = build(vertex_count, triangles)?;
-    if report.reoriented_faces > 0 || !report.dropped_vertices.is_empty() {
-        return Err(BuildError::NotAsGiven {
-            reoriented_faces: report.reoriented_faces,
-            dropped_vertices: report.dropped_vertices.len(),
-        });
-    }
-    Ok(mesh)
-}
-
 /// The pass that pairs the corners of a soup's triangles (each a directed edge) into the
 /// half-edges of a mesh, with what it found on the way.
-struct CornerPairing<'a> {
-    inspection: Inspection,
+pub(crate) struct CornerPairing<'a> {
+    pub(crate) inspection: Inspection,
     /// Triangles in new vertex ids (faces with bad indices are kept with `u32::MAX`); the input
     /// itself when nothing needed renumbering.
-    remapped: Cow<'a, [[u32; 3]]>,
-    old_to_new: Vec<VertexId>,
-    new_to_old: Vec<u32>,
-    dropped: Vec<u32>,
-    /// Half-edge id of each corner (corner `3f + i` is the directed edge `t[i] -> t[i+1]`).
-    corner_halfedge: Vec<HalfedgeId>,
-    /// Corner of each half-edge.
-    halfedge_corner: Vec<u32>,
-    /// Whether each face is reversed by the orientation.
-    flip: Vec<bool>,
+    pub(crate) remapped: Cow<'a, [[u32; 3]]>,
+    /// Per face: whether its indices are valid.
+    pub(crate) valid: Vec<bool>,
+    pub(crate) old_to_new: Vec<VertexId>,
+    pub(crate) new_to_old: Vec<u32>,
+    pub(crate) dropped: Vec<u32>,
+    /// The corners paired by edge.
+    pub(crate) edges: EdgePairs,
+    /// Whether each face is reversed by the orientation (the majority orientation of each
+    /// orientable component).
+    pub(crate) flip: Vec<bool>,
+    /// What keeps the faces from being one closed oriented surface although they form a surface,
+    /// each reported once in order of discovery: the first boundary edge, the components, the
+    /// first orientation conflict.
+    refusals: Vec<BuildError>,
 }
 
 /// Step 1: the triangles in the ids of the referenced vertices, the faces whose indices are valid
@@ -321,14 +67,14 @@ struct SortedCorners {
 }
 
 /// Step 3: the corners grouped by edge, the pairs of an edge in two faces made half-edges.
-struct EdgePairs {
+pub(crate) struct EdgePairs {
     /// Half-edge id of each corner (`INVALID` for the corners of edges not in two faces).
-    corner_halfedge: Vec<HalfedgeId>,
+    pub(crate) corner_halfedge: Vec<HalfedgeId>,
     /// Corner of each half-edge.
-    halfedge_corner: Vec<u32>,
+    pub(crate) halfedge_corner: Vec<u32>,
     /// Per edge in two faces: whether its two corners run the same way (an orientation conflict
     /// between the faces).
-    same_direction: Vec<bool>,
+    pub(crate) same_direction: Vec<bool>,
     /// `around[c]`: the corner after `c` around its vertex when the orientation is consistent
     /// (the next corner, in its face, after the twin of corner `c`'s half-edge).
     around: Vec<u32>,
@@ -336,29 +82,32 @@ struct EdgePairs {
     vertex_sets: UnionFind,
     /// Consecutive corners of the edges in more than two faces (their faces are joined too).
     other_joins: Vec<(u32, u32)>,
+    /// Per vertex, whether it is on an edge in more than two faces (empty when there is none).
+    on_non_manifold_edge: Vec<bool>,
 }
 
 impl<'a> CornerPairing<'a> {
-    fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
+    pub(crate) fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
         let mut ins = Inspection {
             faces: triangles.len(),
             orientable: true,
             ..Inspection::default()
         };
-        let mut p = CornerPairing {
-            inspection: Inspection::default(),
+        let mut refusals = Vec::new();
+        let refused = |ins: Inspection, refusals| CornerPairing {
+            inspection: ins,
             remapped: Cow::Borrowed(&[]),
+            valid: Vec::new(),
             old_to_new: Vec::new(),
             new_to_old: Vec::new(),
             dropped: Vec::new(),
-            corner_halfedge: Vec::new(),
-            halfedge_corner: Vec::new(),
+            edges: EdgePairs::empty(),
             flip: Vec::new(),
+            refusals,
         };
         if triangles.is_empty() {
             ins.push(BuildError::Empty);
-            p.inspection = ins;
-            return p;
+            return refused(ins, refusals);
         }
         if triangles.len().saturating_mul(3) >= (u32::MAX >> 1) as usize
             || vertex_count >= u32::MAX as usize
@@ -366,35 +115,72 @@ impl<'a> CornerPairing<'a> {
             ins.push(BuildError::TooLarge {
                 what: "faces or vertices",
             });
-            p.inspection = ins;
-            return p;
+            return refused(ins, refusals);
         }
         let indexed = check_indices(vertex_count, triangles, &mut ins);
         let sorted = sort_corners(&indexed);
-        let mut edges = pair_edges(&indexed, sorted, &mut ins);
-        let all_paired = indexed.valid.iter().all(|&ok| ok)
-            && ins.boundary_edges == 0
-            && ins.non_manifold_edges == 0;
+        let mut edges = pair_edges(&indexed, sorted, &mut ins, &mut refusals);
+        let all_valid = indexed.valid.iter().all(|&ok| ok);
         let consistent = !edges.same_direction.iter().any(|&same| same);
-        if all_paired {
+        if all_valid {
             check_fans(&indexed, &edges, consistent, &mut ins);
         }
-        count_components(&indexed, &mut edges, all_paired, &mut ins);
-        let flip = orient(&indexed, &edges, consistent, &mut ins);
-        p.inspection = ins;
-        p.remapped = indexed.remapped;
-        p.old_to_new = indexed.old_to_new;
-        p.new_to_old = indexed.new_to_old;
-        p.dropped = indexed.dropped;
-        p.corner_halfedge = edges.corner_halfedge;
-        p.halfedge_corner = edges.halfedge_corner;
-        p.flip = flip;
-        p
+        count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
+        let flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
+        CornerPairing {
+            inspection: ins,
+            remapped: indexed.remapped,
+            valid: indexed.valid,
+            old_to_new: indexed.old_to_new,
+            new_to_old: indexed.new_to_old,
+            dropped: indexed.dropped,
+            edges,
+            flip,
+            refusals,
+        }
     }
 
-    /// The half-edge arrays (requires no problems and no reorientation).
-    fn into_mesh(self) -> SurfaceMesh {
-        let nh = self.halfedge_corner.len();
+    /// Whether the faces form a surface (compact 2-manifold, possibly with boundary, possibly
+    /// non-orientable or in pieces): every face valid, no non-manifold edge or vertex.
+    pub(crate) fn is_surface(&self) -> bool {
+        let ins = &self.inspection;
+        !self.valid.is_empty()
+            && self.valid.iter().all(|&ok| ok)
+            && ins.non_manifold_edges == 0
+            && ins.non_manifold_vertices == 0
+    }
+
+    /// The first problem, else the first refusal of a closed oriented mesh (components allowed
+    /// when `components` is set).
+    pub(crate) fn first_refusal(&self, components: bool) -> Option<BuildError> {
+        let refusals = self
+            .refusals
+            .iter()
+            .filter(|e| !(components && matches!(e, BuildError::Disconnected { .. })));
+        self.inspection
+            .problems
+            .iter()
+            .chain(refusals)
+            .next()
+            .cloned()
+    }
+
+    /// The triangles in new vertex ids, each reversed when [`Self::flip`] says so.
+    pub(crate) fn oriented_triangles(&self) -> Vec<[u32; 3]> {
+        let mut oriented = self.remapped.to_vec();
+        for (t, &flip) in oriented.iter_mut().zip(&self.flip) {
+            if flip {
+                t.swap(1, 2);
+            }
+        }
+        oriented
+    }
+
+    /// The half-edge arrays (requires no problems, no refusal but components, and no
+    /// reorientation).
+    pub(crate) fn into_mesh(self) -> SurfaceMesh {
+        let corner_halfedge = &self.edges.corner_halfedge;
+        let nh = self.edges.halfedge_corner.len();
         let nf = self.remapped.len();
         let nv = self.new_to_old.len();
         let mut next = vec![HalfedgeId::INVALID; nh];
@@ -404,13 +190,13 @@ impl<'a> CornerPairing<'a> {
         let mut face_halfedge = vec![HalfedgeId::INVALID; nf];
         for (f, t) in self.remapped.iter().enumerate() {
             for i in 0..3 {
-                let h = self.corner_halfedge[3 * f + i];
-                next[h.idx()] = self.corner_halfedge[3 * f + (i + 1) % 3];
+                let h = corner_halfedge[3 * f + i];
+                next[h.idx()] = corner_halfedge[3 * f + (i + 1) % 3];
                 origin[h.idx()] = VertexId(t[i]);
                 face[h.idx()] = FaceId::new(f);
                 vertex_halfedge[t[i] as usize] = h;
             }
-            face_halfedge[f] = self.corner_halfedge[3 * f];
+            face_halfedge[f] = corner_halfedge[3 * f];
         }
         SurfaceMesh {
             next,
@@ -422,6 +208,41 @@ impl<'a> CornerPairing<'a> {
             live_edges: nh / 2,
             live_faces: nf,
         }
+    }
+
+    /// The vertex (new id) at corner `c`.
+    #[inline]
+    pub(crate) fn corner_vertex(&self, c: u32) -> u32 {
+        self.remapped[(c / 3) as usize][(c % 3) as usize]
+    }
+}
+
+impl EdgePairs {
+    fn empty() -> Self {
+        EdgePairs {
+            corner_halfedge: Vec::new(),
+            halfedge_corner: Vec::new(),
+            same_direction: Vec::new(),
+            around: Vec::new(),
+            vertex_sets: UnionFind::new(0),
+            other_joins: Vec::new(),
+            on_non_manifold_edge: Vec::new(),
+        }
+    }
+
+    /// The corner of the other face on corner `c`'s edge, `None` when the edge is not in two
+    /// faces.
+    #[inline]
+    pub(crate) fn across(&self, c: u32) -> Option<u32> {
+        let h = self.corner_halfedge[c as usize];
+        h.is_valid().then(|| self.halfedge_corner[h.twin().idx()])
+    }
+
+    /// Whether the two faces on corner `c`'s edge (which must be in two faces) run it the same
+    /// way.
+    #[inline]
+    pub(crate) fn same_direction_at(&self, c: u32) -> bool {
+        self.same_direction[self.corner_halfedge[c as usize].edge().idx()]
     }
 }
 
@@ -547,7 +368,12 @@ fn sort_corners(indexed: &Indexed) -> SortedCorners {
 /// half-edge pair; reports boundary and non-manifold edges and repeated faces. A bucket holds a
 /// few corners (about twice the vertex degree): sorted by (larger endpoint, corner), which
 /// numbers the edges in (smaller, larger) order.
-fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -> EdgePairs {
+fn pair_edges(
+    indexed: &Indexed,
+    corners: SortedCorners,
+    ins: &mut Inspection,
+    refusals: &mut Vec<BuildError>,
+) -> EdgePairs {
     let (remapped, new_to_old) = (&indexed.remapped, &indexed.new_to_old);
     let (nv, nf) = (indexed.vertex_count(), remapped.len());
     let SortedCorners {
@@ -570,6 +396,7 @@ fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -
         around: vec![u32::MAX; 3 * nf],
         vertex_sets: UnionFind::new(nv),
         other_joins: Vec::new(),
+        on_non_manifold_edge: Vec::new(),
     };
     for v in 0..nv {
         let bucket = &sorted[bucket_start[v] as usize..bucket_start[v + 1] as usize];
@@ -607,8 +434,10 @@ fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -
             let face = (corner(0) / 3) as usize;
             match group.len() {
                 1 => {
+                    if ins.boundary_edges == 0 {
+                        refusals.push(BuildError::BoundaryEdge { edge: edge(), face });
+                    }
                     ins.boundary_edges += 1;
-                    ins.push(BuildError::BoundaryEdge { edge: edge(), face });
                 }
                 2 => {
                     let (c1, c2) = (corner(0), corner(1));
@@ -622,6 +451,11 @@ fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -
                     pairs.same_direction.push(group[0].1 & 1 == group[1].1 & 1);
                 }
                 _ => {
+                    if pairs.on_non_manifold_edge.is_empty() {
+                        pairs.on_non_manifold_edge = vec![false; nv];
+                    }
+                    pairs.on_non_manifold_edge[v] = true;
+                    pairs.on_non_manifold_edge[hi as usize] = true;
                     ins.non_manifold_edges += 1;
                     ins.push(BuildError::NonManifoldEdge {
                         edge: edge(),
@@ -636,8 +470,10 @@ fn pair_edges(indexed: &Indexed, corners: SortedCorners, ins: &mut Inspection) -
     pairs
 }
 
-/// Step 4, when every edge is in two faces: the fan around each vertex must hold all its corners
-/// (the walk ignores orientation).
+/// Step 4, when every face is valid: the faces around each vertex must form one fan, closed
+/// (a cycle) or open (a path between two boundary edges); the walk ignores orientation and stops
+/// at edges not in two faces. Vertices on edges in more than three faces are left to those
+/// edges' reports.
 fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut Inspection) {
     let (remapped, nv) = (&indexed.remapped, indexed.vertex_count());
     // Corner count and one corner of each vertex.
@@ -647,31 +483,55 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
         corners[v as usize] += 1;
         start_corner[v as usize] = c as u32;
     }
-    // The corner after `leave` around vertex v. In general the two corners of a face that
-    // touch v are `leave` itself (leaving v) and the previous corner (entering v): the walk
-    // enters a face through one and leaves through the other, whatever the faces'
-    // orientations; with a consistent orientation that is `around`.
-    let step = |leave: u32, v: u32| {
-        if consistent {
-            return edges.around[leave as usize];
+    let closed = ins.boundary_edges == 0 && ins.non_manifold_edges == 0;
+    // The corner whose edge the walk around vertex v crosses after crossing `leave`'s edge, or
+    // `None` at an edge not in two faces. The two edges of a face at v are those of its corner
+    // at v (leaving v) and of the previous corner (entering v): the walk enters a face through
+    // one and leaves through the other, whatever the faces' orientations; with a consistent
+    // orientation that is `around`.
+    let step = |leave: u32, v: u32| -> Option<u32> {
+        if consistent && closed {
+            return Some(edges.around[leave as usize]);
         }
-        let h = edges.corner_halfedge[leave as usize];
-        let entered = edges.halfedge_corner[h.twin().idx()];
+        let entered = edges.across(leave)?;
         // `entered` is one of the two corners at v in the next face; leave by the other.
-        if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
-            prev_corner(entered)
-        } else {
-            next_corner(entered)
-        }
+        Some(
+            if remapped[(entered / 3) as usize][(entered % 3) as usize] == v {
+                prev_corner(entered)
+            } else {
+                next_corner(entered)
+            },
+        )
     };
     for v in 0..nv {
+        if edges.on_non_manifold_edge.get(v).copied().unwrap_or(false) {
+            continue;
+        }
         let start = start_corner[v];
-        let (mut leave, mut steps) = (start, 0u32);
+        let (mut leave, mut steps, mut open) = (start, 1u32, false);
         loop {
+            match step(leave, v as u32) {
+                None => {
+                    open = true;
+                    break;
+                }
+                Some(c) if c / 3 == start / 3 => break,
+                Some(c) => leave = c,
+            }
             steps += 1;
-            leave = step(leave, v as u32);
-            if leave / 3 == start / 3 || steps > corners[v] {
+            if steps > corners[v] {
                 break;
+            }
+        }
+        if open {
+            // The other way from the start face, through its edge entering v.
+            leave = prev_corner(start);
+            while steps <= corners[v] {
+                match step(leave, v as u32) {
+                    Some(c) if c / 3 != start / 3 => leave = c,
+                    _ => break,
+                }
+                steps += 1;
             }
         }
         if steps != corners[v] {
@@ -679,7 +539,7 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
             ins.push(BuildError::NonManifoldVertex {
                 vertex: indexed.new_to_old[v],
                 faces: corners[v] as usize,
-                first_fan: steps as usize,
+                first_fan: steps.min(corners[v]) as usize,
             });
         }
     }
@@ -692,15 +552,16 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
 fn count_components(
     indexed: &Indexed,
     edges: &mut EdgePairs,
-    all_paired: bool,
+    all_valid: bool,
     ins: &mut Inspection,
+    refusals: &mut Vec<BuildError>,
 ) {
     let (remapped, valid) = (&indexed.remapped, &indexed.valid);
     let (nv, nf) = (indexed.vertex_count(), remapped.len());
     let Some(f0) = valid.iter().position(|&ok| ok) else {
         return;
     };
-    let by_vertex = all_paired && ins.non_manifold_vertices == 0;
+    let by_vertex = all_valid && ins.non_manifold_edges == 0 && ins.non_manifold_vertices == 0;
     let mut face_sets;
     let sets = if by_vertex {
         &mut edges.vertex_sets
@@ -722,7 +583,7 @@ fn count_components(
     let outside = (f0..nf).find(|&f| valid[f] && sets.find(node(f)) != root0);
     ins.components = roots;
     if let Some(face) = outside {
-        ins.push(BuildError::Disconnected {
+        refusals.push(BuildError::Disconnected {
             components: roots,
             face,
         });
@@ -737,6 +598,7 @@ fn orient(
     edges: &EdgePairs,
     consistent: bool,
     ins: &mut Inspection,
+    refusals: &mut Vec<BuildError>,
 ) -> Vec<bool> {
     let (remapped, valid, new_to_old) = (&indexed.remapped, &indexed.valid, &indexed.new_to_old);
     let nf = remapped.len();
@@ -771,7 +633,7 @@ fn orient(
                 } else if flip[g] != want && ins.orientable {
                     ins.orientable = false;
                     let t = &remapped[f];
-                    ins.push(BuildError::NonOrientable {
+                    refusals.push(BuildError::NonOrientable {
                         edge: [
                             new_to_old[t[i] as usize],
                             new_to_old[t[(i + 1) % 3] as usize],
@@ -797,12 +659,12 @@ fn orient(
 
 /// The next corner in the same face (corner `3f + i` is at vertex `t[i]`).
 #[inline]
-fn next_corner(c: u32) -> u32 {
+pub(crate) fn next_corner(c: u32) -> u32 {
     c - c % 3 + (c % 3 + 1) % 3
 }
 
 /// The previous corner in the same face.
 #[inline]
-fn prev_corner(c: u32) -> u32 {
+pub(crate) fn prev_corner(c: u32) -> u32 {
     c - c % 3 + (c % 3 + 2) % 3
 }

@@ -1,0 +1,157 @@
+//! Issue 38, "exact means exact, and nothing stalls": one test per item, on inputs made here.
+
+mod common;
+
+use common::{surftopo, write};
+use std::path::Path;
+use std::process::Output;
+
+fn run(args: &[&str]) -> Output {
+    surftopo().args(args).output().unwrap()
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The command ended with `code` and its stderr contains every one of `needles`.
+fn assert_code(out: &Output, code: i32, needles: &[&str]) {
+    let err = stderr(out);
+    assert_eq!(out.status.code(), Some(code), "{err}");
+    for needle in needles {
+        assert!(err.contains(needle), "no {needle:?} in: {err}");
+    }
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// The flat torus T_x by exact corners (Dubois, Section 9), written by `generate`.
+fn flat_torus(dir: &Path, x: &str) -> std::path::PathBuf {
+    let path = dir.join(format!("t{}.json", x.replace('/', "_")));
+    let out = run(&["generate", "flat-torus", "--x", x, "-o", s(&path)]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    path
+}
+
+/// Item 6: exit codes as README says. A file whose exact corners make valid triangles that
+/// double precision flattens is a numerical failure (exit 4, the file named, `--exact`
+/// advised), and `isometric` calls it undecidable in double precision (exit 3) whatever the
+/// method; degenerate input is refused by `isometric` as by `delaunay` (exit 2).
+#[test]
+fn item6_exit_codes_follow_the_readme() {
+    let dir = tempfile::tempdir().unwrap();
+    for x in ["1000000", "3000000", "10000000000"] {
+        let t = flat_torus(dir.path(), x);
+        for method in ["auto", "flip", "voronoi", "dubois"] {
+            let out = run(&["delaunay", s(&t), "--json", "--method", method]);
+            assert_code(&out, 4, &[s(&t), "--exact", "zero-area"]);
+        }
+        for method in ["auto", "flip", "voronoi", "dubois"] {
+            let out = run(&["isometric", s(&t), s(&t), "--method", method]);
+            assert_code(&out, 3, &["--exact"]);
+            assert_eq!(stdout(&out), "undecidable in double precision\n");
+        }
+        let exact = run(&["delaunay", s(&t), "--json", "--method", "dubois", "--exact"]);
+        assert_code(&exact, 0, &[]);
+        let exact = run(&["isometric", s(&t), s(&t), "--exact"]);
+        assert_code(&exact, 0, &[]);
+    }
+    // Degenerate in exact arithmetic too: all-zero lengths, a zero-area face.
+    let zero = write(
+        dir.path(),
+        "zero.json",
+        r#"{"polygons":[{"lengths":[0,0,0],"vertices":[0,0,0]},{"lengths":[0,0,0],"vertices":[0,0,0]}],
+            "matching":[[[0,0],[1,0]],[[0,1],[1,1]],[[0,2],[1,2]]]}"#,
+    );
+    let flat_face = write(
+        dir.path(),
+        "flat.obj",
+        "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n",
+    );
+    let collinear = write(
+        dir.path(),
+        "collinear.json",
+        r#"{"polygons":[{"corners":[[0,0],[1,0],[2,0]]},{"corners":[[1,0],[3,0],[2,0]]}],
+            "matching":[[[0,0],[1,1]],[[0,1],[1,2]],[[0,2],[1,0]]]}"#,
+    );
+    for (file, needle) in [
+        (&zero, "not positive"),
+        (&flat_face, "zero-area"),
+        (&collinear, "zero-area"),
+    ] {
+        let out = run(&["delaunay", s(file), "--json"]);
+        assert_code(&out, 2, &[s(file), needle]);
+        for method in ["auto", "flip", "voronoi", "dubois"] {
+            let out = run(&["isometric", s(file), s(file), "--method", method]);
+            assert_code(&out, 2, &[s(file), needle]);
+        }
+    }
+}
+
+/// Item 4: `--time-limit SECONDS` stops any command with exit 2, naming the step then running,
+/// leaving no output and no temporary file; a command within its limit is unaffected.
+#[test]
+fn item4_time_limit_stops_a_long_run_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    // T_x at x = 10^5: the exact wave has about x events (minutes).
+    let t = flat_torus(dir.path(), "100000");
+    let out = dir.path().join("d.json");
+    let started = std::time::Instant::now();
+    let run_out = run(&[
+        "delaunay",
+        s(&t),
+        "--method",
+        "voronoi",
+        "--exact",
+        "-o",
+        s(&out),
+        "--time-limit",
+        "0.5",
+    ]);
+    assert!(started.elapsed().as_secs_f64() < 30.0);
+    assert_code(
+        &run_out,
+        2,
+        &["--time-limit", "while running the Voronoi wave"],
+    );
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert_eq!(left, [t.file_name().unwrap().to_str().unwrap()]);
+    // Within the limit: the same command on a small x.
+    let small = flat_torus(dir.path(), "10");
+    let ok = run(&[
+        "delaunay",
+        s(&small),
+        "--method",
+        "voronoi",
+        "--exact",
+        "-o",
+        s(&out),
+        "--time-limit",
+        "60",
+    ]);
+    assert_code(&ok, 0, &[]);
+    let tet = dir.path().join("tet.obj");
+    let ok = run(&[
+        "generate",
+        "tetrahedron",
+        "-o",
+        s(&tet),
+        "--time-limit",
+        "60",
+    ]);
+    assert_code(&ok, 0, &[]);
+    for bad in ["0", "-1", "nan", "abc"] {
+        let option = format!("--time-limit={bad}");
+        let refused = run(&["generate", "tetrahedron", "-o", s(&tet), &option]);
+        assert_code(&refused, 2, &["--time-limit"]);
+    }
+}

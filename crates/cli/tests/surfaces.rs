@@ -1,0 +1,217 @@
+//! Every kind of surface through the binary: `generate` makes each kind (with boundary,
+//! non-orientable, in pieces), `info` classifies it, `irreducible` reduces it keeping the
+//! classification, and the commands that do not take it yet say what they do not support.
+
+mod common;
+
+use common::surftopo;
+use serde_json::Value;
+use std::path::Path;
+
+/// `info --json` of a file, which must succeed (with `--strict` when `strict`).
+fn info_of(path: &Path, strict: bool) -> Value {
+    let out = surftopo()
+        .args(["info", "--json"])
+        .args(strict.then_some("--strict"))
+        .arg(path)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// `info --json` of a file whose combinatorics are valid: no problem but geometric ones (an
+/// irreducible triangulation or a simplification keeps input positions, which may be collinear:
+/// a midpoint and its edge's ends).
+fn info(path: &Path) -> Value {
+    let v = info_of(path, false);
+    let geometric = v["zero_area_faces"].as_u64().unwrap();
+    assert_eq!(v["problems_total"].as_u64().unwrap(), geometric, "{v}");
+    v
+}
+
+/// The names of the pieces `info` reports.
+fn names(v: &Value) -> Vec<String> {
+    v["surfaces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap().to_string())
+        .collect()
+}
+
+/// `generate ARGS -o DIR/NAME`, which must succeed; returns the path.
+fn generate(dir: &Path, name: &str, args: &[&str]) -> std::path::PathBuf {
+    let path = dir.join(name);
+    let out = surftopo()
+        .arg("generate")
+        .args(args)
+        .arg("-o")
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    path
+}
+
+#[test]
+fn every_kind_is_generated_classified_and_reduced() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: &[(&[&str], &[&str], std::ops::RangeInclusive<u64>)] = &[
+        (&["disk", "--n", "5", "--flips", "30"], &["disk"], 3..=3),
+        (&["annulus", "--m", "8", "--n", "2"], &["annulus"], 6..=40),
+        (
+            &["mobius-band", "--m", "9", "--n", "2", "--splits", "20"],
+            &["Möbius band"],
+            5..=6,
+        ),
+        (
+            &["projective-plane", "--subdivide", "2", "--flips", "100"],
+            &["projective plane"],
+            6..=7,
+        ),
+        (
+            &["klein-bottle", "--m", "8", "--n", "6", "--splits", "40"],
+            &["Klein bottle"],
+            8..=11,
+        ),
+        (
+            &["non-orientable", "--crosscaps", "3", "--subdivide", "1"],
+            &["N_3"],
+            9..=35,
+        ),
+        (
+            &[
+                "genus",
+                "--genus",
+                "2",
+                "--size",
+                "2",
+                "--cut-holes",
+                "2",
+                "--shuffle-faces",
+            ],
+            &["genus 2 with 2 boundary loops"],
+            4..=200,
+        ),
+        (
+            &[
+                "projective-plane",
+                "--subdivide",
+                "1",
+                "--copies",
+                "2",
+                "--simplify",
+                "20",
+            ],
+            &["projective plane", "projective plane"],
+            12..=14,
+        ),
+    ];
+    for (k, (args, want, vertices)) in cases.iter().enumerate() {
+        let input = generate(dir.path(), &format!("s{k}.ply"), args);
+        let v = info(&input);
+        if !args.contains(&"--simplify") {
+            info_of(&input, true);
+        }
+        assert_eq!(names(&v), *want, "{args:?}");
+        for algorithm in ["rs", "schipper", "brute-force"] {
+            let output = dir.path().join(format!("s{k}-{algorithm}.obj"));
+            let out = surftopo()
+                .arg("irreducible")
+                .arg(&input)
+                .arg("-o")
+                .arg(&output)
+                .args(["--algorithm", algorithm, "--json"])
+                .output()
+                .unwrap();
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+            let reduced = info(&output);
+            assert_eq!(names(&reduced), *want, "{args:?} {algorithm}");
+            assert_eq!(report["output"]["surfaces"], reduced["surfaces"]);
+            assert_eq!(report["input"]["surfaces"], v["surfaces"]);
+            let n = reduced["vertices"].as_u64().unwrap();
+            assert!(vertices.contains(&n), "{args:?} {algorithm}: {n} vertices");
+            assert_eq!(
+                report["contractions"].as_u64().unwrap(),
+                v["vertices"].as_u64().unwrap() - n
+            );
+        }
+    }
+}
+
+#[test]
+fn commands_name_what_they_do_not_support_yet() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            generate(dir.path(), "open.obj", &["torus", "--cut-holes", "1"]),
+            "surfaces with boundary are not supported yet",
+        ),
+        (
+            generate(dir.path(), "kb.obj", &["klein-bottle"]),
+            "non-orientable surfaces are not supported yet",
+        ),
+        (
+            generate(dir.path(), "two.obj", &["torus", "--copies", "2"]),
+            "files of several pieces are not supported yet",
+        ),
+    ];
+    for (input, message) in &cases {
+        for (command, output) in [("quad", "q.obj"), ("delaunay", "d.json")] {
+            let out_path = dir.path().join(output);
+            let out = surftopo()
+                .arg(command)
+                .arg(input)
+                .arg("-o")
+                .arg(&out_path)
+                .output()
+                .unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{command}: {stderr}");
+            assert!(
+                stderr.contains(&format!("{command}: {message}")),
+                "{stderr}"
+            );
+            assert!(!out_path.exists());
+        }
+        let out = surftopo()
+            .arg("isometric")
+            .arg(input)
+            .arg(input)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains(&format!("isometric: {message}")),
+            "{stderr}"
+        );
+    }
+}
+
+#[test]
+fn cut_holes_that_do_not_fit_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = surftopo()
+        .args(["generate", "tetrahedron", "--cut-holes", "2", "-o"])
+        .arg(dir.path().join("x.obj"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("only 1 holes fit"));
+    assert!(!dir.path().join("x.obj").exists());
+}
