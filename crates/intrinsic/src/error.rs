@@ -369,3 +369,24 @@ pub enum SoupError {
     #[error(transparent)]
     Geometry(#[from] GeometryError),
 }
+
+/// Why [`crate::tufted_laplacian`] refused a soup or stopped.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum TuftedError {
+    /// No face, an index out of range, a face repeating a vertex, a non-finite coordinate, more
+    /// elements than `u32` ids address (naming the input face or vertex).
+    #[error(transparent)]
+    Input(#[from] surftopo_mesh::BuildError),
+    /// The mollification factor is not a number in `[0, MAX_MOLLIFY]`.
+    #[error(
+        "mollify factor {0:?} must be at least 0 (no mollification) and at most 1 (relative to the mean edge length)"
+    )]
+    InvalidMollifyFactor(f64),
+    /// An input face is degenerate after mollification (a zero-area triangle, with no
+    /// mollification or with every point at one place); the face is the input face index.
+    #[error("{0} (give a positive mollify factor)")]
+    Degenerate(GeometryError),
+    /// Flipping the cover to Delaunay failed (its flip budget, double precision).
+    #[error(transparent)]
+    Flip(#[from] DelaunayError),
+}

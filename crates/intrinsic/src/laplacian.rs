@@ -32,7 +32,7 @@ pub fn cotan_weights(tri: &IntrinsicTriangulation) -> Vec<f64> {
 
 /// [`cotan_weights`] from the half-angle tangents squared `t2` (by half-edge id, as
 /// [`IntrinsicTriangulation::halfedge_tan_half_sq`] computes them).
-fn weights_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> Vec<f64> {
+pub(crate) fn weights_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> Vec<f64> {
     let mesh = tri.mesh();
     // Edge e's half-edges are 2e and 2e + 1: one pass over all slots (it vectorizes), then the
     // removed edges, if any, are set to 0.
@@ -83,9 +83,19 @@ pub fn intrinsic_delaunay_laplacian(
 /// order, and each row `hi` receives its entry `lo < hi`, rows being filled front to back; so
 /// every row comes out sorted (entries left of the diagonal were all written by earlier buckets).
 pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> SparseMatrix {
-    let weights = weights_from_tan_half_sq(tri, t2);
-    let mesh = tri.mesh();
     let (index, n) = dense_vertex_index(tri);
+    assemble_laplacian(tri.mesh(), &weights_from_tan_half_sq(tri, t2), &index, n)
+}
+
+/// The Laplacian of edge weights `weights` (by edge id) with vertex `v` on row `index[v]` of an
+/// `n x n` matrix (several vertices may share a row: their entries add up; an edge whose ends
+/// share a row contributes nothing), assembled as [`laplacian_from_tan_half_sq`] says.
+pub(crate) fn assemble_laplacian(
+    mesh: &surftopo_mesh::SurfaceMesh,
+    weights: &[f64],
+    index: &[u32],
+    n: usize,
+) -> SparseMatrix {
     let ends = |e: EdgeId| mesh.edge_vertices(e).map(|v| index[v.idx()] as usize);
     // Bucket sizes by lo, and the diagonal.
     let mut bucket_start = vec![0u32; n + 1];
@@ -163,8 +173,18 @@ pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64
 /// The lumped (barycentric) mass matrix: diagonal, a third of each incident triangle's area per
 /// corner. O(F).
 pub fn lumped_mass(tri: &IntrinsicTriangulation) -> SparseMatrix {
-    let mesh = tri.mesh();
     let (index, n) = dense_vertex_index(tri);
+    SparseMatrix::diagonal(lumped_mass_on_rows(tri, &index, n))
+}
+
+/// The diagonal of [`lumped_mass`] with vertex `v` on row `index[v]` of `n` rows (vertices
+/// sharing a row add up).
+pub(crate) fn lumped_mass_on_rows(
+    tri: &IntrinsicTriangulation,
+    index: &[u32],
+    n: usize,
+) -> Vec<f64> {
+    let mesh = tri.mesh();
     let mut mass = vec![0.0; n];
     for f in mesh.faces() {
         let third = tri.face_area(f) / 3.0;
@@ -172,7 +192,7 @@ pub fn lumped_mass(tri: &IntrinsicTriangulation) -> SparseMatrix {
             mass[index[v.idx()] as usize] += third;
         }
     }
-    SparseMatrix::diagonal(mass)
+    mass
 }
 
 #[cfg(test)]

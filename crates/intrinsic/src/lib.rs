@@ -32,6 +32,9 @@
 //!   [`isometric`], [`decide_isometry`]. `laplacian`: [`cotan_laplacian`] (positive
 //!   semidefinite), [`lumped_mass`], [`intrinsic_delaunay_laplacian`] (flips and assembles in one
 //!   call, libigl's `intrinsic_delaunay_cotmatrix`).
+//! - `tufted/`: [`tufted_laplacian`], the Laplacian and mass matrix of any triangle soup
+//!   (non-manifold, with fins, books, pinched vertices, duplicate faces) through the tufted
+//!   cover of Sharp & Crane, "A Laplacian for Nonmanifold Triangle Meshes" (SGP 2020).
 //! - `delaunay/`: [`intrinsic_delaunay`], the job by method (auto, flip, voronoi, dubois), with
 //!   the rule of `auto` ([`choose_method`]). [`generators`]: `T_x` (Section 9), sheared
 //!   tori, pillowcases, random isometric flips.
@@ -67,6 +70,7 @@ mod laplacian;
 mod portalgon;
 mod sparse;
 mod triangulation;
+mod tufted;
 pub mod voronoi;
 
 pub use delaunay::choice::{
@@ -83,6 +87,7 @@ pub use dubois::tube::{
 };
 pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
+    TuftedError,
 };
 pub use flip::needle::AUTO_ASPECT_LIMIT;
 pub use flip::stats::{DelaunayStats, delaunay_with_stats};
@@ -116,3 +121,6 @@ pub use triangulation::quality::{
     DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality,
 };
 pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
+pub use tufted::{
+    DEFAULT_MOLLIFY_FACTOR, TuftedLaplacian, TuftedOptions, TuftedReport, tufted_laplacian,
+};

@@ -40,6 +40,26 @@ impl SurfaceMesh {
         face_count: usize,
         pairs: &[(Side, Side)],
     ) -> Result<(SurfaceMesh, Vec<VertexId>), BuildError> {
+        Self::glue(face_count, pairs, true)
+    }
+
+    /// [`Self::from_gluing`] allowing several connected pieces (each a closed oriented surface).
+    ///
+    /// # Errors
+    /// As [`Self::from_gluing`], without [`BuildError::Disconnected`].
+    pub fn from_gluing_pieces(
+        face_count: usize,
+        pairs: &[(Side, Side)],
+    ) -> Result<(SurfaceMesh, Vec<VertexId>), BuildError> {
+        Self::glue(face_count, pairs, false)
+    }
+
+    /// The gluing of [`Self::from_gluing`]; refuses several pieces when `connected`.
+    fn glue(
+        face_count: usize,
+        pairs: &[(Side, Side)],
+        connected: bool,
+    ) -> Result<(SurfaceMesh, Vec<VertexId>), BuildError> {
         if face_count == 0 {
             return Err(BuildError::Empty);
         }
@@ -123,6 +143,9 @@ impl SurfaceMesh {
             live_edges: nh / 2,
             live_faces: face_count,
         };
+        if !connected {
+            return Ok((mesh, corner_vertex));
+        }
         // Connectedness over faces.
         let mut component = vec![u32::MAX; face_count];
         let mut components = 0u32;

@@ -41,18 +41,26 @@ pub fn mollify(tri: &mut IntrinsicTriangulation, epsilon: f64) -> Result<f64, De
         let edge = mesh.edges().next().map_or(0, |e| e.0);
         return Err(GeometryError::NonPositiveLength { edge, value: 0.0 }.into());
     }
-    let eps = epsilon * mean;
-    let mut delta = 0.0f64;
-    for f in mesh.faces() {
-        let [a, b, c] = mesh.face_halfedges(f).map(|h| lengths[h.edge().idx()]);
-        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
-            delta = delta.max(eps - (x + y - z));
-        }
-    }
+    let sides = mesh
+        .faces()
+        .map(|f| mesh.face_halfedges(f).map(|h| lengths[h.edge().idx()]));
+    let delta = margin_delta(sides, epsilon * mean);
     if delta > 0.0 {
         for e in mesh.edges() {
             lengths[e.idx()] += delta;
         }
     }
     Ok(delta)
+}
+
+/// The least δ ≥ 0 such that the triangles of side lengths `sides`, each side lengthened by δ,
+/// satisfy `x + y - z >= margin` at every corner: max(0, max over corners of `margin - (x + y - z)`).
+pub(crate) fn margin_delta(sides: impl IntoIterator<Item = [f64; 3]>, margin: f64) -> f64 {
+    let mut delta = 0.0f64;
+    for [a, b, c] in sides {
+        for (x, y, z) in [(a, b, c), (b, c, a), (c, a, b)] {
+            delta = delta.max(margin - (x + y - z));
+        }
+    }
+    delta
 }

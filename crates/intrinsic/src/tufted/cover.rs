@@ -1,0 +1,206 @@
+//! The tufted cover of a triangle soup (Sharp & Crane 2020, Section 4.2): every face gets two
+//! sides, and around every edge the face-sides are glued in the cyclic order of the faces around
+//! the edge in space, which makes a closed oriented surface.
+//!
+//! Cover face `2f` is input face `f` as given (its *front*), `2f + 1` the same triangle reversed
+//! (its *back*: corners `v0, v2, v1`, so front side `i` is back side `2 - i`). Around an edge
+//! `{lo, hi}` (`lo < hi`, direction `d = p[hi] - p[lo]`), a face-side runs *along* `d` or
+//! *against* it; the front and back of a face run opposite ways. The faces of the edge are
+//! sorted clockwise around `d` (by decreasing angle of their third vertex in a right-handed
+//! frame `(b0, b1, d)`), then the side of face `i` running against `d` is glued to the side of
+//! face `i + 1` running along `d`, cyclically: each gluing pairs opposite directions, so the
+//! cover is oriented, and each face-side is glued once on each edge, so it is closed.
+//!
+//! The paper lets the order be any (its Section 4.2: every order gives a valid cover); the
+//! geometric one is the paper's and geometry-central's (`buildIntrinsicTuftedCover`, which
+//! `robust_laplacian` runs), so the cover is the same surface as theirs. Faces at the same angle
+//! (duplicate faces, or third vertices on one half-plane) are ordered by face index. Reversing
+//! `d` reverses the cyclic order and swaps along and against: the same gluing, so the choice of
+//! `lo` is immaterial. One face on an edge (a fin) glues its front to its back; two faces need
+//! no sort (a cyclic order of two is unique).
+//!
+//! Vertices of the cover are the orbits of corners ([`SurfaceMesh::from_gluing_pieces`]): a
+//! pinched input vertex, or any vertex whose faces make several fans on the cover, has one cover
+//! vertex per fan, each mapped back to the input vertex.
+
+use surftopo_mesh::geometry::{Point3, distance};
+use surftopo_mesh::{BuildError, Side, SurfaceMesh};
+
+/// The tufted cover's topology, its edge lengths, and the input vertex of each cover vertex.
+pub(crate) struct Cover {
+    /// The closed oriented cover (possibly in several pieces).
+    pub mesh: SurfaceMesh,
+    /// Length of each cover edge: the 3D length of its input edge.
+    pub lengths: Vec<f64>,
+    /// Input vertex of each cover vertex.
+    pub input_vertex: Vec<u32>,
+    /// Distinct input edges (for the mollification's mean).
+    pub input_edges: usize,
+    /// Sum of the input edges' lengths.
+    pub input_length_sum: f64,
+    /// Input edges with one face (fins).
+    pub fin_edges: usize,
+    /// Input edges with three faces or more (books).
+    pub book_edges: usize,
+}
+
+/// Side `i` of cover face `face`.
+fn side(face: usize, i: usize) -> Side {
+    Side {
+        face: face as u32,
+        side: i as u8,
+    }
+}
+
+/// The tufted cover of `triangles` over `positions` (indices checked by the caller, no repeated
+/// vertex in a face). O(F log d), d the largest number of faces on an edge.
+///
+/// # Errors
+/// [`BuildError::TooLarge`] beyond `u32` ids (from the gluing).
+pub(crate) fn tufted_cover(
+    positions: &[Point3],
+    triangles: &[[u32; 3]],
+) -> Result<Cover, BuildError> {
+    let n = positions.len();
+    let sides = 3 * triangles.len();
+    if sides >= u32::MAX as usize / 4 {
+        return Err(BuildError::TooLarge { what: "faces" });
+    }
+    let ends = |s: usize| {
+        let t = &triangles[s / 3];
+        (t[s % 3], t[(s % 3 + 1) % 3])
+    };
+    // Face sides bucketed by their smaller end (a counting sort), then sorted by the larger end:
+    // each edge's sides become a run.
+    let mut start = vec![0u32; n + 1];
+    for s in 0..sides {
+        let (u, w) = ends(s);
+        start[u.min(w) as usize + 1] += 1;
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut by_edge = vec![0u32; sides];
+    let mut fill = start[..n].to_vec();
+    for s in 0..sides {
+        let (u, w) = ends(s);
+        let lo = u.min(w) as usize;
+        by_edge[fill[lo] as usize] = s as u32;
+        fill[lo] += 1;
+    }
+    let hi_of = |s: u32| {
+        let (u, w) = ends(s as usize);
+        u.max(w)
+    };
+    for lo in 0..n {
+        by_edge[start[lo] as usize..start[lo + 1] as usize]
+            .sort_unstable_by_key(|&s| (hi_of(s), s));
+    }
+    // Glue each run.
+    let mut pairs: Vec<(Side, Side)> = Vec::with_capacity(sides);
+    let mut lengths: Vec<f64> = Vec::with_capacity(sides);
+    let (mut input_edges, mut input_length_sum) = (0usize, 0.0f64);
+    let (mut fin_edges, mut book_edges) = (0usize, 0usize);
+    let mut ring: Vec<(f64, u32)> = Vec::new();
+    let mut k = 0;
+    while k < sides {
+        let first = by_edge[k];
+        let (u, w) = ends(first as usize);
+        let (lo, hi) = (u.min(w), u.max(w));
+        let mut end = k + 1;
+        while end < sides && {
+            let (a, b) = ends(by_edge[end] as usize);
+            (a.min(b), a.max(b)) == (lo, hi)
+        } {
+            end += 1;
+        }
+        let run = &by_edge[k..end];
+        let length = distance(positions[lo as usize], positions[hi as usize]);
+        input_edges += 1;
+        input_length_sum += length;
+        // The side of face-side s's face that runs along d (tail lo) and the one against it.
+        let along_against = |s: u32| {
+            let (f, i) = (s as usize / 3, s as usize % 3);
+            let (front, back) = (side(2 * f, i), side(2 * f + 1, 2 - i));
+            if ends(s as usize).0 == lo {
+                (front, back)
+            } else {
+                (back, front)
+            }
+        };
+        ring.clear();
+        if run.len() >= 3 {
+            book_edges += 1;
+            let angle = frame_angle(positions, lo, hi);
+            ring.extend(run.iter().map(|&s| {
+                let t = &triangles[s as usize / 3];
+                (angle(t[(s as usize % 3 + 2) % 3]), s)
+            }));
+            // Clockwise around d: decreasing angle, ties by face index (run order).
+            ring.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+        } else {
+            fin_edges += usize::from(run.len() == 1);
+            ring.extend(run.iter().map(|&s| (0.0, s)));
+        }
+        for j in 0..ring.len() {
+            let against = along_against(ring[j].1).1;
+            let along = along_against(ring[(j + 1) % ring.len()].1).0;
+            pairs.push((against, along));
+            lengths.push(length);
+        }
+        k = end;
+    }
+    let (mesh, corner_vertex) = SurfaceMesh::from_gluing_pieces(2 * triangles.len(), &pairs)?;
+    let mut input_vertex = vec![u32::MAX; mesh.vertex_slots()];
+    for (c, v) in corner_vertex.iter().enumerate() {
+        let (face, i) = (c / 3, c % 3);
+        let t = &triangles[face / 2];
+        // The back's corners are v0, v2, v1.
+        let corner = if face % 2 == 0 { i } else { [0, 2, 1][i] };
+        input_vertex[v.idx()] = t[corner];
+    }
+    Ok(Cover {
+        mesh,
+        lengths,
+        input_vertex,
+        input_edges,
+        input_length_sum,
+        fin_edges,
+        book_edges,
+    })
+}
+
+/// The angle around `d = p[hi] - p[lo]` of a point's offset from `p[lo]`, in a right-handed frame
+/// `(b0, b1, d)` (counter-clockwise seen from the tip of `d`).
+fn frame_angle(positions: &[Point3], lo: u32, hi: u32) -> impl Fn(u32) -> f64 + '_ {
+    let p = positions[lo as usize];
+    let d = sub(positions[hi as usize], p);
+    // A helper axis not parallel to d, then b0 ⟂ d and b1 = d × b0 (so b0 × b1 points along d).
+    let helper = if d[0].abs() <= d[1].abs().max(d[2].abs()) {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let b0 = cross(helper, d);
+    let b1 = cross(d, b0);
+    move |v: u32| {
+        let o = sub(positions[v as usize], p);
+        dot(b1, o).atan2(dot(b0, o))
+    }
+}
+
+fn sub(a: Point3, b: Point3) -> Point3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: Point3, b: Point3) -> Point3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn dot(a: Point3, b: Point3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
