@@ -12,9 +12,10 @@ use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayInput, DelaunayMethod,
-    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation, IsometryOptions,
-    PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, lumped_mass,
+    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DEFAULT_MOLLIFY_FACTOR, DelaunayInput,
+    DelaunayMethod, DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation,
+    IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle, TuftedOptions, cotan_laplacian,
+    delaunay_tessellation, lumped_mass,
 };
 
 /// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
@@ -113,7 +114,7 @@ impl Located {
 
 /// The arrays of a `scipy.sparse.csr_matrix`: index arrays int32 when they fit (as scipy makes
 /// them), else int64.
-enum CsrIndices {
+pub(crate) enum CsrIndices {
     /// `indices`, `indptr` as int32.
     Narrow(Vec<i32>, Vec<i32>),
     /// `indices`, `indptr` as int64.
@@ -121,7 +122,7 @@ enum CsrIndices {
 }
 
 /// A square CSR matrix ready for scipy (built without the GIL).
-struct Csr {
+pub(crate) struct Csr {
     rows: usize,
     data: Vec<f64>,
     indices: CsrIndices,
@@ -130,7 +131,7 @@ struct Csr {
 impl Csr {
     /// `m` with its dense rows and columns moved to `rows_of_dense` (increasing, so rows stay
     /// sorted) in a `rows x rows` matrix.
-    fn new(m: SparseMatrix, rows_of_dense: &[u32], rows: usize) -> Self {
+    pub(crate) fn new(m: SparseMatrix, rows_of_dense: &[u32], rows: usize) -> Self {
         let mut indptr = vec![0usize; rows + 1];
         for (k, &r) in rows_of_dense.iter().enumerate() {
             indptr[r as usize + 1] = m.row_start[k + 1] - m.row_start[k];
@@ -161,7 +162,7 @@ impl Csr {
     }
 
     /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
-    fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    pub(crate) fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
         let data = vector(py, self.data);
         let (indices, indptr) = match self.indices {
             CsrIndices::Narrow(i, p) => (vector(py, i).into_any(), vector(py, p).into_any()),
@@ -511,19 +512,38 @@ pub fn intrinsic_delaunay(
     Ok(Intrinsic { located, stats })
 }
 
+/// Which Laplacian `laplacian` computes: `tufted=` as given (`None`: the tufted one when the
+/// soup is not a manifold, with a warning).
+#[derive(Clone, Copy)]
+struct Tufted {
+    asked: Option<bool>,
+    options: TuftedOptions,
+}
+
 /// `laplacian` and the seconds of the library calls alone (soup to matrices), for the benchmark.
 fn laplacian_and_seconds<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
     request: &DelaunayRequest,
+    tufted: Tufted,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
     let computed = py.detach(|| {
         let start = Instant::now();
-        let located = Located::from_arrays(&positions, &triangles)?;
+        if tufted.asked == Some(true) {
+            let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
+            return Ok((matrices, start.elapsed().as_secs_f64(), false));
+        }
+        let located = match Located::from_arrays(&positions, &triangles) {
+            Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
+                let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
+                return Ok((matrices, start.elapsed().as_secs_f64(), true));
+            }
+            located => located?,
+        };
         let (located, out) = located.delaunay(request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
@@ -532,9 +552,18 @@ fn laplacian_and_seconds<'py>(
             Csr::new(matrix(out.laplacian), &rows, located.rows),
             Csr::new(matrix(out.mass), &rows, located.rows),
         );
-        Ok::<_, Failure>((matrices, seconds))
+        Ok::<_, Failure>((matrices, seconds, false))
     });
-    let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
+    let ((l, m), seconds, automatic) = computed.map_err(|f| f.into_pyerr(py))?;
+    if automatic {
+        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+        PyErr::warn(
+            py,
+            &category,
+            c"the mesh is not a manifold: its Laplacian and mass matrix are the tufted cover's (Sharp & Crane 2020); pass tufted=True to ask for them, tufted=False to refuse such input",
+            1,
+        )?;
+    }
     Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
 }
 
@@ -555,9 +584,13 @@ fn laplacian_request(
 
 /// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
 /// Delaunay triangulation of `(V, F)` by `method`, as `robust_laplacian.mesh_laplacian` returns
-/// them. `exact=True` is refused: a mesh's lengths are square roots.
+/// them. `exact=True` is refused: a mesh's lengths are square roots. `tufted=True` (or `None` on
+/// a soup that is not a manifold: a non-manifold edge or vertex, a duplicate face, with a
+/// warning) gives the tufted cover's (Sharp & Crane 2020) with `mollify_factor` (default 1e-5,
+/// as robust_laplacian's); on a manifold, `mollify_factor` is `mollify`.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, method = "flip", exact = false, mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces, method = "flip", exact = false, mollify = None, max_flips = None, tufted = None, mollify_factor = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn laplacian<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -566,24 +599,52 @@ pub fn laplacian<'py>(
     exact: bool,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    tufted: Option<bool>,
+    mollify_factor: Option<f64>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let request = laplacian_request(method, mollify, max_flips).map_err(|f| f.into_pyerr(py))?;
+    let fail = |m: &str| Err(invalid(m.to_string()).into_pyerr(py));
+    if mollify.is_some() && mollify_factor.is_some() {
+        return fail("give mollify or mollify_factor, not both");
+    }
+    if tufted == Some(true) && (method != "flip" || mollify.is_some()) {
+        return fail(
+            "tufted=True flips the tufted cover: method='flip' only, its mollification is mollify_factor",
+        );
+    }
+    if tufted == Some(false) && mollify_factor.is_some() {
+        return fail("mollify_factor applies to the tufted Laplacian (tufted=True or None)");
+    }
+    let tufted = Tufted {
+        asked: tufted,
+        options: TuftedOptions {
+            mollify_factor: mollify_factor.unwrap_or(DEFAULT_MOLLIFY_FACTOR),
+            max_flips,
+        },
+    };
+    let request = laplacian_request(method, mollify.or(mollify_factor), max_flips)
+        .map_err(|f| f.into_pyerr(py))?;
     if exact {
         return Err(not_exact().into_pyerr(py));
     }
-    laplacian_and_seconds(py, vertices, faces, &request).map(|(l, m, _)| (l, m))
+    laplacian_and_seconds(py, vertices, faces, &request, tufted).map(|(l, m, _)| (l, m))
 }
 
-/// [`laplacian`] with the default options, also returning the seconds spent in the library calls
-/// (the benchmark's reference for the Python overhead).
+/// [`laplacian`] with the default options (`tufted` as given), also returning the seconds spent
+/// in the library calls (the benchmark's reference for the Python overhead).
 #[pyfunction]
+#[pyo3(signature = (vertices, faces, tufted = None))]
 pub fn _laplacian_timed<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
+    tufted: Option<bool>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let request = laplacian_request("flip", None, None).map_err(|f| f.into_pyerr(py))?;
-    laplacian_and_seconds(py, vertices, faces, &request)
+    let tufted = Tufted {
+        asked: tufted,
+        options: TuftedOptions::default(),
+    };
+    laplacian_and_seconds(py, vertices, faces, &request, tufted)
 }
 
 /// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay

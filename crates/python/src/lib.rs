@@ -10,6 +10,7 @@ mod census;
 mod errors;
 mod intrinsic;
 mod surface;
+mod tufted;
 
 use pyo3::prelude::*;
 

@@ -229,9 +229,22 @@ def laplacian(
     exact: bool = False,
     mollify: float | None = None,
     max_flips: int | None = None,
+    tufted: bool | None = None,
+    mollify_factor: float | None = None,
 ) -> tuple[scipy.sparse.csr_matrix, scipy.sparse.csr_matrix]:
     """The cotan Laplacian ``L`` and the lumped mass matrix ``M`` of the intrinsic Delaunay
     triangulation, as ``robust_laplacian.mesh_laplacian`` returns them.
+
+    ``tufted=True`` takes any triangle soup (non-manifold edges and vertices, fins, duplicate
+    faces, several pieces) through the tufted cover of Sharp and Crane ("A Laplacian for
+    Nonmanifold Triangle Meshes", 2020): every face gets two sides glued around each edge in the
+    faces' order in space, the lengths are mollified (``mollify_factor``, default ``1e-5`` of the
+    mean edge length, as robust_laplacian's), the cover is flipped to intrinsic Delaunay, and its
+    matrices are folded onto the input vertices with the factor 1/2. ``tufted=None`` (the
+    default) does so, with a :class:`UserWarning`, when the soup is not a manifold (a
+    non-manifold edge or vertex, a duplicate face); ``tufted=False`` refuses such soups. On a
+    closed manifold both give the same ``L``. An unreferenced vertex has a zero row and mass
+    (robust_laplacian puts 1 on its diagonal). On a manifold, ``mollify_factor`` is ``mollify``.
 
     Sign convention: ``L`` is **positive semidefinite** (positive diagonal, off-diagonal
     ``-w_ij`` with ``w_ij >= 0``), symmetric, with rows summing to zero; libigl's ``cotmatrix``
@@ -250,6 +263,11 @@ def laplacian(
     ((162, 162), True)
     >>> round(float(M.sum()), 4)  # the area of the polyhedron
     12.3291
+    >>> book = [[0, 1, 2], [1, 0, 3], [0, 1, 4]]  # three triangles on one edge
+    >>> W = [[0, 0, 0], [1, 0, 0], [0.5, 1, 0], [0.5, -1, 0], [0.5, 0, 1]]
+    >>> L, M = surftopo.laplacian(W, book, tufted=True)
+    >>> L.shape, round(float(M.sum()), 4)  # the area of the three triangles
+    ((5, 5), 1.5)
     """
 
 def intrinsic_delaunay(
