@@ -12,7 +12,7 @@ import pytest
 import scipy.sparse
 
 import surftopo
-from conftest import CLI_MESHES
+from conftest import CLI_MESHES, run_cli
 from verify import triangle_areas
 
 
@@ -213,3 +213,19 @@ def test_shared_meshes_agree_with_robust_laplacian(file, shared_meshes):
     assert _assert_agrees(V, F, 1e-5, file) == delaunay_there
     V3, F3 = _made_non_manifold(V, F, 1)
     assert _assert_agrees(V3, F3, 1e-5, f"{file} made non-manifold") == delaunay_there
+
+
+def test_cli_writes_what_scipy_and_numpy_read(cli, tmp_path):
+    """`surftopo delaunay` on a non-manifold OBJ: the .npz Laplacian (scipy.sparse.load_npz) and
+    the .npy mass diagonal (numpy.load) are the package's tufted matrices."""
+    V, F = _pinched_cones()
+    F = np.vstack([F, F[:3]])  # and duplicate faces
+    path = tmp_path / "soup.obj"
+    surftopo.write_mesh(path, V, F)
+    result = run_cli(cli, "delaunay", path, "--laplacian", tmp_path / "L.npz", "--mass", tmp_path / "M.npy")
+    assert "not a manifold" in result.stderr
+    L = scipy.sparse.load_npz(tmp_path / "L.npz")
+    mass = np.load(tmp_path / "M.npy")
+    Lp, Mp = surftopo.laplacian(V, F, tufted=True)
+    assert abs(L - Lp).max() <= 1e-15 * abs(Lp).max()
+    assert np.abs(mass - Mp.diagonal()).max() <= 1e-15 * mass.max()

@@ -42,9 +42,15 @@ pub struct Args {
     /// Stop with an error after this many flips.
     #[arg(long)]
     pub max_flips: Option<u64>,
-    /// Mollify degenerate input with this epsilon (relative to the mean edge length).
+    /// Mollify degenerate input with this epsilon (relative to the mean edge length); with the
+    /// tufted cover, its mollification factor (default 1e-5, 0 for none).
     #[arg(long)]
     pub mollify: Option<f64>,
+    /// The Laplacian and mass matrix of the tufted cover (Sharp & Crane 2020) of any triangle
+    /// soup: non-manifold edges and vertices, fins, duplicate faces, pieces. Taken, with a note,
+    /// when a mesh is not a manifold. Gives --laplacian, --mass and --json.
+    #[arg(long)]
+    pub tufted: bool,
     #[command(flatten)]
     pub weld: WeldArg,
     #[command(flatten)]
@@ -163,7 +169,7 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
 }
 
 /// Whether an input is portalgon JSON: a `.json` file, or standard input starting with `{`.
-fn is_json_input(path: &Path) -> anyhow::Result<bool> {
+pub(crate) fn is_json_input(path: &Path) -> anyhow::Result<bool> {
     if crate::input::is_stdio(path) {
         return crate::input::stdin_is_json();
     }
@@ -206,7 +212,11 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
 /// (`surftopo_intrinsic::trig`; cotan weights do not depend on the scale), so this happens only
 /// when the results are not representable. (A Laplacian may have a zero diagonal: a one-vertex
 /// torus.)
-fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> anyhow::Result<()> {
+pub(crate) fn check_matrix(
+    matrix: &SparseMatrix,
+    what: &str,
+    positive_diagonal: bool,
+) -> anyhow::Result<()> {
     if let Some((i, j, v)) = matrix.triplets().find(|t| !t.2.is_finite()) {
         return Err(invalid(format!(
             "{what}: entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
@@ -260,15 +270,21 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
 /// prints the figures.
 pub fn run(options: &Args) -> anyhow::Result<()> {
     check_outputs(options)?;
+    if options.tufted {
+        return super::tufted::run(options);
+    }
     options.method.check()?;
     let input = if options.method.exact {
         DelaunayInput::Exact(crate::progress::step("reading", || {
             load_exact(&options.input)
         })?)
     } else {
-        DelaunayInput::Lengths(crate::progress::step("reading", || {
+        match crate::progress::step("reading", || {
             load_intrinsic(&options.input, options.weld.weld)
-        })?)
+        }) {
+            Ok(tri) => DelaunayInput::Lengths(tri),
+            Err(e) => return super::tufted::run_if_not_manifold(options, e),
+        }
     };
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
@@ -383,7 +399,7 @@ fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
     outputs.commit()
 }
 
-/// The `--json` object: the stats, then `method` (the one run, after `auto`'s choice),
+/// The `--json` object: `tufted` (false), the stats, then `method` (the one run, after `auto`'s choice),
 /// `requested_method`, for dubois the reduction's figures (`outer_iterations` N, `inner_passes`
 /// per outer iteration, `inner_passes_total`, `inner_passes_bound` = 350·N, `tubes_replaced`
 /// `{thin, thick}`, `peak_active_vertices`, `triangles_after_reduction`), for the wave methods
@@ -391,6 +407,8 @@ fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
 /// one.
 #[derive(serde::Serialize)]
 struct JsonReport<'a> {
+    /// Always false here (the tufted cover's report is `tufted::JsonReport`).
+    tufted: bool,
     #[serde(flatten)]
     stats: &'a DelaunayStats,
     method: String,
@@ -441,6 +459,7 @@ fn report(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
             triangles_after_reduction: r.triangles_after_reduction,
         });
         crate::output::print_json(&JsonReport {
+            tufted: false,
             stats,
             method: method.to_string(),
             requested_method: crate::args::value_name(&options.method.method),

@@ -479,6 +479,7 @@ impl Demo {
                 mass: file(mass),
                 max_flips: None,
                 mollify: None,
+                tufted: false,
                 weld: crate::args::WeldArg { weld: false },
                 json: crate::args::JsonArg { json: false },
                 reduced: file(reduced),

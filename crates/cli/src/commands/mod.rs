@@ -10,3 +10,4 @@ pub mod irreducible;
 pub mod isometric;
 pub mod isomorphic;
 pub mod quad;
+pub mod tufted;
