@@ -55,6 +55,22 @@ def _random_soup(seed, points=14, faces=40):
     return V, np.array(F)
 
 
+def _duplicates_and_fins(V, F):
+    """Some faces duplicated (half of them reversed), with fins on two of their edges: books
+    whose faces tie in angle (a face and its duplicate), which geometry-central orders by its
+    list of an edge's halfedges around the edge as its first face's side runs."""
+    extra_V, extra_F = [], []
+    for k in range(0, len(F), 37):
+        f = F[k]
+        extra_F.append(f if k % 2 else f[::-1])
+        for a, b in ((f[0], f[1]), (f[1], f[2])):
+            normal = np.cross(V[f[1]] - V[f[0]], V[f[2]] - V[f[0]])
+            tip = (V[a] + V[b]) / 2 + 0.3 * normal / np.linalg.norm(normal) * np.linalg.norm(V[b] - V[a])
+            extra_F.append([a, b, len(V) + len(extra_V)])
+            extra_V.append(tip + 0.01 * np.sin(k + a))
+    return np.vstack([V, extra_V]), np.vstack([F, extra_F])
+
+
 def _soups():
     soups = {"triangle (fins)": (np.array([[0, 0, 0], [1, 0.1, 0], [0.3, 0.9, 0.2]], float), np.array([[0, 1, 2]]))}
     for pages in (3, 4, 7):
@@ -67,6 +83,7 @@ def _soups():
     strip = np.array([[0, 1, 2], [2, 1, 3], [2, 3, 4], [4, 3, 5]])
     W = np.array([[0, 0, 0], [1, 0, 0.1], [0, 1, 0], [1.2, 1, 0], [0, 2, 0.3], [1, 2.2, 0]], float)
     soups["open strip (fins)"] = (W, strip)
+    soups["icosphere with duplicates and fins on their edges"] = _duplicates_and_fins(*surftopo.icosphere(3))
     for seed in range(6):
         soups[f"random soup {seed}"] = _random_soup(seed)
     # A collinear face: mollification matters.

@@ -3,9 +3,9 @@
 //! the edge in space, which makes a closed oriented surface.
 //!
 //! Cover face `2f` is input face `f` as given (its *front*), `2f + 1` the same triangle reversed
-//! (its *back*: corners `v0, v2, v1`, so front side `i` is back side `2 - i`). Around an edge
-//! `{lo, hi}` (`lo < hi`, direction `d = p[hi] - p[lo]`), a face-side runs *along* `d` or
-//! *against* it; the front and back of a face run opposite ways. The faces of the edge are
+//! (its *back*: corners `v0, v2, v1`, so front side `i` is back side `2 - i`). Around an edge,
+//! directed as the side of its first face (the lowest index) runs (`d`), a face-side runs
+//! *along* `d` or *against* it; the front and back of a face run opposite ways. The faces of the edge are
 //! sorted clockwise around `d` (by decreasing angle of their third vertex in a right-handed
 //! frame `(b0, b1, d)`), then the side of face `i` running against `d` is glued to the side of
 //! face `i + 1` running along `d`, cyclically: each gluing pairs opposite directions, so the
@@ -14,9 +14,13 @@
 //! The paper lets the order be any (its Section 4.2: every order gives a valid cover); the
 //! geometric one is the paper's and geometry-central's (`buildIntrinsicTuftedCover`, which
 //! `robust_laplacian` runs), so the cover is the same surface as theirs. Faces at the same angle
-//! (duplicate faces, or third vertices on one half-plane) are ordered by face index. Reversing
-//! `d` reverses the cyclic order and swaps along and against: the same gluing, so the choice of
-//! `lo` is immaterial. One face on an edge (a fin) glues its front to its back; two faces need
+//! (duplicate faces, or third vertices on one half-plane) are ordered as geometry-central lists
+//! an edge's halfedges before its sort, which keeps that order for up to 16 faces (an insertion
+//! sort): the first face, then the others in decreasing face index. The order of equal angles
+//! matters: it changes the cover's topology, and then its Laplacian. Reversing
+//! `d` reverses the cyclic order and swaps along and against, which gives the same gluing when
+//! no two faces are at the same angle; with ties it does not (the order of the tied faces is not
+//! reversed), so `d` is geometry-central's too (its edge's first halfedge). One face on an edge (a fin) glues its front to its back; two faces need
 //! no sort (a cyclic order of two is unique).
 //!
 //! Vertices of the cover are the orbits of corners ([`SurfaceMesh::from_gluing_pieces`]): a
@@ -118,11 +122,12 @@ pub(crate) fn tufted_cover(
         let length = distance(positions[lo as usize], positions[hi as usize]);
         input_edges += 1;
         input_length_sum += length;
-        // The side of face-side s's face that runs along d (tail lo) and the one against it.
+        // d runs as the first face's side (u -> w). The side of face-side s's face that runs
+        // along d and the one against it.
         let along_against = |s: u32| {
             let (f, i) = (s as usize / 3, s as usize % 3);
             let (front, back) = (side(2 * f, i), side(2 * f + 1, 2 - i));
-            if ends(s as usize).0 == lo {
+            if ends(s as usize).0 == u {
                 (front, back)
             } else {
                 (back, front)
@@ -131,13 +136,16 @@ pub(crate) fn tufted_cover(
         ring.clear();
         if run.len() >= 3 {
             book_edges += 1;
-            let angle = frame_angle(positions, lo, hi);
-            ring.extend(run.iter().map(|&s| {
+            let angle = frame_angle(positions, u, w);
+            // The faces in geometry-central's order of an edge's halfedges (the first face,
+            // then the others from the last), then a stable sort clockwise around d
+            // (decreasing angle): faces at the same angle keep that order.
+            let order = run[..1].iter().chain(run[1..].iter().rev());
+            ring.extend(order.map(|&s| {
                 let t = &triangles[s as usize / 3];
                 (angle(t[(s as usize % 3 + 2) % 3]), s)
             }));
-            // Clockwise around d: decreasing angle, ties by face index (run order).
-            ring.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+            ring.sort_by(|a, b| b.0.total_cmp(&a.0));
         } else {
             fin_edges += usize::from(run.len() == 1);
             ring.extend(run.iter().map(|&s| (0.0, s)));
@@ -170,11 +178,11 @@ pub(crate) fn tufted_cover(
     })
 }
 
-/// The angle around `d = p[hi] - p[lo]` of a point's offset from `p[lo]`, in a right-handed frame
-/// `(b0, b1, d)` (counter-clockwise seen from the tip of `d`).
-fn frame_angle(positions: &[Point3], lo: u32, hi: u32) -> impl Fn(u32) -> f64 + '_ {
-    let p = positions[lo as usize];
-    let d = sub(positions[hi as usize], p);
+/// The angle around `d = p[tip] - p[tail]` of a point's offset from `p[tail]`, in a right-handed
+/// frame `(b0, b1, d)` (counter-clockwise seen from the tip of `d`).
+fn frame_angle(positions: &[Point3], tail: u32, tip: u32) -> impl Fn(u32) -> f64 + '_ {
+    let p = positions[tail as usize];
+    let d = sub(positions[tip as usize], p);
     // A helper axis not parallel to d, then b0 ⟂ d and b1 = d × b0 (so b0 × b1 points along d).
     let helper = if d[0].abs() <= d[1].abs().max(d[2].abs()) {
         [1.0, 0.0, 0.0]
