@@ -55,6 +55,7 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
+mod covered;
 mod delaunay;
 pub mod dubois;
 mod error;
@@ -69,6 +70,7 @@ mod sparse;
 mod triangulation;
 pub mod voronoi;
 
+pub use covered::CoveredTriangulation;
 pub use delaunay::choice::{
     DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
 };
