@@ -10,12 +10,14 @@ use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
+use surftopo_intrinsic::CoveredTriangulation;
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayInput, DelaunayMethod,
     DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation, IsometryOptions,
     PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, lumped_mass,
 };
+use surftopo_mesh::{BuildError, CoveredSurface};
 
 /// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
 fn methods() -> [(&'static str, DelaunayMethod); 4] {
@@ -523,7 +525,14 @@ fn laplacian_and_seconds<'py>(
     let positions = vertices.positions();
     let computed = py.detach(|| {
         let start = Instant::now();
-        let located = Located::from_arrays(&positions, &triangles)?;
+        let located = match Located::from_arrays(&positions, &triangles) {
+            Err(Failure::Build(
+                BuildError::BoundaryEdge { .. }
+                | BuildError::NonOrientable { .. }
+                | BuildError::Disconnected { .. },
+            )) => return covered_matrices(&positions, &triangles, request, start),
+            located => located?,
+        };
         let (located, out) = located.delaunay(request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
@@ -536,6 +545,37 @@ fn laplacian_and_seconds<'py>(
     });
     let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
     Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
+}
+
+/// The Laplacian and mass matrices of a surface with boundary, non-orientable or in pieces
+/// (`surftopo_intrinsic::CoveredTriangulation`: flipping; the natural boundary condition), rows
+/// the input's vertex indices, and the seconds since `start`.
+fn covered_matrices(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    request: &DelaunayRequest,
+    start: Instant,
+) -> Result<((Csr, Csr), f64), Failure> {
+    let (surface, report) = CoveredSurface::from_triangles(positions.to_vec(), triangles)?;
+    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions)
+        .map_err(Failure::Geometry)?;
+    let request = DelaunayRequest {
+        outputs: DelaunayOutputs {
+            triangulation: false,
+            ..request.outputs
+        },
+        ..*request
+    };
+    let out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Covered(tri), &request)
+        .map_err(Failure::Intrinsic)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let rows = input_index(&report);
+    let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
+    let matrices = (
+        Csr::new(matrix(out.laplacian), &rows, positions.len()),
+        Csr::new(matrix(out.mass), &rows, positions.len()),
+    );
+    Ok((matrices, seconds))
 }
 
 /// The request of `laplacian`: the triangulation and both matrices.

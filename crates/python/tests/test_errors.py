@@ -12,7 +12,7 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
     V, F = surftopo.icosphere(1)
     removed = F[7]
     with pytest.raises(surftopo.InvalidMeshError) as caught:
-        surftopo.laplacian(V, np.delete(F, 7, axis=0))
+        surftopo.intrinsic_delaunay(V, np.delete(F, 7, axis=0))
     e = caught.value
     assert isinstance(e, ValueError) and isinstance(e, surftopo.SurftopoError)
     assert e.kind == "BoundaryEdge"
@@ -32,7 +32,6 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
 @pytest.mark.parametrize(
     "call",
     [
-        lambda V, F: surftopo.laplacian(V, F),
         lambda V, F: surftopo.intrinsic_delaunay(V, F),
         lambda V, F: surftopo.quadrangulate(V, F),
     ],

@@ -12,8 +12,8 @@ use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod, DelaunayOutput,
-    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
+    CoveredTriangulation, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod,
+    DelaunayOutput, DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
     IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError, RequestError, SparseMatrix,
     TriangleStyle,
 };
@@ -199,6 +199,25 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         .map_err(|e| invalid(format!("{name}: {e}")))
 }
 
+/// Reads a mesh file of any surface kind: a closed orientable one as its intrinsic
+/// triangulation (every method), any other (boundary loops, non-orientable pieces) on its closed
+/// cover (flipping).
+fn load_mesh(path: &Path, weld: bool) -> anyhow::Result<DelaunayInput> {
+    let name = crate::input::name(path);
+    let loaded = crate::input::read_covered(path, weld)?;
+    let fail = |e: surftopo_intrinsic::GeometryError| invalid(format!("{name}: {e}"));
+    let surface = loaded.surface;
+    if surface.cover.is_plain() {
+        let s = surface
+            .into_plain()
+            .expect("a plain cover is a closed orientable surface");
+        let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).map_err(fail)?;
+        return Ok(DelaunayInput::Lengths(tri));
+    }
+    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions).map_err(fail)?;
+    Ok(DelaunayInput::Covered(tri))
+}
+
 /// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
 /// whose diagonal holds areas) a diagonal entry that is not a positive normal number: the areas
 /// are beyond double precision's range (they overflow or underflow), and writing them would give
@@ -265,11 +284,20 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         DelaunayInput::Exact(crate::progress::step("reading", || {
             load_exact(&options.input)
         })?)
-    } else {
+    } else if is_json_input(&options.input)? {
         DelaunayInput::Lengths(crate::progress::step("reading", || {
             load_intrinsic(&options.input, options.weld.weld)
         })?)
+    } else {
+        load_mesh(&options.input, options.weld.weld)?
     };
+    if options.output.is_some() && matches!(input, DelaunayInput::Covered(_)) {
+        return Err(invalid(format!(
+            "{}: -o: the portalgon format holds closed orientable triangulations only, and this \
+             surface has boundary or is non-orientable (--laplacian, --mass and --json take it)",
+            crate::input::name(&options.input)
+        )));
+    }
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
             triangulation: true,

@@ -28,6 +28,7 @@
 //! path; this module leaves that path's machine code as it was ([`crate::flip`]'s `Closed`).
 
 use crate::error::{DelaunayError, GeometryError};
+use crate::flip::stats::DelaunayStats;
 use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
 use crate::laplacian::assemble_laplacian;
 use crate::sparse::SparseMatrix;
@@ -272,6 +273,24 @@ impl CoveredTriangulation {
             }
         }
         SparseMatrix::diagonal(mass)
+    }
+}
+
+impl CoveredTriangulation {
+    /// The figures of a run that made `report` in `seconds`: the surface's own vertices, edges,
+    /// faces, loops and multi-edges (not the cover's).
+    pub fn stats(&self, report: &FlipReport, seconds: f64) -> DelaunayStats {
+        let mesh = self.tri.mesh();
+        let pairs: Vec<(u32, u32)> = self
+            .surface_edges()
+            .map(|e| {
+                let [a, b] = mesh.edge_vertices(e).map(|v| self.class(v));
+                (a.min(b), a.max(b))
+            })
+            .collect();
+        let faces = self.surface_faces().count();
+        let counts = [self.surface_vertex_count(), pairs.len(), faces];
+        DelaunayStats::from_pairs(counts, pairs, report, seconds)
     }
 }
 
