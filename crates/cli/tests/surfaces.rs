@@ -277,19 +277,15 @@ fn delaunay_flips_every_surface_kind_and_refuses_what_needs_a_closed_orientable_
         let m = dense_matrix(&m_path);
         assert!((0..m.len()).all(|i| m[i][i] > 0.0), "{args:?}");
     }
-    // The wave, Theorem 1, the tessellation and the portalgon output need a closed orientable
-    // surface: exit 2, naming what works, nothing written.
+    // The wave, Theorem 1 and the tessellation need a closed orientable surface: exit 2, naming
+    // what works, nothing written.
     let input = generate(dir.path(), "mb.obj", &["mobius-band"]);
-    let refusals: [(&[&str], &str); 4] = [
+    let refusals: [(&[&str], &str); 3] = [
         (&["--method", "voronoi", "--json"], "--method flip"),
         (&["--method", "dubois", "--json"], "--method flip"),
         (
             &["--tessellation", "t.json"],
             "the Delaunay tessellation takes closed",
-        ),
-        (
-            &["-o", "t.json"],
-            "the portalgon format holds closed orientable",
         ),
     ];
     for (args, message) in refusals {
@@ -305,4 +301,55 @@ fn delaunay_flips_every_surface_kind_and_refuses_what_needs_a_closed_orientable_
         assert!(stderr.contains(message), "{args:?}: {stderr}");
         assert!(!dir.path().join("t.json").exists());
     }
+}
+
+#[test]
+fn delaunay_writes_a_non_orientable_triangulation_with_reversed_gluings() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = generate(dir.path(), "mb.obj", &["mobius-band", "--flips", "20"]);
+    let output = dir.path().join("mb.json");
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&input)
+        .arg("-o")
+        .arg(&output)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: Value = serde_json::from_slice(&std::fs::read(&output).unwrap()).unwrap();
+    assert_eq!(doc["version"], 2);
+    let v = info(&input);
+    assert_eq!(
+        doc["polygons"].as_array().unwrap().len() as u64,
+        v["faces"].as_u64().unwrap()
+    );
+    let pairs = doc["matching"].as_array().unwrap();
+    let reversed = pairs
+        .iter()
+        .filter(|p| p.get(2) == Some(&Value::Bool(true)))
+        .count();
+    assert!(reversed > 0);
+    // Interior edges are matched, boundary edges are not.
+    let boundary = v["boundary_edges"].as_u64().unwrap() as usize;
+    assert_eq!(
+        2 * pairs.len() + boundary,
+        3 * doc["polygons"].as_array().unwrap().len()
+    );
+    // Read back, an oriented reader refuses the reversed gluing by place (exit 2).
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&output)
+        .arg("--json")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("its gluing reverses orientation"),
+        "{stderr}"
+    );
 }

@@ -291,13 +291,6 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     } else {
         load_mesh(&options.input, options.weld.weld)?
     };
-    if options.output.is_some() && matches!(input, DelaunayInput::Covered(_)) {
-        return Err(invalid(format!(
-            "{}: -o: the portalgon format holds closed orientable triangulations only, and this \
-             surface has boundary or is non-orientable (--laplacian, --mass and --json take it)",
-            crate::input::name(&options.input)
-        )));
-    }
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
             triangulation: true,
@@ -385,6 +378,9 @@ fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
             })?;
         } else if let Some(tri) = &out.triangulation {
             outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+        } else if let Some(covered) = &out.covered {
+            // Boundary sides unmatched, orientation-reversing gluings flagged (version 2).
+            outputs.file(path, |w| Ok(covered.to_doc().write(w, false)?))?;
         }
     }
     let portalgons = [

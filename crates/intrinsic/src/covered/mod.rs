@@ -30,6 +30,9 @@
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
 use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
+use crate::formats::portalgon_json::{
+    FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
+};
 use crate::laplacian::assemble_laplacian;
 use crate::sparse::SparseMatrix;
 use crate::triangulation::{IntrinsicTriangulation, trig};
@@ -291,6 +294,66 @@ impl CoveredTriangulation {
         let faces = self.surface_faces().count();
         let counts = [self.surface_vertex_count(), pairs.len(), faces];
         DelaunayStats::from_pairs(counts, pairs, report, seconds)
+    }
+}
+
+impl CoveredTriangulation {
+    /// The portalgon document of K: its triangles by lengths (in face id order, vertex labels
+    /// the surface's vertices, sides in the order of the first lift's half-edges), each interior
+    /// edge one pair, reversed (version 2) where the two sides run the same way on the surface —
+    /// where its other side lies on the mirror copy of a doubled piece; boundary edges are
+    /// unmatched sides.
+    pub fn to_doc(&self) -> PortalgonDoc {
+        let mesh = self.tri.mesh();
+        let faces: Vec<FaceId> = self.surface_faces().collect();
+        let mut rank = vec![u32::MAX; mesh.face_slots()];
+        for (k, &f) in faces.iter().enumerate() {
+            rank[f.idx()] = k as u32;
+        }
+        let side = |h: HalfedgeId| {
+            let f = mesh.face(h);
+            let i = mesh.face_halfedges(f).iter().position(|&g| g == h);
+            [rank[f.idx()] as usize, i.expect("a half-edge of its face")]
+        };
+        let polygons = faces
+            .iter()
+            .map(|&f| PolygonDoc {
+                corners: None,
+                lengths: Some(self.tri.face_sides(f).map(Number::Double).to_vec()),
+                vertices: Some(mesh.face_vertices(f).map(|v| self.class(v)).to_vec()),
+            })
+            .collect();
+        let (mut matching, mut reversed) = (Vec::new(), Vec::new());
+        for &f in &faces {
+            for h in mesh.face_halfedges(f) {
+                let t = h.twin();
+                if !self.is_real_face(mesh.face(t)) {
+                    continue;
+                }
+                // The other side on the surface: t itself, or its mirror (same direction as h).
+                let (other, flip) = if rank[mesh.face(t).idx()] != u32::MAX {
+                    (t, false)
+                } else {
+                    (self.mirror(t).expect("a mirror copy has a mirror"), true)
+                };
+                let (a, b) = (side(h), side(other));
+                if a < b {
+                    matching.push([a, b]);
+                    reversed.push(flip);
+                }
+            }
+        }
+        if !reversed.contains(&true) {
+            reversed.clear();
+        }
+        PortalgonDoc {
+            format: FORMAT_NAME.to_string(),
+            version: ORIENTED_VERSION,
+            comment: None,
+            polygons,
+            matching,
+            reversed,
+        }
     }
 }
 

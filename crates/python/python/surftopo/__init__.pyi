@@ -244,12 +244,21 @@ def laplacian(
     :class:`InvalidInputError`: a mesh's lengths are square roots (use a :class:`Portalgon` given
     by exact corners with :func:`intrinsic_delaunay`).
 
+    Any manifold mesh is taken: boundary loops (boundary edges are never flipped and keep their
+    one half-cotangent: the natural Neumann boundary condition, libigl's
+    ``intrinsic_delaunay_cotmatrix``), non-orientable pieces and several pieces (``L`` is then
+    block-diagonal, one zero mode per piece), by flipping; ``method="voronoi"`` or ``"dubois"``
+    raise :class:`SurftopoError` on them (Dubois' methods treat closed orientable surfaces).
+
     >>> V, F = surftopo.icosphere(2)
     >>> L, M = surftopo.laplacian(V, F)
     >>> L.shape, bool(abs(L.sum(axis=1)).max() < 1e-12)
     ((162, 162), True)
     >>> round(float(M.sum()), 4)  # the area of the polyhedron
     12.3291
+    >>> L, M = surftopo.laplacian(*surftopo.mobius_band(12, 3))
+    >>> round(float(M.sum()), 4), bool(abs(L.sum(axis=1)).max() < 1e-12)
+    (3.6806, True)
     """
 
 def intrinsic_delaunay(
