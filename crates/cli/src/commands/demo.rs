@@ -245,11 +245,14 @@ impl Demo {
             &loaded.surface.to_triangles().1,
         )
         .surfaces;
-        let surface = loaded.surface.into();
+        let surface = loaded.surface.clone().into();
         for algorithm in Algorithm::all(1) {
-            let (reduced, report, _) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
+            let (reduced, report) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
             let name = format!("irreducible-{}.obj", algorithm.name());
-            crate::output::write_soup(&self.path(&name), &reduced)?;
+            crate::output::write_soup(
+                &self.path(&name),
+                &irreducible::on_input_vertices(&loaded.soup, &reduced, false),
+            )?;
             Self::line(
                 &format!("irreducible --algorithm {}", algorithm.name()),
                 &format!(
@@ -301,10 +304,13 @@ impl Demo {
                 &surftopo_io::PolygonSoup::from_triangles(positions, &triangles),
             )?;
             let pieces = surftopo_mesh::inspect(surface.positions.len(), &triangles).surfaces;
-            let (reduced, report, _) =
+            let (reduced, report) =
                 irreducible::reduce_covered(&surface, &pieces, Algorithm::RamaswamiSiqueira)?;
             let reduced_name = name.replace(".obj", "-irreducible.obj");
-            crate::output::write_soup(&self.path(&reduced_name), &reduced)?;
+            crate::output::write_soup(
+                &self.path(&reduced_name),
+                &surftopo_io::PolygonSoup::from_triangles(surface.positions.clone(), &reduced),
+            )?;
             Self::line(
                 label,
                 &format!(
@@ -325,7 +331,8 @@ impl Demo {
     /// `quad` with each algorithm of the quadrangulation paper, Karp–Sipser, and both quality
     /// objectives.
     fn quad(&self, input: &Path) -> anyhow::Result<()> {
-        let surface = crate::input::load_surface(input, false)?.surface;
+        let loaded = crate::input::load_surface(input, false)?;
+        let (surface, input_vertices) = (&loaded.surface, loaded.report.input_vertices());
         let fail =
             |e: surftopo_quad::QuadError| anyhow::anyhow!("{}: {e}", self.shown("input.obj"));
         let mut runs: Vec<(String, QualityQuads)> = Vec::new();
@@ -351,7 +358,7 @@ impl Demo {
             let name = format!("quads-{}.obj", q.result.stats.algorithm);
             crate::output::write_soup(
                 &self.path(&name),
-                &crate::commands::quad::quad_soup(&surface, &q.result),
+                &crate::commands::quad::quad_soup(&loaded.soup, &input_vertices, &q.result),
             )?;
             let stats = &q.result.stats;
             Self::line(
