@@ -255,6 +255,48 @@ fn is_json_input(path: &Path) -> anyhow::Result<bool> {
 /// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
+    load_numbered(path, weld).map(|(tri, _)| tri)
+}
+
+/// Where the matrices' rows go in the input's vertex numbering: the input index of each vertex
+/// id of the triangulation read ([`surftopo_mesh::BuildReport::input_vertices`]), and the
+/// input's vertex count (vertices in no face get empty rows and columns).
+pub struct InputNumbering {
+    input_vertices: Vec<u32>,
+    count: usize,
+}
+
+impl InputNumbering {
+    /// `matrix` (rows: the live vertices of `tri` in id order) on the input's rows and columns;
+    /// the matrix as it is when `tri` has vertex ids the input does not (none in practice: the
+    /// algorithms keep the vertices read).
+    fn on_input_rows(&self, tri: &IntrinsicTriangulation, matrix: SparseMatrix) -> SparseMatrix {
+        let rows = tri.matrix_rows();
+        let mut row_to_input = vec![0u32; matrix.n];
+        for (v, &row) in rows.iter().enumerate() {
+            match (
+                row_to_input.get_mut(row as usize),
+                self.input_vertices.get(v),
+            ) {
+                (Some(slot), Some(&input)) => *slot = input,
+                (None, _) => {}
+                (Some(_), None) => return matrix,
+            }
+        }
+        let triplets: Vec<(u32, u32, f64)> = matrix
+            .triplets()
+            .map(|(i, j, v)| (row_to_input[i as usize], row_to_input[j as usize], v))
+            .collect();
+        SparseMatrix::from_triplets(self.count, &triplets)
+    }
+}
+
+/// [`load_intrinsic`], with the input's vertex numbering for a mesh file (`None` for a portalgon
+/// file, whose vertices are its own).
+pub fn load_numbered(
+    path: &Path,
+    weld: bool,
+) -> anyhow::Result<(IntrinsicTriangulation, Option<InputNumbering>)> {
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
@@ -262,7 +304,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
-        return match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
+        let tri = match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
             // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
             Err(PortalgonError::NotTriangle { .. }) => {
                 let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
@@ -271,11 +313,18 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
                     .map_err(fail)
             }
             other => other.map_err(fail),
-        };
+        }?;
+        return Ok((tri, None));
     }
     let loaded = crate::input::read_surface(path, weld)?;
-    IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
-        .map_err(|e| invalid(format!("{name}: {e}")))
+    let numbering = InputNumbering {
+        input_vertices: loaded.report.input_vertices(),
+        count: loaded.soup.vertex_count(),
+    };
+    let tri =
+        IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
+            .map_err(|e| invalid(format!("{name}: {e}")))?;
+    Ok((tri, Some(numbering)))
 }
 
 /// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
@@ -350,35 +399,40 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         };
         return run_exact(options, &p, method);
     }
-    let tri = crate::progress::step("reading", || {
-        load_intrinsic(&options.input, options.weld.weld)
+    let (tri, numbering) = crate::progress::step("reading", || {
+        load_numbered(&options.input, options.weld.weld)
     })?;
+    let numbering = numbering.as_ref();
     let method = match requested {
         Method::Auto if options.reduced.is_some() => Method::Dubois,
         Method::Auto if flip_options_given => Method::Flip,
-        Method::Auto => return run_auto(options, tri),
+        Method::Auto => return run_auto(options, tri, numbering),
         m => m,
     };
     if method == Method::Flip {
-        run_flip(options, tri)
+        run_flip(options, tri, numbering)
     } else {
-        run_wave(options, tri, method)
+        run_wave(options, tri, method, numbering)
     }
 }
 
 /// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test after its first pass
 /// ([`delaunay_with_stats_unless_needle`]); at a needle, nothing is flipped and the rule goes on
 /// from there ([`choose_method_for_needle`]).
-fn run_auto(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+fn run_auto(
+    options: &Args,
+    mut tri: IntrinsicTriangulation,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Result<()> {
     let flipped = crate::progress::step("flipping to Delaunay", || {
         delaunay_with_stats_unless_needle(&mut tri, &flip_options(options))
     })
     .map_err(|e| flip_error(options, e))?;
     match flipped {
-        Some(stats) => write_flipped(options, tri, &stats),
+        Some(stats) => write_flipped(options, tri, &stats, numbering),
         None => match Method::chosen(choose_method_for_needle(&tri), false) {
-            Method::Flip => run_flip(options, tri),
-            method => run_wave(options, tri, method),
+            Method::Flip => run_flip(options, tri, numbering),
+            method => run_wave(options, tri, method, numbering),
         },
     }
 }
@@ -401,7 +455,7 @@ fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
             "{name}: {e} (double precision cannot finish flipping this input: try --method \
              voronoi or dubois, --exact on exact input)"
         )),
-        DelaunayError::Geometry(e) => geometry_error(&options.input, &e),
+        DelaunayError::Geometry(e) => geometry_error(&options.input, &MollifyHint(&e, "")),
         other => invalid(format!("{name}: {other}")),
     }
 }
@@ -426,6 +480,29 @@ pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error 
     }
 }
 
+/// A degenerate-lengths error with the option that makes such input usable: `--mollify EPS`
+/// (after the given options, `--method flip ` where the method run is not flipping).
+struct MollifyHint<'a>(&'a surftopo_intrinsic::GeometryError, &'static str);
+
+impl std::fmt::Display for MollifyHint<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use surftopo_intrinsic::GeometryError as G;
+        write!(f, "{}", self.0)?;
+        if matches!(
+            self.0,
+            G::ZeroArea { .. } | G::TriangleInequality { .. } | G::NonPositiveLength { .. }
+        ) {
+            write!(
+                f,
+                " (`{}--mollify EPS` mollifies degenerate triangles, EPS relative to the mean \
+                 edge length, e.g. 1e-6; `surftopo info` lists the near-degenerate ones)",
+                self.1
+            )?;
+        }
+        Ok(())
+    }
+}
+
 /// [`IntrinsicTriangulation::validate`] with [`geometry_error`]'s verdict.
 ///
 /// # Errors
@@ -435,7 +512,11 @@ pub fn validated(input: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<(
 }
 
 /// `--method flip`.
-fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
+fn run_flip(
+    options: &Args,
+    mut tri: IntrinsicTriangulation,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Result<()> {
     if options.reduced.is_some() {
         return Err(invalid("--reduced applies to --method dubois only"));
     }
@@ -443,7 +524,7 @@ fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<(
         delaunay_with_stats(&mut tri, &flip_options(options))
     })
     .map_err(|e| flip_error(options, e))?;
-    write_flipped(options, tri, &stats)
+    write_flipped(options, tri, &stats, numbering)
 }
 
 /// The outputs and the report of a flipped triangulation.
@@ -451,6 +532,7 @@ fn write_flipped(
     options: &Args,
     tri: IntrinsicTriangulation,
     stats: &DelaunayStats,
+    numbering: Option<&InputNumbering>,
 ) -> anyhow::Result<()> {
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
@@ -464,21 +546,29 @@ fn write_flipped(
             Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
         })?;
     }
-    write_matrices(options, &tri, &mut outputs)?;
+    write_matrices(options, &tri, numbering, &mut outputs)?;
     outputs.commit()?;
     report(options, Method::Flip, stats, None)
 }
 
-/// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).
+/// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names), on
+/// the input's vertex numbering when it is a mesh file (`numbering`: rows and columns of the
+/// vertices in no face are empty).
 fn write_matrices(
     options: &Args,
     tri: &IntrinsicTriangulation,
+    numbering: Option<&InputNumbering>,
     outputs: &mut Outputs,
 ) -> anyhow::Result<()> {
+    let on_input = |m: SparseMatrix| match numbering {
+        Some(numbering) => numbering.on_input_rows(tri, m),
+        None => m,
+    };
     if let Some(path) = &options.laplacian {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         let laplacian = crate::progress::step("building the Laplacian", || cotan_laplacian(tri));
         check_matrix(&laplacian, "the cotan Laplacian", false)?;
+        let laplacian = on_input(laplacian);
         outputs.file(path, |w| {
             crate::output::fill_matrix(w, path, &laplacian, comment)
         })?;
@@ -487,6 +577,7 @@ fn write_matrices(
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
         let mass = crate::progress::step("building the mass matrix", || lumped_mass(tri));
         check_matrix(&mass, "the mass matrix", true)?;
+        let mass = on_input(mass);
         outputs.file(path, |w| {
             crate::output::fill_matrix(w, path, &mass, comment)
         })?;
@@ -526,16 +617,22 @@ fn run_exact(options: &Args, p: &Portalgon<Rational>, method: Method) -> anyhow:
     write_tessellation(options, &v.tessellation, &mut outputs)?;
     write_reduced(options, reduced.as_ref(), &mut outputs)?;
     let tri = v.triangulation().map_err(|e| fail(&e))?;
-    finish(options, method, &tri, &figures, start, outputs)
+    finish(options, method, &tri, &figures, start, outputs, None)
 }
 
 /// `--method voronoi` and `--method dubois` in f64: the wave and its dual (after the reduction
 /// for dubois); the triangulation written is the tessellation cut along shortcuts by lengths.
-fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyhow::Result<()> {
+fn run_wave(
+    options: &Args,
+    tri: IntrinsicTriangulation,
+    method: Method,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Result<()> {
     check_wave_options(options, method)?;
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    validated(&options.input, &tri)?;
+    tri.validate()
+        .map_err(|e| geometry_error(&options.input, &MollifyHint(&e, "--method flip ")))?;
     let (p, _) = tri.to_portalgon();
     let (v, figures, reduced) =
         tessellate(&p, method, options.method.reduce_options(), &options.input)?;
@@ -546,7 +643,7 @@ fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyh
     }
     write_tessellation(options, &v.tessellation, &mut outputs)?;
     write_reduced(options, reduced.as_ref(), &mut outputs)?;
-    finish(options, method, &tri, &figures, start, outputs)
+    finish(options, method, &tri, &figures, start, outputs, numbering)
 }
 
 /// The matrices and the figures of a wave run.
@@ -557,6 +654,7 @@ fn finish(
     figures: &WaveFigures,
     start: std::time::Instant,
     mut outputs: Outputs,
+    numbering: Option<&InputNumbering>,
 ) -> anyhow::Result<()> {
     let flips = FlipReport {
         flips: 0,
@@ -564,7 +662,7 @@ fn finish(
         non_delaunay_edges: tri.non_delaunay_edges(surftopo_intrinsic::DEFAULT_TOLERANCE),
     };
     let stats = DelaunayStats::new(tri, &flips, start.elapsed().as_secs_f64());
-    write_matrices(options, tri, &mut outputs)?;
+    write_matrices(options, tri, numbering, &mut outputs)?;
     outputs.commit()?;
     report(options, method, &stats, Some(figures))
 }
