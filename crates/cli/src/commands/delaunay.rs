@@ -327,32 +327,13 @@ pub fn load_numbered(
     Ok((tri, Some(numbering)))
 }
 
-/// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
-/// whose diagonal holds areas) a diagonal entry that is not a positive normal number: the areas
-/// are beyond double precision's range (they overflow or underflow), and writing them would give
-/// `inf` or a silently zero matrix. Lengths themselves are handled scale-free
-/// (`surftopo_intrinsic::trig`; cotan weights do not depend on the scale), so this happens only
-/// when the results are not representable. (A Laplacian may have a zero diagonal: a one-vertex
-/// torus.)
+/// Refuses to write a matrix that is not representable
+/// ([`SparseMatrix::check_representable`]: an `inf` entry, or a mass matrix of zeros). (A
+/// Laplacian may have a zero diagonal: a one-vertex torus.)
 fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> anyhow::Result<()> {
-    if let Some((i, j, v)) = matrix.triplets().find(|t| !t.2.is_finite()) {
-        return Err(invalid(format!(
-            "{what}: entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
-            i + 1,
-            j + 1
-        )));
-    }
-    let small = (0..matrix.n)
-        .map(|i| (i, matrix.get(i, i)))
-        .find(|&(_, v)| v.is_nan() || v < f64::MIN_POSITIVE);
-    if let Some((i, v)) = small.filter(|_| positive_diagonal) {
-        return Err(invalid(format!(
-            "{what}: diagonal entry {} is {v:e}, not a positive normal number: the triangles are \
-             too small for double precision (scale the input)",
-            i + 1
-        )));
-    }
-    Ok(())
+    matrix
+        .check_representable(positive_diagonal)
+        .map_err(|e| invalid(format!("{what}: {e}")))
 }
 
 /// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o`,
