@@ -100,6 +100,19 @@ fn sub(p: Point3, q: Point3) -> Point3 {
     [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
 }
 
+/// What is wrong with a face of [`near_degenerate_faces`] whose smallest relative height is
+/// `height`, in words (the caller adds where, and the option that makes it usable).
+pub fn describe_near_degenerate(height: f64) -> String {
+    if height == 0.0 {
+        "one of the triangles it is cut into is flat".to_owned()
+    } else {
+        format!(
+            "near-degenerate: height {height:.1e} times its longest side (below \
+             {NEAR_DEGENERATE_RELATIVE_HEIGHT:e})"
+        )
+    }
+}
+
 /// Whether triangle `a, b, c` is near-degenerate: not of exactly zero area
 /// ([`is_zero_area_triangle`]) but of [`relative_height`] below
 /// [`NEAR_DEGENERATE_RELATIVE_HEIGHT`].

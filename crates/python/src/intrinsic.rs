@@ -118,6 +118,16 @@ impl Csr {
         }
     }
 
+    /// The `scipy.sparse` matrix in `format`: `"csr"` (the arrays handed over without a copy)
+    /// or `"csc"` (robust_laplacian's; the same matrix, converted by scipy).
+    fn into_format<'py>(self, py: Python<'py>, format: Format) -> PyResult<Bound<'py, PyAny>> {
+        let csr = self.into_scipy(py)?;
+        match format {
+            Format::Csr => Ok(csr),
+            Format::Csc => csr.call_method0("tocsc"),
+        }
+    }
+
     /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
     fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
         let data = vector(py, self.data);
@@ -131,6 +141,33 @@ impl Csr {
             .getattr("csr_matrix")?
             .call(((data, indices, indptr),), Some(&kwargs))
     }
+}
+
+/// The sparse format of the matrices returned.
+#[derive(Clone, Copy)]
+enum Format {
+    Csr,
+    Csc,
+}
+
+/// `format=` of [`laplacian`].
+fn sparse_format(name: &str) -> Result<Format, Failure> {
+    crate::surface::choose(
+        "format",
+        name,
+        &[("csr", Format::Csr), ("csc", Format::Csc)],
+    )
+}
+
+/// The CLI's refusal of matrices that are not representable (`inf` entries, a mass matrix of
+/// zeros: coordinates of 1e200 or 1e-200), as an `InvalidGeometryError`.
+fn check_matrices(l: &SparseMatrix, m: &SparseMatrix) -> Result<(), Failure> {
+    let refuse =
+        |what: &str, e: String| Failure::Invalid("InvalidGeometryError", format!("{what}: {e}"));
+    l.check_representable(false)
+        .map_err(|e| refuse("the cotan Laplacian", e))?;
+    m.check_representable(true)
+        .map_err(|e| refuse("the mass matrix", e))
 }
 
 /// Delaunay options from the Python arguments.
@@ -433,7 +470,9 @@ fn laplacian_and_seconds<'py>(
     faces: &Bound<'py, PyAny>,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
@@ -445,6 +484,7 @@ fn laplacian_and_seconds<'py>(
             intrinsic_delaunay_laplacian(&mut located.tri, &options).map_err(Failure::Delaunay)?;
         let m = lumped_mass(&located.tri);
         let seconds = start.elapsed().as_secs_f64();
+        check_matrices(&l, &m)?;
         let rows = located.dense_rows();
         let matrices = (
             Csr::new(l, &rows, located.rows),
@@ -453,21 +493,27 @@ fn laplacian_and_seconds<'py>(
         Ok::<_, Failure>((matrices, seconds))
     });
     let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
-    Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
+    Ok((
+        l.into_format(py, format)?,
+        m.into_format(py, format)?,
+        seconds,
+    ))
 }
 
 /// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
-/// Delaunay triangulation of `(V, F)`, as `robust_laplacian.mesh_laplacian` returns them.
+/// Delaunay triangulation of `(V, F)`, as `robust_laplacian.mesh_laplacian` returns them, in
+/// `format` (`"csr"` or `"csc"`), refused as the CLI refuses them when not representable.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None, format = "csr"))]
 pub fn laplacian<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    laplacian_and_seconds(py, vertices, faces, mollify, max_flips).map(|(l, m, _)| (l, m))
+    laplacian_and_seconds(py, vertices, faces, mollify, max_flips, format).map(|(l, m, _)| (l, m))
 }
 
 /// [`laplacian`] with the default options, also returning the seconds spent in the library calls
@@ -478,7 +524,7 @@ pub fn _laplacian_timed<'py>(
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
-    laplacian_and_seconds(py, vertices, faces, None, None)
+    laplacian_and_seconds(py, vertices, faces, None, None, "csr")
 }
 
 /// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay

@@ -338,14 +338,7 @@ fn near_degenerate_warning(
         .face_line(face)
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
-    let height = if height == 0.0 {
-        "one of the triangles the commands cut it into is flat".to_owned()
-    } else {
-        format!(
-            "near-degenerate: height {height:.1e} times its longest side (below {:e})",
-            surftopo_mesh::geometry::NEAR_DEGENERATE_RELATIVE_HEIGHT
-        )
-    };
+    let height = surftopo_mesh::geometry::describe_near_degenerate(height);
     format!(
         "{}: {line}face {face}: {height}; `delaunay` may refuse it as a zero-area triangle \
          (`--mollify EPS` mollifies it)",
