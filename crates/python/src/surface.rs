@@ -27,14 +27,7 @@ pub struct Input {
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
 pub fn input_index(report: &BuildReport) -> Vec<u32> {
-    let mut index = Vec::with_capacity(report.vertex_old_to_new.len());
-    for (old, new) in report.vertex_old_to_new.iter().enumerate() {
-        if new.is_valid() {
-            debug_assert_eq!(new.idx(), index.len());
-            index.push(old as u32);
-        }
-    }
-    index
+    report.input_vertices()
 }
 
 impl Input {
