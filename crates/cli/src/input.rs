@@ -4,7 +4,9 @@ use crate::failure::invalid;
 use std::path::Path;
 use std::sync::Mutex;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::{BuildError, BuildReport, CoveredSurface, Surface, geometry};
+use surftopo_mesh::{
+    BuildError, BuildReport, CoveredSurface, PolygonTriangulation, Surface, geometry,
+};
 
 /// A surface read from a file, with what building it changed.
 pub struct Loaded {
@@ -17,6 +19,8 @@ pub struct Loaded {
     /// The input as read (welded with `--weld`): the vertex list and per-vertex attributes that
     /// outputs on the input's vertices keep (README, "Vertex numbering"), and the faces.
     pub soup: PolygonSoup,
+    /// The soup face of each face id, when polygons were cut into triangles.
+    pub polygon_of: Option<Vec<u32>>,
 }
 
 /// The name of standard input in messages.
@@ -274,9 +278,46 @@ impl Triangulated {
     }
 }
 
-/// The soup's faces as triangles: polygons of 4 or more sides are cut by the rule of
-/// [`surftopo_mesh::triangulate_polygons`] (ear clipping in each polygon's plane, exact
-/// predicates), with a note on stderr saying how many.
+/// The triangles of a soup's faces, for the commands that need triangles and for `info`: a
+/// triangle as it is; polygons cut by [`surftopo_mesh::triangulate_polygons`], unless the cut
+/// has a combinatorial problem (a non-manifold edge, a duplicate triangle: quads whose both cuts
+/// have a flat triangle, side by side, as a pairing of flipped triangles can make) that the fan
+/// of each polygon's corner 0 does not have: then the fans, with the cut's first problem (on the
+/// soup's faces) as the second value.
+pub fn cut_polygons(soup: &PolygonSoup) -> (PolygonTriangulation, Option<BuildError>) {
+    let cut = surftopo_mesh::triangulate_polygons(&soup.positions, soup.faces());
+    if cut.is_identity() {
+        return (cut, None);
+    }
+    let n = soup.positions.len();
+    let inspection = surftopo_mesh::inspect(n, &cut.triangles);
+    if inspection.is_combinatorially_valid() {
+        return (cut, None);
+    }
+    let mut fans = PolygonTriangulation {
+        polygons: cut.polygons,
+        irregular: cut.irregular,
+        ..PolygonTriangulation::default()
+    };
+    for (k, face) in soup.faces().enumerate() {
+        for i in 1..face.len().saturating_sub(1) {
+            fans.triangles.push([face[0], face[i], face[i + 1]]);
+            fans.face_of.push(k as u32);
+        }
+    }
+    if !surftopo_mesh::inspect(n, &fans.triangles).is_combinatorially_valid() {
+        return (cut, None);
+    }
+    let problem = inspection
+        .problems
+        .into_iter()
+        .next()
+        .map(|p| renumber_face(p, &cut.face_of));
+    (fans, problem)
+}
+
+/// [`cut_polygons`], with a note on stderr saying how many polygons were cut (and when the fans
+/// were taken instead, why).
 pub fn triangulated(path: &Path, soup: &PolygonSoup) -> Triangulated {
     if soup.is_all_triangles() {
         let triangles = soup.faces().map(|f| [f[0], f[1], f[2]]).collect();
@@ -285,7 +326,7 @@ pub fn triangulated(path: &Path, soup: &PolygonSoup) -> Triangulated {
             polygon_of: None,
         };
     }
-    let cut = surftopo_mesh::triangulate_polygons(&soup.positions, soup.faces());
+    let (cut, fans_because) = cut_polygons(soup);
     let largest = soup.faces().map(<[u32]>::len).max().unwrap_or(0);
     let irregular = if cut.irregular > 0 {
         format!(
@@ -296,9 +337,16 @@ pub fn triangulated(path: &Path, soup: &PolygonSoup) -> Triangulated {
     } else {
         String::new()
     };
+    let how = match &fans_because {
+        Some(problem) => format!(
+            "the fan of each one's corner 0, since ear clipping gives {}",
+            locate(path, soup, problem)
+        ),
+        None => "ear clipping in each polygon's plane".to_owned(),
+    };
     stderr_println!(
-        "note: {}: {} polygons of 4 to {largest} sides cut into {} triangles (ear clipping in \
-         each polygon's plane; the triangles keep the polygon's vertices){irregular}",
+        "note: {}: {} polygons of 4 to {largest} sides cut into {} triangles ({how}; the \
+         triangles keep the polygon's vertices){irregular}",
         name(path),
         cut.polygons,
         cut.triangles.len() - (soup.face_count() - cut.polygons),
@@ -342,6 +390,7 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
         report,
         welded,
         soup,
+        polygon_of: cut.polygon_of,
     })
 }
 
@@ -372,8 +421,8 @@ fn log_changes(path: &Path, welded: usize, report: &BuildReport) {
 
 /// The message for a build error of `command`: a surface with boundary, non-orientable or in
 /// pieces is a valid surface that `command` does not support yet (with its classification and
-/// the first place that shows it); any other error is located as usual. A surface with boundary
-/// or in pieces that welding would close or join (a triangle soup) says so, unless `welded`.
+/// the first place that shows it); any other error is located as usual. A soup that welding
+/// would close or join (every triangle on vertices of its own) says so, unless `welded`.
 fn not_supported(
     path: &Path,
     soup: &PolygonSoup,
@@ -383,17 +432,17 @@ fn not_supported(
     welded: bool,
 ) -> String {
     let error = cut.on_faces(error);
-    let what = match error {
-        BuildError::BoundaryEdge { .. } => "surfaces with boundary are",
-        BuildError::NonOrientable { .. } => "non-orientable surfaces are",
-        BuildError::Disconnected { .. } => "files of several pieces are",
-        _ => return locate(path, soup, &error),
-    };
     let hint = (!welded)
         .then(|| weld_hint(soup, &cut.triangles))
         .flatten()
         .map(|h| format!("; {h}"))
         .unwrap_or_default();
+    let what = match error {
+        BuildError::BoundaryEdge { .. } => "surfaces with boundary are",
+        BuildError::NonOrientable { .. } => "non-orientable surfaces are",
+        BuildError::Disconnected { .. } => "files of several pieces are",
+        _ => return format!("{}{hint}", locate(path, soup, &error)),
+    };
     let kinds = surftopo_mesh::inspect(soup.positions.len(), &cut.triangles).surfaces;
     let names = crate::commands::info::piece_names(kinds.iter().map(|k| k.name()));
     let name = name(path);
@@ -437,8 +486,16 @@ pub fn read_covered(path: &Path, weld: bool) -> anyhow::Result<LoadedCovered> {
         let (soup, welded) = read_soup(path, weld)?;
         let cut = triangulated(path, &soup);
         let (surface, report) =
-            CoveredSurface::from_triangles(soup.positions.clone(), &cut.triangles)
-                .map_err(|e| invalid(locate(path, &soup, &cut.on_faces(e))))?;
+            CoveredSurface::from_triangles(soup.positions.clone(), &cut.triangles).map_err(
+                |e| {
+                    let hint = (!weld)
+                        .then(|| weld_hint(&soup, &cut.triangles))
+                        .flatten()
+                        .map(|h| format!("; {h}"))
+                        .unwrap_or_default();
+                    invalid(format!("{}{hint}", locate(path, &soup, &cut.on_faces(e))))
+                },
+            )?;
         let open =
             report.surfaces.iter().any(|k| k.boundary_loops > 0) || report.surfaces.len() > 1;
         let hint = (open && !weld)

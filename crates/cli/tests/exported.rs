@@ -323,3 +323,63 @@ fn a_point_cloud_is_described() {
     assert!(stderr.contains("a point cloud of 3 vertices"), "{stderr}");
     assert!(stderr.contains("needs faces"), "{stderr}");
 }
+
+#[test]
+fn quads_whose_ear_clipping_is_no_surface_are_read_through_their_fans() {
+    // LRS pairs triangles of a flipped triangulation; on the demo's input two of its quads, side
+    // by side around a vertex of two faces, have a flat triangle on each cut: ear clipping gives
+    // a duplicate triangle, the fans of corner 0 a surface, which every command then uses.
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("g2.obj");
+    surftopo()
+        .args([
+            "generate", "genus", "--genus", "2", "--size", "2", "--flips", "1000",
+        ])
+        .args(["--seed", "7", "-o"])
+        .arg(&input)
+        .assert()
+        .success();
+    let quads = dir.path().join("q.obj");
+    surftopo()
+        .arg("quad")
+        .arg(&input)
+        .args(["--algorithm", "lrs", "-o"])
+        .arg(&quads)
+        .assert()
+        .success();
+    let out = surftopo()
+        .args(["info", "--json", "--strict"])
+        .arg(&quads)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["genus"], 2);
+    let warnings = v["warnings"].as_array().unwrap();
+    assert!(
+        warnings[0]
+            .as_str()
+            .unwrap()
+            .contains("the fans of their corner 0"),
+        "{warnings:?}"
+    );
+    let run = surftopo()
+        .arg("irreducible")
+        .arg(&quads)
+        .args(["--json", "-o"])
+        .arg(dir.path().join("i.obj"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("the fan of each one's corner 0"),
+        "{stderr}"
+    );
+    let v: Value = serde_json::from_slice(&run.stdout).unwrap();
+    assert_eq!(v["output"]["genus"], 2);
+}

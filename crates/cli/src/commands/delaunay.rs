@@ -264,6 +264,8 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
 pub struct InputNumbering {
     input_vertices: Vec<u32>,
     count: usize,
+    /// The file's face (polygon) of each triangle, when polygons were cut.
+    polygon_of: Option<Vec<u32>>,
 }
 
 impl InputNumbering {
@@ -320,6 +322,7 @@ pub fn load_numbered(
     let numbering = InputNumbering {
         input_vertices: loaded.report.input_vertices(),
         count: loaded.soup.vertex_count(),
+        polygon_of: loaded.polygon_of,
     };
     let tri =
         IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
@@ -408,7 +411,7 @@ fn run_auto(
     let flipped = crate::progress::step("flipping to Delaunay", || {
         delaunay_with_stats_unless_needle(&mut tri, &flip_options(options))
     })
-    .map_err(|e| flip_error(options, e))?;
+    .map_err(|e| flip_error(options, e, numbering))?;
     match flipped {
         Some(stats) => write_flipped(options, tri, &stats, numbering),
         None => match Method::chosen(choose_method_for_needle(&tri), false) {
@@ -429,14 +432,20 @@ fn flip_options(options: &Args) -> DelaunayOptions {
 
 /// A flipping failure, naming the input: a numerical breakdown is a numerical failure (exit 4),
 /// degenerate lengths as [`geometry_error`] says, anything else invalid input (exit 2).
-fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
+fn flip_error(
+    options: &Args,
+    e: DelaunayError,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Error {
     let name = crate::input::name(&options.input);
     match e {
         DelaunayError::NumericalBreakdown { .. } => crate::failure::numerical(format!(
             "{name}: {e} (double precision cannot finish flipping this input: try --method \
              voronoi or dubois, --exact on exact input)"
         )),
-        DelaunayError::Geometry(e) => geometry_error(&options.input, &MollifyHint(&e, "")),
+        DelaunayError::Geometry(e) => {
+            geometry_error(&options.input, &MollifyHint(&e, "", polygon_of(numbering)))
+        }
         other => invalid(format!("{name}: {other}")),
     }
 }
@@ -462,13 +471,30 @@ pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error 
 }
 
 /// A degenerate-lengths error with the option that makes such input usable: `--mollify EPS`
-/// (after the given options, `--method flip ` where the method run is not flipping).
-struct MollifyHint<'a>(&'a surftopo_intrinsic::GeometryError, &'static str);
+/// (after the given options, `--method flip ` where the method run is not flipping), and the
+/// file's polygon of the triangle it names when polygons were cut (the third field).
+struct MollifyHint<'a>(
+    &'a surftopo_intrinsic::GeometryError,
+    &'static str,
+    Option<&'a [u32]>,
+);
+
+/// The polygon of each triangle, when the input's polygons were cut.
+fn polygon_of(numbering: Option<&InputNumbering>) -> Option<&[u32]> {
+    numbering.and_then(|n| n.polygon_of.as_deref())
+}
 
 impl std::fmt::Display for MollifyHint<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         use surftopo_intrinsic::GeometryError as G;
         write!(f, "{}", self.0)?;
+        let face = match self.0 {
+            G::ZeroArea { face, .. } | G::TriangleInequality { face, .. } => Some(*face),
+            _ => None,
+        };
+        if let Some(polygon) = face.and_then(|t| self.2?.get(t as usize)) {
+            write!(f, " (a triangle cut from the file's face {polygon})")?;
+        }
         if matches!(
             self.0,
             G::ZeroArea { .. } | G::TriangleInequality { .. } | G::NonPositiveLength { .. }
@@ -504,7 +530,7 @@ fn run_flip(
     let stats = crate::progress::step("flipping to Delaunay", || {
         delaunay_with_stats(&mut tri, &flip_options(options))
     })
-    .map_err(|e| flip_error(options, e))?;
+    .map_err(|e| flip_error(options, e, numbering))?;
     write_flipped(options, tri, &stats, numbering)
 }
 
@@ -612,8 +638,10 @@ fn run_wave(
     check_wave_options(options, method)?;
     let start = std::time::Instant::now();
     let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    tri.validate()
-        .map_err(|e| geometry_error(&options.input, &MollifyHint(&e, "--method flip ")))?;
+    tri.validate().map_err(|e| {
+        let hint = MollifyHint(&e, "--method flip ", polygon_of(numbering));
+        geometry_error(&options.input, &hint)
+    })?;
     let (p, _) = tri.to_portalgon();
     let (v, figures, reduced) =
         tessellate(&p, method, options.method.reduce_options(), &options.input)?;

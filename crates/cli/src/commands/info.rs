@@ -9,7 +9,7 @@
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
-use crate::input::{Read, locate, read_mesh_or_points, renumber_face};
+use crate::input::{Read, cut_polygons, locate, read_mesh_or_points, renumber_face};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use surftopo_mesh::{ProblemCounts, SurfaceKind};
@@ -207,11 +207,17 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         Read::Mesh(soup, welded) => (soup, welded),
         Read::PointCloud(points) => return Ok(point_cloud(path, &points)),
     };
-    // Polygon meshes are inspected through the triangles the commands cut them into, or the
-    // fans when those make a surface and the cut does not (see `polygon_triangles`).
-    let cut = surftopo_mesh::triangulate_polygons(&soup.positions, soup.faces());
-    let (triangles, polygon_of, mut inspection, cut_warning) = polygon_triangles(path, &soup, &cut);
-    let (triangles, polygon_of) = (&triangles, &polygon_of);
+    // Polygon meshes are inspected through the triangles the commands cut them into.
+    let (cut, fans_because) = cut_polygons(&soup);
+    let (triangles, polygon_of) = (&cut.triangles, &cut.face_of);
+    let mut inspection = surftopo_mesh::inspect(soup.positions.len(), triangles);
+    let cut_warning = fans_because.map(|problem| {
+        format!(
+            "{} (in the polygons cut by ear clipping; the fans of their corner 0, inspected \
+             here and used by the commands, make a surface)",
+            locate(path, &soup, &problem)
+        )
+    });
     let weld_hint = (!weld)
         .then(|| surftopo_mesh::geometry::weld_effect(&soup.positions, triangles, &inspection))
         .flatten()
@@ -274,57 +280,6 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         weld_hint,
         surfaces,
     })
-}
-
-/// The triangles a soup is inspected through, the face of each, their inspection, and a
-/// warning when they are not the commands' ones: the triangles of `cut` (the commands' rule),
-/// unless they have a combinatorial problem that the fan of each polygon's corner 0 does not
-/// (a polygon mesh that is a surface, whose polygons the rule cuts into a non-manifold edge or
-/// a duplicate triangle: a quad with a flat triangle on each diagonal next to another): then the
-/// fans, with a warning naming the cut's first problem, which the commands that need triangles
-/// refuse.
-fn polygon_triangles(
-    path: &Path,
-    soup: &surftopo_io::PolygonSoup,
-    cut: &surftopo_mesh::PolygonTriangulation,
-) -> (
-    Vec<[u32; 3]>,
-    Vec<u32>,
-    surftopo_mesh::Inspection,
-    Option<String>,
-) {
-    let n = soup.positions.len();
-    let inspection = surftopo_mesh::inspect(n, &cut.triangles);
-    if cut.is_identity() || inspection.is_combinatorially_valid() {
-        return (cut.triangles.clone(), cut.face_of.clone(), inspection, None);
-    }
-    let (fan, fan_of) = fan_triangles(soup);
-    let fan_inspection = surftopo_mesh::inspect(n, &fan);
-    if !fan_inspection.is_combinatorially_valid() {
-        return (cut.triangles.clone(), cut.face_of.clone(), inspection, None);
-    }
-    let first = inspection
-        .problems
-        .first()
-        .map(|p| locate(path, soup, &renumber_face(p.clone(), &cut.face_of)))
-        .unwrap_or_default();
-    let warning = format!(
-        "{first} (in the triangles the commands that need triangles cut the polygons into,          which they refuse; the polygons' fans, inspected here, make a surface)"
-    );
-    (fan, fan_of, fan_inspection, Some(warning))
-}
-
-/// The fan of each face's corner 0, with the face of each triangle.
-fn fan_triangles(soup: &surftopo_io::PolygonSoup) -> (Vec<[u32; 3]>, Vec<u32>) {
-    let mut triangles = Vec::with_capacity(soup.face_count());
-    let mut face_of = Vec::with_capacity(soup.face_count());
-    for (k, face) in soup.faces().enumerate() {
-        for i in 1..face.len().saturating_sub(1) {
-            triangles.push([face[0], face[i], face[i + 1]]);
-            face_of.push(k as u32);
-        }
-    }
-    (triangles, face_of)
 }
 
 /// The warning of a near-degenerate face, with its file, line and face.
