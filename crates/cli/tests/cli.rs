@@ -396,6 +396,7 @@ fn demo_shows_every_capability() {
         "quad --objective quality ",
         "quad --objective quality-fast ",
         "delaunay --method flip ",
+        "delaunay (polygons, a loose vertex)",
         "delaunay --method voronoi ",
         "delaunay --method dubois --exact ",
         "delaunay --method auto ",

@@ -76,6 +76,7 @@ impl Demo {
         self.irreducible(&input)?;
         self.other_surfaces()?;
         self.quad(&input)?;
+        self.exported()?;
         let tori = self.flat_tori()?;
         self.delaunay(&input, &tori)?;
         self.isometric(&input, &tori)?;
@@ -497,6 +498,45 @@ impl Demo {
             })?;
         }
         Ok(())
+    }
+
+    /// A mesh as modellers export them: a pentagonal prism (two pentagons, five quads) whose
+    /// vertex list has a vertex in no face; `delaunay` cuts the polygons into triangles and
+    /// writes the Laplacian on the file's vertex numbering (an empty row for the loose vertex).
+    fn exported(&self) -> anyhow::Result<()> {
+        let path = self.path("prism.obj");
+        let mut text = String::from("v 0 0 5\n");
+        for z in [0.0, 1.0] {
+            for k in 0..5 {
+                let t = std::f64::consts::TAU * f64::from(k) / 5.0;
+                text += &format!("v {} {} {z}\n", t.cos(), t.sin());
+            }
+        }
+        text += "f 6 5 4 3 2\nf 7 8 9 10 11\n";
+        for k in 0..5 {
+            let (a, b) = (k + 2, (k + 1) % 5 + 2);
+            text += &format!("f {a} {b} {} {}\n", b + 5, a + 5);
+        }
+        std::fs::write(&path, text).map_err(|e| crate::failure::unwritable(&path, &e))?;
+        Self::label("delaunay (polygons, a loose vertex)")?;
+        emit("[--laplacian: 11 rows, row 0 empty] ")?;
+        delaunay::run(&delaunay::Args {
+            input: path,
+            output: None,
+            tessellation: None,
+            laplacian: Some(self.path("prism-laplacian.mtx")),
+            mass: None,
+            max_flips: None,
+            mollify: None,
+            weld: crate::args::WeldArg { weld: false },
+            json: crate::args::JsonArg { json: false },
+            reduced: None,
+            method: delaunay::MethodOptions {
+                method: delaunay::Method::Flip,
+                exact: false,
+                faithful: false,
+            },
+        })
     }
 
     /// `isometric` on an isometric and a non-isometric pair of flat tori (exact, Dubois'
