@@ -211,36 +211,16 @@ pub fn explain_limit(error: surftopo_io::IoError) -> anyhow::Error {
     }
 }
 
-/// The input face a build error names, if any (mutable, to renumber it).
-fn face_of(error: &mut BuildError) -> Option<&mut usize> {
-    match error {
-        BuildError::IndexOutOfRange { face, .. }
-        | BuildError::RepeatedVertex { face, .. }
-        | BuildError::DuplicateFace { face, .. }
-        | BuildError::BoundaryEdge { face, .. }
-        | BuildError::NonManifoldEdge { face, .. }
-        | BuildError::NonOrientable { face, .. }
-        | BuildError::Disconnected { face, .. }
-        | BuildError::NotTriangle { face, .. }
-        | BuildError::ZeroArea { face } => Some(face),
-        _ => None,
-    }
-}
-
 /// Renumbers the faces a build error names through `map` (e.g. triangle -> polygon).
-pub fn renumber_face(mut error: BuildError, map: &[u32]) -> BuildError {
-    if let BuildError::DuplicateFace { duplicate_of, .. } = &mut error {
-        *duplicate_of = map[*duplicate_of] as usize;
-    }
-    if let Some(face) = face_of(&mut error) {
-        *face = map[*face] as usize;
-    }
-    error
+pub fn renumber_face(error: BuildError, map: &[u32]) -> BuildError {
+    error.on_faces(map)
 }
 
 /// Describes a build error with the file name and, where known, the line of the face it names.
 pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
-    let line = face_of(&mut error.clone())
+    let line = error
+        .clone()
+        .face_mut()
         .and_then(|f| soup.face_lines.get(*f))
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
@@ -278,42 +258,11 @@ impl Triangulated {
     }
 }
 
-/// The triangles of a soup's faces, for the commands that need triangles and for `info`: a
-/// triangle as it is; polygons cut by [`surftopo_mesh::triangulate_polygons`], unless the cut
-/// has a combinatorial problem (a non-manifold edge, a duplicate triangle: quads whose both cuts
-/// have a flat triangle, side by side, as a pairing of flipped triangles can make) that the fan
-/// of each polygon's corner 0 does not have: then the fans, with the cut's first problem (on the
-/// soup's faces) as the second value.
+/// The triangles of a soup's faces, for the commands that need triangles and for `info`
+/// ([`surftopo_mesh::triangulate_polygons_as_surface`]: the fans of corner 0, with the reason,
+/// when ear clipping makes no surface and they do).
 pub fn cut_polygons(soup: &PolygonSoup) -> (PolygonTriangulation, Option<BuildError>) {
-    let cut = surftopo_mesh::triangulate_polygons(&soup.positions, soup.faces());
-    if cut.is_identity() {
-        return (cut, None);
-    }
-    let n = soup.positions.len();
-    let inspection = surftopo_mesh::inspect(n, &cut.triangles);
-    if inspection.is_combinatorially_valid() {
-        return (cut, None);
-    }
-    let mut fans = PolygonTriangulation {
-        polygons: cut.polygons,
-        irregular: cut.irregular,
-        ..PolygonTriangulation::default()
-    };
-    for (k, face) in soup.faces().enumerate() {
-        for i in 1..face.len().saturating_sub(1) {
-            fans.triangles.push([face[0], face[i], face[i + 1]]);
-            fans.face_of.push(k as u32);
-        }
-    }
-    if !surftopo_mesh::inspect(n, &fans.triangles).is_combinatorially_valid() {
-        return (cut, None);
-    }
-    let problem = inspection
-        .problems
-        .into_iter()
-        .next()
-        .map(|p| renumber_face(p, &cut.face_of));
-    (fans, problem)
+    surftopo_mesh::triangulate_polygons_as_surface(&soup.positions, soup.faces())
 }
 
 /// [`cut_polygons`], with a note on stderr saying how many polygons were cut (and when the fans

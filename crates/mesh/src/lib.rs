@@ -46,7 +46,10 @@ pub use cover::{
 pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
-pub use polygons::{PolygonTriangulation, triangulate_polygon, triangulate_polygons};
+pub use polygons::{
+    PolygonTriangulation, triangulate_polygon, triangulate_polygons,
+    triangulate_polygons_as_surface,
+};
 pub use printable::printable;
 pub use surface::Surface;
 pub use topology::{Outgoing, SurfaceMesh};

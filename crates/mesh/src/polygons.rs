@@ -136,6 +136,47 @@ pub fn triangulate_polygons<'a>(
     out
 }
 
+/// [`triangulate_polygons`], unless its triangles have a combinatorial problem (a non-manifold
+/// edge, a duplicate triangle: quads whose both cuts have a flat triangle, side by side, as a
+/// pairing of flipped triangles can make) that the fan of each polygon's corner 0 does not have:
+/// then those fans, with the first problem of the rule's triangles (naming the polygon) as the
+/// second value. Both are deterministic; the fans have no geometric guarantee (the rule's
+/// triangles were no surface, which is worse for every algorithm that needs one).
+pub fn triangulate_polygons_as_surface<'a>(
+    positions: &[Point3],
+    faces: impl IntoIterator<Item = &'a [u32]>,
+) -> (PolygonTriangulation, Option<crate::BuildError>) {
+    let faces: Vec<&[u32]> = faces.into_iter().collect();
+    let cut = triangulate_polygons(positions, faces.iter().copied());
+    if cut.is_identity() {
+        return (cut, None);
+    }
+    let n = positions.len();
+    let inspection = crate::inspect(n, &cut.triangles);
+    if inspection.is_combinatorially_valid() {
+        return (cut, None);
+    }
+    let mut fans = PolygonTriangulation {
+        polygons: cut.polygons,
+        irregular: cut.irregular,
+        ..PolygonTriangulation::default()
+    };
+    for (k, face) in faces.iter().enumerate() {
+        let added = face.len().saturating_sub(2);
+        fan(face, &mut fans.triangles);
+        fans.face_of.extend(std::iter::repeat_n(k as u32, added));
+    }
+    if !crate::inspect(n, &fans.triangles).is_combinatorially_valid() {
+        return (cut, None);
+    }
+    let problem = inspection
+        .problems
+        .into_iter()
+        .next()
+        .map(|p| p.on_faces(&cut.face_of));
+    (fans, problem)
+}
+
 /// The triangles of one polygon (corners in the polygon's order), by the module's rule.
 pub fn triangulate_polygon(positions: &[Point3], face: &[u32]) -> Vec<[u32; 3]> {
     triangulate_polygons(positions, [face]).triangles

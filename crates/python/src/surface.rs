@@ -78,7 +78,8 @@ enum PolygonsAs {
     List,
     /// An `(m, k_max)` array padded with -1, and the side counts.
     Padded,
-    /// Triangles: polygons cut by the commands' rule (`surftopo_mesh::triangulate_polygons`).
+    /// Triangles: polygons cut by the commands' rule
+    /// (`surftopo_mesh::triangulate_polygons_as_surface`).
     Triangles,
 }
 
@@ -132,7 +133,9 @@ pub fn read_mesh<'py>(
     match mode {
         PolygonsAs::Triangles => {
             let cut = py.detach(|| {
-                surftopo_mesh::triangulate_polygons(&soup.positions, soup.faces()).triangles
+                surftopo_mesh::triangulate_polygons_as_surface(&soup.positions, soup.faces())
+                    .0
+                    .triangles
             });
             items.push(index_array(py, &cut).into_any());
         }

@@ -175,3 +175,19 @@ def test_info_warns_and_hints_as_the_cli():
         surftopo.laplacian(needle, G)
     L, _ = surftopo.laplacian(needle, G, mollify=1e-6)
     assert L.shape == (4, 4)
+
+
+def test_quads_cut_into_no_surface_are_read_as_the_cli_reads_them(cli, tmp_path):
+    # LRS quads on the demo's input: ear clipping gives a duplicate triangle, the fans a surface;
+    # read_mesh(polygons="triangles") gives the CLI's triangles, so both Laplacians agree.
+    g2 = tmp_path / "g2.obj"
+    run_cli(cli, "generate", "genus", "--genus", "2", "--size", "2", "--flips", "1000",
+            "--seed", "7", "-o", g2)
+    quads = tmp_path / "q.obj"
+    run_cli(cli, "quad", g2, "--algorithm", "lrs", "-o", quads)
+    V, T = surftopo.read_mesh(quads, polygons="triangles")
+    info = surftopo.info(V, T)
+    assert info["genus"] == 2 and info["duplicate_faces"] == 0
+    V2, F2, stats = surftopo.irreducible(V, T)
+    assert stats["output"]["genus"] == 2
+    assert trimesh.load(quads, process=False, maintain_order=True).vertices.shape == V.shape
