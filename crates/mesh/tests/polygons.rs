@@ -439,3 +439,63 @@ fn two_quads_at_a_vertex_of_two_faces_cut_different_diagonals() {
         assert!(seen.insert(key), "{t:?} twice");
     }
 }
+
+#[test]
+fn quads_cut_into_a_duplicate_triangle_fall_back_to_their_fans() {
+    use surftopo_mesh::{BuildError, triangulate_polygons_as_surface};
+    // Two quads sharing the sides a–b and b–c (b in these two faces only), whose only cuts
+    // without a flat triangle (corners a, b, d, e collinear) both make the triangle a b c.
+    let [a, b, c, d, e] = [0u32, 1, 2, 3, 4];
+    let positions = [
+        [1.5, 5.0, 0.5],
+        [1.5, 5.0, 1.0],
+        [1.5, 4.5, 0.0],
+        [1.5, 5.0, 0.0],
+        [1.5, 5.0, 1.5],
+    ];
+    let faces: [&[u32]; 2] = [&[a, b, c, d], &[e, c, b, a]];
+    let cut = triangulate_polygons(&positions, faces);
+    let mut keys: Vec<[u32; 3]> = cut
+        .triangles
+        .iter()
+        .map(|t| {
+            let mut k = *t;
+            k.sort_unstable();
+            k
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.dedup();
+    assert_eq!(
+        keys.len(),
+        3,
+        "the rule's cut repeats a triangle: {:?}",
+        cut.triangles
+    );
+    let (fans, why) = triangulate_polygons_as_surface(&positions, faces);
+    assert_eq!(
+        fans.triangles,
+        vec![[a, b, c], [a, c, d], [e, c, b], [e, b, a]]
+    );
+    assert_eq!(fans.face_of, vec![0, 0, 1, 1]);
+    assert!(
+        matches!(
+            why,
+            Some(BuildError::DuplicateFace {
+                face: 1,
+                duplicate_of: 0
+            })
+        ),
+        "{why:?}"
+    );
+    // A mesh the rule cuts into a surface is returned as the rule cuts it.
+    let square: [&[u32]; 1] = [&[0, 1, 2, 3]];
+    let flat = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    let (same, why) = triangulate_polygons_as_surface(&flat, square);
+    assert_eq!((same, why), (triangulate_polygons(&flat, square), None));
+}
