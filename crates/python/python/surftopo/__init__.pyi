@@ -270,6 +270,8 @@ def quadrangulate(
 def laplacian(
     vertices: _Vertices,
     faces: _Faces,
+    method: str = "flip",
+    exact: bool = False,
     mollify: float | None = None,
     max_flips: int | None = None,
     format: str = "csr",
@@ -286,7 +288,10 @@ def laplacian(
     :class:`InvalidGeometryError` unless ``mollify`` (epsilon relative to the mean edge length)
     asks for intrinsic mollification; ``max_flips`` bounds the flips (:class:`FlipLimitError`).
     Matrices beyond double precision's range (areas that overflow or underflow: coordinates of
-    1e200 or 1e-200) raise :class:`InvalidGeometryError`, as the CLI refuses them.
+    1e200 or 1e-200) raise :class:`InvalidGeometryError`, as the CLI refuses them. ``method``
+    computes the Delaunay triangulation as in :func:`intrinsic_delaunay` (every method gives the
+    same ``L``); ``exact=True`` raises :class:`InvalidInputError`: a mesh's lengths are square
+    roots (use a :class:`Portalgon` given by exact corners with :func:`intrinsic_delaunay`).
 
     >>> V, F = surftopo.icosphere(2)
     >>> L, M = surftopo.laplacian(V, F)
@@ -300,14 +305,22 @@ def intrinsic_delaunay(
     vertices: Union[_Vertices, Portalgon, IntrinsicTriangulation],
     faces: _Faces | None = None,
     method: str = "flip",
+    exact: bool = False,
     mollify: float | None = None,
     max_flips: int | None = None,
 ) -> IntrinsicTriangulation:
     """The intrinsic Delaunay triangulation of a closed polyhedral surface.
 
     The surface is ``(V, F)``, or a triangular :class:`Portalgon` (``faces`` omitted).
-    ``method``: ``"flip"`` (Bobenko–Springborn edge flipping with robust half-angle formulas;
-    loops and multi-edges may appear). ``mollify`` and ``max_flips`` as in :func:`laplacian`.
+    ``method``, as ``surftopo delaunay --method``: ``"flip"`` (Bobenko–Springborn edge flipping
+    with robust half-angle formulas; loops and multi-edges may appear), ``"voronoi"`` (Dubois'
+    multi-source Voronoi wave and its dual: the tessellation cut into triangles), ``"dubois"``
+    (Dubois' Theorem 1: the reduction, then the wave; for needles), or ``"auto"`` (flipping unless
+    a triangle's aspect ratio exceeds 1e5, then ``"dubois"`` on a flat surface). ``exact=True``
+    computes in exact rational arithmetic (``"voronoi"``, ``"dubois"``, ``"auto"``) on a
+    :class:`Portalgon` given by exact corners; anything else raises :class:`InvalidInputError`.
+    Where double precision cannot finish the wave, :class:`NumericalBreakdownError`.
+    ``mollify`` and ``max_flips`` (flipping only) as in :func:`laplacian`.
 
     >>> t = surftopo.intrinsic_delaunay(surftopo.flat_torus(10.0))
     >>> t.flips  # Section 9 of the paper: T_x needs x - 1 flips
