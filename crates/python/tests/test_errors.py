@@ -69,8 +69,11 @@ def test_non_manifold_edge_and_disconnected_and_non_finite():
     assert caught.value.kind == "NonManifoldEdge" and caught.value.edge == (0, 1)
     two = np.vstack([V, V + 5.0])
     with pytest.raises(surftopo.InvalidMeshError, match="connected components") as caught:
-        surftopo.laplacian(two, np.vstack([F, F + 4]))
+        surftopo.intrinsic_delaunay(two, np.vstack([F, F + 4]))
     assert caught.value.face == 4
+    # laplacian takes the two pieces: one block each.
+    L, _ = surftopo.laplacian(two, np.vstack([F, F + 4]))
+    assert L[:4, 4:].nnz == 0 and (L[:4, :4] != surftopo.laplacian(V, F)[0]).nnz == 0
     W = V.copy()
     W[3, 2] = np.nan
     with pytest.raises(surftopo.InvalidMeshError, match="vertex 3: non-finite") as caught:
