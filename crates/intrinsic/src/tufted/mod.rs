@@ -157,7 +157,13 @@ pub fn tufted_laplacian(
     let mut weights = weights_from_tan_half_sq(&tri, &t2);
     weights.iter_mut().for_each(|w| *w *= 0.5);
     let n = positions.len();
-    let laplacian = assemble_laplacian(tri.mesh(), &weights, &cover.input_vertex, n);
+    let (mesh, rows) = (tri.mesh(), &cover.input_vertex);
+    let laplacian = assemble_laplacian(n, || {
+        mesh.edges().map(|e| {
+            let [a, b] = mesh.edge_vertices(e).map(|v| rows[v.idx()] as usize);
+            (a, b, weights[e.idx()])
+        })
+    });
     let mut mass = lumped_mass_on_rows(&tri, &cover.input_vertex, n);
     mass.iter_mut().for_each(|m| *m *= 0.5);
     Ok(TuftedLaplacian {
