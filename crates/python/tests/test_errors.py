@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -65,8 +67,11 @@ def test_non_manifold_edge_and_disconnected_and_non_finite():
     V, F = surftopo.tetrahedron()
     fin = np.vstack([V, [[1.0, 1.0, 1.0]]])
     with pytest.raises(surftopo.InvalidMeshError, match="non-manifold edge") as caught:
-        surftopo.laplacian(fin, np.vstack([F, [[0, 1, 4]]]))
+        surftopo.laplacian(fin, np.vstack([F, [[0, 1, 4]]]), tufted=False)
     assert caught.value.kind == "NonManifoldEdge" and caught.value.edge == (0, 1)
+    # By default, the tufted cover takes it, with a warning.
+    with pytest.warns(UserWarning, match="not a manifold"):
+        surftopo.laplacian(fin, np.vstack([F, [[0, 1, 4]]]))
     two = np.vstack([V, V + 5.0])
     with pytest.raises(surftopo.InvalidMeshError, match="connected components") as caught:
         surftopo.intrinsic_delaunay(two, np.vstack([F, F + 4]))
@@ -105,10 +110,14 @@ def test_two_triangle_sphere_is_refused():
     # are the only non-simplicial closed soup, and building refuses it for every function.
     V = np.eye(3)
     F = np.array([[0, 1, 2], [0, 2, 1]])
-    for call in (surftopo.irreducible, surftopo.quadrangulate, surftopo.laplacian):
+    refusing = functools.partial(surftopo.laplacian, tufted=False)
+    for call in (surftopo.irreducible, surftopo.quadrangulate, refusing):
         with pytest.raises(surftopo.InvalidMeshError) as caught:
             call(V, F)
         assert caught.value.kind == "DuplicateFace" and caught.value.face == 1
+    # laplacian's default takes it through the tufted cover (a doubled triangle), with a warning.
+    with pytest.warns(UserWarning, match="not a manifold"):
+        surftopo.laplacian(V, F)
 
 
 def test_bad_names_list_the_allowed_values():
