@@ -257,6 +257,64 @@ fn maximum_on<G: DualGraph + ?Sized>(
     Ok((stats, mates, barrier))
 }
 
+/// Moves the unmatched nodes of a maximum matching to nodes where `prefer` holds, along even
+/// alternating paths, and returns the nodes so reached, now unmatched instead of their trees'
+/// roots. The barrier's search (see [`augment_to_maximum`]) grows one alternating tree from each
+/// unmatched node; every even node of a tree can be left unmatched instead of its root by
+/// flipping the even path between them (Tarjan's `path`, through blossoms), which keeps the
+/// matching's size. In each tree that holds an even node where `prefer` holds, the first such
+/// node in breadth-first order is chosen (the root itself when it qualifies). The trees are
+/// disjoint, so the paths of different trees are flipped independently. Augments first if the
+/// matching is not maximum. O(n α(n)).
+///
+/// # Errors
+/// [`AugmentError::BadPairing`] when the pairing does not fit the graph (nothing is changed).
+pub fn shift_unmatched<G: DualGraph + ?Sized>(
+    graph: &G,
+    pairing: &mut Pairing,
+    prefer: impl Fn(u32) -> bool,
+) -> Result<Vec<u32>, AugmentError> {
+    if pairing.mate.len() != graph.node_slots() {
+        return Err(AugmentError::BadPairing(format!(
+            "{} mates for {} node slots",
+            pairing.mate.len(),
+            graph.node_slots()
+        )));
+    }
+    let mut mates = mates_of(graph, pairing)?;
+    let mut search = Search::new(graph.node_slots());
+    let mut stats = AugmentStats::default();
+    let _ = barrier(graph, &mut mates, &mut search, &mut stats);
+    // The chosen node of each tree, in the order of the trees' first even nodes.
+    let mut chosen: Vec<(u32, u32)> = Vec::new();
+    let mut taken = vec![false; graph.node_slots()];
+    for &v in &search.queue {
+        if search.label(v) != EVEN || !prefer(v) {
+            continue;
+        }
+        let root = search.state[v as usize][ROOT];
+        if !std::mem::replace(&mut taken[root as usize], true) {
+            chosen.push((v, root));
+        }
+    }
+    for &(v, root) in &chosen {
+        if v == root {
+            continue;
+        }
+        search.path.clear();
+        search.collect(graph, &mates, v, root);
+        for &[f, a, b] in &search.path {
+            mates[a as usize] = [f, b];
+            mates[b as usize] = [f, a];
+        }
+        mates[v as usize] = [NONE, NONE];
+    }
+    for (m, [e, _]) in pairing.mate.iter_mut().zip(&mates) {
+        *m = *e;
+    }
+    Ok(chosen.into_iter().map(|(v, _)| v).collect())
+}
+
 /// The Tutte–Berge barrier of a maximum matching `mates`: one search from all unmatched nodes at
 /// once (augmenting along any path it still finds, and searching again), whose odd nodes are the
 /// barrier A, in increasing order. With no augmenting path left, every even node lies in a

@@ -42,6 +42,7 @@ pub mod weighted;
 
 pub use augment::{
     AugmentError, AugmentStats, AugmentStrategy, augment_to_maximum, augment_to_perfect,
+    shift_unmatched,
 };
 pub use cubic_graph::{CubicGraph, GraphError};
 pub use diks_stanczyk::{DsStats, diks_stanczyk, diks_stanczyk_avoiding, diks_stanczyk_with_stats};

@@ -87,7 +87,10 @@ fn dual_from_triangles(triangles: &[[u32; 3]]) -> (Vec<Vec<u32>>, Vec<usize>) {
     for (f, t) in triangles.iter().enumerate() {
         for i in 0..3 {
             let (a, b) = (t[i], t[(i + 1) % 3]);
-            faces_of.entry([a.min(b), a.max(b)]).or_default().push(f as u32);
+            faces_of
+                .entry([a.min(b), a.max(b)])
+                .or_default()
+                .push(f as u32);
         }
     }
     let mut neighbours = vec![Vec::new(); triangles.len()];
@@ -162,7 +165,12 @@ fn the_surface_dual_is_the_dual_of_the_triangles() {
         // The coned closure's dual is cubic: no loop, three neighbours each.
         let coned = SurfaceDual::coned(&cover);
         for v in (0..coned.node_slots() as u32).filter(|&v| coned.is_node(v)) {
-            assert!(coned.adjacent(v).iter().all(|&(_, w)| w != v && coned.is_node(w)));
+            assert!(
+                coned
+                    .adjacent(v)
+                    .iter()
+                    .all(|&(_, w)| w != v && coned.is_node(w))
+            );
         }
         let cones = coned.node_count() - triangles.len();
         assert_eq!(cones, boundary.iter().sum::<usize>(), "{name}");
@@ -172,8 +180,8 @@ fn the_surface_dual_is_the_dual_of_the_triangles() {
 /// Checks a maximum pairing: the verifier accepts it with its barrier, and it leaves as many
 /// nodes unmatched as petgraph's maximum matching does. Returns the unmatched nodes.
 fn check_maximum<G: DualGraph>(name: &str, graph: &G, pairing: Pairing, barrier: &[u32]) -> usize {
-    let verified = verify_maximum_pairing(graph, pairing, barrier)
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let verified =
+        verify_maximum_pairing(graph, pairing, barrier).unwrap_or_else(|e| panic!("{name}: {e}"));
     let best = graph.node_count() - 2 * petgraph_maximum(graph);
     assert_eq!(verified.unmatched(), best, "{name}");
     for c in verified.components() {
@@ -277,10 +285,7 @@ impl Sparse {
             }
         }
         Sparse {
-            adjacency: adjacency
-                .into_iter()
-                .map(|p| [p[0], p[1], p[2]])
-                .collect(),
+            adjacency: adjacency.into_iter().map(|p| [p[0], p[1], p[2]]).collect(),
             ends,
         }
     }
@@ -323,7 +328,12 @@ fn random_sparse_graphs_pair_to_petgraph_maximum() {
         for strategy in STRATEGIES {
             let mut pairing = simple_greedy(&graph, seed);
             let (_, barrier) = augment_to_maximum(&graph, &mut pairing, strategy).unwrap();
-            check_maximum(&format!("seed {seed}, {strategy:?}"), &graph, pairing, &barrier);
+            check_maximum(
+                &format!("seed {seed}, {strategy:?}"),
+                &graph,
+                pairing,
+                &barrier,
+            );
         }
     }
 }

@@ -20,8 +20,10 @@
 
 mod error;
 mod lrs;
+mod lrs_surface;
 mod quadrangulate;
 pub mod quality;
+mod surface;
 
 pub use error::QuadError;
 pub use lrs::{Expansion, ExpansionCases, expand};
@@ -31,6 +33,10 @@ pub use quadrangulate::{
 pub use quality::{
     QuadFigures, QualityObjective, QualityQuads, QualityReport, QualitySummary, pair_costs,
     quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
+};
+pub use surface::{
+    AllQuads, ComponentQuads, SurfaceOptions, SurfaceQuads, all_quads, quadrangulate_surface,
+    surface_vertex_count,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

@@ -1,0 +1,120 @@
+//! Quadrangulations of surfaces with boundary, non-orientable surfaces and files of several
+//! pieces, by every algorithm, with and without all quads, checked by the independent checks of
+//! `support::check_surface_result` (every triangle used once, the quads' corner order, maximality
+//! against petgraph, the figures), on every kind of surface `generate` makes and on open real
+//! meshes (holes cut into the shared meshes).
+
+mod support;
+
+use support::check_surface_result;
+use surftopo_mesh::generators::{
+    annulus, copies, crosscaps, cut_holes, disk, genus_surface, klein_bottle, mobius_band,
+    projective_plane, random_flips_covered, torus,
+};
+use surftopo_mesh::{ClosedCover, CoveredSurface, SurfaceKind};
+use surftopo_quad::{QuadAlgorithm, SurfaceOptions, quadrangulate_surface};
+
+/// A triangle fan with an ear on each side of its middle triangle (the dual is K_{1,3}: two
+/// triangles stay unpaired).
+fn three_ears() -> Vec<[u32; 3]> {
+    vec![[0, 1, 2], [1, 0, 3], [2, 1, 4], [0, 2, 5]]
+}
+
+fn cover_of(triangles: &[[u32; 3]]) -> (ClosedCover, Vec<SurfaceKind>) {
+    let n = triangles.iter().flatten().max().map_or(0, |&v| v + 1) as usize;
+    let (cover, report) = ClosedCover::from_triangles(n, triangles).unwrap();
+    (cover, report.surfaces)
+}
+
+/// Every kind of surface `generate` makes, small, with a name: open, non-orientable, closed
+/// non-orientable, several pieces, odd and deficient ones.
+fn surfaces() -> Vec<(String, Vec<[u32; 3]>)> {
+    let mut out = vec![
+        ("three ears".to_string(), three_ears()),
+        ("lone triangle".to_string(), vec![[0, 1, 2]]),
+    ];
+    let mut odd = disk(5).cover.surface_triangles();
+    odd.pop();
+    out.push(("odd disk".to_string(), odd));
+    let flipped = |s: CoveredSurface, seed| random_flips_covered(&s, 40, seed);
+    for (name, surface) in [
+        ("disk", disk(4)),
+        ("annulus", annulus(9, 3)),
+        ("Möbius band", mobius_band(9, 3)),
+        ("projective plane", projective_plane()),
+        ("Klein bottle", klein_bottle(8, 6)),
+        ("N3", crosscaps(3)),
+        ("two Möbius bands", copies(&mobius_band(7, 2), 2)),
+        ("two tori", copies(&CoveredSurface::from(torus(6, 4)), 2)),
+        ("flipped Klein bottle", flipped(klein_bottle(10, 8), 3)),
+        ("flipped annulus", flipped(annulus(12, 5), 4)),
+    ] {
+        out.push((name.to_string(), surface.cover.surface_triangles()));
+    }
+    for seed in 0..3 {
+        let (holed, _) = cut_holes(&klein_bottle(14, 10), 2 + seed as usize, seed);
+        out.push((
+            format!("Klein bottle with holes ({seed})"),
+            holed.cover.surface_triangles(),
+        ));
+        let genus = CoveredSurface::from(genus_surface(2, 4));
+        let (holed, _) = cut_holes(&genus, 1 + seed as usize, seed);
+        out.push((
+            format!("genus 2 with holes ({seed})"),
+            holed.cover.surface_triangles(),
+        ));
+    }
+    out
+}
+
+#[test]
+fn every_algorithm_on_every_surface_kind() {
+    let mut deficient = 0;
+    for (name, triangles) in surfaces() {
+        let (cover, pieces) = cover_of(&triangles);
+        let oriented = cover.surface_triangles();
+        for algorithm in QuadAlgorithm::all(7) {
+            for all_quads in [false, true] {
+                let options = SurfaceOptions {
+                    all_quads,
+                    ..SurfaceOptions::default()
+                };
+                let label = format!("{name}, {algorithm}, all quads {all_quads}");
+                let result = quadrangulate_surface(&cover, &pieces, algorithm, &options)
+                    .unwrap_or_else(|e| panic!("{label}: {e}"));
+                let paired = match &result.triangulation {
+                    Some(k) => k.surface_triangles(),
+                    None => oriented.clone(),
+                };
+                check_surface_result(&label, &triangles, &paired, &result, all_quads);
+                deficient += usize::from(result.stats.deficiency_lower_bound > 0);
+            }
+        }
+    }
+    assert!(deficient > 20, "{deficient}");
+}
+
+/// On a non-orientable piece the cover keeps the input's corner order, so a quad runs in the
+/// order of its first triangle as the input gives it.
+#[test]
+fn non_orientable_quads_follow_the_input_triangles() {
+    let band = mobius_band(9, 3).cover.surface_triangles();
+    let (cover, _) = cover_of(&band);
+    assert_eq!(cover.surface_triangles(), band);
+}
+
+/// The closed orientable path is the closed pipeline's: the same quads.
+#[test]
+fn a_closed_orientable_surface_takes_the_closed_pipeline() {
+    let surface = genus_surface(2, 4);
+    let cover = ClosedCover::plain(surface.mesh.clone());
+    for algorithm in QuadAlgorithm::all(3) {
+        let closed = surftopo_quad::quadrangulate(&surface.mesh, algorithm).unwrap();
+        let result =
+            quadrangulate_surface(&cover, &[], algorithm, &SurfaceOptions::default()).unwrap();
+        let quads: Vec<[u32; 4]> = closed.quads.iter().map(|q| q.map(|v| v.0)).collect();
+        assert_eq!(result.quads, quads, "{algorithm}");
+        assert_eq!(result.stats.unpaired_triangles, 0);
+        assert_eq!(result.components.len(), 1);
+    }
+}
