@@ -63,6 +63,7 @@ pub use verify::{
 };
 pub use verify_maximum::{ComponentPairing, MaximumPairing, verify_maximum_pairing};
 pub use weighted::{
-    Certificate, MinCostMatching, WeightedError, fast_min_cost_perfect_matching,
-    min_cost_perfect_matching, verify_min_cost_perfect_matching,
+    Certificate, MaximumCertificate, MinCostMatching, MinCostMaximumMatching, WeightedError,
+    fast_min_cost_maximum_matching, fast_min_cost_perfect_matching, min_cost_maximum_matching,
+    min_cost_perfect_matching, verify_min_cost_maximum_matching, verify_min_cost_perfect_matching,
 };

@@ -50,9 +50,19 @@ pub struct MaximumPairing {
     component: Vec<u32>,
     components: Vec<ComponentPairing>,
     flags: Vec<bool>,
+    /// Per node slot: whether it lies in an odd component of G − A.
+    odd_part: Vec<bool>,
 }
 
 impl MaximumPairing {
+    /// Whether node `v` lies in an odd component of G − A: the only nodes a maximum matching
+    /// can leave unmatched (every maximum matching matches the nodes of A into distinct odd
+    /// components, and the even components and the other odd ones inside themselves, the
+    /// bound being tight).
+    pub fn is_exposable(&self, v: u32) -> bool {
+        self.odd_part.get(v as usize).copied().unwrap_or(false)
+    }
+
     /// The pairing (one mate edge per node slot, `u32::MAX` for unmatched nodes).
     pub fn pairing(&self) -> &Pairing {
         &self.pairing
@@ -184,6 +194,11 @@ pub fn verify_maximum_pairing<G: DualGraph + ?Sized>(
             components[component[v as usize] as usize].odd_components += 1;
         }
     }
+    let odd_part: Vec<bool> = (0..slots as u32)
+        .map(|v| {
+            graph.is_node(v) && !in_barrier[v as usize] && rest_size[rest.find(v) as usize] % 2 == 1
+        })
+        .collect();
     for (index, figures) in components.iter_mut().enumerate() {
         let bound = figures.odd_components as i64 - figures.barrier_nodes as i64;
         if bound < figures.unmatched as i64 {
@@ -206,6 +221,7 @@ pub fn verify_maximum_pairing<G: DualGraph + ?Sized>(
         component,
         components,
         flags,
+        odd_part,
     })
 }
 

@@ -387,3 +387,156 @@ fn closed_pieces_pair_perfectly_with_an_empty_barrier() {
         assert!(verified.is_perfect());
     }
 }
+
+/// The least cost and the size of a maximum matching, by enumerating every matching (small
+/// graphs only): each node is left unmatched or matched to a free neighbour of larger id.
+fn brute_force_min_cost_maximum<G: DualGraph>(graph: &G, costs: &[i64]) -> (usize, i64) {
+    fn go<G: DualGraph>(
+        g: &G,
+        costs: &[i64],
+        v: u32,
+        used: &mut Vec<bool>,
+        size: usize,
+        cost: i64,
+        best: &mut (usize, i64),
+    ) {
+        if v as usize == g.node_slots() {
+            if size > best.0 || (size == best.0 && cost < best.1) {
+                *best = (size, cost);
+            }
+            return;
+        }
+        if used[v as usize] || !g.is_node(v) {
+            return go(g, costs, v + 1, used, size, cost, best);
+        }
+        go(g, costs, v + 1, used, size, cost, best);
+        used[v as usize] = true;
+        for (e, w) in g.adjacent(v) {
+            if w != v && w != u32::MAX && !used[w as usize] {
+                used[w as usize] = true;
+                go(
+                    g,
+                    costs,
+                    v + 1,
+                    used,
+                    size + 1,
+                    cost + costs[e as usize],
+                    best,
+                );
+                used[w as usize] = false;
+            }
+        }
+        used[v as usize] = false;
+    }
+    let mut best = (0, i64::MAX);
+    go(
+        graph,
+        costs,
+        0,
+        &mut vec![false; graph.node_slots()],
+        0,
+        0,
+        &mut best,
+    );
+    best
+}
+
+fn random_costs(edges: usize, seed: u64) -> Vec<i64> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xc057);
+    (0..edges)
+        .map(|_| {
+            if rng.random_bool(0.2) {
+                7
+            } else {
+                rng.random_range(0..1000)
+            }
+        })
+        .collect()
+}
+
+/// The exact pairing of least cost among the maximum ones equals a brute-force enumeration, its
+/// certificate passes the verifier, and the fast mode is as large and no cheaper.
+#[test]
+fn min_cost_maximum_matchings_are_optimal_and_certified() {
+    use surftopo_matching::{
+        fast_min_cost_maximum_matching, min_cost_maximum_matching, verify_min_cost_maximum_matching,
+    };
+    let mut small: Vec<(String, Sparse)> = Vec::new();
+    for seed in 0..60u64 {
+        let n = 6 + 2 * (seed as u32 % 5);
+        small.push((format!("sparse {seed}"), Sparse::random(n, 0.35, seed)));
+    }
+    let mut deficient = 0;
+    for (name, graph) in &small {
+        let costs = random_costs(graph.edge_slots(), name.len() as u64 * 31);
+        let exact = min_cost_maximum_matching(graph, &costs).unwrap();
+        let (size, cost) = brute_force_min_cost_maximum(graph, &costs);
+        assert_eq!(exact.edges.len(), size, "{name}");
+        assert_eq!(exact.cost, cost, "{name}");
+        assert_eq!(exact.unmatched, graph.node_count() - 2 * size, "{name}");
+        deficient += usize::from(exact.unmatched > 0);
+        let verified =
+            verify_min_cost_maximum_matching(graph, &costs, &exact.edges, &exact.certificate)
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(verified, cost, "{name}");
+        let fast = fast_min_cost_maximum_matching(graph, &costs).unwrap();
+        assert_eq!(fast.edges.len(), size, "{name}");
+        assert!(fast.cost >= cost, "{name}");
+    }
+    assert!(deficient > 20, "{deficient}");
+    // Surface duals.
+    for (name, triangles) in surfaces() {
+        let cover = cover_of(&triangles);
+        let dual = SurfaceDual::of_cover(&cover);
+        let costs = random_costs(dual.edge_slots(), triangles.len() as u64);
+        let exact = min_cost_maximum_matching(&dual, &costs).unwrap();
+        verify_min_cost_maximum_matching(&dual, &costs, &exact.edges, &exact.certificate)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let best = dual.node_count() - 2 * petgraph_maximum(&dual);
+        assert_eq!(exact.unmatched, best, "{name}");
+        if dual.node_count() <= 14 {
+            assert_eq!(
+                exact.cost,
+                brute_force_min_cost_maximum(&dual, &costs).1,
+                "{name}"
+            );
+        }
+    }
+}
+
+/// The verifier refuses a certificate whose parts are wrong: a matching that is not maximum, a
+/// dual raised, an exposure moved, a matching of larger cost.
+#[test]
+fn min_cost_maximum_certificates_are_checked() {
+    use surftopo_matching::weighted::CertificateError;
+    use surftopo_matching::{min_cost_maximum_matching, verify_min_cost_maximum_matching};
+    let mut checked = 0;
+    for seed in 0..40u64 {
+        let graph = Sparse::random(10 + 2 * (seed as u32 % 4), 0.35, seed + 100);
+        let costs = random_costs(graph.edge_slots(), seed);
+        let exact = min_cost_maximum_matching(&graph, &costs).unwrap();
+        if exact.unmatched == 0 {
+            continue;
+        }
+        checked += 1;
+        let verify = |edges: &[u32], certificate: &surftopo_matching::MaximumCertificate| {
+            verify_min_cost_maximum_matching(&graph, &costs, edges, certificate)
+        };
+        assert!(verify(&exact.edges, &exact.certificate).is_ok());
+        // One pair dropped: not maximum.
+        assert!(matches!(
+            verify(&exact.edges[1..], &exact.certificate),
+            Err(CertificateError::NotMaximum(_))
+        ));
+        // A node dual raised: some edge becomes infeasible or the objectives differ.
+        let mut raised = exact.certificate.clone();
+        raised.duals.node_duals[exact.certificate.exposed[0].0 as usize] += 2;
+        assert!(verify(&exact.edges, &raised).is_err());
+        // The exposure given to a node that is matched.
+        let mut moved = exact.certificate.clone();
+        let [a, _] = graph.endpoints(exact.edges[0]);
+        moved.exposed[0].0 = a;
+        assert!(verify(&exact.edges, &moved).is_err());
+    }
+    assert!(checked > 10, "{checked}");
+}
