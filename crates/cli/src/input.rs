@@ -14,9 +14,6 @@ pub struct Loaded {
     pub report: BuildReport,
     /// Vertices merged by welding.
     pub welded: usize,
-    /// The input's attributes, per-vertex ones on the surface's vertex ids
-    /// ([`crate::attributes::on_mesh`]).
-    pub attributes: surftopo_io::Attributes,
 }
 
 /// The name of standard input in messages.
@@ -248,12 +245,10 @@ pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
             positions[new.idx()] = soup.positions[old];
         }
     }
-    let attributes = crate::attributes::on_mesh(&soup, &report, mesh.vertex_slots());
     Ok(Loaded {
         surface: Surface { mesh, positions },
         report,
         welded,
-        attributes,
     })
 }
 

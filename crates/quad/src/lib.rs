@@ -35,8 +35,9 @@ pub use quality::{
     quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
 };
 pub use surface::{
-    AllQuads, ComponentQuads, SurfaceOptions, SurfaceQuads, all_quads, quadrangulate_surface,
-    surface_vertex_count,
+    AllQuads, ComponentQuads, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads, all_quads,
+    positions_with_added, quadrangulate_surface, quadrangulate_surface_by_quality,
+    quadrangulate_surface_with_quality, surface_pair_costs, surface_vertex_count,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

@@ -1,13 +1,15 @@
-//! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
+//! `surftopo quad`: a quadrangulation with the same vertices, by a maximum pairing of triangles
+//! (perfect on closed surfaces), on any compact surface.
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::Surface;
+use surftopo_mesh::geometry::Point3;
+use surftopo_mesh::{CoveredSurface, Surface, SurfaceKind};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate_by_quality,
-    quadrangulate_with_quality,
+    QuadAlgorithm, QuadError, QuadResult, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads,
+    positions_with_added, quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
 };
 
 /// The arguments of `quad`.
@@ -32,6 +34,10 @@ pub struct Args {
         ),
     )]
     pub objective: String,
+    /// On a surface with boundary, turn the triangles no pairing can pair into quads, each by one
+    /// vertex added at the midpoint of a boundary edge (the fewest such vertices).
+    #[arg(long)]
+    pub all_quads: bool,
 }
 
 /// The `--objective` of any perfect pairing by `--algorithm` (the others are
@@ -69,31 +75,74 @@ pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
     soup
 }
 
-/// The quads of `objective`, with their total cost, optimality gap (when known) and quality.
+/// The quadrangulation of a compact surface as a polygon soup: the surface's vertices (same
+/// order, same positions), then the vertices added for all quads (midpoints of their boundary
+/// edges); the quads, then the triangles left unpaired.
+pub fn surface_quad_soup(positions: &[Point3], result: &SurfaceQuads) -> PolygonSoup {
+    let mut soup = PolygonSoup::new();
+    soup.positions = positions_with_added(positions, result);
+    for quad in &result.quads {
+        soup.push_face(quad);
+    }
+    for triangle in &result.triangles {
+        soup.push_face(triangle);
+    }
+    soup
+}
+
+/// The input's per-vertex attributes for the output's vertex list: the surface's vertices
+/// keep theirs; an added vertex gets the mean of its edge's two ends (rounded for integer
+/// columns).
+fn attributes_with_added(
+    attributes: &surftopo_io::Attributes,
+    result: &SurfaceQuads,
+) -> Vec<surftopo_io::VertexProperty> {
+    attributes
+        .vertex
+        .iter()
+        .map(|p| {
+            let mut values = p.values[..result.vertex_count.min(p.values.len())].to_vec();
+            values.resize(result.vertex_count, 0.0);
+            for &[a, b] in &result.added {
+                let mean = 0.5 * (p.values[a as usize] + p.values[b as usize]);
+                values.push(if p.scalar.is_int() {
+                    mean.round()
+                } else {
+                    mean
+                });
+            }
+            surftopo_io::VertexProperty {
+                name: p.name.clone(),
+                scalar: p.scalar,
+                values,
+            }
+        })
+        .collect()
+}
+
+/// The quads of `objective` on any compact surface, with their total cost, optimality gap (when
+/// known) and quality.
 fn pair(
-    surface: &Surface,
+    surface: &CoveredSurface,
+    pieces: &[SurfaceKind],
     algorithm: QuadAlgorithm,
     objective: Option<QualityObjective>,
-) -> anyhow::Result<QualityQuads> {
-    let quality = match objective {
+    all_quads: bool,
+) -> anyhow::Result<SurfaceQualityQuads> {
+    let done = match objective {
         None => {
-            let q = quadrangulate_with_quality(&surface.mesh, &surface.positions, algorithm)
-                .map_err(|e| match e {
-                    QuadError::Internal(_) => anyhow::Error::new(e),
-                    other => invalid(other.to_string()),
-                })?;
-            return Ok(q);
+            let options = SurfaceOptions {
+                all_quads,
+                ..SurfaceOptions::default()
+            };
+            quadrangulate_surface_with_quality(surface, pieces, algorithm, &options)
         }
-        Some(quality) => quality,
+        Some(quality) => quadrangulate_surface_by_quality(surface, pieces, quality, all_quads),
     };
-    let q =
-        quadrangulate_by_quality(&surface.mesh, &surface.positions, quality).map_err(
-            |e| match e {
-                QuadError::Internal(_) => anyhow::Error::new(e),
-                other => invalid(other.to_string()),
-            },
-        )?;
-    Ok(q)
+    done.map_err(|e| match e {
+        QuadError::Internal(_) => anyhow::Error::new(e),
+        other => invalid(other.to_string()),
+    })
 }
 
 /// Runs `quad`.
@@ -102,19 +151,26 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     args.job.check_output()?;
     let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
-    let loaded = args.job.read()?;
+    let loaded = args.job.read_covered()?;
     if !loaded.report.dropped_vertices.is_empty() {
         stderr_println!(
             "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
         );
     }
+    let pieces = &loaded.report.surfaces;
     let paired = crate::progress::step("pairing triangles", || {
-        pair(&loaded.surface, algorithm, objective)
+        pair(
+            &loaded.surface,
+            pieces,
+            algorithm,
+            objective,
+            args.all_quads,
+        )
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    let mut soup = quad_soup(&loaded.surface, result);
-    soup.attributes.vertex = loaded.attributes.vertex.clone();
+    let mut soup = surface_quad_soup(&loaded.surface.positions, result);
+    soup.attributes.vertex = attributes_with_added(&loaded.attributes, result);
     args.job.write("quad", &soup, &loaded.attributes)?;
     let stats = &result.stats;
     if args.job.json.json {
@@ -131,8 +187,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         } else {
             String::new()
         };
+        // What a surface with boundary leaves (said only when it is not all quads).
+        let left = if stats.unpaired_triangles > 0 {
+            format!(
+                "; {} triangles left (no pairing leaves fewer)",
+                stats.unpaired_triangles
+            )
+        } else if stats.added_vertices > 0 {
+            format!(
+                "; {} vertices added on boundary edges (one per triangle no pairing could pair)",
+                stats.added_vertices
+            )
+        } else {
+            String::new()
+        };
         crate::output::emit(&format!(
-            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
+            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads{left}\n",
             crate::output::name(output),
             result.quads.len(),
             stats.faces,

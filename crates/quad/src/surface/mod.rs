@@ -23,7 +23,8 @@
 //!   the piece's *coned closure* (each boundary loop closed by a cone: cubic and bridgeless), its
 //!   pairs with a cone triangle are dropped, and augmenting paths complete the rest to a maximum
 //!   ([`coned`]). A closed piece, orientable or not, is paired by DS directly (its dual is cubic
-//!   and bridgeless). LRS: see [`crate::lrs_surface`].
+//!   and bridgeless). LRS runs its contraction on the cover and its expansion with a guard that
+//!   keeps the boundary, on orientable pieces; it refuses non-orientable ones (`lrs_surface.rs`).
 //! - **All quads** ([`SurfaceOptions::all_quads`], [`all_quads`]): each triangle left unpaired
 //!   becomes part of a quad by one vertex added on a boundary edge, the fewest vertices any
 //!   refinement by boundary-edge vertices needs.
@@ -39,6 +40,7 @@
 
 mod all_quads;
 mod coned;
+mod quality;
 
 use std::time::Instant;
 
@@ -53,6 +55,10 @@ use crate::lrs::ExpansionCases;
 use crate::{QuadAlgorithm, QuadError, QuadOptions, QuadStats};
 
 pub use all_quads::{AllQuads, all_quads};
+pub use quality::{
+    SurfaceQualityQuads, positions_with_added, quadrangulate_surface_by_quality,
+    quadrangulate_surface_with_quality, surface_pair_costs,
+};
 
 /// Options of [`quadrangulate_surface`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -66,8 +72,11 @@ pub struct SurfaceOptions {
 
 /// The figures of one piece of the surface (a connected component), in the order of its first
 /// triangle (as `surftopo info` lists the pieces).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct ComponentQuads {
+    /// What it is, as `surftopo info` names it (sphere, Möbius band, "genus 2 with 3 boundary
+    /// loops", ...), when the classification of the pieces was given.
+    pub name: String,
     /// Its triangles.
     pub faces: usize,
     /// Its quads.
@@ -141,7 +150,7 @@ pub fn quadrangulate_surface(
 ) -> Result<SurfaceQuads, QuadError> {
     let start = Instant::now();
     if cover.is_plain() && pieces.len() <= 1 {
-        return plain(cover, algorithm, &options.quad);
+        return plain(cover, pieces, algorithm, &options.quad);
     }
     if cover.surface_faces().next().is_none() {
         return Err(QuadError::Empty);
@@ -158,7 +167,7 @@ pub fn quadrangulate_surface(
         flipped_edges,
         expansion,
         karp_sipser,
-    } = pair_surface(cover, algorithm, &options.quad, start)?;
+    } = pair_surface(cover, pieces, algorithm, &options.quad, start)?;
     let paired_cover = flipped.as_ref().unwrap_or(cover);
     let verified = verify_maximum_pairing(&dual, pairing, &barrier).map_err(|err| {
         QuadError::Internal(format!(
@@ -166,6 +175,7 @@ pub fn quadrangulate_surface(
         ))
     })?;
     let mut result = quads_of_pairing(paired_cover, &dual, &verified);
+    result.name_pieces(pieces);
     if options.all_quads {
         result.complete(paired_cover, &dual, verified)?;
     }
@@ -194,11 +204,13 @@ pub fn quadrangulate_surface(
 /// A closed orientable surface in one piece: the closed pipeline, its quads as vertex ids.
 fn plain(
     cover: &ClosedCover,
+    pieces: &[SurfaceKind],
     algorithm: QuadAlgorithm,
     options: &QuadOptions,
 ) -> Result<SurfaceQuads, QuadError> {
     let result = crate::quadrangulate_with(&cover.mesh, algorithm, options)?;
     let faces = result.stats.faces;
+    let name = pieces.first().map(SurfaceKind::name).unwrap_or_default();
     let mut quads = SurfaceQuads {
         quads: result.quads.iter().map(|q| q.map(|v| v.0)).collect(),
         triangles: Vec::new(),
@@ -206,6 +218,7 @@ fn plain(
         vertex_count: surface_vertex_count(cover),
         stats: result.stats,
         components: vec![ComponentQuads {
+            name,
             faces,
             quads: result.quads.len(),
             ..ComponentQuads::default()
@@ -239,6 +252,7 @@ struct Paired {
 /// (KS: its own completion).
 fn pair_surface(
     cover: &ClosedCover,
+    pieces: &[SurfaceKind],
     algorithm: QuadAlgorithm,
     options: &QuadOptions,
     start: Instant,
@@ -263,7 +277,7 @@ fn pair_surface(
             (dual, pairing)
         }
         QuadAlgorithm::Lrs => {
-            let expanded = crate::lrs_surface::pair(cover)?;
+            let expanded = crate::lrs_surface::pair(cover, pieces)?;
             flipped_edges = expanded.flipped_edges;
             expansion = Some(expanded.cases);
             let dual = SurfaceDual::of_cover(&expanded.cover);
@@ -346,6 +360,7 @@ fn quads_of_pairing(
         .components()
         .iter()
         .map(|c| ComponentQuads {
+            name: String::new(),
             faces: c.nodes,
             quads: (c.nodes - c.unmatched) / 2,
             unpaired_triangles: c.unmatched,
@@ -368,6 +383,15 @@ fn quads_of_pairing(
 }
 
 impl SurfaceQuads {
+    /// Names the pieces after their classification (in the same order: first triangle).
+    pub(crate) fn name_pieces(&mut self, pieces: &[SurfaceKind]) {
+        if pieces.len() == self.components.len() {
+            for (c, kind) in self.components.iter_mut().zip(pieces) {
+                c.name = kind.name();
+            }
+        }
+    }
+
     /// Sums the pieces' figures into the stats (and lists the pieces there when there are
     /// several).
     pub(crate) fn fill_totals(&mut self) {
