@@ -170,6 +170,18 @@ fn lrs_keeps_the_boundary_on_many_open_surfaces() {
         let k = result.triangulation.as_ref().expect("LRS gives K");
         let label = format!("seed {seed}");
         check_surface_result(&label, &triangles, &k.surface_triangles(), &result, false);
+        // K leaves as few triangles as the input does (KS's maximum pairing of the input).
+        let ks = quadrangulate_surface(
+            &cover,
+            &pieces,
+            QuadAlgorithm::KarpSipser,
+            &SurfaceOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(
+            result.stats.deficiency_lower_bound, ks.stats.deficiency_lower_bound,
+            "{label}"
+        );
         // Away from the boundary the expansion pairs as on a closed surface: on the larger
         // inputs (a few short boundary loops) it leaves about 1%.
         if triangles.len() > 2000 {
