@@ -28,12 +28,17 @@ pub struct VertexArray<'py>(PyReadonlyArray2<'py, f64>);
 
 impl<'py> VertexArray<'py> {
     /// Takes `x` as float64 positions of shape `(n, 3)`.
+    ///
+    /// Strings, complex numbers, booleans and objects are refused (numpy would convert the first
+    /// silently and drop imaginary parts), so are arrays of another number of dimensions.
     pub fn extract(x: &Bound<'py, PyAny>) -> PyResult<Self> {
         let array: PyReadonlyArray2<'py, f64> = match x.extract() {
             Ok(a) => a,
-            Err(_) => asarray(x, Some("float64"))?.extract().map_err(|_| {
-                PyTypeError::new_err("vertices: expected a float array of shape (n, 3)")
-            })?,
+            Err(_) => {
+                let a = asarray(x, None)?;
+                check_dtype_and_dimensions("vertices", &a, "fiu", "(n, 3)")?;
+                a.call_method1("astype", ("float64",))?.extract()?
+            }
         };
         let shape = array.shape();
         if shape[1] != 3 {
@@ -142,13 +147,7 @@ fn extract_indices<'py>(x: &Bound<'py, PyAny>) -> PyResult<(IndexArray<'py>, [us
         Ok(a) => a,
         Err(_) => {
             let a = asarray(x, None)?;
-            let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
-            if kind != "i" && kind != "u" {
-                return Err(PyTypeError::new_err(format!(
-                    "faces: expected an integer array, got dtype {}",
-                    a.getattr("dtype")?.str()?
-                )));
-            }
+            check_dtype_and_dimensions("faces", &a, "iu", "(m, k)")?;
             a.call_method1("astype", ("int64",))?.extract()?
         }
     };
@@ -158,6 +157,39 @@ fn extract_indices<'py>(x: &Bound<'py, PyAny>) -> PyResult<(IndexArray<'py>, [us
     };
     let shape = [shape[0], shape[1]];
     Ok((array, shape))
+}
+
+/// Refuses an array whose dtype kind is not one of `kinds` (numpy's `dtype.kind`: `f` float,
+/// `i`/`u` integers) with a `TypeError`, and one that is not two-dimensional with an
+/// `InvalidInputError` saying the shape wanted.
+fn check_dtype_and_dimensions(
+    what: &str,
+    a: &Bound<'_, PyAny>,
+    kinds: &str,
+    shape: &str,
+) -> PyResult<()> {
+    let dtype = a.getattr("dtype")?;
+    let kind: String = dtype.getattr("kind")?.extract()?;
+    if !kinds.contains(kind.as_str()) {
+        let wanted = if kinds.contains('f') {
+            "real numbers"
+        } else {
+            "integers"
+        };
+        return Err(PyTypeError::new_err(format!(
+            "{what}: expected {wanted}, got an array of dtype {}",
+            dtype.str()?
+        )));
+    }
+    let dimensions: usize = a.getattr("ndim")?.extract()?;
+    if dimensions != 2 {
+        return Err(invalid(format!(
+            "{what}: expected a two-dimensional array of shape {shape}, got shape {}",
+            a.getattr("shape")?.str()?
+        ))
+        .into());
+    }
+    Ok(())
 }
 
 /// The `InvalidInputError` of a faces array of the wrong shape.

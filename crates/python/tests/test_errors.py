@@ -151,3 +151,22 @@ def test_portalgon_errors():
     with pytest.raises(surftopo.PortalgonError) as caught:
         surftopo.intrinsic_delaunay(surftopo.Portalgon.from_json(text))
     assert caught.value.polygon is not None
+
+
+def test_arrays_of_the_wrong_kind_or_shape_are_refused():
+    V, F = surftopo.tetrahedron()
+    with pytest.raises(surftopo.InvalidInputError, match=r"faces: expected a two-dimensional array of shape \(m, k\), got shape \(12,\)"):
+        surftopo.info(V, F.ravel())
+    with pytest.raises(surftopo.InvalidInputError, match=r"vertices: expected a two-dimensional array"):
+        surftopo.laplacian(V.ravel(), F)
+    with pytest.raises(TypeError, match="vertices: expected real numbers, got an array of dtype <U"):
+        surftopo.info(V.astype(str), F)
+    with pytest.raises(TypeError, match="vertices: expected real numbers, got an array of dtype complex128"):
+        surftopo.laplacian(V + 0j, F)
+    with pytest.raises(TypeError, match="vertices: expected real numbers, got an array of dtype bool"):
+        surftopo.info(V > 0, F)
+    with pytest.raises(TypeError, match="faces: expected integers, got an array of dtype float64"):
+        surftopo.info(V, F.astype(float))
+    # Lists of numbers and other real dtypes still work.
+    assert surftopo.info(V.tolist(), F.tolist())["valid"]
+    assert surftopo.info(V.astype(np.float32), F.astype(np.uint16))["valid"]

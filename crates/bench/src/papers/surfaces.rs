@@ -261,7 +261,10 @@ fn markdown(series: &[SeriesRow], counts: &[CountsRow]) -> String {
          genus h on non-orientable ones; here RS runs on the orientable double cover with the \
          vertex classes of the surface (each contraction made on both sheets). Inputs: N_h \
          (connected sums of 6-vertex projective planes) grown by random vertex splits to n \
-         triangles, then 3n random flips. `time / (h·n)` should stay flat where h·n dominates.\n\n",
+         triangles, then 3n random flips. `time / (h·n)` should stay flat where h·n dominates; ℓ \
+         (link tests) and ε (edges tested twice: 0) are the paper's counters. Random flips leave \
+         no memory locality in the vertex order, so wall-clock time also steps up where the \
+         input leaves the caches.\n\n",
     );
     md += &header(
         &[
