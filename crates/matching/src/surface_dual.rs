@@ -150,7 +150,7 @@ pub fn components_of<G: DualGraph + ?Sized>(graph: &G) -> (Vec<u32>, usize) {
     let mut number = vec![NONE; slots];
     let mut component = vec![NONE; slots];
     let mut count = 0;
-    for v in 0..slots {
+    for (v, slot) in component.iter_mut().enumerate() {
         if !graph.is_node(v as u32) {
             continue;
         }
@@ -159,7 +159,7 @@ pub fn components_of<G: DualGraph + ?Sized>(graph: &G) -> (Vec<u32>, usize) {
             number[root] = count;
             count += 1;
         }
-        component[v] = number[root];
+        *slot = number[root];
     }
     (component, count as usize)
 }
