@@ -2,9 +2,11 @@
 //!
 //! Quality: surftopo's maximum pairings (`count` = Karp–Sipser, `quality` = the exact maximum
 //! pairing of least cost, `quality-fast`) against Gmsh's Blossom recombination and Blender's
-//! join_triangles (`crates/quad/peer/quad_peers.py`), every output measured the same way (the
-//! corners of each quad in space, as `quality_peers` measures them): triangles left, median
-//! largest deviation from 90°, bad quads (a corner above 170° or below 10°), median η.
+//! join_triangles (`crates/quad/peer/quad_peers.py`; Gmsh with and without its topology
+//! optimisation and smoothing; a peer that fails is recorded with its message), every output
+//! measured the same way (the corners of each quad in space, as `quality_peers` measures
+//! them): triangles left, median largest deviation from 90°, bad quads (a corner above 170° or
+//! below 10°), median η.
 //!
 //! Speed, on the same dual graphs (the surface's dual, boundary sides left out): KS to a maximum
 //! (`karp_sipser_maximum_with`, its Tutte–Berge barrier included) against LEMON 1.3's
@@ -439,15 +441,28 @@ fn main() -> Result<(), Box<dyn Error>> {
         let (positions, soup) = surface.to_triangles();
         let input = work.join("input.off");
         write_off_triangles(&positions, &soup, &input)?;
-        rows.push(QualityRow::of_peer(
-            "Gmsh Blossom recombination",
-            &run_peer(python, "gmsh", &input)?,
-        ));
+        let mut tools = vec![
+            ("gmsh", "Gmsh Blossom recombination"),
+            ("gmsh-blossom", "Gmsh Blossom, pairing only"),
+        ];
         if blender {
-            rows.push(QualityRow::of_peer(
-                "Blender join_triangles",
-                &run_peer(python, "blender", &input)?,
-            ));
+            tools.push(("blender", "Blender join_triangles"));
+        }
+        for (tool, name) in tools {
+            match run_peer(python, tool, &input) {
+                Ok(output) => rows.push(QualityRow::of_peer(name, &output)),
+                Err(err) => {
+                    // A peer's crash is a result too: recorded, not fatal.
+                    let why = err.to_string();
+                    let why = why.lines().rfind(|l| !l.trim().is_empty()).unwrap_or("");
+                    eprintln!("{spec}: {name} failed: {why}");
+                    writeln!(
+                        quality_table,
+                        "| {spec} | {name} | {bound} | failed: {} | | | | | | |",
+                        why.trim().replace('|', "/")
+                    )?;
+                }
+            }
         }
         for r in &rows {
             let line = format!(
@@ -499,7 +514,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         writeln!(
             md,
             "## Triangles left and quad quality\n\nGmsh {} (`recombine()` with Blossom, as in \
-             `quality_peers`: its topology optimisation and smoothing included){}. Every output \
+             `quality_peers`: its topology optimisation and smoothing included, which move and \
+             remove vertices; and \"pairing only\", without them, as in `quality_bench`: its \
+             quads are pairs of the input's triangles){}; a peer that fails is listed with its \
+             message. Every output \
              measured the same way: the corners of each quad in space; dev = median over the \
              quads of max |corner − 90°|; bad = a corner above 170° or below 10°; η = Remacle et \
              al.'s quality; quads % = triangles in quads (Gmsh's relative to the input's \

@@ -195,3 +195,63 @@ fn lrs_keeps_the_boundary_on_many_open_surfaces() {
     }
     assert!(large >= 5, "{large}");
 }
+
+/// Open real meshes: holes cut into the small shared meshes (1,000–4,000 triangles; with
+/// `SURFTOPO_MESHES`), every algorithm with and without all quads, and both quality objectives,
+/// each checked by `check_surface_result` (maximality against petgraph); the exact objective's
+/// cost is at most the fast mode's and KS's, as an optimum among maximum pairings must be.
+#[test]
+fn every_algorithm_and_objective_on_open_real_meshes() {
+    use surftopo_quad::{QualityObjective, quadrangulate_surface_by_quality};
+    let mut tested = 0;
+    for (k, shared) in surftopo_testkit::shared_meshes()
+        .into_iter()
+        .filter(|m| (1_000..=4_000).contains(&m.faces))
+        .enumerate()
+    {
+        let closed = CoveredSurface::from(surftopo_testkit::load(&shared));
+        let (holed, cut) = cut_holes(&closed, 3 + k % 5, 17 + k as u64);
+        assert!(cut > 0, "{}", shared.file);
+        let (positions, triangles) = holed.to_triangles();
+        let (surface, report) = CoveredSurface::from_triangles(positions, &triangles).unwrap();
+        let pieces = report.surfaces;
+        let oriented = surface.cover.surface_triangles();
+        for algorithm in QuadAlgorithm::all(5) {
+            for all_quads in [false, true] {
+                let label = format!("{} with {cut} holes, {algorithm}, {all_quads}", shared.file);
+                let options = SurfaceOptions {
+                    all_quads,
+                    ..SurfaceOptions::default()
+                };
+                let result = quadrangulate_surface(&surface.cover, &pieces, algorithm, &options)
+                    .unwrap_or_else(|e| panic!("{label}: {e}"));
+                let paired = result
+                    .triangulation
+                    .as_ref()
+                    .map_or_else(|| oriented.clone(), ClosedCover::surface_triangles);
+                check_surface_result(&label, &triangles, &paired, &result, all_quads);
+            }
+        }
+        let ks = surftopo_quad::quadrangulate_surface_with_quality(
+            &surface,
+            &pieces,
+            QuadAlgorithm::KarpSipser,
+            &SurfaceOptions::default(),
+        )
+        .unwrap();
+        let mut costs = Vec::new();
+        for objective in [QualityObjective::Exact, QualityObjective::Fast] {
+            let label = format!("{} with {cut} holes, {objective:?}", shared.file);
+            let q = quadrangulate_surface_by_quality(&surface, &pieces, objective, false)
+                .unwrap_or_else(|e| panic!("{label}: {e}"));
+            check_surface_result(&label, &triangles, &oriented, &q.result, false);
+            costs.push(q.cost_units);
+        }
+        assert!(costs[0] <= costs[1], "{}: {costs:?}", shared.file);
+        assert!(costs[0] <= ks.cost_units, "{}: {costs:?}", shared.file);
+        tested += 1;
+    }
+    if std::env::var_os("SURFTOPO_MESHES").is_some() {
+        assert!(tested >= 5, "{tested}");
+    }
+}
