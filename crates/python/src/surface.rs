@@ -3,7 +3,7 @@
 //!
 //! Vertex indices in and out are the input's: a surface built from `(V, F)` drops unreferenced
 //! vertices (its vertex ids are the input indices without them, `surftopo_mesh::build`), so every
-//! index the libraries return is mapped back through [`Input::input_index`].
+//! index the libraries return is mapped back through [`input_index`].
 
 use crate::arrays::{self, VertexArray, index_array, positions_array, vector};
 use crate::errors::{Failure, invalid};
@@ -13,20 +13,12 @@ use std::path::PathBuf;
 use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox};
-use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, Surface, SurfaceKind, geometry};
+use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, SurfaceKind, geometry};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
     QuadAlgorithm, SurfaceOptions, positions_with_added, quadrangulate_surface_by_quality,
     quadrangulate_surface_with_quality,
 };
-
-/// A surface built from arrays, with the input index of each vertex id.
-pub struct Input {
-    /// The validated surface (vertex ids: input indices without the unreferenced vertices).
-    pub surface: Surface,
-    /// Input index of each vertex id.
-    pub input_index: Vec<u32>,
-}
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
 pub fn input_index(report: &BuildReport) -> Vec<u32> {
@@ -38,30 +30,6 @@ pub fn input_index(report: &BuildReport) -> Vec<u32> {
         }
     }
     index
-}
-
-impl Input {
-    /// Builds and validates the surface of `positions` and `triangles`.
-    pub fn build(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
-        let (surface, report) = Surface::from_triangles_with_report(positions.to_vec(), triangles)?;
-        Ok(Self {
-            surface,
-            input_index: input_index(&report),
-        })
-    }
-}
-
-/// Reads `(V, F)` arrays into a validated surface, with the GIL released for the build.
-fn input_surface(
-    py: Python<'_>,
-    vertices: &Bound<'_, PyAny>,
-    faces: &Bound<'_, PyAny>,
-) -> PyResult<Input> {
-    let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
-    let positions = vertices.positions();
-    py.detach(|| Input::build(&positions, &triangles))
-        .map_err(|f| f.into_pyerr(py))
 }
 
 /// Picks `name` among `choices` (`(name, value)`), or an `InvalidInputError` naming them.
