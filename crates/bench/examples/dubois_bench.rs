@@ -1,5 +1,6 @@
-//! Dubois' Theorem 1 (exact: `dubois::delaunay_tessellation_flat` on rational corners) side by
-//! side with edge flipping (`f64`), and `--method auto` against flipping on the shared meshes:
+//! Dubois' Theorem 1 (exact, on rational corners) side by side with edge flipping (`f64`), and
+//! `--method auto` against flipping on the shared meshes, every run through
+//! `surftopo_intrinsic::intrinsic_delaunay` as `surftopo delaunay` makes it:
 //!
 //! 1. Section 9's `T_x`, `x = 10, 10², …, 10¹⁸`: the exact pipeline's seconds (best of 3), `N`,
 //!    inner passes (total / 350·N), triangles after the reduction, wave events, the largest
@@ -13,8 +14,8 @@
 //!    caps (exact), the wave alone (exact, bounded events) and flipping (`f64`), each checked
 //!    against the known tessellation.
 //! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
-//!    (`flip_to_delaunay_unless_needle`: the needle test on the half-angle cache of flipping's
-//!    first pass): the median over 101 adjacent pairs of runs of the ratio within a pair.
+//!    (the needle test on the half-angle cache of flipping's first pass): the median over 101
+//!    adjacent pairs of runs of the ratio within a pair.
 //! 5. The shared meshes of at most 10 000 faces: Theorem 1 in `f64` (`--method dubois`) beside
 //!    flipping, the cost of Dubois where flipping is cheap.
 //!
@@ -32,18 +33,13 @@ use std::time::Instant;
 
 use serde_json::json;
 use surftopo_bench::papers::plot::{self, Axis, Plot, Series};
-use surftopo_intrinsic::dubois::{
-    FlatDelaunay, FlatDelaunayOptions, delaunay_tessellation_dubois, delaunay_tessellation_flat,
-};
 use surftopo_intrinsic::generators::{flat_torus, pillowcase};
 use surftopo_intrinsic::geometry::Rational;
-use surftopo_intrinsic::method_choice::{
-    Method, choose_method_for_needle, choose_method_for_triangulation,
-};
-use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, WaveOptions, to_f64, voronoi_delaunay};
+use surftopo_intrinsic::voronoi::{Sources, to_f64};
 use surftopo_intrinsic::{
-    DelaunayOptions, IntrinsicTriangulation, Portalgon, flip_to_delaunay,
-    flip_to_delaunay_unless_needle,
+    AnyPortalgon, DelaunayInput, DelaunayMethod, DelaunayOutput, DelaunayOutputs, DelaunayRequest,
+    IntrinsicDelaunayError, IntrinsicTriangulation, Portalgon, choose_method_for_triangulation,
+    intrinsic_delaunay,
 };
 
 /// Paired runs of `flip` and `auto` per shared mesh. The two differ by one scan of a cache, far below
@@ -80,6 +76,25 @@ fn lattice_torus(u: [Rational; 2], v: [Rational; 2]) -> Portalgon<Rational> {
     p
 }
 
+/// Best of `n` runs of `intrinsic_delaunay` on `tri` by `request`, in seconds (the copy of the
+/// input made before the clock starts), with the last result.
+fn timed_runs(
+    n: usize,
+    tri: &IntrinsicTriangulation,
+    request: &DelaunayRequest,
+) -> (Result<DelaunayOutput, IntrinsicDelaunayError>, f64) {
+    let mut best = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..n {
+        let input = DelaunayInput::Lengths(tri.clone());
+        let start = Instant::now();
+        let r = intrinsic_delaunay(input, request);
+        best = best.min(start.elapsed().as_secs_f64());
+        out = Some(r);
+    }
+    (out.expect("n ≥ 1"), best)
+}
+
 /// Best of `n` runs of `f`, in seconds, with the last result.
 fn best_of<T>(n: usize, mut f: impl FnMut() -> T) -> (T, f64) {
     let mut best = f64::INFINITY;
@@ -93,18 +108,54 @@ fn best_of<T>(n: usize, mut f: impl FnMut() -> T) -> (T, f64) {
     (out.expect("n ≥ 1"), best)
 }
 
+/// The request of a run by `method` from `vertices` asking for `outputs`.
+fn request(method: DelaunayMethod, vertices: Sources, outputs: DelaunayOutputs) -> DelaunayRequest {
+    DelaunayRequest {
+        method,
+        vertices,
+        outputs,
+        ..DelaunayRequest::default()
+    }
+}
+
+/// Only the tessellation.
+const TESSELLATION: DelaunayOutputs = DelaunayOutputs {
+    triangulation: false,
+    tessellation: true,
+    reduced: false,
+    laplacian: false,
+    mass: false,
+    figures: false,
+};
+
+/// Theorem 1 (V the singular vertices, the canonical tessellation) on an exact portalgon.
+fn dubois_exact(t: &Portalgon<Rational>) -> Result<DelaunayOutput, IntrinsicDelaunayError> {
+    let request = request(DelaunayMethod::Dubois, Sources::Singular, TESSELLATION);
+    intrinsic_delaunay(DelaunayInput::Exact(t.clone()), &request)
+}
+
 /// Theorem 1's exact pipeline on `⟨(1, 0), (a, b)⟩`, best of 3.
-fn exact_pipeline(a: &str, b: &str) -> (FlatDelaunay<Rational>, f64) {
+fn exact_pipeline(a: &str, b: &str) -> (DelaunayOutput, f64) {
     let t = lattice_torus([q("1"), q("0")], [q(a), q(b)]);
-    let options = FlatDelaunayOptions::default();
-    best_of(3, || {
-        delaunay_tessellation_flat(&t, &options).expect("flat")
-    })
+    best_of(3, || dubois_exact(&t).expect("flat"))
+}
+
+/// The exact tessellation of a run.
+fn exact_tessellation(out: &DelaunayOutput) -> &Portalgon<Rational> {
+    match &out.tessellation {
+        Some(AnyPortalgon::Exact(t)) => t,
+        _ => panic!("an exact tessellation is asked for"),
+    }
+}
+
+/// The wave's events of a run by the wave.
+fn wave_events(out: &DelaunayOutput) -> u64 {
+    out.wave.expect("a run by the wave").events
 }
 
 /// The table cells `ms | N | total / 350·N | triangles after reduction | wave events`.
-fn dubois_cells(out: &FlatDelaunay<Rational>, seconds: f64) -> String {
-    let rep = &out.reduction;
+fn dubois_cells(out: &DelaunayOutput, seconds: f64) -> String {
+    let rep = out.reduction.as_ref().expect("a dubois run");
     format!(
         "{:.3} | {} | {} / {} | {} | {}",
         seconds * 1e3,
@@ -112,14 +163,14 @@ fn dubois_cells(out: &FlatDelaunay<Rational>, seconds: f64) -> String {
         rep.inner_passes_total,
         rep.inner_passes_bound,
         rep.triangles_after_reduction,
-        out.delaunay.wave.events
+        wave_events(out)
     )
 }
 
 /// Whether the exact tessellation is one quadrilateral with squared sides `a, b, a, b` and right
 /// angles (the rectangle `√a × √b`).
-fn is_rectangle(t: &FlatDelaunay<Rational>, a: &str, b: &str) -> bool {
-    are_rectangles(&t.delaunay.tessellation, 1, a, b)
+fn is_rectangle(t: &DelaunayOutput, a: &str, b: &str) -> bool {
+    are_rectangles(exact_tessellation(t), 1, a, b)
 }
 
 /// Whether the exact tessellation is `count` quadrilaterals, each with squared sides `a, b, a, b`
@@ -168,17 +219,26 @@ fn flip_and_check(
     expected: [f64; 3],
     name: &str,
 ) -> (Option<u64>, Option<f64>, String) {
-    let options = DelaunayOptions {
+    let request = DelaunayRequest {
         max_flips: Some(10_000_000),
-        ..DelaunayOptions::default()
+        ..request(
+            DelaunayMethod::Flip,
+            Sources::All,
+            DelaunayOutputs {
+                triangulation: true,
+                figures: true,
+                ..DelaunayOutputs::default()
+            },
+        )
     };
-    let ((result, tri), seconds) = best_of(runs, || {
-        let mut t = tri.clone();
-        (flip_to_delaunay(&mut t, &options), t)
+    let (result, seconds) = best_of(runs, || {
+        intrinsic_delaunay(DelaunayInput::Lengths(tri.clone()), &request)
     });
     match result {
         Err(e) => (None, Some(seconds), format!("error: {e}")),
-        Ok(report) => {
+        Ok(out) => {
+            let flips = out.stats.expect("asked for").flips;
+            let tri = out.triangulation.expect("asked for");
             let error = tri
                 .mesh()
                 .faces()
@@ -195,7 +255,7 @@ fn flip_and_check(
             } else {
                 format!("wrong: lengths off by {error:.1e}")
             };
-            (Some(report.flips), Some(seconds), verdict)
+            (Some(flips), Some(seconds), verdict)
         }
     }
 }
@@ -217,28 +277,30 @@ fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
         "\n## Dubois where flipping is cheap: the shared meshes of at most {SMALL_MESH_FACES} faces\n\n\
          Theorem 1 in `f64` as `surftopo delaunay --method dubois` runs it (a cap at every vertex, \
          Proposition 2 in double-double, the wave from every vertex; one run) beside flipping \
-         (`flip_to_delaunay`, best of 5), in one run. `T′ / F`: the triangles Proposition 2's \
+         (best of 5), in one run. `T′ / F`: the triangles Proposition 2's \
          reduction hands to the wave, per input face.\n\n\
          | mesh | F | flip ms | Dubois ms | Dubois / flip | N | inner passes | T′ / F | wave events |\n\
          |---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
     )
     .expect("write to a string");
-    let options = FlatDelaunayOptions {
-        sources: Sources::All,
-        ..FlatDelaunayOptions::default()
-    };
+    let flip = request(
+        DelaunayMethod::Flip,
+        Sources::All,
+        DelaunayOutputs::default(),
+    );
+    let dubois = request(
+        DelaunayMethod::Dubois,
+        Sources::All,
+        DelaunayOutputs::default(),
+    );
     for m in &meshes {
         let s = surftopo_testkit::load(m);
         let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
-        let (_, flip_seconds) = best_of(5, || {
-            let mut t = tri.clone();
-            flip_to_delaunay(&mut t, &DelaunayOptions::default()).expect("flips")
-        });
-        let (p, _) = tri.to_portalgon();
-        let (out, seconds) = best_of(1, || delaunay_tessellation_dubois(&p, &options));
+        let (_, flip_seconds) = timed_runs(5, &tri, &flip);
+        let (out, seconds) = timed_runs(1, &tri, &dubois);
         let line = match out {
             Ok(out) => {
-                let rep = &out.reduction;
+                let rep = out.reduction.as_ref().expect("a dubois run");
                 writeln!(
                     md,
                     "| {} | {} | {:.3} | {:.0} | {:.0} | {} | {} | {:.1} | {} |",
@@ -250,7 +312,7 @@ fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
                     rep.outer_iterations,
                     rep.inner_passes_total,
                     rep.triangles_after_reduction as f64 / m.faces as f64,
-                    out.delaunay.wave.events,
+                    wave_events(&out),
                 )
                 .expect("write to a string");
                 json!({
@@ -259,7 +321,7 @@ fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
                     "outer_iterations": rep.outer_iterations,
                     "inner_passes_total": rep.inner_passes_total,
                     "triangles_after_reduction": rep.triangles_after_reduction,
-                    "wave_events": out.delaunay.wave.events,
+                    "wave_events": wave_events(&out),
                 })
             }
             Err(e) => {
@@ -306,7 +368,7 @@ fn main() {
     for k in 1..=18 {
         let x = format!("1{}", "0".repeat(k));
         let (out, seconds) = exact_pipeline(&x, "2");
-        let rep = &out.reduction;
+        let rep = out.reduction.as_ref().expect("a dubois run");
         let d_x = is_rectangle(&out, "1", "4");
         let (flips, flip_seconds, verdict) = flip_t_x(10f64.powi(k as i32));
         let ms = |s: Option<f64>| s.map_or(String::new(), |s| format!("{:.3}", s * 1e3));
@@ -314,7 +376,7 @@ fn main() {
             md,
             "| 1e{k} | {} | {} | {} | {} | {} | {verdict} |",
             dubois_cells(&out, seconds),
-            out.delaunay.wave.max_constellation(),
+            out.wave.expect("a run by the wave").max_constellation,
             if d_x { "yes" } else { "NO" },
             flips.map_or(String::new(), |f| f.to_string()),
             ms(flip_seconds),
@@ -331,8 +393,8 @@ fn main() {
             "tubes_replaced": {"thin": rep.tubes_replaced_thin, "thick": rep.tubes_replaced_thick},
             "peak_active_vertices": rep.peak_active_vertices,
             "triangles_after_reduction": rep.triangles_after_reduction,
-            "wave_events": out.delaunay.wave.events,
-            "max_constellation": out.delaunay.wave.max_constellation(),
+            "wave_events": wave_events(&out),
+            "max_constellation": out.wave.expect("a run by the wave").max_constellation,
             "d_x": d_x, "flips": flips, "flip_seconds": flip_seconds, "flipping": verdict,
             "arithmetic": rep.arithmetic,
         });
@@ -348,7 +410,7 @@ fn main() {
     for k in [1, 3, 6, 9, 12, 18] {
         let s = format!("1{}", "0".repeat(k));
         let (out, seconds) = exact_pipeline(&s, "1");
-        let rep = &out.reduction;
+        let rep = out.reduction.as_ref().expect("a dubois run");
         let square = is_rectangle(&out, "1", "1");
         writeln!(
             md,
@@ -380,30 +442,26 @@ fn main() {
         let s = format!("1{}", "0".repeat(k));
         let t = pillowcase(&[q("1"), q("0")], &[q(&s), q("1")]).expect("a basis");
         let runs = if k <= 3 { 3 } else { 1 };
-        let (out, seconds) = best_of(runs, || {
-            delaunay_tessellation_dubois(&t, &FlatDelaunayOptions::default()).expect("closed")
-        });
-        let rep = &out.reduction;
-        let squares = are_rectangles(&out.delaunay.tessellation, 2, "1", "1");
-        let wave_options = VoronoiOptions {
-            sources: Sources::Singular,
-            wave: WaveOptions {
-                max_events: Some(1_000_000),
-                ..WaveOptions::default()
-            },
-            ..VoronoiOptions::default()
+        let (out, seconds) = best_of(runs, || dubois_exact(&t).expect("closed"));
+        let rep = out.reduction.as_ref().expect("a dubois run");
+        let squares = are_rectangles(exact_tessellation(&out), 2, "1", "1");
+        let wave_request = DelaunayRequest {
+            max_wave_events: Some(1_000_000),
+            ..request(DelaunayMethod::Voronoi, Sources::Singular, TESSELLATION)
         };
         // The wave alone does work growing with s (its constellations grow like the flips):
         // run up to s = 10³ only.
-        let (wave_ms, wave_events, wave_verdict) = if k <= 3 {
-            let (wave, wave_seconds) = best_of(runs, || voronoi_delaunay(&t, &wave_options));
+        let (wave_ms, wave_alone_events, wave_verdict) = if k <= 3 {
+            let (wave, wave_seconds) = best_of(runs, || {
+                intrinsic_delaunay(DelaunayInput::Exact(t.clone()), &wave_request)
+            });
             match &wave {
                 Ok(w) => {
-                    let known = are_rectangles(&w.tessellation, 2, "1", "1");
+                    let known = are_rectangles(exact_tessellation(w), 2, "1", "1");
                     let verdict = if known { "yes" } else { "NO" };
                     (
                         format!("{:.3}", wave_seconds * 1e3),
-                        w.wave.events.to_string(),
+                        wave_events(w).to_string(),
                         verdict.to_string(),
                     )
                 }
@@ -415,13 +473,13 @@ fn main() {
         let (flips, flip_seconds, flipping) = flip_to_unit_squares(&t);
         writeln!(
             md,
-            "| 1e{k} | {:.3} | {} | {} / {} | {} | {} | {} | {wave_ms} | {wave_events} | {wave_verdict} | {} | {} | {flipping} |",
+            "| 1e{k} | {:.3} | {} | {} / {} | {} | {} | {} | {wave_ms} | {wave_alone_events} | {wave_verdict} | {} | {} | {flipping} |",
             seconds * 1e3,
             rep.outer_iterations,
             rep.inner_passes_total,
             rep.inner_passes_bound,
             rep.triangles_after_reduction,
-            out.delaunay.wave.events,
+            wave_events(&out),
             if squares { "yes" } else { "NO" },
             flips.map_or(String::new(), |f| f.to_string()),
             flip_seconds.map_or(String::new(), |s| format!("{:.3}", s * 1e3)),
@@ -431,7 +489,7 @@ fn main() {
             "kind": "pillowcase", "s": s, "seconds": seconds,
             "outer_iterations": rep.outer_iterations, "inner_passes_total": rep.inner_passes_total,
             "triangles_after_reduction": rep.triangles_after_reduction,
-            "wave_events": out.delaunay.wave.events, "unit_squares": squares,
+            "wave_events": wave_events(&out), "unit_squares": squares,
             "wave_alone_ms": wave_ms, "wave_alone": wave_verdict,
             "flips": flips, "flip_seconds": flip_seconds, "flipping": flipping,
         });
@@ -448,8 +506,8 @@ fn main() {
     } else {
         md.push_str(
             "\n## `auto` against `flip` on the ~100k-face shared meshes\n\n\
-             `auto` = `flip_to_delaunay_unless_needle` (flipping with the needle test on the half-angle \
-             cache of its first pass), as `surftopo delaunay` runs it. 101 pairs of runs (flip then auto, auto \
+             `auto` = `intrinsic_delaunay` with `DelaunayMethod::Auto` (flipping with the needle test on \
+             the half-angle cache of its first pass), as `surftopo delaunay` runs it. 101 pairs of runs (flip then auto, auto \
              then flip, alternately); flip ms and auto ms are medians, `auto / flip` is the median over \
              the pairs of the ratio within a pair (robust to the machine's load, which both runs of a \
              pair share). `choice / flip` is what the rule's test costs as a pass of its own \
@@ -457,28 +515,27 @@ fn main() {
              is the same measurement of flipping against itself (the method's noise).\n\n\
              | mesh | F | auto chose | choice ms | flip ms | auto ms | choice / flip | auto / flip | flip / flip |\n|---|---:|---|---:|---:|---:|---:|---:|---:|\n",
         );
-        let flip_options = DelaunayOptions::default();
+        let flip = request(
+            DelaunayMethod::Flip,
+            Sources::All,
+            DelaunayOutputs::default(),
+        );
+        let auto = request(
+            DelaunayMethod::Auto,
+            Sources::All,
+            DelaunayOutputs::default(),
+        );
         let mut worst_ratio: f64 = 0.0;
         let mut noise_range = (f64::INFINITY, 0.0f64);
         for m in &meshes {
             let s = surftopo_testkit::load(m);
             let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
-            let mut chosen = Method::Flip;
-            let run_flip = || {
-                let mut t = tri.clone();
-                let start = Instant::now();
-                flip_to_delaunay(&mut t, &flip_options).expect("flips");
-                start.elapsed().as_secs_f64()
-            };
+            let mut chosen = DelaunayMethod::Flip;
+            let run_flip = || timed_runs(1, &tri, &flip).1;
             let mut run_auto = || {
-                let mut t = tri.clone();
-                let start = Instant::now();
-                chosen = match flip_to_delaunay_unless_needle(&mut t, &flip_options).expect("flips")
-                {
-                    Some(_) => Method::Flip,
-                    None => choose_method_for_needle(&t),
-                };
-                start.elapsed().as_secs_f64()
+                let (out, seconds) = timed_runs(1, &tri, &auto);
+                chosen = out.expect("flips").method;
+                seconds
             };
             let (mut flips, mut autos, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
             let mut same = Vec::new();

@@ -1,5 +1,5 @@
 //! Proposition 4 (Dubois, Appendix B) on random tubes: seconds for both routes
-//! ([`TubeRoute::Direct`], DUBOIS.md §2.1(c), and [`TubeRoute::Paper`], Lemmas 28, 25, 26), in
+//! ([`TubeRoute::Direct`], docs/dubois.md §3.1(c), and [`TubeRoute::Paper`], Lemmas 28, 25, 26), in
 //! f64 and exact arithmetic, against the number of triangles (10² to 10⁵) and against the aspect
 //! ratio (translation tubes sheared further and further: the shortest offset, a lower bound on the
 //! happiness, grows with the shear).

@@ -2,11 +2,11 @@
 //! pillowcases (needles with cone points), and random isometric re-triangulations by intrinsic
 //! flips.
 
-use crate::convert::{TriangleGluing, triangulation_from_gluing};
 use crate::error::PortalgonError;
 use crate::geometry::{Point, Scalar};
 use crate::portalgon::{PolygonId, Portalgon};
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::convert::{TriangleGluing, triangulation_from_gluing};
 use rand::RngExt;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -48,7 +48,7 @@ pub fn flat_torus(x: f64, m: u32) -> Result<IntrinsicTriangulation, PortalgonErr
     let len_d = (x - 1.0).hypot(2.0) / mf;
     // Each triangle has area 1/m² (T_x has area 2); lengths rounded beyond that (huge |x|) no
     // longer describe T_x.
-    let area = crate::trig::area(len_u, len_d, len_w) * mf * mf;
+    let area = crate::triangulation::trig::area(len_u, len_d, len_w) * mf * mf;
     if (area - 1.0).abs().is_nan() || (area - 1.0).abs() > 1e-3 {
         return Err(invalid(
             "x",

@@ -15,117 +15,14 @@
 //! The lumped (barycentric) mass matrix is diagonal: `M[i][i] = Σ area(corner's face) / 3` over the
 //! corners at vertex i (a triangle with two corners at i counts twice); its trace is the area.
 //!
-//! Rows and columns are the live vertices in increasing id order ([`dense_vertex_index`]).
+//! Rows and columns are the live vertices in increasing id order ([`IntrinsicTriangulation::matrix_rows`]).
 
-use crate::delaunay::{DelaunayOptions, FlipReport, flip_keeping_tan_half_sq};
 use crate::error::DelaunayError;
-use crate::triangulation::IntrinsicTriangulation;
-use crate::trig;
+use crate::flip::{DelaunayOptions, FlipReport, flip_keeping_tan_half_sq};
+use crate::sparse::SparseMatrix;
+use crate::triangulation::trig;
+use crate::triangulation::{IntrinsicTriangulation, dense_vertex_index};
 use surftopo_mesh::EdgeId;
-
-/// A square sparse matrix in compressed rows, columns sorted within each row.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SparseMatrix {
-    /// Number of rows (and columns).
-    pub n: usize,
-    /// Row `i` is entries `row_start[i]..row_start[i + 1]`; length `n + 1`.
-    pub row_start: Vec<usize>,
-    /// Column of each entry (0-based).
-    pub cols: Vec<u32>,
-    /// Value of each entry.
-    pub values: Vec<f64>,
-}
-
-impl SparseMatrix {
-    /// A diagonal matrix.
-    pub fn diagonal(values: Vec<f64>) -> Self {
-        let n = values.len();
-        Self {
-            n,
-            row_start: (0..=n).collect(),
-            cols: (0..n as u32).collect(),
-            values,
-        }
-    }
-
-    /// Builds from `(row, col, value)` triplets, summing duplicates (rows and cols must be `< n`).
-    pub fn from_triplets(n: usize, triplets: &[(u32, u32, f64)]) -> Self {
-        let mut sorted = triplets.to_vec();
-        sorted.sort_unstable_by_key(|&(i, j, _)| (i, j));
-        let mut m = Self {
-            n,
-            row_start: vec![0; n + 1],
-            cols: Vec::with_capacity(sorted.len()),
-            values: Vec::with_capacity(sorted.len()),
-        };
-        let mut last: Option<(u32, u32)> = None;
-        for (i, j, v) in sorted {
-            if last == Some((i, j)) {
-                *m.values.last_mut().expect("an entry exists") += v;
-            } else {
-                m.cols.push(j);
-                m.values.push(v);
-                m.row_start[i as usize + 1] += 1;
-                last = Some((i, j));
-            }
-        }
-        for i in 0..n {
-            m.row_start[i + 1] += m.row_start[i];
-        }
-        m
-    }
-
-    /// Number of stored entries.
-    pub fn nnz(&self) -> usize {
-        self.values.len()
-    }
-
-    /// The entries of row `i` as `(col, value)`.
-    pub fn row(&self, i: usize) -> impl Iterator<Item = (u32, f64)> + '_ {
-        let r = self.row_start[i]..self.row_start[i + 1];
-        self.cols[r.clone()]
-            .iter()
-            .copied()
-            .zip(self.values[r].iter().copied())
-    }
-
-    /// Entry `(i, j)` (0 if not stored). O(log row length).
-    pub fn get(&self, i: usize, j: usize) -> f64 {
-        let r = self.row_start[i]..self.row_start[i + 1];
-        match self.cols[r.clone()].binary_search(&(j as u32)) {
-            Ok(k) => self.values[r.start + k],
-            Err(_) => 0.0,
-        }
-    }
-
-    /// All entries as `(row, col, value)`, row-major.
-    pub fn triplets(&self) -> impl Iterator<Item = (u32, u32, f64)> + '_ {
-        (0..self.n).flat_map(move |i| self.row(i).map(move |(j, v)| (i as u32, j, v)))
-    }
-}
-
-impl IntrinsicTriangulation {
-    /// Per vertex slot, its row (and column) in the matrices of this crate ([`cotan_laplacian`],
-    /// [`lumped_mass`], [`intrinsic_delaunay_laplacian`]): the live vertices in increasing id
-    /// order, `u32::MAX` for removed ids. There are [`surftopo_mesh::SurfaceMesh::vertex_count`]
-    /// rows.
-    pub fn matrix_rows(&self) -> Vec<u32> {
-        dense_vertex_index(self).0
-    }
-}
-
-/// Dense index of each live vertex (increasing id order), `u32::MAX` for removed ids, and the
-/// number of live vertices.
-pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
-    let mesh = tri.mesh();
-    let mut index = vec![u32::MAX; mesh.vertex_slots()];
-    let mut n = 0usize;
-    for v in mesh.vertices() {
-        index[v.idx()] = n as u32;
-        n += 1;
-    }
-    (index, n)
-}
 
 /// The cotan weight `w_e = (cot γ + cot δ) / 2` of every edge, indexed by edge id (0 for removed
 /// edges). Non-negative on a Delaunay triangulation. O(E).
@@ -185,7 +82,7 @@ pub fn intrinsic_delaunay_laplacian(
 /// increasing `lo`, row `lo` receives its diagonal and then its entries `hi > lo` in increasing
 /// order, and each row `hi` receives its entry `lo < hi`, rows being filled front to back; so
 /// every row comes out sorted (entries left of the diagonal were all written by earlier buckets).
-fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> SparseMatrix {
+pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64]) -> SparseMatrix {
     let weights = weights_from_tan_half_sq(tri, t2);
     let mesh = tri.mesh();
     let (index, n) = dense_vertex_index(tri);
@@ -281,8 +178,9 @@ pub fn lumped_mass(tri: &IntrinsicTriangulation) -> SparseMatrix {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flip::flip_to_delaunay;
     use crate::generators::{flat_torus, random_flips, sheared_torus};
-    use crate::{flip_to_delaunay, remove_flat_vertices};
+    use crate::isometry::flat_vertices::remove_flat_vertices;
     use std::collections::{HashMap, HashSet};
 
     /// The Laplacian entry by entry from law-of-cosines angles (not [`trig`]), summed in a map

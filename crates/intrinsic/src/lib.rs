@@ -1,37 +1,40 @@
-//! surftopo-intrinsic: portalgons and intrinsic Delaunay triangulations.
+//! surftopo-intrinsic: portalgons and intrinsic Delaunay triangulations of closed polyhedral
+//! surfaces.
 //!
 //! Paper: L. Dubois, "Computing the Intrinsic Delaunay Triangulation of a Closed Polyhedral
-//! Surface", 2025, arXiv:2601.03954 — Sections 1–2 (portalgons, aspect ratio), Section 9 (the flat torus T_x),
-//! Appendix A (Corollary 2, the isometry test), Appendix C (the Delaunay tessellation of Bobenko &
-//! Springborn). This crate holds the portalgon model and the classical edge-flip algorithm the
-//! paper contrasts with its own; the paper's algorithm (Sections 3–8) builds on [`Portalgon`]'s
-//! edits: [`Portalgon::cut`] and [`Portalgon::shortcut`] (INSERTEDGES),
-//! [`Portalgon::delete_vertex`] (DELETEVERTICES), [`Portalgon::merge`], [`Portalgon::glue`] /
-//! [`Portalgon::unglue`], [`Portalgon::sub_portalgon`] and [`Regions`] (Section 4.4's active and
-//! inactive regions), [`Portalgon::split_side`] (INSERTVERTICES), [`Portalgon::vertex_info`]
-//! (weak and strong vertices, Section 4.2), [`Portalgon::components`] and [`Portalgon::splice`].
-//! Section 3 and Appendix B: [`Biface`] with the good-biface kernel [`Biface::make_good`] (Lemma 25
-//! by closed forms), and tubes with Proposition 4 ([`Portalgon::good_biface_of_tube`],
-//! [`TubeRoute`]). [`voronoi`] is Proposition 3's second route to the Delaunay tessellation, the
-//! multi-source wave of Appendix D and the dual of its Voronoi diagram, in `f64` or exactly over the
-//! rationals ([`geometry`]). Section 4: the routines and ALGORITHM on flat closed surfaces in [`dubois`]
-//! ([`dubois::reduce`]). Not here yet: Section 8's caps and Theorem 1's driver.
+//! Surface", 2025, arXiv:2601.03954. Three algorithms compute the same Delaunay tessellation:
+//! edge flipping (Bobenko & Springborn, the classical one the paper contrasts with its own), the
+//! multi-source Voronoi wave of Appendix D (Proposition 3), and Dubois' Theorem 1 (Proposition 2's
+//! reduction, then the wave), the last two in `f64` or exactly over the rationals. The design
+//! notes of the Theorem 1 reconstruction, with what the paper leaves open and how we decided it,
+//! are `docs/dubois.md` in the repository.
 //!
-//! - [`IntrinsicTriangulation`]: a closed triangular portalgon as half-edge topology
-//!   ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths; from a mesh
-//!   and positions ([`IntrinsicTriangulation::from_soup`]), from a [`Portalgon`], or from JSON
-//!   ([`PortalgonDoc`], format in `PORTALGON_FORMAT.md`).
-//! - [`flip_to_delaunay`]: Bobenko–Springborn edge flipping with robust half-angle formulas
-//!   (Kahan's, from side lengths alone), a flip budget and optional [`mollify()`]; [`DelaunayStats`] for reports.
-//! - [`delaunay_tessellation`]: co-circular triangles merged into the unique Delaunay tessellation;
-//!   [`voronoi::voronoi_delaunay`] computes it by the wave instead (exactly with rational corners).
-//! - [`cotan_laplacian`], [`lumped_mass`], [`cotan_weights`] and a Matrix Market writer
-//!   ([`write_matrix_market`]). Convention: the Laplacian is positive semidefinite.
-//!   [`intrinsic_delaunay_laplacian`] flips and assembles in one call (libigl's
-//!   `intrinsic_delaunay_cotmatrix`), reusing the flips' half-angle tangents.
-//! - [`quality()`]: aspect ratio, local aspect ratio, singular vertices (Section 2.2).
-//! - [`isometric`]: Corollary 2's test on canonical tessellations ([`remove_flat_vertices`] first).
-//! - [`generators`]: T_x ([`generators::flat_torus`]), sheared tori, random isometric flips.
+//! The modules, from the ground up (a module imports only modules listed before it):
+//! - [`geometry`]: the [`geometry::Scalar`] number types (`f64`, double-double, exact rationals)
+//!   and plane geometry with exact-sign predicates; `error`: the typed errors;
+//!   [`SparseMatrix`].
+//! - `portalgon/` (Section 2.1): [`Portalgon`], its queries and elementary edits
+//!   ([`Portalgon::cut`], [`Portalgon::shortcut`], [`Portalgon::merge`],
+//!   [`Portalgon::delete_vertex`], [`Portalgon::glue`]), the edits of Sections 4.1–4.3
+//!   ([`Portalgon::split_side`], [`Portalgon::vertex_info`], [`Portalgon::components`],
+//!   [`Portalgon::splice`]) and Section 4.4's [`Regions`].
+//! - `triangulation/`: [`IntrinsicTriangulation`], a closed triangular portalgon as half-edge
+//!   topology ([`surftopo_mesh::SurfaceMesh`], loops and multi-edges allowed) plus edge lengths,
+//!   from a mesh ([`IntrinsicTriangulation::from_soup`]) or a [`Portalgon`]; triangle formulas
+//!   from side lengths (Kahan's), [`mollify()`], [`quality()`] (Section 2.2).
+//! - `flip/`: [`flip_to_delaunay`] (a flip budget, robust half-angle tests), the needle test of
+//!   `--method auto`, [`DelaunayStats`], [`delaunay_tessellation`] (co-circular triangles
+//!   merged). `formats/`: portalgon JSON ([`PortalgonDoc`], `PORTALGON_FORMAT.md`), Matrix
+//!   Market, numpy.
+//! - [`voronoi`] (Appendix D): the wave and the dual of its Voronoi diagram.
+//! - [`dubois`] (Sections 3, 4, 8; Theorem 1): ALGORITHM, tubes and bifaces, caps,
+//!   [`dubois::delaunay_tessellation_dubois`]. `isometry/` (Appendix A, Corollary 2):
+//!   [`isometric`], [`decide_isometry`]. `laplacian`: [`cotan_laplacian`] (positive
+//!   semidefinite), [`lumped_mass`], [`intrinsic_delaunay_laplacian`] (flips and assembles in one
+//!   call, libigl's `intrinsic_delaunay_cotmatrix`).
+//! - `delaunay/`: [`intrinsic_delaunay`], the job by method (auto, flip, voronoi, dubois), with
+//!   the rule of `auto` ([`choose_method`]). [`generators`]: `T_x` (Section 9), sheared
+//!   tori, pillowcases, random isometric flips.
 //!
 //! ```
 //! use surftopo_intrinsic::generators::flat_torus;
@@ -52,64 +55,64 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
-mod biface;
-mod convert;
 mod delaunay;
 pub mod dubois;
 mod error;
-mod flat;
-pub mod flat_torus_lattice;
-mod format;
+mod flip;
+mod formats;
 pub mod generators;
 pub mod geometry;
 mod isometry;
-mod isometry_decision;
 mod laplacian;
-mod matrix_market;
-pub mod method_choice;
-mod mollify;
-mod numpy;
 mod portalgon;
-mod portalgon_edits;
-mod quality;
-mod stats;
-mod tessellation;
-mod text_blocks;
+mod sparse;
 mod triangulation;
-mod trig;
-mod tube;
 pub mod voronoi;
 
-pub use biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
+pub use delaunay::choice::{
+    DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
+};
 pub use delaunay::{
-    DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
-    flip_to_delaunay_unless_needle,
+    AnyPortalgon, DelaunayInput, DelaunayMethod, DelaunayOutput, DelaunayOutputs, DelaunayRequest,
+    IntrinsicDelaunayError, RequestError, WaveFigures, intrinsic_delaunay,
+    intrinsic_delaunay_reporting,
+};
+pub use dubois::biface::{Biface, BifaceError, BifaceKind, GoodBiface, good_biface_of_ladder};
+pub use dubois::tube::{
+    LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon,
 };
 pub use error::{
     DelaunayError, GeometryError, IsometryError, PortalgonError, RemovalError, SoupError,
 };
-pub use flat::{RemovalReport, remove_flat_vertices};
-pub use format::{FORMAT_NAME, FORMAT_VERSION, Number, PolygonDoc, PortalgonDoc, TriangleStyle};
+pub use flip::needle::AUTO_ASPECT_LIMIT;
+pub use flip::stats::{DelaunayStats, delaunay_with_stats};
+pub use flip::tessellation::{
+    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
+};
+pub use flip::{
+    DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, default_max_flips, flip_to_delaunay,
+    flip_to_delaunay_unless_needle,
+};
+pub use formats::matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
+pub use formats::numpy::{write_npy, write_npz};
+pub use formats::portalgon_json::{
+    FORMAT_NAME, FORMAT_VERSION, Number, PolygonDoc, PortalgonDoc, TriangleStyle,
+};
+pub use isometry::decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
+pub use isometry::flat_torus_lattice::flat_torus_invariants;
+pub use isometry::flat_vertices::{RemovalReport, remove_flat_vertices};
 pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
     MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,
 };
-pub use isometry_decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
-pub use laplacian::{
-    SparseMatrix, cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass,
-};
-pub use matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
-pub use mollify::{MAX_MOLLIFY, mollify};
-pub use numpy::{write_npy, write_npz};
+pub use laplacian::{cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass};
 pub use portalgon::{
-    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, Regions, SHORTCUT_MIN_SINE, SideId,
-    check_polygon, signed_area,
+    Component, DEFAULT_LENGTH_TOLERANCE, EditError, Point2, PolygonId, Portalgon, Regions,
+    SHORTCUT_MIN_SINE, SideId, VertexInfo, check_polygon, signed_area,
 };
-pub use portalgon_edits::{Component, EditError, VertexInfo};
-pub use quality::{DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality};
-pub use stats::{DelaunayStats, delaunay_with_stats, delaunay_with_stats_unless_needle};
-pub use tessellation::{
-    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation, is_cocircular,
+pub use sparse::SparseMatrix;
+pub use triangulation::mollify::{MAX_MOLLIFY, mollify};
+pub use triangulation::quality::{
+    DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality,
 };
 pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
-pub use tube::{LEMMA_28_MAX_DEGREE, Tube, TubeError, TubeReport, TubeRoute, biface_portalgon};

@@ -1,5 +1,5 @@
 //! Bifaces and good bifaces (Dubois, Section 3; the kernel standing in for Lemma 25 of
-//! Appendix B, DUBOIS.md §2.1): the kernel is checked against a brute-force ladder oracle
+//! Appendix B, docs/dubois.md §3.1): the kernel is checked against a brute-force ladder oracle
 //! written here from the definitions alone.
 //!
 //! The oracle unfolds the strip of triangles `T′_k = (p_k, q_k, q_{k+1})`,
@@ -554,7 +554,7 @@ fn f64_kernel_agrees_with_the_exact_one_large() {
     f64_agreement(40_000, 12);
 }
 
-/// `T_x` (Section 9; DUBOIS.md §5) cut along its unit loop `u`: Δ₁ = (0,0),(1,0),(x,2) and
+/// `T_x` (Section 9; docs/dubois.md §5) cut along its unit loop `u`: Δ₁ = (0,0),(1,0),(x,2) and
 /// Δ₂ = (1+x,2),(x,2),(1,0), sides 1 and 2 still matched. In the chart A = (1,0), D = (1+x,2),
 /// B = (x,2), C = (0,0) (boundary sides CA and DB are the two copies of u).
 fn t_x_cut<S: Scalar>(x: S) -> Biface<S> {

@@ -158,8 +158,9 @@ fn needle_pillow(x: &Rational) -> Portalgon<Rational> {
 
 #[test]
 fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
-    use surftopo_intrinsic::method_choice::{
-        AUTO_ASPECT_LIMIT, DUBOIS_TAKES_CONE_POINTS, Method, choose_method, largest_aspect_ratio,
+    use surftopo_intrinsic::{
+        AUTO_ASPECT_LIMIT, DUBOIS_TAKES_CONE_POINTS, DelaunayMethod as Method, choose_method,
+        largest_aspect_ratio,
     };
     // T_x's triangles have aspect ratio ℓ²/(2A) = (x² + 4)/2 (area 1, longest side² x² + 4).
     assert_eq!(largest_aspect_ratio(&t_x(&q("10"))), 52.0);
@@ -183,7 +184,7 @@ fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
         let tri = surftopo_intrinsic::PortalgonDoc::from_portalgon(p)
             .to_triangulation(1e-9)
             .unwrap();
-        surftopo_intrinsic::method_choice::choose_method_for_triangulation(&tri)
+        surftopo_intrinsic::choose_method_for_triangulation(&tri)
     };
     assert_eq!(by_lengths(&t_x(&q("10"))), Method::Flip);
     assert_eq!(by_lengths(&t_x(&q("1000"))), Method::Dubois);
@@ -193,7 +194,7 @@ fn auto_flips_moderate_surfaces_and_reduces_flat_needles() {
 
 #[test]
 fn flipping_unless_a_needle_leaves_needles_untouched_and_flips_the_rest_like_flipping() {
-    use surftopo_intrinsic::method_choice::{Method, choose_method_for_triangulation};
+    use surftopo_intrinsic::{DelaunayMethod as Method, choose_method_for_triangulation};
     use surftopo_intrinsic::{DelaunayOptions, flip_to_delaunay, flip_to_delaunay_unless_needle};
     let options = DelaunayOptions::default();
     for (x, needle) in [("10", false), ("447", false), ("448", true), ("1000", true)] {

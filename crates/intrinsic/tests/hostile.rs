@@ -109,7 +109,7 @@ fn written_lengths_read_back_bit_for_bit() {
 /// x modulo 1 and up to a reflection only; different lattices are not isometric.
 #[test]
 fn flat_tori_are_compared_by_their_period_lattices() {
-    use surftopo_intrinsic::flat_torus_lattice::flat_torus_invariants;
+    use surftopo_intrinsic::flat_torus_invariants;
     let options = IsometryOptions::default();
     let decide = |a: &IntrinsicTriangulation, b: &IntrinsicTriangulation| {
         decide_isometry(a, b, &options).unwrap()

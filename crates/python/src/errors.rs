@@ -8,7 +8,9 @@
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use surftopo_intrinsic::{DelaunayError, GeometryError, IsometryError, PortalgonError};
+use surftopo_intrinsic::{
+    DelaunayError, GeometryError, IntrinsicDelaunayError, IsometryError, PortalgonError,
+};
 use surftopo_io::IoError;
 use surftopo_irreducible::IrreducibleError;
 use surftopo_mesh::BuildError;
@@ -41,6 +43,8 @@ pub enum Failure {
     Portalgon(PortalgonError),
     /// The isometry test could not compare the surfaces.
     Isometry(IsometryError),
+    /// `intrinsic_delaunay` by method failed.
+    Intrinsic(IntrinsicDelaunayError),
     /// A mesh file could not be read or written.
     Io(IoError),
     /// Any other invalid argument (`ValueError`, exception class of `surftopo._errors`).
@@ -168,6 +172,19 @@ fn exception(py: Python<'_>, class: &str, message: String, fields: &Bound<'_, Py
 }
 
 impl Failure {
+    /// The failure an error of `intrinsic_delaunay` stands for: its inner error, a numerical
+    /// refusal of double precision (`NumericalBreakdownError`, as the CLI's exit 4), or invalid
+    /// input.
+    fn from_intrinsic(e: &IntrinsicDelaunayError) -> Failure {
+        match e {
+            IntrinsicDelaunayError::Flip(e) => Failure::Delaunay(e.clone()),
+            IntrinsicDelaunayError::Geometry(e) => Failure::Geometry(e.clone()),
+            IntrinsicDelaunayError::Portalgon(e) => Failure::Portalgon(e.clone()),
+            e if e.is_numerical() => Failure::Invalid("NumericalBreakdownError", e.to_string()),
+            e => invalid(e.to_string()),
+        }
+    }
+
     /// The name of the innermost library error's variant (`BoundaryEdge`, `MaxFlips`, ...).
     fn kind(&self) -> Option<String> {
         Some(match self {
@@ -185,6 +202,7 @@ impl Failure {
             Failure::Isometry(IsometryError::Removal { source, .. }) => variant_name(source),
             Failure::Isometry(IsometryError::Portalgon { source, .. }) => variant_name(source),
             Failure::Io(e) => variant_name(e),
+            Failure::Intrinsic(e) => return Failure::from_intrinsic(e).kind(),
             Failure::Invalid(..) => return None,
         })
     }
@@ -255,6 +273,7 @@ impl Failure {
                 }
             }
             Failure::Io(_) => "MeshFileError",
+            Failure::Intrinsic(e) => return Failure::from_intrinsic(e).class(d),
             Failure::Invalid(class, _) => class,
         })
     }
@@ -313,6 +332,7 @@ impl std::fmt::Display for Failure {
             Failure::Portalgon(e) => e.fmt(f),
             Failure::Isometry(e) => e.fmt(f),
             Failure::Io(e) => e.fmt(f),
+            Failure::Intrinsic(e) => e.fmt(f),
             Failure::Invalid(_, message) => f.write_str(message),
         }
     }

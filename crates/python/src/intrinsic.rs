@@ -10,22 +10,17 @@ use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
+use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayOptions, DelaunayStats,
-    IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle,
-    cotan_laplacian, delaunay_tessellation, delaunay_with_stats, intrinsic_delaunay_laplacian,
-    lumped_mass,
+    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayInput, DelaunayMethod,
+    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation, IsometryOptions,
+    PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, lumped_mass,
 };
 
-/// The ways to compute an intrinsic Delaunay triangulation (`method=`).
-#[derive(Clone, Copy, Debug)]
-enum Method {
-    /// Bobenko–Springborn edge flipping (`surftopo_intrinsic::flip_to_delaunay`).
-    Flip,
+/// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
+fn methods() -> [(&'static str, DelaunayMethod); 4] {
+    DelaunayMethod::ALL.map(|m| (m.name(), m))
 }
-
-/// The `method=` names.
-const METHODS: &[(&str, Method)] = &[("flip", Method::Flip)];
 
 /// An intrinsic triangulation and where its vertices go in the output matrices.
 struct Located {
@@ -57,6 +52,53 @@ impl Located {
     fn dense(tri: IntrinsicTriangulation) -> Self {
         let (row_of, rows) = (tri.matrix_rows(), tri.mesh().vertex_count());
         Self { tri, row_of, rows }
+    }
+
+    /// Runs `surftopo_intrinsic::intrinsic_delaunay` on the triangulation with `request`: the
+    /// Delaunay triangulation with its rows (the wave's triangulation numbers the vertices by
+    /// their dense index in the input) and the output.
+    fn delaunay(
+        self,
+        request: &DelaunayRequest,
+    ) -> Result<(Self, surftopo_intrinsic::DelaunayOutput), Failure> {
+        let dense_rows = self.dense_rows();
+        let input = DelaunayInput::Lengths(self.tri);
+        let mut out =
+            surftopo_intrinsic::intrinsic_delaunay(input, request).map_err(Failure::Intrinsic)?;
+        let tri = out
+            .triangulation
+            .take()
+            .expect("the triangulation is asked for");
+        let row_of = if out.method == DelaunayMethod::Flip {
+            self.row_of
+        } else {
+            let mut row_of = vec![u32::MAX; tri.mesh().vertex_slots()];
+            for v in tri.mesh().vertices() {
+                row_of[v.idx()] = dense_rows.get(v.idx()).copied().unwrap_or(u32::MAX);
+            }
+            row_of
+        };
+        let located = Self {
+            tri,
+            row_of,
+            rows: self.rows,
+        };
+        Ok((located, out))
+    }
+
+    /// [`Self::delaunay`] in exact arithmetic on a portalgon given by exact corners: rows in the
+    /// output's vertex order.
+    fn exact_delaunay(
+        p: surftopo_intrinsic::Portalgon<Rational>,
+        request: &DelaunayRequest,
+    ) -> Result<(Self, surftopo_intrinsic::DelaunayOutput), Failure> {
+        let mut out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Exact(p), request)
+            .map_err(Failure::Intrinsic)?;
+        let tri = out
+            .triangulation
+            .take()
+            .expect("the triangulation is asked for");
+        Ok((Self::dense(tri), out))
     }
 
     /// Output row of each dense matrix index (the live vertices in id order).
@@ -118,6 +160,16 @@ impl Csr {
         }
     }
 
+    /// The `scipy.sparse` matrix in `format`: `"csr"` (the arrays handed over without a copy)
+    /// or `"csc"` (robust_laplacian's; the same matrix, converted by scipy).
+    fn into_format<'py>(self, py: Python<'py>, format: Format) -> PyResult<Bound<'py, PyAny>> {
+        let csr = self.into_scipy(py)?;
+        match format {
+            Format::Csr => Ok(csr),
+            Format::Csc => csr.call_method0("tocsc"),
+        }
+    }
+
     /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
     fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
         let data = vector(py, self.data);
@@ -133,13 +185,73 @@ impl Csr {
     }
 }
 
-/// Delaunay options from the Python arguments.
-fn options(mollify: Option<f64>, max_flips: Option<u64>) -> DelaunayOptions {
-    DelaunayOptions {
-        max_flips,
+/// The sparse format of the matrices returned.
+#[derive(Clone, Copy)]
+enum Format {
+    Csr,
+    Csc,
+}
+
+/// `format=` of [`laplacian`].
+fn sparse_format(name: &str) -> Result<Format, Failure> {
+    choose(
+        "format",
+        name,
+        &[("csr", Format::Csr), ("csc", Format::Csc)],
+    )
+}
+
+/// The CLI's refusal of matrices that are not representable (`inf` entries, a mass matrix of
+/// zeros: coordinates of 1e200 or 1e-200), as an `InvalidGeometryError`.
+fn check_matrices(l: &SparseMatrix, m: &SparseMatrix) -> Result<(), Failure> {
+    let refuse =
+        |what: &str, e: String| Failure::Invalid("InvalidGeometryError", format!("{what}: {e}"));
+    l.check_representable(false)
+        .map_err(|e| refuse("the cotan Laplacian", e))?;
+    m.check_representable(true)
+        .map_err(|e| refuse("the mass matrix", e))
+}
+
+/// The request of the Python arguments: `method=`, the flip limits, and the outputs.
+fn request(
+    method: &str,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+    outputs: DelaunayOutputs,
+) -> Result<DelaunayRequest, Failure> {
+    Ok(DelaunayRequest {
+        method: choose("method", method, &methods())?,
+        outputs,
         mollify,
-        ..DelaunayOptions::default()
+        max_flips,
+        ..DelaunayRequest::default()
+    })
+}
+
+/// `exact=True` on a surface not given by exact corners.
+fn not_exact() -> Failure {
+    invalid(
+        "exact=True needs a Portalgon given by exact corners (a mesh's lengths are square roots)",
+    )
+}
+
+/// The exact portalgon of `surface` for `exact=True`: a [`Portalgon`] given by exact corners
+/// (a mesh's lengths are square roots).
+fn exact_portalgon(
+    surface: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+) -> Result<surftopo_intrinsic::Portalgon<Rational>, Failure> {
+    if faces.is_some() {
+        return Err(not_exact());
     }
+    let p = surface.cast::<Portalgon>().map_err(|_| not_exact())?;
+    let p = p
+        .get()
+        .doc
+        .to_portalgon_in::<Rational>(0.0)
+        .map_err(Failure::Portalgon)?;
+    p.check_closed().map_err(Failure::Portalgon)?;
+    Ok(p)
 }
 
 /// A closed polyhedral surface given by flat polygons glued along their sides (a portalgon,
@@ -404,25 +516,35 @@ fn located_surface(
     )
 }
 
-/// The intrinsic Delaunay triangulation of a closed polyhedral surface.
+/// The intrinsic Delaunay triangulation of a closed polyhedral surface by `method` (`"flip"`,
+/// `"voronoi"`, `"dubois"` or `"auto"`, as `surftopo delaunay --method`); `exact=True` computes
+/// exactly (voronoi, dubois, auto) on a [`Portalgon`] given by exact corners.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces = None, method = "flip", mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces = None, method = "flip", exact = false, mollify = None, max_flips = None))]
 pub fn intrinsic_delaunay(
     py: Python<'_>,
     vertices: &Bound<'_, PyAny>,
     faces: Option<&Bound<'_, PyAny>>,
     method: &str,
+    exact: bool,
     mollify: Option<f64>,
     max_flips: Option<u64>,
 ) -> PyResult<Intrinsic> {
-    let method = choose("method", method, METHODS).map_err(|f| f.into_pyerr(py))?;
-    let mut located = located_surface(py, vertices, faces)?;
-    let options = options(mollify, max_flips);
-    let stats = py
-        .detach(|| match method {
-            Method::Flip => delaunay_with_stats(&mut located.tri, &options),
-        })
-        .map_err(|e| Failure::Delaunay(e).into_pyerr(py))?;
+    let outputs = DelaunayOutputs {
+        triangulation: true,
+        figures: true,
+        ..DelaunayOutputs::default()
+    };
+    let request = request(method, mollify, max_flips, outputs).map_err(|f| f.into_pyerr(py))?;
+    let (located, out) = if exact {
+        let p = exact_portalgon(vertices, faces).map_err(|f| f.into_pyerr(py))?;
+        py.detach(|| Located::exact_delaunay(p, &request))
+    } else {
+        let located = located_surface(py, vertices, faces)?;
+        py.detach(|| located.delaunay(&request))
+    }
+    .map_err(|f| f.into_pyerr(py))?;
+    let stats = out.stats.expect("the figures are asked for");
     Ok(Intrinsic { located, stats })
 }
 
@@ -431,21 +553,22 @@ fn laplacian_and_seconds<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
-    mollify: Option<f64>,
-    max_flips: Option<u64>,
+    request: &DelaunayRequest,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
-    let options = options(mollify, max_flips);
     let computed = py.detach(|| {
         let start = Instant::now();
-        let mut located = Located::from_arrays(&positions, &triangles)?;
-        let (_, l) =
-            intrinsic_delaunay_laplacian(&mut located.tri, &options).map_err(Failure::Delaunay)?;
-        let m = lumped_mass(&located.tri);
+        let located = Located::from_arrays(&positions, &triangles)?;
+        let (located, out) = located.delaunay(request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
+        let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
+        let (l, m) = (matrix(out.laplacian), matrix(out.mass));
+        check_matrices(&l, &m)?;
         let matrices = (
             Csr::new(l, &rows, located.rows),
             Csr::new(m, &rows, located.rows),
@@ -453,21 +576,50 @@ fn laplacian_and_seconds<'py>(
         Ok::<_, Failure>((matrices, seconds))
     });
     let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
-    Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
+    Ok((
+        l.into_format(py, format)?,
+        m.into_format(py, format)?,
+        seconds,
+    ))
+}
+
+/// The request of `laplacian`: the triangulation and both matrices.
+fn laplacian_request(
+    method: &str,
+    mollify: Option<f64>,
+    max_flips: Option<u64>,
+) -> Result<DelaunayRequest, Failure> {
+    let outputs = DelaunayOutputs {
+        triangulation: true,
+        laplacian: true,
+        mass: true,
+        ..DelaunayOutputs::default()
+    };
+    request(method, mollify, max_flips, outputs)
 }
 
 /// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
-/// Delaunay triangulation of `(V, F)`, as `robust_laplacian.mesh_laplacian` returns them.
+/// Delaunay triangulation of `(V, F)` by `method`, as `robust_laplacian.mesh_laplacian` returns
+/// them, in `format` (`"csr"` or `"csc"`), refused as the CLI refuses them when not
+/// representable. `exact=True` is refused: a mesh's lengths are square roots.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces, method = "flip", exact = false, mollify = None, max_flips = None, format = "csr"))]
+#[allow(clippy::too_many_arguments)] // the Python keyword arguments
 pub fn laplacian<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
+    method: &str,
+    exact: bool,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    laplacian_and_seconds(py, vertices, faces, mollify, max_flips).map(|(l, m, _)| (l, m))
+    let request = laplacian_request(method, mollify, max_flips).map_err(|f| f.into_pyerr(py))?;
+    if exact {
+        return Err(not_exact().into_pyerr(py));
+    }
+    laplacian_and_seconds(py, vertices, faces, &request, format).map(|(l, m, _)| (l, m))
 }
 
 /// [`laplacian`] with the default options, also returning the seconds spent in the library calls
@@ -478,7 +630,8 @@ pub fn _laplacian_timed<'py>(
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
-    laplacian_and_seconds(py, vertices, faces, None, None)
+    let request = laplacian_request("flip", None, None).map_err(|f| f.into_pyerr(py))?;
+    laplacian_and_seconds(py, vertices, faces, &request, "csr")
 }
 
 /// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay

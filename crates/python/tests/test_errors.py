@@ -115,8 +115,8 @@ def test_bad_names_list_the_allowed_values():
     with pytest.raises(surftopo.InvalidInputError) as caught:
         surftopo.quadrangulate(V, F, objective="best")
     assert caught.value.kind is None
-    with pytest.raises(ValueError, match=r"method: expected one of \"flip\""):
-        surftopo.intrinsic_delaunay(V, F, method="voronoi")
+    with pytest.raises(ValueError, match=r"method: expected one of \"auto\", \"flip\", \"voronoi\", \"dubois\", got \"x\""):
+        surftopo.intrinsic_delaunay(V, F, method="x")
     with pytest.raises(ValueError, match=r"\"rs\", \"schipper\", \"brute-force\""):
         surftopo.irreducible(V, F, algorithm="x")
     with pytest.raises(ValueError, match=r"\"sg\", \"ps\", \"lrs\", \"ds\", \"ks\""):

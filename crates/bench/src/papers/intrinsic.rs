@@ -181,7 +181,7 @@ fn markdown(
            triangulation splits it by a diagonal: lengths 1, 2 and √5), and the aspect ratio \
            of T_x is O(x²). The flip count x − 1 is not printed in the paper: it follows from \
            its construction (each flip is one unit step of Euclid's algorithm on (u, w); \
-           `../shared/DUBOIS.md`). Length error: max |ℓ − exact| over the three final lengths. \
+           docs/dubois.md §3.1(a)). Length error: max |ℓ − exact| over the three final lengths. \
            Double precision, Delaunay tolerance 1e-10.\n\n";
     md += &header(
         &[

@@ -2,27 +2,20 @@
 //! or by the Voronoi wave of Dubois, Appendix D (`--method voronoi`, optionally `--exact`), or by
 //! Dubois' Theorem 1 (`--method dubois`: Section 8's caps around the cone points, Section 4's
 //! reduction of the flat remainder, the caps put back, then the wave from the singular vertices —
-//! one vertex on a flat torus), or the method `surftopo_intrinsic::method_choice` picks
-//! (`--method auto`, the default), its tessellation, the cotan Laplacian and the lumped mass
-//! matrix.
+//! one vertex on a flat torus), or the method `--method auto` (the default) picks, its
+//! tessellation, the cotan Laplacian and the lumped mass matrix: a thin layer over
+//! `surftopo_intrinsic::intrinsic_delaunay`.
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
 use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
-use surftopo_intrinsic::dubois::{
-    DuboisReport, FlatDelaunayOptions, ReduceOptions, delaunay_tessellation_dubois,
-};
-use surftopo_intrinsic::geometry::{Rational, Scalar};
-use surftopo_intrinsic::method_choice::{
-    Method as Choice, choose_method, choose_method_for_needle,
-};
-use surftopo_intrinsic::voronoi::{VoronoiDelaunay, VoronoiOptions, voronoi_delaunay};
+use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayOptions,
-    DelaunayStats, FlipReport, IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError,
-    SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, delaunay_with_stats,
-    delaunay_with_stats_unless_needle, lumped_mass,
+    DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod, DelaunayOutput,
+    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
+    IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError, RequestError, SparseMatrix,
+    TriangleStyle,
 };
 
 /// The arguments of `delaunay`.
@@ -84,15 +77,13 @@ pub enum Method {
     Dubois,
 }
 
-impl Method {
-    /// The method [`choose_method`]'s answer names; in exact mode flipping (which works on
-    /// lengths) becomes the exact wave.
-    pub fn chosen(choice: Choice, exact: bool) -> Self {
-        match choice {
-            Choice::Dubois => Method::Dubois,
-            Choice::Voronoi => Method::Voronoi,
-            Choice::Flip if exact => Method::Voronoi,
-            Choice::Flip => Method::Flip,
+impl From<Method> for DelaunayMethod {
+    fn from(method: Method) -> Self {
+        match method {
+            Method::Auto => DelaunayMethod::Auto,
+            Method::Flip => DelaunayMethod::Flip,
+            Method::Voronoi => DelaunayMethod::Voronoi,
+            Method::Dubois => DelaunayMethod::Dubois,
         }
     }
 }
@@ -115,30 +106,37 @@ pub struct MethodOptions {
 }
 
 impl MethodOptions {
-    /// Refuses `--exact` where it cannot apply.
+    /// The library's request for these options (the outputs and limits left at their defaults).
+    pub fn request(&self) -> DelaunayRequest {
+        DelaunayRequest {
+            method: self.method.into(),
+            faithful: self.faithful,
+            ..DelaunayRequest::default()
+        }
+    }
+
+    /// Refuses `--exact` and `--faithful` where they cannot apply.
     ///
     /// # Errors
     /// An invalid-input error (exit 2).
     pub fn check(&self) -> anyhow::Result<()> {
-        if self.faithful && self.method != Method::Dubois {
-            return Err(invalid("--faithful applies to --method dubois only"));
-        }
-        if self.exact && self.method == Method::Flip {
-            return Err(invalid(
-                "--exact computes with --method voronoi or dubois only (the flip algorithm works on \
-                 lengths, which are square roots)",
-            ));
-        }
-        Ok(())
+        self.request().check(self.exact).map_err(request_error)
     }
+}
 
-    /// Proposition 2's reduction options (`--faithful`).
-    pub fn reduce_options(&self) -> ReduceOptions {
-        ReduceOptions {
-            faithful: self.faithful,
-            ..ReduceOptions::default()
+/// A request the library refuses, as the options that make it (exit 2).
+pub fn request_error(e: RequestError) -> anyhow::Error {
+    invalid(match e {
+        RequestError::FaithfulWithoutDubois => "--faithful applies to --method dubois only",
+        RequestError::ExactFlip => {
+            "--exact computes with --method voronoi or dubois only (the flip algorithm works on \
+             lengths, which are square roots)"
         }
-    }
+        RequestError::ReducedWithoutDubois => "--reduced applies to --method dubois only",
+        RequestError::FlipLimitsWithoutFlip => {
+            "--mollify and --max-flips apply to --method flip only"
+        }
+    })
 }
 
 /// Reads a portalgon JSON file given by exact corners, for `--exact`.
@@ -164,83 +162,6 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     Ok(p)
 }
 
-/// The voronoi and dubois methods' figures for `--json`.
-struct WaveFigures {
-    events: u64,
-    max_constellation: usize,
-    arithmetic: &'static str,
-    /// The reduction's report (`--method dubois`).
-    reduction: Option<DuboisReport>,
-}
-
-/// The tessellation of [`tessellate`], its figures, and (dubois) the reduced triangulation.
-type Tessellated<S> = (VoronoiDelaunay<S>, WaveFigures, Option<Portalgon<S>>);
-
-/// The Delaunay tessellation by the wave (`--method voronoi`: from every vertex) or by Theorem 1
-/// (`--method dubois`: caps, reduction, caps back, then the wave from the singular vertices), with
-/// its figures. Errors are invalid input (exit 2) naming `input`, except a numerical refusal of
-/// the `f64` wave ([`surftopo_intrinsic::voronoi::VoronoiError::is_numerical`], exit 4) and any
-/// failure of dubois in `f64` on the validated input (exit 4).
-fn tessellate<S: Scalar>(
-    p: &Portalgon<S>,
-    method: Method,
-    reduce: ReduceOptions,
-    input: &Path,
-) -> anyhow::Result<Tessellated<S>> {
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", input.display()));
-    let (v, reduction, reduced) = if method == Method::Dubois {
-        let out = crate::progress::step(
-            "reducing (Dubois, Sections 8 and 4) and running the wave",
-            || {
-                // V = the input's vertices, as flip and voronoi (Section 1's footnote 1), so the
-                // Laplacian has a row per input vertex; a flat surface gets Theorem 1's one.
-                let options = FlatDelaunayOptions {
-                    reduce,
-                    sources: surftopo_intrinsic::voronoi::Sources::All,
-                    ..FlatDelaunayOptions::default()
-                };
-                delaunay_tessellation_dubois(p, &options)
-            },
-        )
-        .map_err(|e| {
-            // The input was validated: in f64 a failure is rounding breaking a check (exit 4).
-            if S::EXACT {
-                fail(&e)
-            } else {
-                crate::failure::numerical(format!(
-                    "{}: {e} (a numerical failure of double precision: try --exact on exact \
-                     input, or --method flip)",
-                    input.display()
-                ))
-            }
-        })?;
-        (out.delaunay, Some(out.reduction), Some(out.reduced))
-    } else {
-        let v = crate::progress::step("running the Voronoi wave", || {
-            voronoi_delaunay(p, &VoronoiOptions::default())
-        })
-        .map_err(|e| {
-            if !S::EXACT && e.is_numerical() {
-                crate::failure::numerical(format!(
-                    "{}: {e} (a numerical failure of double precision: try --exact on exact \
-                     input, or --method flip)",
-                    input.display()
-                ))
-            } else {
-                fail(&e)
-            }
-        })?;
-        (v, None, None)
-    };
-    let figures = WaveFigures {
-        events: v.wave.events,
-        max_constellation: v.wave.max_constellation(),
-        arithmetic: S::ARITHMETIC,
-        reduction,
-    };
-    Ok((v, figures, reduced))
-}
-
 /// Whether an input is portalgon JSON: a `.json` file, or standard input starting with `{`.
 fn is_json_input(path: &Path) -> anyhow::Result<bool> {
     if crate::input::is_stdio(path) {
@@ -255,6 +176,50 @@ fn is_json_input(path: &Path) -> anyhow::Result<bool> {
 /// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
+    load_numbered(path, weld).map(|(tri, _)| tri)
+}
+
+/// Where the matrices' rows go in the input's vertex numbering: the input index of each vertex
+/// id of the triangulation read ([`surftopo_mesh::BuildReport::input_vertices`]), and the
+/// input's vertex count (vertices in no face get empty rows and columns).
+pub struct InputNumbering {
+    input_vertices: Vec<u32>,
+    count: usize,
+    /// The file's face (polygon) of each triangle, when polygons were cut.
+    polygon_of: Option<Vec<u32>>,
+}
+
+impl InputNumbering {
+    /// `matrix` (rows: the live vertices of `tri` in id order) on the input's rows and columns;
+    /// the matrix as it is when `tri` has vertex ids the input does not (none in practice: the
+    /// algorithms keep the vertices read).
+    fn on_input_rows(&self, tri: &IntrinsicTriangulation, matrix: &SparseMatrix) -> SparseMatrix {
+        let rows = tri.matrix_rows();
+        let mut row_to_input = vec![0u32; matrix.n];
+        for (v, &row) in rows.iter().enumerate() {
+            match (
+                row_to_input.get_mut(row as usize),
+                self.input_vertices.get(v),
+            ) {
+                (Some(slot), Some(&input)) => *slot = input,
+                (None, _) => {}
+                (Some(_), None) => return matrix.clone(),
+            }
+        }
+        let triplets: Vec<(u32, u32, f64)> = matrix
+            .triplets()
+            .map(|(i, j, v)| (row_to_input[i as usize], row_to_input[j as usize], v))
+            .collect();
+        SparseMatrix::from_triplets(self.count, &triplets)
+    }
+}
+
+/// [`load_intrinsic`], with the input's vertex numbering for a mesh file (`None` for a portalgon
+/// file, whose vertices are its own).
+pub fn load_numbered(
+    path: &Path,
+    weld: bool,
+) -> anyhow::Result<(IntrinsicTriangulation, Option<InputNumbering>)> {
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
@@ -262,7 +227,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
-        return match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
+        let tri = match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
             // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
             Err(PortalgonError::NotTriangle { .. }) => {
                 let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
@@ -271,39 +236,28 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
                     .map_err(fail)
             }
             other => other.map_err(fail),
-        };
+        }?;
+        return Ok((tri, None));
     }
     let loaded = crate::input::read_surface(path, weld)?;
-    IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
-        .map_err(|e| invalid(format!("{name}: {e}")))
+    let numbering = InputNumbering {
+        input_vertices: loaded.report.input_vertices(),
+        count: loaded.soup.vertex_count(),
+        polygon_of: loaded.polygon_of,
+    };
+    let tri =
+        IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
+            .map_err(|e| invalid(format!("{name}: {e}")))?;
+    Ok((tri, Some(numbering)))
 }
 
-/// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
-/// whose diagonal holds areas) a diagonal entry that is not a positive normal number: the areas
-/// are beyond double precision's range (they overflow or underflow), and writing them would give
-/// `inf` or a silently zero matrix. Lengths themselves are handled scale-free
-/// (`surftopo_intrinsic::trig`; cotan weights do not depend on the scale), so this happens only
-/// when the results are not representable. (A Laplacian may have a zero diagonal: a one-vertex
-/// torus.)
+/// Refuses to write a matrix that is not representable
+/// ([`SparseMatrix::check_representable`]: an `inf` entry, or a mass matrix of zeros). (A
+/// Laplacian may have a zero diagonal: a one-vertex torus.)
 fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> anyhow::Result<()> {
-    if let Some((i, j, v)) = matrix.triplets().find(|t| !t.2.is_finite()) {
-        return Err(invalid(format!(
-            "{what}: entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
-            i + 1,
-            j + 1
-        )));
-    }
-    let small = (0..matrix.n)
-        .map(|i| (i, matrix.get(i, i)))
-        .find(|&(_, v)| v.is_nan() || v < f64::MIN_POSITIVE);
-    if let Some((i, v)) = small.filter(|_| positive_diagonal) {
-        return Err(invalid(format!(
-            "{what}: diagonal entry {} is {v:e}, not a positive normal number: the triangles are \
-             too small for double precision (scale the input)",
-            i + 1
-        )));
-    }
-    Ok(())
+    matrix
+        .check_representable(positive_diagonal)
+        .map_err(|e| invalid(format!("{what}: {e}")))
 }
 
 /// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o`,
@@ -334,75 +288,75 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
     crate::output::check_outputs(&outputs)
 }
 
-/// Runs `delaunay`: resolves `--method auto` on the input read (see [`Method::Auto`]), then
-/// flips or runs the wave (after the reduction for dubois).
+/// Runs `delaunay`: reads the input (exact corners with `--exact`), runs
+/// [`surftopo_intrinsic::intrinsic_delaunay`] with the outputs asked for, then writes them and
+/// prints the figures.
 pub fn run(options: &Args) -> anyhow::Result<()> {
     check_outputs(options)?;
     options.method.check()?;
-    let flip_options_given = options.mollify.is_some() || options.max_flips.is_some();
-    let requested = options.method.method;
-    if options.method.exact {
+    let (input, numbering) = if options.method.exact {
         let p = crate::progress::step("reading", || load_exact(&options.input))?;
-        let method = match requested {
-            Method::Auto if options.reduced.is_some() => Method::Dubois,
-            Method::Auto => Method::chosen(choose_method(&p), true),
-            m => m,
-        };
-        return run_exact(options, &p, method);
-    }
-    let tri = crate::progress::step("reading", || {
-        load_intrinsic(&options.input, options.weld.weld)
-    })?;
-    let method = match requested {
-        Method::Auto if options.reduced.is_some() => Method::Dubois,
-        Method::Auto if flip_options_given => Method::Flip,
-        Method::Auto => return run_auto(options, tri),
-        m => m,
-    };
-    if method == Method::Flip {
-        run_flip(options, tri)
+        (DelaunayInput::Exact(p), None)
     } else {
-        run_wave(options, tri, method)
-    }
-}
-
-/// `--method auto` in `f64`: flipping with [`choose_method`]'s needle test after its first pass
-/// ([`delaunay_with_stats_unless_needle`]); at a needle, nothing is flipped and the rule goes on
-/// from there ([`choose_method_for_needle`]).
-fn run_auto(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
-    let flipped = crate::progress::step("flipping to Delaunay", || {
-        delaunay_with_stats_unless_needle(&mut tri, &flip_options(options))
-    })
-    .map_err(|e| flip_error(options, e))?;
-    match flipped {
-        Some(stats) => write_flipped(options, tri, &stats),
-        None => match Method::chosen(choose_method_for_needle(&tri), false) {
-            Method::Flip => run_flip(options, tri),
-            method => run_wave(options, tri, method),
+        let (tri, numbering) = crate::progress::step("reading", || {
+            load_numbered(&options.input, options.weld.weld)
+        })?;
+        (DelaunayInput::Lengths(tri), numbering)
+    };
+    let request = DelaunayRequest {
+        outputs: DelaunayOutputs {
+            triangulation: true,
+            tessellation: options.tessellation.is_some(),
+            reduced: options.reduced.is_some(),
+            laplacian: options.laplacian.is_some(),
+            mass: options.mass.is_some(),
+            figures: true,
         },
-    }
-}
-
-/// The [`DelaunayOptions`] of `--max-flips` and `--mollify`.
-fn flip_options(options: &Args) -> DelaunayOptions {
-    DelaunayOptions {
         max_flips: options.max_flips,
         mollify: options.mollify,
-        ..DelaunayOptions::default()
-    }
+        ..options.method.request()
+    };
+    let out = crate::progress::steps(|progress| {
+        surftopo_intrinsic::intrinsic_delaunay_reporting(input, &request, progress)
+    })
+    .map_err(|e| run_error(options, e, numbering.as_ref()))?;
+    write_outputs(options, &out, numbering.as_ref())?;
+    report(options, &out)
 }
 
-/// A flipping failure, naming the input: a numerical breakdown is a numerical failure (exit 4),
-/// degenerate lengths as [`geometry_error`] says, anything else invalid input (exit 2).
-fn flip_error(options: &Args, e: DelaunayError) -> anyhow::Error {
+/// A failure of the run, naming the input: a refused request as its options; a numerical
+/// failure of double precision with advice (exit 4): flipping's breakdown, the `f64` wave's
+/// refusals and Theorem 1's failures in `f64`; degenerate lengths as [`geometry_error`] says;
+/// anything else invalid input (exit 2).
+fn run_error(
+    options: &Args,
+    e: IntrinsicDelaunayError,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Error {
+    // `--mollify` applies to flipping: the hint names `--method flip` after another method.
+    let flipping = matches!(options.method.method, Method::Flip | Method::Auto);
+    let prefix = if flipping { "" } else { "--method flip " };
+    let polygons = numbering.and_then(|n| n.polygon_of.as_deref());
     let name = crate::input::name(&options.input);
     match e {
-        DelaunayError::NumericalBreakdown { .. } => crate::failure::numerical(format!(
-            "{name}: {e} (double precision cannot finish flipping this input: try --method \
-             voronoi or dubois, --exact on exact input)"
+        IntrinsicDelaunayError::Request(e) => request_error(e),
+        IntrinsicDelaunayError::Flip(e @ DelaunayError::NumericalBreakdown { .. }) => {
+            crate::failure::numerical(format!(
+                "{name}: {e} (double precision cannot finish flipping this input: try --method \
+                 voronoi or dubois, --exact on exact input)"
+            ))
+        }
+        IntrinsicDelaunayError::Flip(DelaunayError::Geometry(e))
+        | IntrinsicDelaunayError::Geometry(e) => {
+            geometry_error(&options.input, &MollifyHint(&e, prefix, polygons))
+        }
+        e if e.is_numerical() => crate::failure::numerical(format!(
+            "{}: {e} (a numerical failure of double precision: try --exact on exact input, or \
+             --method flip)",
+            options.input.display()
         )),
-        DelaunayError::Geometry(e) => geometry_error(&options.input, &e),
-        other => invalid(format!("{name}: {other}")),
+        IntrinsicDelaunayError::Flip(e) => invalid(format!("{name}: {e}")),
+        e => invalid(format!("{}: {e}", options.input.display())),
     }
 }
 
@@ -426,6 +380,41 @@ pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error 
     }
 }
 
+/// A degenerate-lengths error with the option that makes such input usable: `--mollify EPS`
+/// (after the given options, `--method flip ` where the method run is not flipping), and the
+/// file's polygon of the triangle it names when polygons were cut (the third field).
+struct MollifyHint<'a>(
+    &'a surftopo_intrinsic::GeometryError,
+    &'static str,
+    Option<&'a [u32]>,
+);
+
+impl std::fmt::Display for MollifyHint<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use surftopo_intrinsic::GeometryError as G;
+        write!(f, "{}", self.0)?;
+        let face = match self.0 {
+            G::ZeroArea { face, .. } | G::TriangleInequality { face, .. } => Some(*face),
+            _ => None,
+        };
+        if let Some(polygon) = face.and_then(|t| self.2?.get(t as usize)) {
+            write!(f, " (a triangle cut from the file's face {polygon})")?;
+        }
+        if matches!(
+            self.0,
+            G::ZeroArea { .. } | G::TriangleInequality { .. } | G::NonPositiveLength { .. }
+        ) {
+            write!(
+                f,
+                " (`{}--mollify EPS` mollifies degenerate triangles, EPS relative to the mean \
+                 edge length, e.g. 1e-6; `surftopo info` lists the near-degenerate ones)",
+                self.1
+            )?;
+        }
+        Ok(())
+    }
+}
+
 /// [`IntrinsicTriangulation::validate`] with [`geometry_error`]'s verdict.
 ///
 /// # Errors
@@ -434,168 +423,55 @@ pub fn validated(input: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<(
     tri.validate().map_err(|e| geometry_error(input, &e))
 }
 
-/// `--method flip`.
-fn run_flip(options: &Args, mut tri: IntrinsicTriangulation) -> anyhow::Result<()> {
-    if options.reduced.is_some() {
-        return Err(invalid("--reduced applies to --method dubois only"));
-    }
-    let stats = crate::progress::step("flipping to Delaunay", || {
-        delaunay_with_stats(&mut tri, &flip_options(options))
-    })
-    .map_err(|e| flip_error(options, e))?;
-    write_flipped(options, tri, &stats)
-}
-
-/// The outputs and the report of a flipped triangulation.
-fn write_flipped(
+/// Writes the outputs asked for (under temporary names, renamed together): `-o` (exact corners
+/// in exact mode, lengths otherwise), `--tessellation`, `--reduced`, `--laplacian`, `--mass`;
+/// the matrices are checked first ([`check_matrix`]), then put on the input's vertex numbering
+/// when it is a mesh file (`numbering`: rows and columns of the vertices in no face are empty).
+fn write_outputs(
     options: &Args,
-    tri: IntrinsicTriangulation,
-    stats: &DelaunayStats,
+    out: &DelaunayOutput,
+    numbering: Option<&InputNumbering>,
 ) -> anyhow::Result<()> {
+    let on_input = |m: &SparseMatrix| match (numbering, &out.triangulation) {
+        (Some(numbering), Some(tri)) => numbering.on_input_rows(tri, m),
+        _ => m.clone(),
+    };
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
-        outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+        if let Some(exact) = &out.exact_triangulation {
+            outputs.file(path, |w| {
+                Ok(PortalgonDoc::from_portalgon(exact).write(w, false)?)
+            })?;
+        } else if let Some(tri) = &out.triangulation {
+            outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+        }
     }
-    if let Some(path) = &options.tessellation {
-        let tessellation = crate::progress::step("merging co-circular triangles", || {
-            delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE)
-        });
-        outputs.file(path, |w| {
-            Ok(PortalgonDoc::from_portalgon(&tessellation.portalgon).write(w, false)?)
-        })?;
+    let portalgons = [
+        (&options.tessellation, &out.tessellation),
+        (&options.reduced, &out.reduced),
+    ];
+    for (path, portalgon) in portalgons {
+        if let (Some(path), Some(p)) = (path, portalgon) {
+            outputs.file(path, |w| Ok(p.to_doc().write(w, false)?))?;
+        }
     }
-    write_matrices(options, &tri, &mut outputs)?;
-    outputs.commit()?;
-    report(options, Method::Flip, stats, None)
-}
-
-/// Writes `--laplacian` and `--mass` of a Delaunay triangulation (under temporary names).
-fn write_matrices(
-    options: &Args,
-    tri: &IntrinsicTriangulation,
-    outputs: &mut Outputs,
-) -> anyhow::Result<()> {
-    if let Some(path) = &options.laplacian {
+    if let (Some(path), Some(laplacian)) = (&options.laplacian, &out.laplacian) {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
-        let laplacian = crate::progress::step("building the Laplacian", || cotan_laplacian(tri));
-        check_matrix(&laplacian, "the cotan Laplacian", false)?;
+        check_matrix(laplacian, "the cotan Laplacian", false)?;
+        let laplacian = on_input(laplacian);
         outputs.file(path, |w| {
             crate::output::fill_matrix(w, path, &laplacian, comment)
         })?;
     }
-    if let Some(path) = &options.mass {
+    if let (Some(path), Some(mass)) = (&options.mass, &out.mass) {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
-        let mass = crate::progress::step("building the mass matrix", || lumped_mass(tri));
-        check_matrix(&mass, "the mass matrix", true)?;
+        check_matrix(mass, "the mass matrix", true)?;
+        let mass = on_input(mass);
         outputs.file(path, |w| {
             crate::output::fill_matrix(w, path, &mass, comment)
         })?;
     }
-    Ok(())
-}
-
-/// Refuses the flip-only options and `--reduced` without dubois.
-fn check_wave_options(options: &Args, method: Method) -> anyhow::Result<()> {
-    if options.mollify.is_some() || options.max_flips.is_some() {
-        return Err(invalid(
-            "--mollify and --max-flips apply to --method flip only",
-        ));
-    }
-    if options.reduced.is_some() && method != Method::Dubois {
-        return Err(invalid("--reduced applies to --method dubois only"));
-    }
-    Ok(())
-}
-
-/// `--method voronoi` and `--method dubois` with `--exact`: the exact wave and its dual (after
-/// the exact reduction for dubois); the triangulation written is the tessellation cut along
-/// shortcuts by exact corners.
-fn run_exact(options: &Args, p: &Portalgon<Rational>, method: Method) -> anyhow::Result<()> {
-    check_wave_options(options, method)?;
-    let start = std::time::Instant::now();
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    let (v, figures, reduced) =
-        tessellate(p, method, options.method.reduce_options(), &options.input)?;
-    let triangulated = v.triangulated().map_err(|e| fail(&e))?;
-    let mut outputs = Outputs::default();
-    if let Some(path) = &options.output {
-        outputs.file(path, |w| {
-            Ok(PortalgonDoc::from_portalgon(&triangulated).write(w, false)?)
-        })?;
-    }
-    write_tessellation(options, &v.tessellation, &mut outputs)?;
-    write_reduced(options, reduced.as_ref(), &mut outputs)?;
-    let tri = v.triangulation().map_err(|e| fail(&e))?;
-    finish(options, method, &tri, &figures, start, outputs)
-}
-
-/// `--method voronoi` and `--method dubois` in f64: the wave and its dual (after the reduction
-/// for dubois); the triangulation written is the tessellation cut along shortcuts by lengths.
-fn run_wave(options: &Args, tri: IntrinsicTriangulation, method: Method) -> anyhow::Result<()> {
-    check_wave_options(options, method)?;
-    let start = std::time::Instant::now();
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", options.input.display()));
-    validated(&options.input, &tri)?;
-    let (p, _) = tri.to_portalgon();
-    let (v, figures, reduced) =
-        tessellate(&p, method, options.method.reduce_options(), &options.input)?;
-    let tri = v.triangulation().map_err(|e| fail(&e))?;
-    let mut outputs = Outputs::default();
-    if let Some(path) = &options.output {
-        outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
-    }
-    write_tessellation(options, &v.tessellation, &mut outputs)?;
-    write_reduced(options, reduced.as_ref(), &mut outputs)?;
-    finish(options, method, &tri, &figures, start, outputs)
-}
-
-/// The matrices and the figures of a wave run.
-fn finish(
-    options: &Args,
-    method: Method,
-    tri: &IntrinsicTriangulation,
-    figures: &WaveFigures,
-    start: std::time::Instant,
-    mut outputs: Outputs,
-) -> anyhow::Result<()> {
-    let flips = FlipReport {
-        flips: 0,
-        mollify_delta: None,
-        non_delaunay_edges: tri.non_delaunay_edges(surftopo_intrinsic::DEFAULT_TOLERANCE),
-    };
-    let stats = DelaunayStats::new(tri, &flips, start.elapsed().as_secs_f64());
-    write_matrices(options, tri, &mut outputs)?;
-    outputs.commit()?;
-    report(options, method, &stats, Some(figures))
-}
-
-/// Writes `--reduced` (Corollary 1's triangulation, exact corners in exact mode; under a
-/// temporary name).
-fn write_reduced<S: Scalar>(
-    options: &Args,
-    reduced: Option<&Portalgon<S>>,
-    outputs: &mut Outputs,
-) -> anyhow::Result<()> {
-    if let (Some(path), Some(r)) = (&options.reduced, reduced) {
-        outputs.file(path, |w| {
-            Ok(PortalgonDoc::from_portalgon(r).write(w, false)?)
-        })?;
-    }
-    Ok(())
-}
-
-/// Writes `--tessellation` (under a temporary name).
-fn write_tessellation<S: Scalar>(
-    options: &Args,
-    t: &Portalgon<S>,
-    outputs: &mut Outputs,
-) -> anyhow::Result<()> {
-    if let Some(path) = &options.tessellation {
-        outputs.file(path, |w| {
-            Ok(PortalgonDoc::from_portalgon(t).write(w, false)?)
-        })?;
-    }
-    Ok(())
+    outputs.commit()
 }
 
 /// The `--json` object: the stats, then `method` (the one run, after `auto`'s choice),
@@ -639,35 +515,30 @@ struct TubesJson {
 }
 
 /// Prints the figures (`--json`: [`JsonReport`]).
-fn report(
-    options: &Args,
-    method: Method,
-    stats: &DelaunayStats,
-    wave: Option<&WaveFigures>,
-) -> anyhow::Result<()> {
+fn report(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
+    let stats = out.stats.as_ref().expect("the figures are asked for");
+    let method = out.method.name();
     if options.json.json {
-        let reduction = wave
-            .and_then(|w| w.reduction.as_ref())
-            .map(|r| ReductionJson {
-                outer_iterations: r.outer_iterations,
-                inner_passes: &r.inner_passes,
-                inner_passes_total: r.inner_passes_total,
-                inner_passes_bound: r.inner_passes_bound,
-                tubes_replaced: TubesJson {
-                    thin: r.tubes_replaced_thin,
-                    thick: r.tubes_replaced_thick,
-                },
-                peak_active_vertices: r.peak_active_vertices,
-                triangles_after_reduction: r.triangles_after_reduction,
-            });
+        let reduction = out.reduction.as_ref().map(|r| ReductionJson {
+            outer_iterations: r.outer_iterations,
+            inner_passes: &r.inner_passes,
+            inner_passes_total: r.inner_passes_total,
+            inner_passes_bound: r.inner_passes_bound,
+            tubes_replaced: TubesJson {
+                thin: r.tubes_replaced_thin,
+                thick: r.tubes_replaced_thick,
+            },
+            peak_active_vertices: r.peak_active_vertices,
+            triangles_after_reduction: r.triangles_after_reduction,
+        });
         crate::output::print_json(&JsonReport {
             stats,
-            method: crate::args::value_name(&method),
+            method: method.to_string(),
             requested_method: crate::args::value_name(&options.method.method),
             reduction,
-            wave_events: wave.map(|w| w.events),
-            max_constellation: wave.map(|w| w.max_constellation),
-            arithmetic: wave.map_or("f64", |w| w.arithmetic),
+            wave_events: out.wave.map(|w| w.events),
+            max_constellation: out.wave.map(|w| w.max_constellation),
+            arithmetic: out.arithmetic,
         })?;
     } else {
         crate::output::emit(&format!(
@@ -681,7 +552,7 @@ fn report(
             stats.loops,
             stats.multi_edges,
             crate::output::format_seconds(stats.seconds),
-            crate::args::value_name(&method)
+            method
         ))?;
     }
     Ok(())

@@ -4,21 +4,19 @@
 //! from the Voronoi wave from the singular vertices (`--method voronoi`), or from Dubois'
 //! Theorem 1 on flat surfaces (`--method dubois`: the reduction, then the wave); exactly with
 //! `--exact`. `--method auto` (the default) takes dubois when both surfaces are flat needles
-//! (`surftopo_intrinsic::method_choice` on each), otherwise flip (the exact wave with `--exact`).
+//! (`surftopo_intrinsic::choose_method` on each), otherwise flip (the exact wave with `--exact`).
 
 use crate::args::{JsonArg, WeldArg};
 use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
-use surftopo_intrinsic::dubois::{FlatDelaunayOptions, ReduceOptions, delaunay_tessellation_flat};
-use surftopo_intrinsic::geometry::Scalar;
-use surftopo_intrinsic::method_choice::{
-    Method as Choice, choose_method, choose_method_for_triangulation,
-};
-use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, to_f64, voronoi_delaunay};
+use surftopo_intrinsic::dubois::{FlatDelaunayError, first_cone_point};
+use surftopo_intrinsic::voronoi::Sources;
 use surftopo_intrinsic::{
+    DEFAULT_ANGLE_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs, DelaunayRequest,
     ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision, IsometryOptions,
-    Portalgon, compare_tessellations, decide_isometry,
+    Portalgon, choose_method, choose_method_for_triangulation, compare_tessellations,
+    decide_isometry, intrinsic_delaunay_reporting,
 };
 
 /// The arguments of `isometric`.
@@ -74,53 +72,56 @@ impl Verdict {
     }
 }
 
-/// The options of the wave for a canonical tessellation (V = the singular vertices).
-fn singular_wave() -> VoronoiOptions {
-    VoronoiOptions {
-        sources: Sources::Singular,
-        ..VoronoiOptions::default()
-    }
-}
-
-/// The canonical tessellation of a portalgon by the wave from its singular vertices
+/// The canonical tessellation (V = the singular vertices) of a surface by the wave
 /// (`--method voronoi`) or by Theorem 1 on a flat surface (`--method dubois`), in f64 for the
-/// comparison. Errors (a cone point for dubois, a tolerance the f64 dual cannot settle) name
-/// `path`.
-fn canonical<S: Scalar>(
+/// comparison. Errors (an invalid surface, a tolerance the f64 dual cannot settle) name `path`.
+fn canonical(
     path: &Path,
-    p: &surftopo_intrinsic::Portalgon<S>,
+    input: DelaunayInput,
     method: Method,
-    reduce: ReduceOptions,
+    options: &MethodOptions,
 ) -> anyhow::Result<Portalgon> {
-    let fail = |e: &dyn std::fmt::Display| invalid(format!("{}: {e}", shown(path)));
-    let tessellation = if method == Method::Dubois {
-        crate::progress::step("reducing (Dubois, Section 4) and running the wave", || {
-            let options = FlatDelaunayOptions {
-                reduce,
-                ..FlatDelaunayOptions::default()
-            };
-            delaunay_tessellation_flat(p, &options)
-        })
-        .map_err(|e| fail(&e))?
-        .delaunay
-        .tessellation
-    } else {
-        voronoi_delaunay(p, &singular_wave())
-            .map_err(|e| fail(&e))?
-            .tessellation
+    let request = DelaunayRequest {
+        method: method.into(),
+        vertices: Sources::Singular,
+        outputs: DelaunayOutputs {
+            tessellation: true,
+            ..DelaunayOutputs::default()
+        },
+        ..options.request()
     };
-    Ok(to_f64(&tessellation))
+    let out =
+        crate::progress::steps(|progress| intrinsic_delaunay_reporting(input, &request, progress))
+            .map_err(|e| invalid(format!("{}: {e}", shown(path))))?;
+    Ok(out
+        .tessellation
+        .expect("the tessellation is asked for")
+        .to_f64())
 }
 
-/// The canonical tessellation of an intrinsic triangulation in f64 (see [`canonical`]).
-fn canonical_of_triangulation(
+/// Refuses a cone point for `--method dubois`, which takes flat surfaces only here (Corollary
+/// 2's canonical tessellations of flat surfaces; cone points go to flip or voronoi).
+fn refuse_cone_point(
     path: &Path,
-    tri: &IntrinsicTriangulation,
-    method: Method,
-    reduce: ReduceOptions,
-) -> anyhow::Result<Portalgon> {
-    let (p, _) = tri.to_portalgon();
-    canonical(path, &p, method, reduce)
+    p: &surftopo_intrinsic::Portalgon<impl surftopo_intrinsic::geometry::Scalar>,
+    exact: bool,
+) -> anyhow::Result<()> {
+    let Some((label, class, side)) = first_cone_point(p, DEFAULT_ANGLE_TOLERANCE) else {
+        return Ok(());
+    };
+    Err(invalid(if exact {
+        let e = FlatDelaunayError::ConePoint {
+            label,
+            class,
+            side: side.idx(),
+        };
+        format!("{}: {e}", shown(path))
+    } else {
+        format!(
+            "{}: a cone point: --method dubois takes flat surfaces only; use --method flip or voronoi",
+            shown(path)
+        )
+    }))
 }
 
 /// Whether two canonical tessellations correspond.
@@ -147,7 +148,6 @@ fn decide_by_tessellations(
     method: MethodOptions,
     options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
-    let (exact, reduce, method) = (method.exact, method.reduce_options(), method.method);
     let what = |method: Method| {
         if method == Method::Dubois {
             "Theorem 1 (Dubois) tessellation"
@@ -158,66 +158,62 @@ fn decide_by_tessellations(
     let isometric = |method: Method, outcome: surftopo_intrinsic::Outcome| {
         IsometryDecision::Isometric(format!("by the {}, {}", what(method), outcome.reason()))
     };
-    if exact {
+    if method.exact {
         let (pa, pb) = (load_exact(a)?, load_exact(b)?);
-        let method = match method {
+        let resolved = match method.method {
             Method::Auto
-                if choose_method(&pa) == Choice::Dubois && choose_method(&pb) == Choice::Dubois =>
+                if choose_method(&pa) == DelaunayMethod::Dubois
+                    && choose_method(&pb) == DelaunayMethod::Dubois =>
             {
                 Method::Dubois
             }
             Method::Auto => Method::Voronoi,
             m => m,
         };
-        let (ta, tb) = (
-            canonical(a, &pa, method, reduce)?,
-            canonical(b, &pb, method, reduce)?,
-        );
+        if resolved == Method::Dubois {
+            refuse_cone_point(a, &pa, true)?;
+        }
+        let ta = canonical(a, DelaunayInput::Exact(pa), resolved, &method)?;
+        if resolved == Method::Dubois {
+            refuse_cone_point(b, &pb, true)?;
+        }
+        let tb = canonical(b, DelaunayInput::Exact(pb), resolved, &method)?;
         let outcome = correspond(&ta, &tb, options)?;
         return Ok(if outcome.is_isometric() {
-            isometric(method, outcome)
+            isometric(resolved, outcome)
         } else {
             IsometryDecision::NotIsometric(format!(
                 "by the exact {}, {}",
-                what(method),
+                what(resolved),
                 outcome.reason()
             ))
         });
     }
     let (first, second) = (load_valid(a, weld)?, load_valid(b, weld)?);
-    let method = match method {
+    let resolved = match method.method {
         Method::Auto
-            if choose_method_for_triangulation(&first) == Choice::Dubois
-                && choose_method_for_triangulation(&second) == Choice::Dubois =>
+            if choose_method_for_triangulation(&first) == DelaunayMethod::Dubois
+                && choose_method_for_triangulation(&second) == DelaunayMethod::Dubois =>
         {
             Method::Dubois
         }
         Method::Auto => return decide(a, b, &first, &second, options),
         m => m,
     };
-    if method == Method::Dubois {
+    if resolved == Method::Dubois {
         // Asked for by name (or chosen), a cone point is refused rather than decided otherwise.
         for (path, tri) in [(a, &first), (b, &second)] {
-            let (p, _) = tri.to_portalgon();
-            if surftopo_intrinsic::dubois::first_cone_point(
-                &p,
-                surftopo_intrinsic::DEFAULT_ANGLE_TOLERANCE,
-            )
-            .is_some()
-            {
-                return Err(invalid(format!(
-                    "{}: a cone point: --method dubois takes flat surfaces only; use --method flip or voronoi",
-                    shown(path)
-                )));
-            }
+            refuse_cone_point(path, &tri.to_portalgon().0, false)?;
         }
     }
-    let tessellations = canonical_of_triangulation(a, &first, method, reduce)
-        .and_then(|ta| Ok((ta, canonical_of_triangulation(b, &second, method, reduce)?)));
+    let of = |path: &Path, tri: &IntrinsicTriangulation| {
+        canonical(path, DelaunayInput::Lengths(tri.clone()), resolved, &method)
+    };
+    let tessellations = of(a, &first).and_then(|ta| Ok((ta, of(b, &second)?)));
     if let Ok((ta, tb)) = tessellations {
         let outcome = correspond(&ta, &tb, options)?;
         if outcome.is_isometric() {
-            return Ok(isometric(method, outcome));
+            return Ok(isometric(resolved, outcome));
         }
     }
     decide(a, b, &first, &second, options)

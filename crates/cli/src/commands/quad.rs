@@ -3,13 +3,13 @@
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
+use crate::input::LoadedCovered;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::geometry::Point3;
-use surftopo_mesh::{CoveredSurface, Surface, SurfaceKind};
+use surftopo_mesh::{CoveredSurface, FaceId, SurfaceKind};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
     QuadAlgorithm, QuadError, QuadResult, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads,
-    positions_with_added, quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
+    quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
 };
 
 /// The arguments of `quad`.
@@ -64,47 +64,58 @@ fn objective_named(name: &str) -> anyhow::Result<Option<QualityObjective>> {
         .ok_or_else(|| anyhow::anyhow!("no quad objective is called {name}"))
 }
 
-/// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions; no
-/// attributes: `run` adds the input's per-vertex ones, which follow the vertex list).
-pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
+/// The quad mesh on the input's vertex list (same order, same positions and per-vertex
+/// attributes, unreferenced vertices kept): the quads on the surface's vertex ids mapped back
+/// through `input_vertices` ([`surftopo_mesh::BuildReport::input_vertices`]).
+pub fn quad_soup(input: &PolygonSoup, input_vertices: &[u32], result: &QuadResult) -> PolygonSoup {
     let mut soup = PolygonSoup::new();
-    soup.positions = surface.positions.clone();
+    soup.positions = input.positions.clone();
+    soup.attributes.vertex = input.attributes.vertex.clone();
     for quad in &result.quads {
-        soup.push_face(&quad.map(|v| v.0));
+        soup.push_face(&quad.map(|v| input_vertices[v.idx()]));
     }
     soup
 }
 
-/// The quadrangulation of a compact surface as a polygon soup: the surface's vertices (same
-/// order, same positions), then the vertices added for all quads (midpoints of their boundary
-/// edges); the quads, then the triangles left unpaired.
-pub fn surface_quad_soup(positions: &[Point3], result: &SurfaceQuads) -> PolygonSoup {
-    let mut soup = PolygonSoup::new();
-    soup.positions = positions_with_added(positions, result);
-    for quad in &result.quads {
-        soup.push_face(quad);
-    }
-    for triangle in &result.triangles {
-        soup.push_face(triangle);
-    }
-    soup
-}
-
-/// The input's per-vertex attributes for the output's vertex list: the surface's vertices
-/// keep theirs; an added vertex gets the mean of its edge's two ends (rounded for integer
-/// columns).
-fn attributes_with_added(
-    attributes: &surftopo_io::Attributes,
+/// The quadrangulation of a compact surface on the input's vertex list (same order, same
+/// positions and per-vertex attributes, unreferenced vertices kept), then the vertices added for
+/// all quads (midpoints of their boundary edges; per-vertex attributes: the mean of the edge's
+/// ends, rounded for integer columns); the quads, then the triangles left unpaired. Surface
+/// vertex ids are mapped back through `input_vertices`
+/// ([`surftopo_mesh::BuildReport::input_vertices`]).
+pub fn surface_quad_soup(
+    input: &PolygonSoup,
+    input_vertices: &[u32],
     result: &SurfaceQuads,
-) -> Vec<surftopo_io::VertexProperty> {
-    attributes
+) -> PolygonSoup {
+    let mut soup = PolygonSoup::new();
+    let base = input.positions.len() as u32;
+    let index = |v: u32| {
+        if (v as usize) < result.vertex_count {
+            input_vertices[v as usize]
+        } else {
+            base + (v - result.vertex_count as u32)
+        }
+    };
+    let ends: Vec<[usize; 2]> = result
+        .added
+        .iter()
+        .map(|e| e.map(|v| index(v) as usize))
+        .collect();
+    soup.positions = input.positions.clone();
+    for &[a, b] in &ends {
+        let (p, q) = (input.positions[a], input.positions[b]);
+        soup.positions
+            .push(std::array::from_fn(|k| 0.5 * (p[k] + q[k])));
+    }
+    soup.attributes.vertex = input
+        .attributes
         .vertex
         .iter()
         .map(|p| {
-            let mut values = p.values[..result.vertex_count.min(p.values.len())].to_vec();
-            values.resize(result.vertex_count, 0.0);
-            for &[a, b] in &result.added {
-                let mean = 0.5 * (p.values[a as usize] + p.values[b as usize]);
+            let mut values = p.values.clone();
+            for &[a, b] in &ends {
+                let mean = 0.5 * (p.values[a] + p.values[b]);
                 values.push(if p.scalar.is_int() {
                     mean.round()
                 } else {
@@ -117,7 +128,46 @@ fn attributes_with_added(
                 values,
             }
         })
-        .collect()
+        .collect();
+    for quad in &result.quads {
+        soup.push_face(&quad.map(index));
+    }
+    for triangle in &result.triangles {
+        soup.push_face(&triangle.map(index));
+    }
+    soup
+}
+
+/// The input's own quads when every face of it is a quad, each as listed or reversed as the
+/// surface's cover orients it (building reorients faces against the majority of their piece):
+/// the quad mesh of a quad mesh is itself.
+fn own_quads(loaded: &LoadedCovered) -> Option<Vec<[u32; 4]>> {
+    let soup = &loaded.soup;
+    if soup.face_count() == 0 || soup.faces().any(|f| f.len() != 4) {
+        return None;
+    }
+    let input_vertices = loaded.report.input_vertices();
+    let cover = &loaded.surface.cover;
+    let quads = soup.faces().enumerate().map(|(k, f)| {
+        let quad = [f[0], f[1], f[2], f[3]];
+        // The first of the quad's two triangles (surface face ids are the cut triangles'
+        // indices), as the cover orients it: its corners run forward around the quad or
+        // backward.
+        let corners = cover.mesh.face_vertices(FaceId(2 * k as u32)).map(|v| {
+            quad.iter()
+                .position(|&q| q == input_vertices[cover.class(v) as usize])
+                .unwrap_or(0)
+        });
+        let steps: usize = (0..3)
+            .map(|i| (corners[(i + 1) % 3] + 4 - corners[i]) % 4)
+            .sum();
+        if steps == 4 {
+            quad
+        } else {
+            [quad[0], quad[3], quad[2], quad[1]]
+        }
+    });
+    Some(quads.collect())
 }
 
 /// The quads of `objective` on any compact surface, with their total cost, optimality gap (when
@@ -152,11 +202,17 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = args.job.read_covered()?;
-    if !loaded.report.dropped_vertices.is_empty() {
-        stderr_println!(
-            "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
-        );
-    }
+    let own = own_quads(&loaded);
+    let objective_name = if own.is_some() {
+        COUNT
+    } else {
+        &args.objective
+    };
+    let (algorithm, objective) = if own.is_some() {
+        (QuadAlgorithm::KarpSipser, None)
+    } else {
+        (algorithm, objective)
+    };
     let pieces = &loaded.report.surfaces;
     let paired = crate::progress::step("pairing triangles", || {
         pair(
@@ -169,12 +225,39 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    let mut soup = surface_quad_soup(&loaded.surface.positions, result);
-    soup.attributes.vertex = attributes_with_added(&loaded.attributes, result);
-    args.job.write("quad", &soup, &loaded.attributes)?;
+    // KS pairs the triangles cut from each quad back first (its file-order step); should it
+    // not, its own pairing is written, and said so.
+    let own = match own {
+        Some(quads) if result.stats.file_order => {
+            stderr_println!(
+                "note: {}: every face is a quad: its own quads are written (the two triangles \
+                 cut from each paired back by `ks`; --algorithm and --objective do not apply)",
+                crate::input::name(input)
+            );
+            Some(quads)
+        }
+        Some(_) => {
+            stderr_println!(
+                "note: {}: every face is a quad, but the triangles cut from them do not pair \
+                 back in file order: `ks`'s quads are written",
+                crate::input::name(input)
+            );
+            None
+        }
+        None => None,
+    };
+    let mut soup = surface_quad_soup(&loaded.soup, &loaded.report.input_vertices(), result);
+    if let Some(quads) = own {
+        soup.face_indices.clear();
+        soup.face_offsets.truncate(1);
+        for quad in &quads {
+            soup.push_face(quad);
+        }
+    }
+    args.job.write("quad", &soup, &loaded.soup.attributes)?;
     let stats = &result.stats;
     if args.job.json.json {
-        crate::output::print_json(&paired.figures(&args.objective))?;
+        crate::output::print_json(&paired.figures(objective_name))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {

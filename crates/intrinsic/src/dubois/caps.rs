@@ -1,10 +1,10 @@
 //! Section 8 (proof of Proposition 2): caps around the cone points, ALGORITHM on the flat
-//! remainder, the caps put back; then Theorem 1 for closed surfaces with cone points
-//! (Proposition 2, then Proposition 3's wave).
+//! remainder, the caps put back. Theorem 1 with cone points, Proposition 2 then Proposition 3's
+//! wave, is [`super::delaunay_tessellation_dubois`].
 //!
 //! **The paper's steps and their functions:**
 //! - `d`, the minimum height of the triangles of `T`, and the cap points on every directed edge
-//!   leaving a cone point (interior singularity): [`cut_caps`], with the radius of DUBOIS.md §2.4
+//!   leaving a cone point (interior singularity): [`cut_caps`], with the radius of docs/dubois.md §3.4
 //!   (below);
 //! - tracing each cap boundary and cutting the faces along it (`T₀`), then cutting the
 //!   remaining polygons along shortcuts (INSERTEDGES' [`Portalgon::triangulate_by_shortcuts`]):
@@ -13,13 +13,10 @@
 //!   [`CapCut::remainder`];
 //! - Proposition 1 on `T₁` (ALGORITHM with `N = ⌈log₂(2 + L₁/s)⌉`, `s = d/(12r)` below):
 //!   [`super::reduce_with_boundary`] with [`CapCut::outer_iterations`];
-//! - placing the caps back (Proposition 2's output portalgon `T′`): [`put_caps_back`];
-//! - Theorem 1 = Proposition 2 then Proposition 3 ([`crate::voronoi::voronoi_delaunay`] from the
-//!   singular vertices of `T′`): [`delaunay_tessellation_dubois`]; on a flat surface (no cone
-//!   point) it is [`super::delaunay_tessellation_flat`].
+//! - placing the caps back (Proposition 2's output portalgon `T′`): [`put_caps_back`].
 //!
 //! **Decisions and deviations:**
-//! - **\[reconstruction, DUBOIS.md §2.4\] Cap radius.** The paper's point at distance `d/6` from
+//! - **\[reconstruction, docs/dubois.md §3.4\] Cap radius.** The paper's point at distance `d/6` from
 //!   the cone point is irrational in general (`d` is a height). Each edge `e` at a cone point gets
 //!   the point at distance `ρ_e = 2^{−k}|e|` from it, `k` the least integer with `ρ_e ≤ d/6`
 //!   (decided exactly on squares: `36·|e|² ≤ 4^k·d²`, `d² = min 4A²/ℓ²_max`), so
@@ -52,19 +49,6 @@
 //!   in each face `f`, and the corners of `f` are at least `h_f` apart, so caps stay disjoint and
 //!   inside their faces; radii only grow (`h ≥ d`), and `N` is still computed from the global
 //!   `d` (an upper bound).
-//! - **\[`f64` only\] Double-double reduction.** [`delaunay_tessellation_dubois`] on `f64`
-//!   input runs Proposition 2 (caps, ALGORITHM, caps back) in
-//!   [`crate::geometry::DoubleDouble`] (about 106 bits), the wave and its dual in `f64`: `T₀` is
-//!   laid out again from one length per edge (so matched sides agree to that precision), and
-//!   `T′` is rounded back to `f64` in local frames (first corner at the origin). In `f64` the
-//!   caps and the pieces of thin triangles give sides thousands of times shorter than the
-//!   polygons holding them, whose coordinates (a merged polygon's frame) are larger still;
-//!   every motion rounds at the coordinates' scale, so the two copies of a short side come to
-//!   disagree in direction by `ulp · |coordinates| / |side|`, and `T′` gets pairs of false cone
-//!   points (on `chassis_upright.off`'s `T′`, ±6.8e-5 rad in `f64`), which the cotangents of
-//!   the Laplacian amplify. Pieces cut from a polygon are also moved to their own frame
-//!   ([`Portalgon::cut`]). Measured on `kitten.off` (3 paired runs): 1.3 times the time of
-//!   an `f64` reduction. [`proposition_2`] itself runs in the scalar type it is given.
 //! - **\[`f64` only\] Closing tolerance.** Every interior vertex of `T₁` is flat and every
 //!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
 //!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
@@ -76,24 +60,6 @@
 //!   whose rounding they carry. The output is checked independently (the tests compare the
 //!   Laplacian with the flip route's: to 1e-12 on the smallest shared meshes;
 //!   `results/dubois-every-mesh.txt` gives each mesh's deviation).
-//! - **\[`f64` only\] The wave on `T′`** runs with its own tolerances (points one within 1e-9
-//!   of the longest side): the double-double `T′` closes up far below them. (With an `f64`
-//!   reduction `T′` closed up only to the closing tolerance, so a site carried around a vertex
-//!   came back that far from itself, and the wave had to identify points within 1e-6 of the
-//!   longest side; that merged distinct sites of near-co-circular configurations, which broke
-//!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
-//!   is built again pooling the sites of Voronoi vertices taken for one, then at
-//!   [`CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`VoronoiOptions::dual_retry_tolerance`]).
-//!   When all three fail, the wave and the dual run again at tolerances
-//!   [`CAPS_F64_FINER_TOLERANCE`] times finer ([`VoronoiOptions::finer_retry`]: points 1e-12,
-//!   the dual 1e-12 and 1e-11). The tolerance
-//!   is taken at the scale of the longest side, and a surface with features thousands of times
-//!   smaller can have whole clusters of sites within it: on `seahorse2_100K.off`'s `T′`
-//!   (longest side 0.07) a cap triangle has a side of 1.9e-6 and 17 sites within 3.2e-5 of a
-//!   Voronoi vertex; the side diagrams' ties (about 2e-9 in squared distance, against squared
-//!   distances of 1.5e-10 to 1e-9) swallow them all, and the dual misses the vertex. The
-//!   coarse tolerance comes first because it merges near-co-circular vertices where the fine
-//!   one may not; `results/dubois-every-mesh.txt` shows where each retry is needed.
 //! - INSERTEDGES in `f64` skips degenerate shortcut candidates (an arc along a side up to
 //!   rounding: [`Portalgon::shortcut`]), which the midpoints and cap points, straight corners
 //!   off their line by an ulp, would otherwise produce.
@@ -104,10 +70,6 @@
 //!   (INSERTVERTICES never splits them, deletions only remove sides at interior vertices, the
 //!   splice keeps boundary ids), which [`put_caps_back`] checks (a missing or changed side is a
 //!   typed error, never a silent mismatch).
-//! - Output vertex labels: the wave numbers its sources; when every cone point of the input is
-//!   labelled (mesh input), the tessellation's corners get the input's labels back, so its
-//!   triangulation indexes the Laplacian like the flip route's. A vertex of the input that is
-//!   flat (within the tolerance in `f64`) is no vertex of Theorem 1's tessellation.
 //!
 //! **Guarantees.** Proposition 2's and Theorem 1's hold for exact input in exact mode (every
 //! step above is exact over the rationals). None is claimed in `f64`: the routines run with the
@@ -115,18 +77,11 @@
 //! silent answer; `tests/caps.rs` compares the result with the flip route on the shared
 //! meshes.
 
-use super::{
-    DuboisError, DuboisReport, FlatDelaunayError, FlatDelaunayOptions, Reduction,
-    delaunay_tessellation_flat, first_cone_point, reduce_with_boundary,
-};
-use std::any::TypeId;
+use super::{DuboisError, DuboisReport, FlatDelaunayOptions, Reduction, reduce_with_boundary};
 
 use crate::geometry::{DoubleDouble, Scalar};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
-use crate::voronoi::{
-    Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, voronoi_delaunay,
-    voronoi_delaunay_from,
-};
+use crate::voronoi::{Sources, VoronoiError, is_flat_vertex};
 
 /// In `f64`, the least relative tolerance with which ALGORITHM on `T₁` and [`put_caps_back`]
 /// check their closings (a deleted vertex's corners meeting, re-glued sides of equal length):
@@ -134,15 +89,15 @@ use crate::voronoi::{
 pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
 
 /// In `f64`, the tolerance at which the dual of the wave on `T′` is built again when it fails
-/// at its own ([`VoronoiOptions::dual_retry_tolerance`]): see the module doc.
+/// at its own ([`crate::voronoi::VoronoiOptions::dual_retry_tolerance`]): see the module doc.
 pub const CAPS_F64_DUAL_RETRY_TOLERANCE: f64 = 1e-8;
 
 /// In `f64`, when the wave and its dual on `T′` fail, they run again at their tolerances times
-/// this ([`VoronoiOptions::finer_retry`]; points 1e-9 by default, then 1e-12): see the module
+/// this ([`crate::voronoi::VoronoiOptions::finer_retry`]; points 1e-9 by default, then 1e-12): see the module
 /// doc.
 pub const CAPS_F64_FINER_TOLERANCE: f64 = 1e-3;
 
-/// Why [`cut_caps`], [`put_caps_back`] or [`delaunay_tessellation_dubois`] failed.
+/// Why [`cut_caps`], [`put_caps_back`] or [`super::delaunay_tessellation_dubois`] failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum CapsError {
     /// Bad input (not closed, not triangular) or a failure of ALGORITHM on the remainder.
@@ -159,8 +114,8 @@ impl From<crate::error::PortalgonError> for CapsError {
     }
 }
 
-impl From<crate::portalgon_edits::EditError> for CapsError {
-    fn from(e: crate::portalgon_edits::EditError) -> Self {
+impl From<crate::portalgon::EditError> for CapsError {
+    fn from(e: crate::portalgon::EditError) -> Self {
         Self::Reduction(e.into())
     }
 }
@@ -411,7 +366,10 @@ pub fn cut_caps_at<S: Scalar>(
 /// origin (same side ids, labels and matching): the frames ALGORITHM's merges start from are then
 /// local, so that in `f64` rounding is relative to the polygons' sizes rather than to the
 /// coordinates of the input (cap-sized pieces lie far from the origin). Exact in exact mode.
-fn in_local_frames<S: Scalar>(p: &Portalgon<S>, tolerance: f64) -> Result<Portalgon<S>, CapsError> {
+pub(super) fn in_local_frames<S: Scalar>(
+    p: &Portalgon<S>,
+    tolerance: f64,
+) -> Result<Portalgon<S>, CapsError> {
     let mut out = Portalgon::empty();
     for q in p.polygons() {
         let c = p.corners(q);
@@ -440,7 +398,7 @@ fn in_local_frames<S: Scalar>(p: &Portalgon<S>, tolerance: f64) -> Result<Portal
 /// rounding of two independent `f64` layouts (which a short piece cut from the edge, a cap
 /// side, would carry as a large relative error). A triangle the new lengths make degenerate
 /// keeps its corners. Ids, matching and labels are kept.
-fn laid_out_in_double_double<S: Scalar>(t: &Portalgon<S>) -> Portalgon<DoubleDouble> {
+pub(super) fn laid_out_in_double_double<S: Scalar>(t: &Portalgon<S>) -> Portalgon<DoubleDouble> {
     let mut out = t.map_coordinates(|x| DoubleDouble::from_f64_exact(x.to_f64()));
     let length2 = |p: &Portalgon<DoubleDouble>, s: SideId| {
         let s = p.mate(s).map_or(s, |m| m.min(s));
@@ -552,10 +510,10 @@ pub fn proposition_2<S: Scalar>(
 
 /// [`proposition_2`]'s output and the vertex classes of `T′` that are capped vertices of the
 /// input (increasing, each once).
-type WithApexes<S> = (Portalgon<S>, DuboisReport, CapCut<S>, Vec<u32>);
+pub(super) type WithApexes<S> = (Portalgon<S>, DuboisReport, CapCut<S>, Vec<u32>);
 
 /// [`proposition_2`], with the vertex classes of `T′` that are capped vertices of `t`.
-fn proposition_2_with_apexes<S: Scalar>(
+pub(super) fn proposition_2_with_apexes<S: Scalar>(
     t: &Portalgon<S>,
     options: &FlatDelaunayOptions,
 ) -> Result<WithApexes<S>, CapsError> {
@@ -586,136 +544,4 @@ fn proposition_2_with_apexes<S: Scalar>(
     apexes.sort_unstable();
     apexes.dedup();
     Ok((t_prime, report, cut, apexes))
-}
-
-/// Theorem 1's output on a closed surface: the tessellation (with the wave's data), ALGORITHM's
-/// report, and the caps.
-#[derive(Clone, Debug)]
-pub struct ConeDelaunay<S: Scalar> {
-    /// Proposition 3 on Proposition 2's `T′`: `.tessellation`, `.wave`, `.sources`.
-    pub delaunay: VoronoiDelaunay<S>,
-    /// ALGORITHM's report (on `T₁`; `triangles_after_reduction` counts `T′`, caps included).
-    pub reduction: DuboisReport,
-    /// Cone points, each with a cap (0 for a flat surface).
-    pub cone_points: usize,
-    /// Cap triangles cut off and put back.
-    pub cap_triangles: usize,
-    /// Corollary 1: the low-happiness triangulation the wave ran on (Proposition 2's `T′`, caps
-    /// included; ALGORITHM's output on a flat surface).
-    pub reduced: Portalgon<S>,
-}
-
-/// Theorem 1 on a closed triangular portalgon, with or without cone points: without, it is
-/// [`delaunay_tessellation_flat`]; with, [`proposition_2`] then
-/// [`crate::voronoi::voronoi_delaunay`] from the singular vertices of `T′` (its cone points are
-/// the input's), or with [`Sources::All`] from every input vertex
-/// ([`crate::voronoi::voronoi_delaunay_from`] on the capped vertices). Labels: see the module
-/// doc. Exact on rational input in exact mode; on `f64` input Proposition 2 runs in
-/// double-double and the wave in `f64` (module doc).
-///
-/// # Errors
-/// [`CapsError`]: bad input, ALGORITHM's or the wave's errors.
-pub fn delaunay_tessellation_dubois<S: Scalar>(
-    t: &Portalgon<S>,
-    options: &FlatDelaunayOptions,
-) -> Result<ConeDelaunay<S>, CapsError> {
-    t.check_invariants()?;
-    t.check_closed()?;
-    if first_cone_point(t, options.angle_tolerance).is_none() {
-        let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
-            FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
-            FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
-            FlatDelaunayError::ConePoint { .. } => CapsError::Reduction(DuboisError::Invariant(
-                "a cone point appeared on a flat surface".into(),
-            )),
-        })?;
-        return Ok(ConeDelaunay {
-            delaunay: flat.delaunay,
-            reduction: flat.reduction,
-            cone_points: 0,
-            cap_triangles: 0,
-            reduced: flat.reduced,
-        });
-    }
-    let (t_prime, reduction, cut, apexes) = if TypeId::of::<S>() == TypeId::of::<f64>() {
-        // The reduction in double-double, `T′` rounded back in local frames (module doc).
-        let t_dd = laid_out_in_double_double(t);
-        let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
-        let t_prime = in_local_frames(&t_prime, CAPS_F64_CLOSING_TOLERANCE)?
-            .map_coordinates(|x| S::from_f64(x.to_f64()).unwrap_or_else(S::zero));
-        let cut = (cut.cone_points, cut.caps.len());
-        (t_prime, reduction, cut, apexes)
-    } else {
-        let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(t, options)?;
-        (
-            t_prime,
-            reduction,
-            (cut.cone_points, cut.caps.len()),
-            apexes,
-        )
-    };
-    let mut wave_options = VoronoiOptions {
-        sources: Sources::Singular,
-        angle_tolerance: options.angle_tolerance,
-        wave: options.wave,
-        ..VoronoiOptions::default()
-    };
-    if !S::EXACT {
-        // `T′` from the double-double reduction closes up to far below the wave's own point
-        // tolerance (module doc), which is kept.
-        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
-        // Features far below the default tolerance (module doc): the wave again, finer.
-        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
-    }
-    let mut delaunay = match options.sources {
-        Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
-        Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
-    };
-    relabel_with_input_labels(&t_prime, &mut delaunay)?;
-    Ok(ConeDelaunay {
-        delaunay,
-        reduction,
-        cone_points: cut.0,
-        cap_triangles: cut.1,
-        reduced: t_prime,
-    })
-}
-
-/// Gives the tessellation's corners (labelled with the index of their source) the label of their
-/// source in `t_prime`, when every source has one.
-fn relabel_with_input_labels<S: Scalar>(
-    t_prime: &Portalgon<S>,
-    delaunay: &mut VoronoiDelaunay<S>,
-) -> Result<(), CapsError> {
-    let (class, _) = t_prime.vertex_classes();
-    let mut label_of_class: Vec<Option<u32>> = vec![None; class.len()];
-    for s in t_prime.sides() {
-        let c = class[s.idx()] as usize;
-        if label_of_class[c].is_none() {
-            label_of_class[c] = t_prime.vertex_label(s);
-        }
-    }
-    let labels: Option<Vec<u32>> = delaunay
-        .sources
-        .iter()
-        .map(|&c| label_of_class[c as usize])
-        .collect();
-    let Some(labels) = labels else {
-        return Ok(());
-    };
-    let tess = &mut delaunay.tessellation;
-    let polygons: Vec<PolygonId> = tess.polygons().collect();
-    for p in polygons {
-        let new: Vec<u32> = tess
-            .polygon_sides(p)
-            .iter()
-            .map(|&s| {
-                tess.vertex_label(s)
-                    .and_then(|k| labels.get(k as usize).copied())
-                    .unwrap_or(u32::MAX)
-            })
-            .collect();
-        tess.set_vertex_labels(p, &new)?;
-    }
-    Ok(())
 }

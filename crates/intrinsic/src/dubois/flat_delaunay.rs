@@ -17,7 +17,7 @@
 use super::{DuboisError, DuboisReport, ReduceOptions, reduce};
 use crate::geometry::Scalar;
 use crate::portalgon::{Portalgon, SideId};
-use crate::quality::DEFAULT_ANGLE_TOLERANCE;
+use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, WaveOptions, is_flat_vertex,
     voronoi_delaunay,

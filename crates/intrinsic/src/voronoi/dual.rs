@@ -1,5 +1,5 @@
 //! The Delaunay tessellation from the constellations: the dual of the Voronoi diagram (Dubois,
-//! Appendix C, Lemmas 29–31; Appendix D.1, Proposition 12), by the simpler route of DUBOIS.md §2.7.
+//! Appendix C, Lemmas 29–31; Appendix D.1, Proposition 12), by the simpler route of docs/dubois.md §3.7.
 //!
 //! At the end of the wave, the Voronoi diagram of X_Δ restricted to Δ is the pre-image of the
 //! Voronoi diagram of V (Proposition 13, Lemma 34). A Voronoi vertex `v` in (closed) Δ is a point
@@ -29,7 +29,7 @@
 //!   not built (nothing downstream needs it).
 //! - Proposition 12 lays each polygon out by unfolding a spanning tree of its Voronoi face
 //!   (Lemmas 32–33); here the polygon is read off the constellation of a triangle holding its
-//!   Voronoi vertex (DUBOIS.md §2.7), which Lemma 35 makes equivalent. The tests compare the result
+//!   Voronoi vertex (docs/dubois.md §3.7), which Lemma 35 makes equivalent. The tests compare the result
 //!   with the flip route's tessellation.
 //! - A Voronoi vertex on a side of T belongs to the triangle of the smaller side id of the matched
 //!   pair; one at a corner of T (a flat vertex of T not in V) to the corner of the smallest side
@@ -56,11 +56,10 @@
 
 use std::cmp::Ordering;
 
-use super::singular::star;
 use super::wave::Wave;
-use crate::DEFAULT_LENGTH_TOLERANCE;
 use crate::error::PortalgonError;
 use crate::geometry::{Motion, Point, Scalar, add, cross, dist2, dot, scale, sub};
+use crate::portalgon::DEFAULT_LENGTH_TOLERANCE;
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Where a Voronoi vertex lies in its triangle.
@@ -205,7 +204,7 @@ pub(crate) fn build_dual<S: Scalar>(
             let owned = match inst.place {
                 Place::Interior => true,
                 Place::Side(s) => s < p.mate(s).expect("closed"),
-                Place::Corner(s) => star(p, s).is_some_and(|c| c.iter().min() == Some(&s)),
+                Place::Corner(s) => p.star(s).is_some_and(|c| c.iter().min() == Some(&s)),
             };
             if !owned {
                 continue;
@@ -776,7 +775,7 @@ impl<S: Scalar> Dual<'_, S> {
                     let mut cur = s;
                     let mut pts = [end, ya, yb];
                     let mut dirs = [dir];
-                    let corners = star(p, s).ok_or("an open star")?.len();
+                    let corners = p.star(s).ok_or("an open star")?.len();
                     let mut found = false;
                     for _ in 0..=corners {
                         let c = &pts[0];
@@ -835,7 +834,7 @@ impl<S: Scalar> Dual<'_, S> {
                     tri = p.owner(p.mate(s).expect("closed"));
                 }
                 Place::Corner(s) => {
-                    let corners = star(p, s).ok_or("an open star")?;
+                    let corners = p.star(s).ok_or("an open star")?;
                     let target = *corners.iter().min().expect("a corner");
                     let mut cur = s;
                     let mut pts = [at, ya, yb];

@@ -8,7 +8,7 @@
 //! - [`wave`]: the multi-source wave of Appendix D.2 (Propositions 11, 13, 14; Lemmas 40, 41),
 //!   giving the constellations X_Δ;
 //! - [`dual`]: the Delaunay tessellation as the dual of the Voronoi diagram (Appendix C,
-//!   Lemmas 29–31; Proposition 12 by DUBOIS.md §2.7's route), and the Voronoi diagram itself.
+//!   Lemmas 29–31; Proposition 12 by docs/dubois.md §3.7's route), and the Voronoi diagram itself.
 //!
 //! [`voronoi_delaunay`] runs them in order on a closed triangular portalgon in any [`Scalar`]:
 //! `f64`, or [`crate::geometry::Rational`] for exact results (then every predicate and
@@ -21,10 +21,10 @@
 //! Deviations from the paper, all listed in the files' docs: V may be every vertex of T
 //! ([`Sources::All`], the flip algorithm's vertex set) as well as the singular ones; the Voronoi
 //! diagram is output as polylines in T instead of a refined portalgon T′ (Proposition 11); the
-//! polygons are read off the constellations (DUBOIS.md §2.7) instead of Proposition 12's
+//! polygons are read off the constellations (docs/dubois.md §3.7) instead of Proposition 12's
 //! unfoldings; Lemma 41's lists are vectors (O(k) splices) instead of search trees; `f64` compares
-//! with tolerances (exact mode compares exactly). Where the design notes (DUBOIS.md) and the tests
-//! disagreed, the tests decided: closed cells with ties in `f64` (see [`wave`]); crossings of the
+//! with tolerances (exact mode compares exactly). Decided by the tests against a first design
+//! (docs/dubois.md §3.7): closed cells with ties in `f64` (see [`wave`]); crossings of the
 //! side lists taken at the bisector of consecutive cells, not at their (overlapping) ends.
 //!
 //! Limits: the `f64` mode can refuse a surface with a typed [`DualError`] when rounding makes the
@@ -41,15 +41,14 @@ pub mod singular;
 pub mod wave;
 
 pub use dual::{DualError, Segment, VoronoiDiagram};
-pub(crate) use singular::star;
 pub use singular::{is_flat_vertex, wave_sources};
 pub use wave::{SideCell, Wave, WaveError, WaveOptions, run_wave};
 
 use crate::error::PortalgonError;
 use crate::geometry::Scalar;
 use crate::portalgon::Portalgon;
-use crate::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 
 /// The vertex set V the wave starts from.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -1,12 +1,12 @@
 //! The vertex set V of the wave: the singular vertices (Dubois, Section 2.2: angle sum different
 //! from 2π), or one vertex when there is none (a flat torus, Proof of Proposition 3).
 //!
-//! Exact mode decides flatness exactly (DUBOIS.md §2.5): the star of the vertex is unfolded into
+//! Exact mode decides flatness exactly (docs/dubois.md §3.5): the star of the vertex is unfolded into
 //! the plane of its first corner by composing the gluing maps ([`Motion::gluing`], exact on rationals), and
 //! the vertex is flat iff the composed map around the star is the identity and the corners wind
 //! exactly once around the vertex (the number of corner wedges, half-open, that contain the
 //! direction of the first side). In `f64` the angle sum is summed with `atan2` and compared with 2π
-//! up to the tolerance of [`crate::quality`] ([`crate::DEFAULT_ANGLE_TOLERANCE`] = 1e-9 radians by
+//! up to the angle tolerance ([`crate::DEFAULT_ANGLE_TOLERANCE`] = 1e-9 radians by
 //! default).
 
 use std::cmp::Ordering;
@@ -14,24 +14,6 @@ use std::f64::consts::TAU;
 
 use crate::geometry::{Motion, Point, Scalar, cross, dot, sub};
 use crate::portalgon::{Portalgon, SideId};
-
-/// The corners around the vertex at the start of `s`, counter-clockwise: the sides leaving the
-/// vertex, `s` first (`s`, `mate(prev(s))`, ...). `None` when a side on the way is unmatched.
-pub(crate) fn star<S: Scalar>(p: &Portalgon<S>, s: SideId) -> Option<Vec<SideId>> {
-    let mut out = vec![s];
-    let mut cur = s;
-    loop {
-        let next = p.mate(p.prev_side(cur))?;
-        if next == s {
-            return Some(out);
-        }
-        if out.len() > p.side_slots() {
-            return None;
-        }
-        out.push(next);
-        cur = next;
-    }
-}
 
 /// The gluing map from the frame of the polygon of `q` to the frame of the polygon of `s` that
 /// puts `q` onto its mate `s` (footnote 2: `start(q) ↦ end(s)`, `end(q) ↦ start(s)`).
@@ -55,7 +37,7 @@ fn in_wedge<S: Scalar>(a: &Point<S>, b: &Point<S>, r: &Point<S>) -> bool {
 /// module doc), within `angle_tolerance` of 2π in `f64`. A vertex with an unmatched side around it
 /// (boundary) counts as singular.
 pub fn is_flat_vertex<S: Scalar>(p: &Portalgon<S>, s: SideId, angle_tolerance: f64) -> bool {
-    let Some(corners) = star(p, s) else {
+    let Some(corners) = p.star(s) else {
         return false;
     };
     if !S::EXACT {

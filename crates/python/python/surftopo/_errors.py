@@ -86,7 +86,9 @@ class MeshFileError(InvalidInputError):
 
 
 class NumericalBreakdownError(SurftopoError, ArithmeticError):
-    """Double precision no longer gives valid triangles during the Delaunay flips (``edge``)."""
+    """Double precision could not finish: the Delaunay flips no longer give valid triangles
+    (``edge``), or the Voronoi wave's traced edges do not close up (``method="voronoi"`` or
+    ``"dubois"`` without ``exact``)."""
 
     edge: int | None = None
 

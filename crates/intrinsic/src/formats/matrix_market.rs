@@ -8,12 +8,12 @@
 //! coordinate files (SciPy's `mmwrite` output included) and is used by the tests and the
 //! benchmark's comparison with libigl.
 
-use crate::laplacian::SparseMatrix;
-use crate::text_blocks::{block_count, block_range, write_blocks};
+use crate::formats::text_blocks::{block_count, block_range, write_blocks};
+use crate::sparse::SparseMatrix;
 use std::io::{self, BufRead, Write};
 use surftopo_mesh::decimal::{push_f64, push_u64};
 
-/// Matrix rows per block of the writer ([`crate::text_blocks`]): a few hundred kilobytes of a
+/// Matrix rows per block of the writer ([`crate::formats::text_blocks`]): a few hundred kilobytes of a
 /// Laplacian.
 const ROWS_PER_BLOCK: usize = 4096;
 

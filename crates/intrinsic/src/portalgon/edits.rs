@@ -7,7 +7,7 @@
 //! - [`Portalgon::components`]: the connected components of a sub-portalgon with their Euler
 //!   characteristic, boundary cycles and interior vertices (Section 4.3's tubes, Appendix B);
 //! - [`Portalgon::splice`]: replace a sub-portalgon by another with the same boundary, keeping
-//!   the ids of the boundary sides (DUBOIS.md §2.6: cap boundaries and separating loops survive
+//!   the ids of the boundary sides (docs/dubois.md §3.6: cap boundaries and separating loops survive
 //!   every replacement).
 //!
 //! The edits are exact in exact mode; tests check [`Portalgon::check_invariants`] and that the
@@ -374,7 +374,7 @@ impl<S: Scalar> Portalgon<S> {
         Ok(in_set)
     }
 
-    /// Replaces the sub-portalgon of `old` by the portalgon `new` (DUBOIS.md §2.6; Section 4.3's
+    /// Replaces the sub-portalgon of `old` by the portalgon `new` (docs/dubois.md §3.6; Section 4.3's
     /// "replace X by a good biface"), keeping the ids of the boundary sides. `boundary` pairs each
     /// unmatched side of `new` with a boundary side of the sub-portalgon (a side of `old` not
     /// matched inside it), one to one, with equal lengths (exactly in exact mode, up to the relative

@@ -9,7 +9,7 @@
 //! symmetric storage). Archives are plain zip (no zip64): beyond 4 GiB per entry or in total the
 //! writer refuses with an error before writing.
 
-use crate::laplacian::SparseMatrix;
+use crate::sparse::SparseMatrix;
 use std::io::{self, Write};
 
 /// The NPY header of a little-endian C-order array: magic, version 1.0, the header length, the

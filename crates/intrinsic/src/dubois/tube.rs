@@ -7,10 +7,10 @@
 //!   independent sets of interior weak vertices of degree ≤ 10, re-triangulating by shortcuts,
 //!   until every interior vertex is on a loop: a concatenation of fewer than 3n bifaces), Lemma 25
 //!   on each biface, then Lemma 26 merging consecutive good bifaces one by one;
-//! - [`TubeRoute::Direct`], DUBOIS.md §2.1(c) (a *reconstruction*): unfold the whole tube into
+//! - [`TubeRoute::Direct`], docs/dubois.md §3.1(c) (a *reconstruction*): unfold the whole tube into
 //!   one chart along a dual spanning tree, read the deck transformation `g` off a non-tree side,
 //!   sum the angle `ψ₀` around `g`'s centre along a path of the chart, and apply the kernel of
-//!   [`crate::biface`] once: O(n + log h) operations.
+//!   [`crate::dubois::biface`] once: O(n + log h) operations.
 //!
 //! Lemmas 25 and 26 delegate to exhaustive searches on portalgons of constant happiness; here both
 //! are the ladder kernel [`good_biface_of_ladder`] on the unfolded biface (2 triangles) or
@@ -32,11 +32,11 @@ use std::cmp::Ordering;
 use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 
-use crate::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
+use crate::dubois::biface::{Biface, BifaceError, GoodBiface, good_biface_of_ladder};
 use crate::error::PortalgonError;
 use crate::geometry::{Motion, Point, Scalar, complex_div, complex_mul, cross, dist2, dot, sub};
+use crate::portalgon::{EditError, VertexInfo};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
-use crate::portalgon_edits::{EditError, VertexInfo};
 
 /// Lemma 28 deletes interior weak vertices of degree at most this.
 pub const LEMMA_28_MAX_DEGREE: u32 = 10;
@@ -44,7 +44,7 @@ pub const LEMMA_28_MAX_DEGREE: u32 = 10;
 /// How [`Portalgon::good_biface_of_tube`] proceeds (see the module documentation).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TubeRoute {
-    /// DUBOIS.md §2.1(c): one unfolding, one kernel call (the default).
+    /// docs/dubois.md §3.1(c): one unfolding, one kernel call (the default).
     #[default]
     Direct,
     /// Appendix B: Lemma 28, Lemma 25 on each biface, Lemma 26's merges.
@@ -181,7 +181,7 @@ impl<S: Scalar> Portalgon<S> {
         }
         for &s in &c.interior_vertices {
             // Interior: every side around it is matched, so its star closes up.
-            let sides = crate::voronoi::star(self, s).ok_or_else(not_annulus)?;
+            let sides = self.star(s).ok_or_else(not_annulus)?;
             let (full_turn, angle) = self.is_full_turn(&sides, tolerance);
             if !full_turn {
                 return Err(TubeError::NotFlat {
@@ -199,7 +199,7 @@ impl<S: Scalar> Portalgon<S> {
     /// Whether the corner angles at the start corners of `sides` (one vertex) add up to 2π, and
     /// their sum as a double. Exact
     /// mode: the product of the corners' complex ratios is a positive real after exactly one turn
-    /// (DUBOIS.md §2.5); f64: the `atan2` sum within `tolerance · 2π`.
+    /// (docs/dubois.md §3.5); f64: the `atan2` sum within `tolerance · 2π`.
     pub(crate) fn is_full_turn(&self, sides: &[SideId], tolerance: f64) -> (bool, f64) {
         let mut z: Point<S> = [S::one(), S::zero()];
         let (mut turns, mut angle) = (0u32, 0.0);
@@ -303,7 +303,7 @@ impl<S: Scalar> Portalgon<S> {
         Ok([created[0], created[1]])
     }
 
-    /// DUBOIS.md §2.1(c) on a tube: unfold, find `g` and `ψ₀`, run the kernel.
+    /// docs/dubois.md §3.1(c) on a tube: unfold, find `g` and `ψ₀`, run the kernel.
     fn ladder_kernel(&self, tube: &Tube, tolerance: f64) -> Result<GoodBiface<S>, TubeError> {
         let chart = self.unfold(tube, tolerance)?;
         Ok(good_biface_of_ladder(
@@ -378,7 +378,7 @@ impl<S: Scalar> Portalgon<S> {
         let Some((err, g)) = best else {
             return Err(TubeError::NoHolonomy { side: beta0.idx() });
         };
-        // g must also take the b₁ side's start to its end (DUBOIS.md §2.1(c), step 2).
+        // g must also take the b₁ side's start to its end (docs/dubois.md §3.1(c), step 2).
         let q1 = m1.apply(self.end_ref(beta1));
         let err_b1 = dist2(&g.apply(&q0), &q1);
         let acceptable = if S::EXACT {

@@ -9,10 +9,15 @@
 //! Conventions: side `i` of face `f` is `mesh.face_halfedges(f)[i]`, from corner `i` to corner
 //! `i + 1`; the *corner* of a half-edge `h` is the corner at `origin(h)` in `face(h)`.
 
+pub(crate) mod convert;
+pub(crate) mod mollify;
+pub(crate) mod quality;
+pub(crate) mod trig;
+
 use crate::error::{GeometryError, SoupError};
-use crate::trig::{self, Quad};
 use surftopo_mesh::geometry::{Point3, check_finite, edge_lengths};
 use surftopo_mesh::{BuildReport, EdgeId, FaceId, HalfedgeId, SurfaceMesh, VertexId};
+use trig::Quad;
 
 /// An intrinsic triangulation of a closed surface: topology and edge lengths.
 #[derive(Clone, Debug, PartialEq)]
@@ -289,6 +294,29 @@ impl IntrinsicTriangulation {
             .expect("caller checked that the edge is flippable");
         self.lengths[e.idx()] = length;
     }
+}
+
+impl IntrinsicTriangulation {
+    /// Per vertex slot, its row (and column) in the matrices of this crate ([`crate::cotan_laplacian`],
+    /// [`crate::lumped_mass`], [`crate::intrinsic_delaunay_laplacian`]): the live vertices in increasing id
+    /// order, `u32::MAX` for removed ids. There are [`surftopo_mesh::SurfaceMesh::vertex_count`]
+    /// rows.
+    pub fn matrix_rows(&self) -> Vec<u32> {
+        dense_vertex_index(self).0
+    }
+}
+
+/// Dense index of each live vertex (increasing id order), `u32::MAX` for removed ids, and the
+/// number of live vertices.
+pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usize) {
+    let mesh = tri.mesh();
+    let mut index = vec![u32::MAX; mesh.vertex_slots()];
+    let mut n = 0usize;
+    for v in mesh.vertices() {
+        index[v.idx()] = n as u32;
+        n += 1;
+    }
+    (index, n)
 }
 
 /// Relative change of a quad's area beyond which [`IntrinsicTriangulation::flip_if_convex`]

@@ -43,14 +43,14 @@
 //! such a file back gives the same face, edge and vertex ids. Tessellations (any polygons) are
 //! written with `corners`. Full description: `crates/intrinsic/PORTALGON_FORMAT.md`.
 
-use crate::convert::{TriangleGluing, is_clockwise, triangulation_from_gluing};
 use crate::error::PortalgonError;
+use crate::formats::text_blocks::{block_count, block_range, write_blocks};
 use crate::geometry::{ParseRationalError, Point, Rational, Scalar};
-use crate::laplacian::dense_vertex_index;
-use crate::portalgon::{Portalgon, check_polygon};
-use crate::text_blocks::{block_count, block_range, write_blocks};
+use crate::portalgon::{PolygonId, Portalgon, check_polygon};
 use crate::triangulation::IntrinsicTriangulation;
-use crate::trig;
+use crate::triangulation::convert::{TriangleGluing, is_clockwise, triangulation_from_gluing};
+use crate::triangulation::dense_vertex_index;
+use crate::triangulation::trig;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::io::{Read, Write};
 use surftopo_mesh::Side;
@@ -542,8 +542,8 @@ impl PortalgonDoc {
         }
         for [[p, i], [q, j]] in pairs {
             let (s, t) = (
-                out.side(crate::PolygonId(p as u32), i),
-                out.side(crate::PolygonId(q as u32), j),
+                out.side(PolygonId(p as u32), i),
+                out.side(PolygonId(q as u32), j),
             );
             out.glue(s, t, tolerance)?;
         }
@@ -780,14 +780,14 @@ impl TriangulationSides {
     }
 }
 
-/// Polygons per block of the JSON writers ([`crate::text_blocks`]): about half a megabyte of
+/// Polygons per block of the JSON writers ([`crate::formats::text_blocks`]): about half a megabyte of
 /// triangles by lengths.
 const POLYGONS_PER_BLOCK: usize = 4096;
 /// Pairs of the matching per block: about a quarter of a megabyte.
 const PAIRS_PER_BLOCK: usize = 8192;
 
 /// Writes the compact JSON of a portalgon document by hand, polygons and pairs formatted in
-/// blocks on several threads ([`crate::text_blocks`]): the header, `polygon(p, buf)` appending
+/// blocks on several threads ([`crate::formats::text_blocks`]): the header, `polygon(p, buf)` appending
 /// polygon `p`'s object for each `p < polygons`, then the pairs `pair(k)`. Bytes are those of
 /// `serde_json::to_writer` on the [`PortalgonDoc`] (numbers by the same shortest round-trip
 /// formatting, [`surftopo_mesh::decimal`]); callers check finiteness first.

@@ -13,7 +13,7 @@
 //!    differing by more than `1e-6` relative (each area is a sum of Kahan-accurate triangle
 //!    areas), prove "not isometric" whatever the rounding.
 //! 2. Two flat tori (genus 1, every vertex flat: the flat-vertex removal is most fragile there)
-//!    are compared by their period lattices instead ([`crate::flat_torus_lattice`]): congruent
+//!    are compared by their period lattices instead ([`crate::isometry::flat_torus_lattice`]): congruent
 //!    within the length tolerance is "isometric", different by more than `1e-4` relative is
 //!    "not isometric", in between "undecidable".
 //! 3. Then the test with the given options. "Isometric" is the answer (a correspondence of the
@@ -33,7 +33,7 @@
 //! depends on a tolerance; it is never given when the default test and all its variants agree.
 
 use crate::error::{DelaunayError, IsometryError, RemovalError};
-use crate::flat_torus_lattice::flat_torus_invariants;
+use crate::isometry::flat_torus_lattice::flat_torus_invariants;
 use crate::isometry::{IsometryOptions, Outcome, isometric};
 use crate::triangulation::IntrinsicTriangulation;
 use std::fmt;

@@ -1,40 +1,7 @@
-//! Portalgons (Dubois, Section 2.1): polygons in the plane with a partial matching of sides.
-//!
-//! A [`Portalgon`] is a collection of counter-clockwise polygons, each given by its corners in its
-//! own copy of the plane (the paper's real-RAM *representation*: displacing a polygon gives
-//! another representation of the same portalgon), with a partial matching of equally long sides.
-//! Gluing matched sides, respecting the polygons' orientations, gives the surface `S(T)`;
-//! unmatched sides are its boundary (e.g. the boundary of a *sub-portalgon*, Section 2.1, or of a
-//! *region*, Section 4.4). Side `i` of a polygon runs from its corner `i` to corner `i + 1`.
-//!
-//! Ids are stable: sides ([`SideId`]) and polygons ([`PolygonId`]) keep their ids through the
-//! elementary edits the paper's algorithm is made of, and removed ones become tombstones:
-//! - [`Portalgon::cut`]: cut a polygon along a vertex-to-vertex arc, the two new sides matched to
-//!   each other (INSERTEDGES, Section 4.1; [`Portalgon::shortcut`] finds the arc it inserts, and
-//!   [`Portalgon::triangulate_by_shortcuts`] is INSERTEDGES on one polygon);
-//! - [`Portalgon::merge`]: the inverse, gluing two polygons along a matched pair of sides after
-//!   displacing one rigidly (Section 2.3's elementary operation);
-//! - [`Portalgon::delete_vertex`]: DELETEVERTICES' step (Section 4.2), merging the polygons around
-//!   a weak flat vertex into one and closing the slit left at it;
-//! - [`Portalgon::glue`] / [`Portalgon::unglue`]: change the matching (cutting the surface, as in
-//!   Appendix B's proof of Lemma 25, or closing it up);
-//! - [`Portalgon::sub_portalgon`]: the sub-portalgon of a set of polygons, and [`Regions`], the
-//!   partition into regions with one active region of Section 4.4.
-//!
-//! The corners are in a [`Scalar`] `S` (`Portalgon<S = f64>`): `f64`, or exact rationals
-//! ([`crate::geometry::Rational`]), where every edit is exact — [`Portalgon::merge`] displaces by
-//! footnote 2's motion ([`Motion::gluing`]: no square root in exact mode; in `f64` normalised to
-//! a rotation, so that rounding in short sides does not scale what is moved) and lengths are
-//! compared squared ([`Portalgon::side_length2`]). The plane geometry is [`crate::geometry`]'s; its predicates have
-//! exact signs in both modes.
-//!
-//! What is checked: [`Portalgon::add_polygon`] validates a polygon (at least three finite corners,
-//! no zero side, counter-clockwise, simple); [`Portalgon::glue`] requires equal lengths, exactly
-//! in exact mode and up to a relative tolerance in `f64` (`|a - b| <= tolerance · max(a, b)`,
-//! [`DEFAULT_LENGTH_TOLERANCE`]). [`Portalgon::check_invariants`] checks the whole structure (tests
-//! call it after every edit).
-//! [`Portalgon::merge`] does not check that the merged polygon is simple (merging all polygons
-//! around a vertex whose angle exceeds 2π overlaps itself in the plane), nor does it need to.
+//! The portalgon structure: polygons, sides, the matching, their queries and validation, and the
+//! elementary edits ([`Portalgon::cut`], [`Portalgon::merge`], [`Portalgon::delete_vertex`],
+//! [`Portalgon::glue`] / [`Portalgon::unglue`], [`Portalgon::sub_portalgon`]); see the module
+//! doc of [`crate::portalgon`].
 
 use std::cmp::Ordering;
 
@@ -601,6 +568,24 @@ impl<S: Scalar> Portalgon<S> {
         }
     }
 
+    /// The corners around the vertex at the start of `s`, counter-clockwise: the sides leaving the
+    /// vertex, `s` first (`s`, `mate(prev(s))`, ...). `None` when a side on the way is unmatched.
+    pub fn star(&self, s: SideId) -> Option<Vec<SideId>> {
+        let mut out = vec![s];
+        let mut cur = s;
+        loop {
+            let next = self.mate(self.prev_side(cur))?;
+            if next == s {
+                return Some(out);
+            }
+            if out.len() > self.side_slots() {
+                return None;
+            }
+            out.push(next);
+            cur = next;
+        }
+    }
+
     /// The vertices of the surface: the class of each side's start corner under the gluing
     /// (indexed by side id, `u32::MAX` for removed sides; classes numbered by first side), and the
     /// number of classes. O(n α(n)).
@@ -1094,89 +1079,6 @@ impl<S: Scalar> Portalgon<S> {
             out.mate[a.idx()] = b;
         }
         out
-    }
-}
-
-/// The partition of a portalgon's polygons into regions, one of them active (Dubois,
-/// Section 4.4, Figure 4): the data structure of the paper's ALGORITHM. A side matched to a side
-/// of a polygon in another region lies on a *separating* edge. Regions are plain labels per
-/// polygon id; after [`Portalgon::cut`] the caller assigns the new polygon (usually to the region
-/// of the cut one), and [`Regions::sub_portalgon`] extracts a region with its border as boundary.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Regions {
-    region: Vec<u32>,
-    active: u32,
-    count: u32,
-}
-
-impl Regions {
-    /// Every polygon of `portalgon` in region 0, which is active.
-    pub fn new<S: Scalar>(portalgon: &Portalgon<S>) -> Self {
-        Self {
-            region: vec![0; portalgon.polygon_slots()],
-            active: 0,
-            count: 1,
-        }
-    }
-    /// The region of a polygon (polygons created after [`Regions::new`] and never assigned are
-    /// in the active region).
-    pub fn region(&self, p: PolygonId) -> u32 {
-        self.region.get(p.idx()).copied().unwrap_or(self.active)
-    }
-    /// Puts polygon `p` in region `r`.
-    pub fn assign(&mut self, p: PolygonId, r: u32) {
-        if self.region.len() <= p.idx() {
-            self.region.resize(p.idx() + 1, self.active);
-        }
-        self.region[p.idx()] = r;
-        self.count = self.count.max(r + 1);
-    }
-    /// Follows [`Portalgon::compact_in_place`]: each live polygon keeps its region under its new
-    /// id (`polygon_map` is the map that returned).
-    pub fn renumber(&mut self, polygon_map: &[PolygonId]) {
-        let live = polygon_map.iter().filter(|p| p.is_valid()).count();
-        let mut region = vec![self.active; live];
-        for (old, new) in polygon_map.iter().enumerate() {
-            if new.is_valid() {
-                region[new.idx()] = self.region(PolygonId(old as u32));
-            }
-        }
-        self.region = region;
-    }
-    /// A fresh region label.
-    pub fn new_region(&mut self) -> u32 {
-        self.count += 1;
-        self.count - 1
-    }
-    /// The active region.
-    pub fn active(&self) -> u32 {
-        self.active
-    }
-    /// Makes region `r` the active one.
-    pub fn set_active(&mut self, r: u32) {
-        self.active = r;
-        self.count = self.count.max(r + 1);
-    }
-    /// The live polygons of region `r`, increasing ids.
-    pub fn polygons_in<S: Scalar>(&self, portalgon: &Portalgon<S>, r: u32) -> Vec<PolygonId> {
-        portalgon
-            .polygons()
-            .filter(|&p| self.region(p) == r)
-            .collect()
-    }
-    /// Whether side `s` is matched to a side of a polygon in another region.
-    pub fn is_separating<S: Scalar>(&self, portalgon: &Portalgon<S>, s: SideId) -> bool {
-        portalgon
-            .mate(s)
-            .is_some_and(|t| self.region(portalgon.owner(s)) != self.region(portalgon.owner(t)))
-    }
-    /// The sub-portalgon of region `r` (see [`Portalgon::sub_portalgon`]).
-    pub fn sub_portalgon<S: Scalar>(
-        &self,
-        portalgon: &Portalgon<S>,
-        r: u32,
-    ) -> (Portalgon<S>, Vec<SideId>) {
-        portalgon.sub_portalgon(&self.polygons_in(portalgon, r))
     }
 }
 

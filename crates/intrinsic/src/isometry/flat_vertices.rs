@@ -19,11 +19,11 @@
 //! later (after the other removals, after a Delaunay flip of everything); if it stays stuck the
 //! removal fails with [`RemovalError::Stuck`] rather than guess. Each attempt costs O(d²).
 
-use crate::delaunay::{DelaunayOptions, flip_to_delaunay};
 use crate::error::RemovalError;
-use crate::quality::flat_vertices;
+use crate::flip::{DelaunayOptions, flip_to_delaunay};
 use crate::triangulation::IntrinsicTriangulation;
-use crate::trig;
+use crate::triangulation::quality::flat_vertices;
+use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, VertexId};
 
 /// What [`remove_flat_vertices`] did.

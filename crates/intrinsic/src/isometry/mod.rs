@@ -22,14 +22,18 @@
 //! isometric), so with [`IsometryOptions::allow_reflection`] (default) the mirror image of the
 //! second tessellation is tried too, and the outcome says which one matched.
 
-use crate::delaunay::{DelaunayOptions, flip_to_delaunay};
+pub(crate) mod decision;
+pub(crate) mod flat_torus_lattice;
+pub(crate) mod flat_vertices;
+
 use crate::error::{IsometryError, PortalgonError};
-use crate::flat::remove_flat_vertices;
+use crate::flip::tessellation::delaunay_tessellation;
+use crate::flip::{DelaunayOptions, flip_to_delaunay};
 use crate::geometry::Motion;
+use crate::isometry::flat_vertices::remove_flat_vertices;
 use crate::portalgon::{Point2, Portalgon, SideId};
-use crate::quality::DEFAULT_ANGLE_TOLERANCE;
-use crate::tessellation::delaunay_tessellation;
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 use std::fmt;
 
 /// Default co-circularity tolerance of the isometry test (looser than the tessellation's

@@ -1,7 +1,7 @@
 //! The figures of one Delaunay run, for the CLI's `--json` and the benchmark.
 
-use crate::delaunay::{DelaunayOptions, FlipReport, flip_to_delaunay};
 use crate::error::DelaunayError;
+use crate::flip::{DelaunayOptions, FlipReport, flip_to_delaunay};
 use crate::triangulation::IntrinsicTriangulation;
 use serde::Serialize;
 use std::time::Instant;
@@ -74,21 +74,4 @@ pub fn delaunay_with_stats(
     let report = flip_to_delaunay(tri, options)?;
     let seconds = start.elapsed().as_secs_f64();
     Ok(DelaunayStats::new(tri, &report, seconds))
-}
-
-/// Runs [`crate::delaunay::flip_to_delaunay_unless_needle`] and times it: `Ok(None)` (nothing
-/// flipped) at the first needle.
-///
-/// # Errors
-/// As [`flip_to_delaunay`].
-pub fn delaunay_with_stats_unless_needle(
-    tri: &mut IntrinsicTriangulation,
-    options: &DelaunayOptions,
-) -> Result<Option<DelaunayStats>, DelaunayError> {
-    let start = Instant::now();
-    let Some(report) = crate::delaunay::flip_to_delaunay_unless_needle(tri, options)? else {
-        return Ok(None);
-    };
-    let seconds = start.elapsed().as_secs_f64();
-    Ok(Some(DelaunayStats::new(tri, &report, seconds)))
 }

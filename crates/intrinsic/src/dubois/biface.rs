@@ -29,7 +29,7 @@
 //!
 //! **The kernel ([`Biface::make_good`]).** Lemma 25 delegates to Löffler, Ophelders, Silveira and
 //! Staals' Theorem 45, of which there is no public implementation. This module uses instead the
-//! closed forms of DUBOIS.md §2.1 — a *reconstruction*, checked by the brute-force ladder oracle
+//! closed forms of docs/dubois.md §3.1 — a *reconstruction*, checked by the brute-force ladder oracle
 //! of `tests/bifaces.rs` (`kernel_agrees_with_the_ladder_oracle_*`,
 //! `validity_criterion_agrees_with_the_walk`):
 //! - (a) *translation* (`ω = 1` exactly, `t = C − A`): every offset is valid and `|p₀q_m|²` is
@@ -48,7 +48,7 @@
 //! **Ties** go toward the current edges: a good biface is returned unchanged
 //! ([`GoodBiface::unchanged`]). Among other good bifaces: when two offsets are both shortest, `e`
 //! and `f` are those two; when the two neighbours of `m*` tie (a rectangle), `f = p₀q_{m*+1}`
-//! (rung offset `m*`). DUBOIS.md §2.1(a) picks `p₁q_{m*}` there; this module picks the other so
+//! (rung offset `m*`). The other choice, `p₁q_{m*}`, would be as good; this one is taken so
 //! that `T_x` cut along its unit loop gives the triangle `(0,0), (1,0), (x − ⌊x⌋, 2)` for integer
 //! `x` too (the test `t_x_cut_along_its_unit_loop_gives_d_x`).
 //!
@@ -256,8 +256,8 @@ impl<S: Scalar> Biface<S> {
         Motion::gluing(&self.a, &self.d, &self.c, &self.b)
     }
 
-    /// Whether the gluing is a translation (`ω = 1` exactly): a flat cylinder, DUBOIS.md
-    /// §2.1(a).
+    /// Whether the gluing is a translation (`ω = 1` exactly): a flat cylinder,
+    /// docs/dubois.md §3.1(a).
     pub fn is_translation(&self) -> bool {
         self.gluing().is_translation()
     }
@@ -326,7 +326,7 @@ impl<S: Scalar> Biface<S> {
         }
     }
 
-    /// Whether the segment `p₀q_m` lies in the ladder: DUBOIS.md §2.1(b)'s criterion (i)–(iii)
+    /// Whether the segment `p₀q_m` lies in the ladder: docs/dubois.md §3.1(b)'s criterion (i)–(iii)
     /// for a rotation, always for a translation (§2.1(a)). A *reconstruction*, checked against
     /// the walk of the segment through the strip by `validity_criterion_agrees_with_the_walk`.
     pub fn is_valid_offset(&self, m: &S) -> Result<bool, BifaceError> {
@@ -371,7 +371,7 @@ impl<S: Scalar> Biface<S> {
         Ok(self.make_good()?.unchanged)
     }
 
-    /// The good-biface kernel (Lemma 25 of Appendix B, by DUBOIS.md §2.1's closed forms — a
+    /// The good-biface kernel (Lemma 25 of Appendix B, by docs/dubois.md §3.1's closed forms — a
     /// reconstruction, see the module documentation for the method, its cost and its tests): a
     /// good biface of the same surface, with the same gluing, the same boundary side `CA` and
     /// `DB` replaced by its image `gʲ(DB)`. A good input is returned unchanged.
@@ -452,7 +452,7 @@ impl<S: Scalar> Biface<S> {
         })
     }
 
-    /// (i)–(iii) of DUBOIS.md §2.1(b) at offset `m` (|m| ≤ 2⁵²).
+    /// (i)–(iii) of docs/dubois.md §3.1(b) at offset `m` (|m| ≤ 2⁵²).
     fn rotation_valid(&self, r: &Rotation<S>, m: i64) -> bool {
         if m == 0 || m == 1 {
             return true;
@@ -540,7 +540,7 @@ impl<S: Scalar> Biface<S> {
     }
 }
 
-/// The kernel on the ladder of any tube (DUBOIS.md §2.1(c), a *reconstruction* checked by
+/// The kernel on the ladder of any tube (docs/dubois.md §3.1(c), a *reconstruction* checked by
 /// `tests/bifaces.rs`' random tubes): `a = p₀` and `c = p₁ = g(p₀)` are the ends of the `b₀`
 /// boundary side (it runs `p₁ → p₀`), `d = q₀` a lift of `b₁` with `g(q₀)` the end of the `b₁`
 /// side, all in one chart of the tube's universal cover, and `psi0` the angle `ψ₀` swept around

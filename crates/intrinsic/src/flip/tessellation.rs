@@ -5,7 +5,7 @@
 //! (S, V): its faces are the convex polygons inscribed in the empty immersed disks, and a
 //! Delaunay triangulation splits each of them along diagonals. A diagonal is exactly an edge whose
 //! two triangles share their circumcircle — opposite angles summing to π, i.e. `tan(γ/2) tan(δ/2)
-//! = 1` (see [`crate::trig::Quad::delaunay_product`]). So the tessellation is obtained by deleting
+//! = 1` (see [`crate::triangulation::trig::Quad::delaunay_product`]). So the tessellation is obtained by deleting
 //! the co-circular edges: triangles are merged across every edge with
 //! `|√(tan²(γ/2) tan²(δ/2)) - 1| <= tolerance` ([`DEFAULT_COCIRCULAR_TOLERANCE`]).
 //!
@@ -24,10 +24,10 @@
 //! canonical tessellation has V = the singular vertices (see [`crate::canonical_tessellation`],
 //! which removes the flat ones first).
 
-use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
-use crate::trig;
+use crate::triangulation::dense_vertex_index;
+use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind};
 
 /// Default tolerance for co-circularity: `|tan(γ/2) tan(δ/2) - 1| <= 1e-9`.

@@ -9,9 +9,9 @@
 
 use crate::error::PortalgonError;
 use crate::geometry::Scalar;
-use crate::laplacian::dense_vertex_index;
 use crate::portalgon::{Portalgon, SideId, signed_area};
 use crate::triangulation::IntrinsicTriangulation;
+use crate::triangulation::dense_vertex_index;
 use surftopo_mesh::{EdgeId, FaceId, Renumbering, Side, SurfaceMesh, VertexId};
 
 /// Triangles glued side to side, as read from a file or a portalgon.

@@ -8,7 +8,7 @@
 //! number of triangles (Dubois, Section 1.1 and Section 9: the flat torus T_x needs about x flips),
 //! so every run has a flip budget and fails with a typed error instead of running on.
 //!
-//! Numerics (see [`crate::trig`]): the test of an edge is `tan(γ/2) · tan(δ/2) > 1 + tolerance`
+//! Numerics (see [`crate::triangulation::trig`]): the test of an edge is `tan(γ/2) · tan(δ/2) > 1 + tolerance`
 //! with the half-angle tangents from Kahan's ordered factors — relative error a few ulps, no
 //! cancellation even for needles; the new length after a flip comes from a sum of non-negative
 //! terms (`|cd|² = (|ac| - |ad|)² + 4|ac||ad| sin²(θ/2)`). Every new length is checked: a
@@ -19,8 +19,12 @@
 //! them). An edge whose two sides are the same face is never non-Delaunay (its two opposite angles
 //! are the base angles of an isosceles triangle) and is never flipped.
 
+pub(crate) mod needle;
+pub(crate) mod stats;
+pub(crate) mod tessellation;
+
 use crate::error::DelaunayError;
-use crate::mollify::mollify;
+use crate::triangulation::mollify::mollify;
 use crate::triangulation::{IntrinsicTriangulation, store_tan_half_sq};
 use surftopo_mesh::EdgeId;
 
@@ -106,11 +110,11 @@ pub(crate) fn flip_keeping_tan_half_sq(
     Ok(flipped.expect("no face is refused"))
 }
 
-/// [`flip_to_delaunay`] for `--method auto` ([`crate::method_choice`]): `Ok(None)`, before any
+/// [`flip_to_delaunay`] for `--method auto` ([`crate::choose_method`]): `Ok(None)`, before any
 /// flip and with the triangulation unchanged (mollified first when `options.mollify` asks), when
-/// some triangle's aspect ratio exceeds [`crate::method_choice::AUTO_ASPECT_LIMIT`] (a degenerate
+/// some triangle's aspect ratio exceeds [`needle::AUTO_ASPECT_LIMIT`] (a degenerate
 /// one counts). The needle test reads the half-angle cache flipping's own first pass fills
-/// (`method_choice::has_needle_given_half_angles`), so `auto` costs flipping next to
+/// (`needle::has_needle_given_half_angles`), so `auto` costs flipping next to
 /// nothing on the inputs it flips.
 ///
 /// # Errors
@@ -124,10 +128,10 @@ pub fn flip_to_delaunay_unless_needle(
 }
 
 /// The flip algorithm; with `stop_at_needle`, `Ok(None)` when some face is a needle after the
-/// first pass (before any flip: [`crate::method_choice::has_needle_given_half_angles`], one scan
+/// first pass (before any flip: [`needle::has_needle_given_half_angles`], one scan
 /// of the half-angle cache that pass fills). A flag rather than a closure: `flip` and `auto` run
 /// the same machine code, which differs only by that scan.
-fn flip_unless(
+pub(crate) fn flip_unless(
     tri: &mut IntrinsicTriangulation,
     options: &DelaunayOptions,
     stop_at_needle: bool,
@@ -153,14 +157,14 @@ fn flip_unless(
         let sides = halfedges.map(|h| tri.halfedge_length(h));
         let smallest = store_tan_half_sq(halfedges, sides, &mut t2);
         if smallest.is_nan() || smallest <= 0.0 {
-            // A degenerate triangle counts as a needle ([`crate::method_choice::is_needle`]).
+            // A degenerate triangle counts as a needle ([`needle::is_needle`]).
             if stop_at_needle {
                 return Ok(None);
             }
             tri.validate()?;
         }
     }
-    if stop_at_needle && crate::method_choice::has_needle_given_half_angles(tri, &t2) {
+    if stop_at_needle && needle::has_needle_given_half_angles(tri, &t2) {
         return Ok(None);
     }
     let max_flips = options
@@ -197,7 +201,7 @@ fn flip_unless(
                 let (h1, h2) = (mesh.next(h), mesh.prev(h));
                 let (t1, t2h) = (mesh.next(t), mesh.prev(t));
                 let [bc, ca, ad, db] = [h1, h2, t1, t2h].map(|g| tri.halfedge_length(g));
-                let length = crate::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
+                let length = crate::triangulation::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
                 if !(length.is_finite() && length > 0.0) {
                     return Err(DelaunayError::NumericalBreakdown {
                         edge: e.0,
