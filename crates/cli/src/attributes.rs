@@ -6,18 +6,7 @@
 use crate::output::MeshFormat;
 use std::path::Path;
 use surftopo_io::{Attributes, Format, PolygonSoup};
-use surftopo_mesh::{BuildReport, VertexId};
-
-/// The soup's attributes on a mesh built from it: per-vertex columns renumbered to the mesh's
-/// vertex ids (`report.vertex_old_to_new`; `vertex_slots` of them), per-corner tables and
-/// `not_kept` as read (for [`warn_new_faces`]).
-pub fn on_mesh(soup: &PolygonSoup, report: &BuildReport, vertex_slots: usize) -> Attributes {
-    let mut attributes = renumbered(&soup.attributes, vertex_slots, &report.vertex_old_to_new);
-    attributes.corner_texcoords = soup.attributes.corner_texcoords.clone();
-    attributes.corner_normals = soup.attributes.corner_normals.clone();
-    attributes.not_kept = soup.attributes.not_kept.clone();
-    attributes
-}
+use surftopo_mesh::VertexId;
 
 /// The per-vertex columns of `attributes` through an old-to-new vertex map (invalid: dropped).
 pub fn renumbered(

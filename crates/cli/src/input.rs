@@ -4,19 +4,23 @@ use crate::failure::invalid;
 use std::path::Path;
 use std::sync::Mutex;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::{BuildError, BuildReport, CoveredSurface, Lifting, Surface, geometry};
+use surftopo_mesh::{
+    BuildError, BuildReport, CoveredSurface, PolygonTriangulation, Surface, geometry,
+};
 
 /// A surface read from a file, with what building it changed.
 pub struct Loaded {
-    /// The validated surface.
+    /// The validated surface (vertex ids: the input's referenced vertices, in input order).
     pub surface: Surface,
     /// Reoriented faces, dropped vertices.
     pub report: BuildReport,
     /// Vertices merged by welding.
     pub welded: usize,
-    /// The input's attributes, per-vertex ones on the surface's vertex ids
-    /// ([`crate::attributes::on_mesh`]).
-    pub attributes: surftopo_io::Attributes,
+    /// The input as read (welded with `--weld`): the vertex list and per-vertex attributes that
+    /// outputs on the input's vertices keep (README, "Vertex numbering"), and the faces.
+    pub soup: PolygonSoup,
+    /// The soup face of each face id, when polygons were cut into triangles.
+    pub polygon_of: Option<Vec<u32>>,
 }
 
 /// The name of standard input in messages.
@@ -117,17 +121,53 @@ pub fn read_soup_with(
     weld: bool,
     non_finite: surftopo_io::NonFinite,
 ) -> anyhow::Result<(PolygonSoup, usize)> {
-    let (soup, format) = if is_stdio(path) {
+    match read_mesh_or_points(path, weld, non_finite)? {
+        Read::Mesh(soup, welded) => Ok((soup, welded)),
+        Read::PointCloud(points) => Err(explain_limit(surftopo_io::IoError::NoFaces {
+            file: name(path),
+            binary_at: None,
+            points: Some(Box::new(points)),
+        })),
+    }
+}
+
+/// A mesh file read: a mesh (with the number of vertices welded) or a point cloud.
+pub enum Read {
+    /// Faces were read.
+    Mesh(PolygonSoup, usize),
+    /// Vertices only (with their attributes).
+    PointCloud(PolygonSoup),
+}
+
+/// [`read_soup_with`], giving a point cloud (vertices without faces) back instead of refusing
+/// it (for `info`).
+pub fn read_mesh_or_points(
+    path: &Path,
+    weld: bool,
+    non_finite: surftopo_io::NonFinite,
+) -> anyhow::Result<Read> {
+    let read = if is_stdio(path) {
         surftopo_io::read_bytes_detected(&stdin_bytes()?, STDIN_NAME, non_finite)
     } else {
         surftopo_io::read_path_detected(path, &crate::limits::read_limits(), non_finite)
-    }
-    .map_err(explain_limit)?;
-    weld_soup(
+    };
+    let (soup, format) = match read {
+        Ok(read) => read,
+        Err(surftopo_io::IoError::NoFaces {
+            points: Some(points),
+            ..
+        }) => {
+            crate::limits::check_elements(&name(path), points.vertex_count() as u64, "vertices")?;
+            return Ok(Read::PointCloud(*points));
+        }
+        Err(e) => return Err(explain_limit(e)),
+    };
+    let (soup, welded) = weld_soup(
         &name(path),
         soup,
         weld || format == surftopo_io::Format::Stl,
-    )
+    )?;
+    Ok(Read::Mesh(soup, welded))
 }
 
 /// Checks a soup read from `source` against the element limits and welds exactly coincident
@@ -155,65 +195,40 @@ fn weld_soup(
     Ok((soup, welded))
 }
 
-/// A reader error, with the option that raises the limit it hit, if any.
+/// A reader error, with the option that raises the limit it hit, if any, or what to do with a
+/// point cloud.
 pub fn explain_limit(error: surftopo_io::IoError) -> anyhow::Error {
     match error {
         surftopo_io::IoError::InputTooLarge { .. } => {
             crate::failure::invalid(format!("{error}; raise --max-input-bytes to read it"))
         }
+        surftopo_io::IoError::NoFaces {
+            points: Some(_), ..
+        } => crate::failure::invalid(format!(
+            "{error}: this command needs faces (`surftopo info` describes a point cloud)"
+        )),
         other => anyhow::Error::new(other),
     }
 }
 
-/// The input face a build error names, if any (mutable, to renumber it).
-fn face_of(error: &mut BuildError) -> Option<&mut usize> {
-    match error {
-        BuildError::IndexOutOfRange { face, .. }
-        | BuildError::RepeatedVertex { face, .. }
-        | BuildError::DuplicateFace { face, .. }
-        | BuildError::BoundaryEdge { face, .. }
-        | BuildError::NonManifoldEdge { face, .. }
-        | BuildError::NonOrientable { face, .. }
-        | BuildError::Disconnected { face, .. }
-        | BuildError::NotTriangle { face, .. }
-        | BuildError::ZeroArea { face } => Some(face),
-        _ => None,
-    }
-}
-
-/// Renumbers the face a build error names through `map` (e.g. triangle -> polygon).
-pub fn renumber_face(mut error: BuildError, map: &[u32]) -> BuildError {
-    if let Some(face) = face_of(&mut error) {
-        *face = map[*face] as usize;
-    }
-    error
-}
-
-/// Fan triangulation of a polygon soup: the triangles, and the polygon of each triangle.
-/// A polygon with k sides gives k - 2 triangles and k - 3 interior diagonals, so the Euler
-/// characteristic, closedness, orientability and vertex fans are those of the polygons.
-pub fn fan_triangles(soup: &PolygonSoup) -> (Vec<[u32; 3]>, Vec<u32>) {
-    let mut triangles = Vec::with_capacity(soup.face_count());
-    let mut polygon_of = Vec::with_capacity(soup.face_count());
-    for (k, face) in (0..soup.face_count()).map(|k| (k, soup.face(k))) {
-        for i in 1..face.len().saturating_sub(1) {
-            triangles.push([face[0], face[i], face[i + 1]]);
-            polygon_of.push(k as u32);
-        }
-    }
-    (triangles, polygon_of)
+/// Renumbers the faces a build error names through `map` (e.g. triangle -> polygon).
+pub fn renumber_face(error: BuildError, map: &[u32]) -> BuildError {
+    error.on_faces(map)
 }
 
 /// Describes a build error with the file name and, where known, the line of the face it names.
 pub fn locate(path: &Path, soup: &PolygonSoup, error: &BuildError) -> String {
-    let line = face_of(&mut error.clone())
+    let line = error
+        .clone()
+        .face_mut()
         .and_then(|f| soup.face_lines.get(*f))
         .map(|l| format!("line {l}: "))
         .unwrap_or_default();
     format!("{}: {line}{error}", name(path))
 }
 
-/// The soup's triangles, or an invalid-input error naming the first non-triangular face.
+/// The soup's triangles, or an invalid-input error naming the first non-triangular face (for
+/// `isomorphic`, which compares triangulations as given).
 pub fn triangles(path: &Path, soup: &PolygonSoup) -> anyhow::Result<Vec<[u32; 3]>> {
     soup.triangles().map_err(|e| {
         let error = BuildError::NotTriangle {
@@ -224,6 +239,81 @@ pub fn triangles(path: &Path, soup: &PolygonSoup) -> anyhow::Result<Vec<[u32; 3]
     })
 }
 
+/// The soup's faces as triangles, for the commands that need triangles.
+pub struct Triangulated {
+    /// The triangles: the soup's own when every face is one, else its polygons cut by
+    /// [`surftopo_mesh::triangulate_polygons`].
+    pub triangles: Vec<[u32; 3]>,
+    /// The polygon (soup face) of each triangle, when polygons were cut.
+    pub polygon_of: Option<Vec<u32>>,
+}
+
+impl Triangulated {
+    /// A build error on the triangles, naming the soup's face (the polygon) instead.
+    pub fn on_faces(&self, error: BuildError) -> BuildError {
+        match &self.polygon_of {
+            Some(map) => renumber_face(error, map),
+            None => error,
+        }
+    }
+}
+
+/// The triangles of a soup's faces, for the commands that need triangles and for `info`
+/// ([`surftopo_mesh::triangulate_polygons_as_surface`]: the fans of corner 0, with the reason,
+/// when ear clipping makes no surface and they do).
+pub fn cut_polygons(soup: &PolygonSoup) -> (PolygonTriangulation, Option<BuildError>) {
+    surftopo_mesh::triangulate_polygons_as_surface(&soup.positions, soup.faces())
+}
+
+/// [`cut_polygons`], with a note on stderr saying how many polygons were cut (and when the fans
+/// were taken instead, why).
+pub fn triangulated(path: &Path, soup: &PolygonSoup) -> Triangulated {
+    if soup.is_all_triangles() {
+        let triangles = soup.faces().map(|f| [f[0], f[1], f[2]]).collect();
+        return Triangulated {
+            triangles,
+            polygon_of: None,
+        };
+    }
+    let (cut, fans_because) = cut_polygons(soup);
+    let largest = soup.faces().map(<[u32]>::len).max().unwrap_or(0);
+    let irregular = if cut.irregular > 0 {
+        format!(
+            "; {} of them not simple, not planar or repeating a vertex, so cut without the \
+             guarantee of no degenerate triangle",
+            cut.irregular
+        )
+    } else {
+        String::new()
+    };
+    let how = match &fans_because {
+        Some(problem) => format!(
+            "the fan of each one's corner 0, since ear clipping gives {}",
+            locate(path, soup, problem)
+        ),
+        None => "ear clipping in each polygon's plane".to_owned(),
+    };
+    stderr_println!(
+        "note: {}: {} polygons of 4 to {largest} sides cut into {} triangles ({how}; the \
+         triangles keep the polygon's vertices){irregular}",
+        name(path),
+        cut.polygons,
+        cut.triangles.len() - (soup.face_count() - cut.polygons),
+    );
+    Triangulated {
+        triangles: cut.triangles,
+        polygon_of: Some(cut.face_of),
+    }
+}
+
+/// What `--weld` would make of a soup whose triangles have boundary edges or several pieces,
+/// as a sentence to append to a message (`None` when welding would not help).
+pub fn weld_hint(soup: &PolygonSoup, triangles: &[[u32; 3]]) -> Option<String> {
+    let before = surftopo_mesh::inspect(soup.positions.len(), triangles);
+    let effect = geometry::weld_effect(&soup.positions, triangles, &before)?;
+    Some(format!("`--weld` {}", effect.describe()))
+}
+
 /// The command running, for messages ([`set_command`]).
 static COMMAND: std::sync::OnceLock<&'static str> = std::sync::OnceLock::new();
 
@@ -232,28 +322,24 @@ pub fn set_command(command: &'static str) {
     let _ = COMMAND.set(command);
 }
 
-/// Reads and validates a closed, connected, orientable triangulated surface; the refusal of a
-/// surface with boundary, non-orientable or in pieces says that the command running does not
-/// support it yet.
+/// Reads and validates a closed, connected, orientable triangulated surface (polygons cut into
+/// triangles, [`triangulated`]); the refusal of a surface with boundary, non-orientable or in
+/// pieces says that the command running does not support it yet.
 pub fn load_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
     let command = COMMAND.get().copied().unwrap_or("surftopo");
     let (soup, welded) = read_soup(path, weld)?;
-    let triangles = triangles(path, &soup)?;
+    let cut = triangulated(path, &soup);
     geometry::check_finite(&soup.positions).map_err(|e| invalid(locate(path, &soup, &e)))?;
-    let (mesh, report) = surftopo_mesh::build(soup.positions.len(), &triangles)
-        .map_err(|e| invalid(not_supported(path, &soup, &triangles, command, &e)))?;
-    let mut positions = vec![[0.0; 3]; mesh.vertex_slots()];
-    for (old, new) in report.vertex_old_to_new.iter().enumerate() {
-        if new.is_valid() {
-            positions[new.idx()] = soup.positions[old];
-        }
-    }
-    let attributes = crate::attributes::on_mesh(&soup, &report, mesh.vertex_slots());
+    let (mesh, report) = surftopo_mesh::build(soup.positions.len(), &cut.triangles)
+        .map_err(|e| invalid(not_supported(path, &soup, &cut, command, e, weld)))?;
+    let input = report.input_vertices();
+    let positions = input.iter().map(|&v| soup.positions[v as usize]).collect();
     Ok(Loaded {
         surface: Surface { mesh, positions },
         report,
         welded,
-        attributes,
+        soup,
+        polygon_of: cut.polygon_of,
     })
 }
 
@@ -270,7 +356,7 @@ fn log_changes(path: &Path, welded: usize, report: &BuildReport) {
     }
     if !report.dropped_vertices.is_empty() {
         stderr_println!(
-            "note: {name}: dropped {} unreferenced vertices",
+            "note: {name}: {} vertices in no face",
             report.dropped_vertices.len()
         );
     }
@@ -284,31 +370,38 @@ fn log_changes(path: &Path, welded: usize, report: &BuildReport) {
 
 /// The message for a build error of `command`: a surface with boundary, non-orientable or in
 /// pieces is a valid surface that `command` does not support yet (with its classification and
-/// the first place that shows it); any other error is located as usual.
+/// the first place that shows it); any other error is located as usual. A soup that welding
+/// would close or join (every triangle on vertices of its own) says so, unless `welded`.
 fn not_supported(
     path: &Path,
     soup: &PolygonSoup,
-    triangles: &[[u32; 3]],
+    cut: &Triangulated,
     command: &str,
-    error: &BuildError,
+    error: BuildError,
+    welded: bool,
 ) -> String {
+    let error = cut.on_faces(error);
+    let hint = (!welded)
+        .then(|| weld_hint(soup, &cut.triangles))
+        .flatten()
+        .map(|h| format!("; {h}"))
+        .unwrap_or_default();
     let what = match error {
         BuildError::BoundaryEdge { .. } => "surfaces with boundary are",
         BuildError::NonOrientable { .. } => "non-orientable surfaces are",
         BuildError::Disconnected { .. } => "files of several pieces are",
-        _ => return locate(path, soup, error),
+        _ => return format!("{}{hint}", locate(path, soup, &error)),
     };
-    let kinds = surftopo_mesh::inspect(soup.positions.len(), triangles).surfaces;
-    let names: Vec<String> = kinds.iter().map(|k| k.name()).collect();
+    let kinds = surftopo_mesh::inspect(soup.positions.len(), &cut.triangles).surfaces;
+    let names = crate::commands::info::piece_names(kinds.iter().map(|k| k.name()));
     let name = name(path);
-    let located = locate(path, soup, error);
+    let located = locate(path, soup, &error);
     let place = located
         .strip_prefix(&format!("{name}: "))
         .unwrap_or(&located);
     format!(
-        "{name}: {command}: {what} not supported yet (input: {}; `surftopo info` classifies it, \
-         `surftopo irreducible` takes it); {place}",
-        names.join(" + "),
+        "{name}: {command}: {what} not supported yet (input: {names}; `surftopo info` classifies it, \
+         `surftopo irreducible` takes it); {place}{hint}"
     )
 }
 
@@ -322,34 +415,57 @@ pub fn read_surface(path: &Path, weld: bool) -> anyhow::Result<Loaded> {
 /// A surface of any kind read from a file (boundary loops, non-orientable, several pieces), with
 /// what building it changed.
 pub struct LoadedCovered {
-    /// The surface as its cover, with positions.
+    /// The surface as its cover, with positions (vertex ids: the input's referenced vertices).
     pub surface: CoveredSurface,
     /// Reoriented faces (of orientable pieces), dropped vertices.
     pub report: BuildReport,
     /// Vertices merged by welding.
     pub welded: usize,
-    /// The input's attributes, per-vertex ones on the surface's vertex ids (its classes).
-    pub attributes: surftopo_io::Attributes,
+    /// The input as read (welded with `--weld`), as [`Loaded::soup`].
+    pub soup: PolygonSoup,
+    /// The soup face of each face id, when polygons were cut into triangles.
+    pub polygon_of: Option<Vec<u32>>,
 }
 
-/// Reads and validates a triangulated compact surface of any kind, with a progress spinner,
-/// noting on stderr what building changed. Non-manifold edges and vertices, degenerate or
-/// duplicate faces are refused with their location.
+/// Reads and validates a compact surface of any kind (polygons cut into triangles,
+/// [`triangulated`]), with a progress spinner, noting on stderr what building changed, and
+/// what `--weld` would do when the file is in pieces or has boundary that welding would join
+/// or close. Non-manifold edges and vertices, degenerate or duplicate faces are refused with
+/// their location.
 pub fn read_covered(path: &Path, weld: bool) -> anyhow::Result<LoadedCovered> {
-    let loaded = crate::progress::step("reading", || {
+    let (loaded, hint) = crate::progress::step("reading", || {
         let (soup, welded) = read_soup(path, weld)?;
-        let triangles = triangles(path, &soup)?;
-        let (surface, report) = CoveredSurface::from_triangles(soup.positions.clone(), &triangles)
-            .map_err(|e| invalid(locate(path, &soup, &e)))?;
-        let classes = surface.cover.sheets.class_count();
-        let attributes = crate::attributes::on_mesh(&soup, &report, classes);
-        anyhow::Ok(LoadedCovered {
-            surface,
-            report,
-            welded,
-            attributes,
-        })
+        let cut = triangulated(path, &soup);
+        let (surface, report) =
+            CoveredSurface::from_triangles(soup.positions.clone(), &cut.triangles).map_err(
+                |e| {
+                    let hint = (!weld)
+                        .then(|| weld_hint(&soup, &cut.triangles))
+                        .flatten()
+                        .map(|h| format!("; {h}"))
+                        .unwrap_or_default();
+                    invalid(format!("{}{hint}", locate(path, &soup, &cut.on_faces(e))))
+                },
+            )?;
+        let open =
+            report.surfaces.iter().any(|k| k.boundary_loops > 0) || report.surfaces.len() > 1;
+        let hint = (open && !weld)
+            .then(|| weld_hint(&soup, &cut.triangles))
+            .flatten();
+        anyhow::Ok((
+            LoadedCovered {
+                surface,
+                report,
+                welded,
+                soup,
+                polygon_of: cut.polygon_of,
+            },
+            hint,
+        ))
     })?;
     log_changes(path, loaded.welded, &loaded.report);
+    if let Some(hint) = hint {
+        stderr_println!("note: {}: {hint}", name(path));
+    }
     Ok(loaded)
 }

@@ -79,7 +79,7 @@ fn info_json_has_the_documented_keys() {
 #[test]
 fn malformed_inputs_exit_with_code_2_and_say_where() {
     let cases: &[(&str, &str, &str)] = &[
-        ("empty.obj", "v 0 0 0\n", "no faces"),
+        ("empty.obj", "# no vertex, no face\n", "no faces"),
         (
             "range.obj",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n",
@@ -396,6 +396,7 @@ fn demo_shows_every_capability() {
         "quad --objective quality ",
         "quad --objective quality-fast ",
         "delaunay --method flip ",
+        "delaunay (polygons, a loose vertex)",
         "delaunay --method voronoi ",
         "delaunay --method dubois --exact ",
         "delaunay --method auto ",
@@ -743,13 +744,12 @@ fn irreducible_outputs_an_irreducible_triangulation_of_the_same_genus() {
 }
 
 #[test]
-fn irreducible_refuses_input_that_is_not_a_triangulated_surface() {
+fn irreducible_cuts_polygons_and_refuses_input_that_is_not_a_surface() {
     let dir = tempfile::tempdir().unwrap();
-    let quad = write(
-        dir.path(),
-        "cube.obj",
-        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n",
-    );
+    // A cube of quads: cut into 12 triangles (a note says so), reduced to a tetrahedron on
+    // four of the cube's corners, written on the cube's eight vertices.
+    let cube_text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    let quad = write(dir.path(), "cube.obj", cube_text);
     let out = surftopo()
         .arg("irreducible")
         .arg(&quad)
@@ -757,12 +757,26 @@ fn irreducible_refuses_input_that_is_not_a_triangulated_surface() {
         .arg(dir.path().join("x.obj"))
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
     assert!(
-        String::from_utf8_lossy(&out.stderr).contains("line 9: face 0: has 4 sides"),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+        stderr.contains("6 polygons of 4 to 4 sides cut into 12 triangles"),
+        "{stderr}"
     );
+    let written = std::fs::read_to_string(dir.path().join("x.obj")).unwrap();
+    let v_lines = |t: &str| -> Vec<String> {
+        t.lines()
+            .filter(|l| l.starts_with("v "))
+            .map(str::to_owned)
+            .collect()
+    };
+    assert_eq!(v_lines(&written), v_lines(cube_text));
+    let v = info_json(&dir.path().join("x.obj"), &["--strict"]);
+    assert_eq!(
+        (v["vertices"].as_u64(), v["faces"].as_u64()),
+        (Some(4), Some(4))
+    );
+    assert_eq!(v["genus"], 0);
     let fin = write(
         dir.path(),
         "fin.obj",
@@ -772,12 +786,12 @@ fn irreducible_refuses_input_that_is_not_a_triangulated_surface() {
         .arg("irreducible")
         .arg(&fin)
         .arg("-o")
-        .arg(dir.path().join("x.obj"))
+        .arg(dir.path().join("y.obj"))
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("line 6: non-manifold edge (0, 1)"));
-    assert!(!dir.path().join("x.obj").exists());
+    assert!(!dir.path().join("y.obj").exists());
 }
 
 #[test]

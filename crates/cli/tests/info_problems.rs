@@ -43,6 +43,8 @@ fn check_report(v: &Value) {
         "vertices",
         "edges",
         "faces",
+        "point_cloud",
+        "vertex_properties",
         "genus",
         "euler_characteristic",
         "components",
@@ -61,6 +63,9 @@ fn check_report(v: &Value) {
         "problems_total",
         "problems_truncated",
         "problems",
+        "near_degenerate_faces",
+        "warnings",
+        "weld_hint",
         "surfaces",
     ]);
     assert_eq!(keys, expected);

@@ -1,6 +1,7 @@
 //! Every kind of surface through the binary: `generate` makes each kind (with boundary,
 //! non-orientable, in pieces), `info` classifies it, `irreducible` reduces it keeping the
-//! classification, and the commands that do not take it yet say what they do not support.
+//! classification, `delaunay` flips it, and the commands that do not take it yet say what they
+//! do not support.
 
 mod common;
 
@@ -171,23 +172,18 @@ fn commands_name_what_they_do_not_support_yet() {
         ),
     ];
     for (input, message) in &cases {
-        for (command, output) in [("quad", "q.obj"), ("delaunay", "d.json")] {
-            let out_path = dir.path().join(output);
-            let out = surftopo()
-                .arg(command)
-                .arg(input)
-                .arg("-o")
-                .arg(&out_path)
-                .output()
-                .unwrap();
-            let stderr = String::from_utf8_lossy(&out.stderr);
-            assert_eq!(out.status.code(), Some(2), "{command}: {stderr}");
-            assert!(
-                stderr.contains(&format!("{command}: {message}")),
-                "{stderr}"
-            );
-            assert!(!out_path.exists());
-        }
+        let out_path = dir.path().join("q.obj");
+        let out = surftopo()
+            .arg("quad")
+            .arg(input)
+            .arg("-o")
+            .arg(&out_path)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "quad: {stderr}");
+        assert!(stderr.contains(&format!("quad: {message}")), "{stderr}");
+        assert!(!out_path.exists());
         let out = surftopo()
             .arg("isometric")
             .arg(input)
@@ -214,4 +210,146 @@ fn cut_holes_that_do_not_fit_are_refused() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("only 1 holes fit"));
     assert!(!dir.path().join("x.obj").exists());
+}
+
+/// A Matrix Market file written by the CLI, as a dense matrix (symmetric storage expanded).
+fn dense_matrix(path: &Path) -> Vec<Vec<f64>> {
+    let file = std::fs::File::open(path).unwrap();
+    let m = surftopo_intrinsic::read_matrix_market(std::io::BufReader::new(file)).unwrap();
+    let mut dense = vec![vec![0.0; m.n]; m.n];
+    for (i, j, v) in m.triplets() {
+        dense[i as usize][j as usize] = v;
+    }
+    dense
+}
+
+#[test]
+fn delaunay_flips_every_surface_kind_and_refuses_what_needs_a_closed_orientable_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let kinds: [&[&str]; 9] = [
+        &["disk", "--n", "6", "--flips", "30"],
+        &["annulus", "--flips", "30"],
+        &["mobius-band", "--flips", "30"],
+        &["projective-plane", "--subdivide", "1", "--flips", "20"],
+        &["klein-bottle", "--flips", "60"],
+        &["non-orientable", "--crosscaps", "3"],
+        &["torus", "--cut-holes", "2", "--flips", "40"],
+        &["mobius-band", "--copies", "3"],
+        &["torus", "--copies", "2"],
+    ];
+    for (k, args) in kinds.iter().enumerate() {
+        let input = generate(dir.path(), &format!("in{k}.obj"), args);
+        let v = info(&input);
+        let (l_path, m_path) = (dir.path().join("l.mtx"), dir.path().join("m.mtx"));
+        let out = surftopo()
+            .arg("delaunay")
+            .arg(&input)
+            .arg("--laplacian")
+            .arg(&l_path)
+            .arg("--mass")
+            .arg(&m_path)
+            .arg("--json")
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{args:?}: {stderr}");
+        let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(report["method"], "flip", "{args:?}");
+        assert_eq!(report["non_delaunay_edges"], 0, "{args:?}");
+        for key in ["vertices", "edges", "faces"] {
+            assert_eq!(report[key], v[key], "{args:?}: {key}");
+        }
+        // The Laplacian: one row per vertex, symmetric, rows summing to zero; the mass matrix's
+        // trace is the area (every triangle once).
+        let l = dense_matrix(&l_path);
+        assert_eq!(l.len() as u64, v["vertices"].as_u64().unwrap());
+        let scale = l.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+        for (i, row) in l.iter().enumerate() {
+            assert!(
+                row.iter().sum::<f64>().abs() <= 1e-9 * scale,
+                "{args:?}: row {i}"
+            );
+            for (j, x) in row.iter().enumerate() {
+                assert_eq!(*x, l[j][i], "{args:?}: ({i}, {j})");
+            }
+            assert!(row[i] > 0.0, "{args:?}: vertex {i} has no weight");
+        }
+        let m = dense_matrix(&m_path);
+        assert!((0..m.len()).all(|i| m[i][i] > 0.0), "{args:?}");
+    }
+    // The wave, Theorem 1 and the tessellation need a closed orientable surface: exit 2, naming
+    // what works, nothing written.
+    let input = generate(dir.path(), "mb.obj", &["mobius-band"]);
+    let refusals: [(&[&str], &str); 3] = [
+        (&["--method", "voronoi", "--json"], "--method flip"),
+        (&["--method", "dubois", "--json"], "--method flip"),
+        (
+            &["--tessellation", "t.json"],
+            "the Delaunay tessellation takes closed",
+        ),
+    ];
+    for (args, message) in refusals {
+        let out = surftopo()
+            .current_dir(dir.path())
+            .arg("delaunay")
+            .arg(&input)
+            .args(args)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+        assert!(!dir.path().join("t.json").exists());
+    }
+}
+
+#[test]
+fn delaunay_writes_a_non_orientable_triangulation_with_reversed_gluings() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = generate(dir.path(), "mb.obj", &["mobius-band", "--flips", "20"]);
+    let output = dir.path().join("mb.json");
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&input)
+        .arg("-o")
+        .arg(&output)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: Value = serde_json::from_slice(&std::fs::read(&output).unwrap()).unwrap();
+    assert_eq!(doc["version"], 2);
+    let v = info(&input);
+    assert_eq!(
+        doc["polygons"].as_array().unwrap().len() as u64,
+        v["faces"].as_u64().unwrap()
+    );
+    let pairs = doc["matching"].as_array().unwrap();
+    let reversed = pairs
+        .iter()
+        .filter(|p| p.get(2) == Some(&Value::Bool(true)))
+        .count();
+    assert!(reversed > 0);
+    // Interior edges are matched, boundary edges are not.
+    let boundary = v["boundary_edges"].as_u64().unwrap() as usize;
+    assert_eq!(
+        2 * pairs.len() + boundary,
+        3 * doc["polygons"].as_array().unwrap().len()
+    );
+    // Read back, an oriented reader refuses the reversed gluing by place (exit 2).
+    let out = surftopo()
+        .arg("delaunay")
+        .arg(&output)
+        .arg("--json")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("its gluing reverses orientation"),
+        "{stderr}"
+    );
 }

@@ -100,7 +100,7 @@ pub enum PortalgonError {
     Io(String),
     /// The `format`/`version` fields name another format.
     #[error(
-        "unsupported format {format:?} version {version} (expected \"surftopo-portalgon\" version 1)"
+        "unsupported format {format:?} version {version} (expected \"surftopo-portalgon\" version 1 or 2)"
     )]
     Version {
         /// The `format` field.
@@ -111,6 +111,19 @@ pub enum PortalgonError {
     /// The portalgon has no polygon.
     #[error("empty portalgon: no polygons")]
     Empty,
+    /// An orientation-reversing gluing (a non-orientable surface) where an oriented portalgon is
+    /// needed: portalgons and intrinsic triangulations read from files are oriented.
+    #[error(
+        "polygon {polygon}, side {side}: its gluing reverses orientation (a non-orientable \
+         surface), and portalgons read from files are oriented (delaunay takes non-orientable \
+         surfaces as mesh files)"
+    )]
+    ReversedGluing {
+        /// The polygon.
+        polygon: usize,
+        /// The side.
+        side: usize,
+    },
     /// A polygon gives neither or both of `corners` and `lengths`.
     #[error("polygon {polygon}: give exactly one of \"corners\" and \"lengths\"")]
     Shape {

@@ -86,16 +86,30 @@ pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64
     let weights = weights_from_tan_half_sq(tri, t2);
     let mesh = tri.mesh();
     let (index, n) = dense_vertex_index(tri);
-    let ends = |e: EdgeId| mesh.edge_vertices(e).map(|v| index[v.idx()] as usize);
+    assemble_laplacian(n, || {
+        mesh.edges().map(|e| {
+            let [a, b] = mesh.edge_vertices(e).map(|v| index[v.idx()] as usize);
+            (a, b, weights[e.idx()])
+        })
+    })
+}
+
+/// The Laplacian of `n` rows from weighted edges `(a, b, w)` (rows `a`, `b` below `n`; loops
+/// `a = b` add nothing), multi-edges summed; `edges` is called twice and must give the same
+/// sequence. The assembly of [`laplacian_from_tan_half_sq`] (see there).
+pub(crate) fn assemble_laplacian<I, F>(n: usize, edges: F) -> SparseMatrix
+where
+    I: Iterator<Item = (usize, usize, f64)>,
+    F: Fn() -> I,
+{
     // Bucket sizes by lo, and the diagonal.
     let mut bucket_start = vec![0u32; n + 1];
     let mut diagonal = vec![0.0; n];
-    for e in mesh.edges() {
-        let [a, b] = ends(e);
+    for (a, b, w) in edges() {
         if a != b {
             bucket_start[a.min(b) + 1] += 1;
-            diagonal[a] += weights[e.idx()];
-            diagonal[b] += weights[e.idx()];
+            diagonal[a] += w;
+            diagonal[b] += w;
         }
     }
     for i in 0..n {
@@ -103,11 +117,10 @@ pub(crate) fn laplacian_from_tan_half_sq(tri: &IntrinsicTriangulation, t2: &[f64
     }
     let mut bucket = vec![(0u32, 0.0f64); bucket_start[n] as usize];
     let mut fill = bucket_start[..n].to_vec();
-    for e in mesh.edges() {
-        let [a, b] = ends(e);
+    for (a, b, w) in edges() {
         if a != b {
             let lo = a.min(b);
-            bucket[fill[lo] as usize] = (a.max(b) as u32, weights[e.idx()]);
+            bucket[fill[lo] as usize] = (a.max(b) as u32, w);
             fill[lo] += 1;
         }
     }

@@ -55,6 +55,7 @@
 //! assert!(json.starts_with(r#"{"format":"surftopo-portalgon","version":1"#));
 //! ```
 
+mod covered;
 mod delaunay;
 pub mod dubois;
 mod error;
@@ -69,6 +70,7 @@ mod sparse;
 mod triangulation;
 pub mod voronoi;
 
+pub use covered::CoveredTriangulation;
 pub use delaunay::choice::{
     DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
 };
@@ -96,7 +98,7 @@ pub use flip::{
 pub use formats::matrix_market::{MatrixStorage, read_matrix_market, write_matrix_market};
 pub use formats::numpy::{write_npy, write_npz};
 pub use formats::portalgon_json::{
-    FORMAT_NAME, FORMAT_VERSION, Number, PolygonDoc, PortalgonDoc, TriangleStyle,
+    FORMAT_NAME, FORMAT_VERSION, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle,
 };
 pub use isometry::decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use isometry::flat_torus_lattice::flat_torus_invariants;

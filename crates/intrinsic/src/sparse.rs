@@ -80,4 +80,33 @@ impl SparseMatrix {
     pub fn triplets(&self) -> impl Iterator<Item = (u32, u32, f64)> + '_ {
         (0..self.n).flat_map(move |i| self.row(i).map(move |(j, v)| (i as u32, j, v)))
     }
+
+    /// Whether the entries are representable: none is non-finite and (`positive_diagonal`: the
+    /// mass matrix, whose diagonal holds areas) every diagonal entry is a positive normal number.
+    /// Lengths are handled scale-free (cotan weights do not depend on the scale), so this fails
+    /// only when areas overflow or underflow double precision (coordinates of 1e200 or 1e-200):
+    /// what the CLI and the Python package refuse to hand over as a matrix of `inf` or zeros.
+    ///
+    /// # Errors
+    /// The first entry out of range, in words (1-based row and column).
+    pub fn check_representable(&self, positive_diagonal: bool) -> Result<(), String> {
+        if let Some((i, j, v)) = self.triplets().find(|t| !t.2.is_finite()) {
+            return Err(format!(
+                "entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
+                i + 1,
+                j + 1
+            ));
+        }
+        let small = (0..self.n)
+            .map(|i| (i, self.get(i, i)))
+            .find(|&(_, v)| v.is_nan() || v < f64::MIN_POSITIVE);
+        match small.filter(|_| positive_diagonal) {
+            Some((i, v)) => Err(format!(
+                "diagonal entry {} is {v:e}, not a positive normal number: the triangles are too \
+                 small for double precision (scale the input)",
+                i + 1
+            )),
+            None => Ok(()),
+        }
+    }
 }

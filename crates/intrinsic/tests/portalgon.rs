@@ -755,3 +755,67 @@ fn degenerate_shortcut_candidates_are_skipped_in_f64() {
     let quad = r.add_polygon(&exact).unwrap();
     assert_eq!(r.shortcut(quad), Some((0, 2)));
 }
+
+/// The ```json blocks of PORTALGON_FORMAT.md.
+fn documented_examples() -> Vec<String> {
+    let text = include_str!("../PORTALGON_FORMAT.md");
+    text.split("```json\n")
+        .skip(1)
+        .map(|block| block.split("```").next().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn the_format_examples_round_trip_and_reversed_gluings_are_refused_where_orientation_is_needed() {
+    let examples = documented_examples();
+    assert_eq!(examples.len(), 2, "T_3 and the Möbius band");
+    for text in &examples {
+        let doc = PortalgonDoc::from_json(text).unwrap();
+        // Writers write what they read: the same document, compact and pretty.
+        for pretty in [false, true] {
+            let mut out = Vec::new();
+            doc.write(&mut out, pretty).unwrap();
+            let back = PortalgonDoc::from_slice(&out).unwrap();
+            assert_eq!(back, doc);
+        }
+        assert_eq!(doc.to_json().unwrap().contains(",true]"), doc.version == 2);
+    }
+    let mobius = PortalgonDoc::from_json(&examples[1]).unwrap();
+    assert_eq!(mobius.version, 2);
+    assert_eq!(mobius.reversed, [false, true]);
+    let refused = PortalgonError::ReversedGluing {
+        polygon: 0,
+        side: 1,
+    };
+    assert_eq!(
+        mobius.to_portalgon(DEFAULT_LENGTH_TOLERANCE).unwrap_err(),
+        refused
+    );
+    assert_eq!(
+        mobius
+            .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
+            .unwrap_err(),
+        refused
+    );
+    // A reversed gluing needs version 2; `false` is the plain gluing (written without a flag).
+    let v1 = examples[1].replace("\"version\": 2", "\"version\": 1");
+    let e = PortalgonDoc::from_json(&v1).unwrap_err();
+    assert!(e.to_string().contains("needs \"version\": 2"), "{e}");
+    let plain = examples[1].replace(", true]", ", false]");
+    let doc = PortalgonDoc::from_json(&plain).unwrap();
+    assert!(doc.reversed.is_empty());
+    assert!(
+        doc.to_json()
+            .unwrap()
+            .starts_with(r#"{"format":"surftopo-portalgon","version":2"#)
+    );
+    let mut v = doc.clone();
+    v.version = 1;
+    assert!(!v.to_json().unwrap().contains("false"));
+    // Versions beyond 2 are refused.
+    let v3 = examples[0].replace("\"version\": 1", "\"version\": 3");
+    assert!(matches!(
+        PortalgonDoc::from_json(&v3),
+        Err(PortalgonError::Version { version: 3, .. })
+    ));
+}

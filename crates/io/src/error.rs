@@ -156,14 +156,21 @@ pub enum IoError {
         /// The reservation that failed.
         bytes: u64,
     },
-    /// The input has no face: it is empty, not a mesh in this format, or binary data in a text
-    /// format (then `binary_at` is the offset of the first byte that no text file holds).
-    #[error("{file}: no faces{}", binary_at.map(|at| format!(" (binary data at byte {at}: not a text mesh file)")).unwrap_or_default())]
+    /// The input has no face: it is empty, not a mesh in this format, binary data in a text
+    /// format (then `binary_at` is the offset of the first byte that no text file holds), or a
+    /// point cloud (vertices without faces: then `points` holds them, with their attributes).
+    #[error(
+        "{file}: no faces{}{}",
+        points.as_ref().map(|p| format!(": a point cloud of {} vertices", p.vertex_count())).unwrap_or_default(),
+        binary_at.map(|at| format!(" (binary data at byte {at}: not a text mesh file)")).unwrap_or_default()
+    )]
     NoFaces {
         /// File name.
         file: String,
         /// Offset of the first NUL or other binary control byte, if any.
         binary_at: Option<u64>,
+        /// The vertices read, when there are some (a point cloud).
+        points: Option<Box<crate::PolygonSoup>>,
     },
     /// The soup cannot be written with the options asked for (a coordinate beyond the range of
     /// `float` for [`crate::PlyPrecision::Float`]).

@@ -12,7 +12,7 @@
 //! allocate beyond what the input could hold. Files are read within
 //! [`ReadLimits`] (decompressed bytes), growing buffers fallibly, so a gzip
 //! bomb or an endless file is a typed error, never an abort; an input
-//! without faces is [`IoError::NoFaces`].
+//! without faces is [`IoError::NoFaces`] (holding the vertices of a point cloud).
 //!
 //! ```
 //! use surftopo_io::{Format, PolygonSoup, WriteOptions};
@@ -163,9 +163,12 @@ pub fn read_bytes_with(
     }?;
     if soup.face_count() == 0 {
         let text = matches!(format, Format::Obj | Format::Off);
+        let binary_at = text.then(|| first_binary_byte(bytes)).flatten();
+        let points = (soup.vertex_count() > 0 && binary_at.is_none()).then(|| Box::new(soup));
         return Err(IoError::NoFaces {
             file: name.to_owned(),
-            binary_at: text.then(|| first_binary_byte(bytes)).flatten(),
+            binary_at,
+            points,
         });
     }
     Ok(soup)

@@ -86,6 +86,59 @@ fn empty_soup_is_written_but_refused_on_reading() {
     }
 }
 
+/// A point cloud (vertices, no faces) is refused as a mesh, with its vertices and per-vertex
+/// attributes in the error for a caller that describes point clouds (`surftopo info`).
+#[test]
+fn a_point_cloud_is_refused_with_its_points() {
+    let mut soup = PolygonSoup::new();
+    soup.positions = vec![[0.0, 1.0, 2.0], [3.0, 4.5, -6.0], [1e-300, 7.0, 8.0]];
+    soup.attributes.vertex = ["nx", "ny", "nz"]
+        .iter()
+        .map(|name| surftopo_io::VertexProperty {
+            name: (*name).to_owned(),
+            scalar: surftopo_io::ScalarType::F32,
+            values: vec![0.0, 0.5, 1.0],
+        })
+        .collect();
+    for (format, enc, _) in variants() {
+        if format == Format::Stl {
+            continue;
+        }
+        let mut bytes = Vec::new();
+        let opts = WriteOptions::default().with_ply_encoding(enc);
+        write(&mut bytes, &soup, format, &opts).unwrap();
+        match read_bytes(&bytes, format, "cloud") {
+            Err(IoError::NoFaces {
+                points: Some(points),
+                binary_at: None,
+                ..
+            }) => {
+                assert_eq!(points.positions, soup.positions, "{format}");
+                assert_eq!(points.face_count(), 0);
+                let names: Vec<&str> = points
+                    .attributes
+                    .vertex
+                    .iter()
+                    .map(|p| p.name.as_str())
+                    .collect();
+                // OFF holds colours only.
+                let expected: &[&str] = if format == Format::Off {
+                    &[]
+                } else {
+                    &["nx", "ny", "nz"]
+                };
+                assert_eq!(names, expected, "{format}");
+            }
+            other => panic!("{format}: {other:?}"),
+        }
+        let message = read_bytes(&bytes, format, "cloud").unwrap_err().to_string();
+        assert_eq!(
+            message, "cloud: no faces: a point cloud of 3 vertices",
+            "{format}"
+        );
+    }
+}
+
 #[test]
 fn text_readers_record_face_lines() {
     let soup = cube_quads();

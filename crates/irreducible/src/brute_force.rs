@@ -10,18 +10,16 @@
 //! of the failures (no reshuffle between passes, as the paper describes); a contracted edge
 //! `e` identifies the destination of its half-edge `2e` with its origin.
 
-use std::time::Instant;
-
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
 use surftopo_mesh::{
-    Contraction, EdgeId, Lifting, LinkScratch, Plain, SurfaceMesh, contract_lifts,
+    Contraction, EdgeId, Lifting, LinkScratch, SurfaceMesh, contract_lifts,
     satisfies_link_condition,
 };
 
 use crate::tally::TestTally;
-use crate::{IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction};
 
 /// The randomised brute force of Section 5: passes over the shuffled edges, contracting every edge
 /// that passes the link condition, until a pass contracts nothing.
@@ -33,20 +31,8 @@ use crate::{IrreducibleError, Reduction, check_simplicial};
 ///
 /// # Errors
 /// [`IrreducibleError`] if the mesh is not simplicial (nothing is done then).
-pub fn brute_force(mut mesh: SurfaceMesh, seed: u64) -> Result<Reduction, IrreducibleError> {
-    check_simplicial(&mesh)?;
-    let start = Instant::now();
-    let plain = Plain {
-        slots: mesh.vertex_slots(),
-    };
-    let (history, tally, contractions) = run(&mut mesh, &plain, seed);
-    Ok(Reduction::finish(
-        mesh,
-        history,
-        &tally,
-        contractions,
-        start,
-    ))
+pub fn brute_force(mesh: SurfaceMesh, seed: u64) -> Result<Reduction, IrreducibleError> {
+    Reduction::of_plain_run(mesh, |mesh, plain| run(mesh, plain, seed))
 }
 
 /// BF on the surface a mesh covers (see [`crate::reduce_surface`]): the edges of the surface

@@ -151,20 +151,28 @@ pub struct Reduction {
 }
 
 impl Reduction {
-    /// The result of a run: the reduced mesh, its history, and the counters taken from the tally.
-    pub(crate) fn finish(
-        mesh: SurfaceMesh,
-        history: Vec<Contraction>,
-        tally: &tally::TestTally,
-        contractions: u64,
-        start: std::time::Instant,
-    ) -> Self {
-        let counters = Counters::of(tally, contractions, start);
-        Self {
+    /// Runs `reduce` on a closed orientable `mesh` (each vertex its own class: [`Plain`]) once
+    /// [`check_simplicial`] has passed; the counters are taken from the tally `reduce` returns,
+    /// the seconds counted from after the check.
+    pub(crate) fn of_plain_run(
+        mut mesh: SurfaceMesh,
+        reduce: impl FnOnce(
+            &mut SurfaceMesh,
+            &surftopo_mesh::Plain,
+        ) -> (Vec<Contraction>, tally::TestTally, u64),
+    ) -> Result<Self, IrreducibleError> {
+        check_simplicial(&mesh)?;
+        let start = std::time::Instant::now();
+        let plain = surftopo_mesh::Plain {
+            slots: mesh.vertex_slots(),
+        };
+        let (history, tally, contractions) = reduce(&mut mesh, &plain);
+        let counters = Counters::of(&tally, contractions, start);
+        Ok(Self {
             mesh,
             history,
             counters,
-        }
+        })
     }
 }
 

@@ -77,15 +77,11 @@
 //! Attributes are one flat array of small structs indexed by vertex id (no hashing): d, p, n, c,
 //! o, t of Table 1, with `u32::MAX` standing for the paper's −1 and nil.
 
-use std::time::Instant;
-
-use surftopo_mesh::{
-    Contraction, HalfedgeId, Lifting, Plain, SurfaceMesh, VertexId, contract_lifts,
-};
+use surftopo_mesh::{Contraction, HalfedgeId, Lifting, SurfaceMesh, VertexId, contract_lifts};
 
 use crate::edge_lists::{EdgeLists, List};
 use crate::tally::TestTally;
-use crate::{IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction};
 
 /// The paper's −1 (time attributes) and nil (n).
 const NONE: u32 = u32::MAX;
@@ -122,14 +118,8 @@ struct Attributes {
 ///
 /// # Errors
 /// [`IrreducibleError`] if the mesh is not simplicial (nothing is done then).
-pub fn ramaswami_siqueira(mut mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
-    check_simplicial(&mesh)?;
-    let start = Instant::now();
-    let plain = Plain {
-        slots: mesh.vertex_slots(),
-    };
-    let (stack, tally, contractions) = run(&mut mesh, &plain);
-    Ok(Reduction::finish(mesh, stack, &tally, contractions, start))
+pub fn ramaswami_siqueira(mesh: SurfaceMesh) -> Result<Reduction, IrreducibleError> {
+    Reduction::of_plain_run(mesh, run)
 }
 
 /// RS on the surface a mesh covers (see [`crate::reduce_surface`]): every vertex below is a

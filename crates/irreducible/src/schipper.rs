@@ -21,14 +21,13 @@
 //! genus 0 implies.
 
 use std::collections::BTreeSet;
-use std::time::Instant;
 
 use surftopo_mesh::{
     Contraction, EdgeId, HalfedgeId, Lifting, Plain, SurfaceMesh, VertexId, contract_lifts,
 };
 
 use crate::tally::TestTally;
-use crate::{IrreducibleError, Reduction, check_simplicial};
+use crate::{IrreducibleError, Reduction};
 
 /// Schipper's algorithm (Section 3 of the paper): contracts edges of `mesh`, always at a loose
 /// vertex of lowest degree, until it is an irreducible triangulation of the same surface.
@@ -75,22 +74,10 @@ pub fn schipper_traced(mesh: SurfaceMesh) -> Result<(Reduction, Vec<LinkTest>), 
 }
 
 fn run(
-    mut mesh: SurfaceMesh,
+    mesh: SurfaceMesh,
     on_test: impl FnMut(&SurfaceMesh, HalfedgeId, usize),
 ) -> Result<Reduction, IrreducibleError> {
-    check_simplicial(&mesh)?;
-    let start = Instant::now();
-    let plain = Plain {
-        slots: mesh.vertex_slots(),
-    };
-    let (history, tally, contractions) = run_lifted(&mut mesh, &plain, on_test);
-    Ok(Reduction::finish(
-        mesh,
-        history,
-        &tally,
-        contractions,
-        start,
-    ))
+    Reduction::of_plain_run(mesh, |mesh, plain| run_lifted(mesh, plain, on_test))
 }
 
 /// S on the surface a mesh covers (see [`crate::reduce_surface`]): the vertices are the vertex

@@ -142,6 +142,36 @@ pub enum BuildError {
     },
 }
 
+impl BuildError {
+    /// The input face the error names, if any (mutable, to renumber it).
+    pub fn face_mut(&mut self) -> Option<&mut usize> {
+        match self {
+            BuildError::IndexOutOfRange { face, .. }
+            | BuildError::RepeatedVertex { face, .. }
+            | BuildError::DuplicateFace { face, .. }
+            | BuildError::BoundaryEdge { face, .. }
+            | BuildError::NonManifoldEdge { face, .. }
+            | BuildError::NonOrientable { face, .. }
+            | BuildError::Disconnected { face, .. }
+            | BuildError::NotTriangle { face, .. }
+            | BuildError::ZeroArea { face } => Some(face),
+            _ => None,
+        }
+    }
+
+    /// The error with the faces it names renumbered through `map` (a triangle's index to its
+    /// polygon's, [`crate::PolygonTriangulation::face_of`]).
+    pub fn on_faces(mut self, map: &[u32]) -> Self {
+        if let BuildError::DuplicateFace { duplicate_of, .. } = &mut self {
+            *duplicate_of = map[*duplicate_of] as usize;
+        }
+        if let Some(face) = self.face_mut() {
+            *face = map[*face] as usize;
+        }
+        self
+    }
+}
+
 /// A violated structural invariant, found by [`crate::SurfaceMesh::check_invariants`].
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 #[error("invariant violated: {0}")]

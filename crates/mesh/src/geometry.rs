@@ -54,6 +54,129 @@ pub fn is_zero_area_triangle(a: Point3, b: Point3, c: Point3) -> bool {
     on(0, 1) && on(1, 2) && on(2, 0)
 }
 
+/// The tolerance of `info`'s near-degenerate warning, the one place it is set: a triangle is
+/// *near-degenerate* when its area is not exactly zero but its height over its longest side is
+/// below this fraction of that side ([`relative_height`]). Why 1e-6: the intrinsic algorithms
+/// (`delaunay`, `isometric`, the Laplacian) see a triangle through its side lengths rounded to
+/// double precision, whose excess b + c − a is about 2(h/a)²·a at its smallest; at h/a = 1e-6
+/// that is 2e-12·a, so angles and areas computed from the lengths keep only about four
+/// significant digits, and below h/a ≈ 1.5e-8 the rounded lengths no longer make a triangle
+/// (`delaunay` then refuses it as a zero-area triangle unless `--mollify`). The warning thus
+/// covers every triangle refused that way, with a margin of a hundredfold.
+pub const NEAR_DEGENERATE_RELATIVE_HEIGHT: f64 = 1e-6;
+
+/// The smallest height of triangle `a, b, c` divided by its longest side, i.e. twice its area
+/// over the longest side squared: 0 for collinear corners, √3/2 for an equilateral triangle.
+/// Scale-free: computed on the differences divided by their largest magnitude, so coordinates
+/// of any finite magnitude neither overflow nor vanish (the cross product's rounding is about
+/// 1e-16 of the result's scale). NaN when a coordinate is not finite.
+pub fn relative_height(a: Point3, b: Point3, c: Point3) -> f64 {
+    let mut sides = [sub(b, a), sub(c, b), sub(a, c)];
+    if sides.iter().flatten().any(|d| d.is_infinite()) {
+        // The differences overflow: halve the coordinates first (exact but for subnormals).
+        let half = |p: Point3| p.map(|x| x * 0.5);
+        sides = [
+            sub(half(b), half(a)),
+            sub(half(c), half(b)),
+            sub(half(a), half(c)),
+        ];
+    }
+    let m = sides.iter().flatten().fold(0.0f64, |m, d| m.max(d.abs()));
+    if m == 0.0 || m.is_nan() {
+        return if m == 0.0 { 0.0 } else { f64::NAN };
+    }
+    let [u, v, w] = sides.map(|d| d.map(|x| x / m));
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let norm2 = |d: Point3| d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let longest = norm2(u).max(norm2(v)).max(norm2(w));
+    norm2(n).sqrt() / longest
+}
+
+fn sub(p: Point3, q: Point3) -> Point3 {
+    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
+}
+
+/// What is wrong with a face of [`near_degenerate_faces`] whose smallest relative height is
+/// `height`, in words (the caller adds where, and the option that makes it usable).
+pub fn describe_near_degenerate(height: f64) -> String {
+    if height == 0.0 {
+        "one of the triangles it is cut into is flat".to_owned()
+    } else {
+        format!(
+            "near-degenerate: height {height:.1e} times its longest side (below \
+             {NEAR_DEGENERATE_RELATIVE_HEIGHT:e})"
+        )
+    }
+}
+
+/// Whether triangle `a, b, c` is near-degenerate: not of exactly zero area
+/// ([`is_zero_area_triangle`]) but of [`relative_height`] below
+/// [`NEAR_DEGENERATE_RELATIVE_HEIGHT`].
+pub fn is_near_degenerate_triangle(a: Point3, b: Point3, c: Point3) -> bool {
+    relative_height(a, b, c) < NEAR_DEGENERATE_RELATIVE_HEIGHT && !is_zero_area_triangle(a, b, c)
+}
+
+/// The near-degenerate faces of a soup cut into triangles (`cut`, by
+/// [`crate::triangulate_polygons`]), in face order, each with the smallest [`relative_height`]
+/// of its triangles: a triangle face when [`is_near_degenerate_triangle`]; a polygon when one of
+/// its triangles has a relative height below [`NEAR_DEGENERATE_RELATIVE_HEIGHT`] (zero included:
+/// a polygon that is not simple in its plane may be cut into a flat triangle) unless all of
+/// them are flat (the polygon has zero area: a problem, [`problems`]). Faces with an index out
+/// of range, a repeated vertex or a non-finite coordinate are skipped (problems of their own).
+pub fn near_degenerate_faces(
+    positions: &[Point3],
+    cut: &crate::PolygonTriangulation,
+) -> Vec<(usize, f64)> {
+    let mut found = Vec::new();
+    let mut start = 0;
+    while start < cut.triangles.len() {
+        let face = cut.face_of[start];
+        let end = start + cut.face_of[start..].partition_point(|&f| f == face);
+        let triangles = &cut.triangles[start..end];
+        start = end;
+        let usable = triangles.iter().all(|t| {
+            t[0] != t[1]
+                && t[1] != t[2]
+                && t[0] != t[2]
+                && t.iter().all(|&v| {
+                    positions
+                        .get(v as usize)
+                        .is_some_and(|p| p.iter().all(|c| c.is_finite()))
+                })
+        });
+        if !usable {
+            continue;
+        }
+        let corners = |t: &[u32; 3]| t.map(|v| positions[v as usize]);
+        let heights: Vec<f64> = triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = corners(t);
+                if is_zero_area_triangle(a, b, c) {
+                    0.0
+                } else {
+                    relative_height(a, b, c).max(f64::MIN_POSITIVE)
+                }
+            })
+            .collect();
+        let least = heights.iter().copied().fold(f64::INFINITY, f64::min);
+        let all_flat = heights.iter().all(|&h| h == 0.0);
+        let near = if triangles.len() == 1 {
+            least > 0.0 && least < NEAR_DEGENERATE_RELATIVE_HEIGHT
+        } else {
+            !all_flat && least < NEAR_DEGENERATE_RELATIVE_HEIGHT
+        };
+        if near {
+            found.push((face as usize, least));
+        }
+    }
+    found
+}
+
 /// Whether a face (a polygon given by vertex indices into `positions`) has exactly zero area:
 /// every triangle of its fan from the first vertex has ([`is_zero_area_triangle`]); for a
 /// triangle, its three vertices are collinear. The caller checks that indices are in range.
@@ -75,12 +198,11 @@ pub fn problems<'a>(
 ) -> Vec<BuildError> {
     let mut found: Vec<BuildError> = non_finite_coordinates(positions).collect();
     let testable = |face: &[u32]| {
-        face.iter().enumerate().all(|(k, &v)| {
+        face.iter().all(|&v| {
             positions
                 .get(v as usize)
                 .is_some_and(|p| p.iter().all(|c| c.is_finite()))
-                && !face[..k].contains(&v)
-        })
+        }) && !crate::polygons::repeats_a_vertex(face)
     };
     for (face, indices) in faces.into_iter().enumerate() {
         if testable(indices) && is_zero_area_face(positions, indices) {
@@ -164,6 +286,73 @@ pub fn weld_exact(positions: &[Point3]) -> (Vec<Point3>, Vec<u32>) {
         map[v] = new_index[r as usize];
     }
     (welded, map)
+}
+
+/// What welding exactly coincident positions ([`weld_exact`]) would make of a soup that has
+/// boundary edges or several pieces: the fix to suggest for a triangle soup (every triangle with
+/// its own three vertices, as STL and some exporters write), which is otherwise refused as a
+/// surface with boundary or read as a pile of disks.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WeldEffect {
+    /// Vertices that share their position with an earlier vertex (merged into it).
+    pub merged: usize,
+    /// The welded triangles, inspected.
+    pub after: crate::Inspection,
+}
+
+impl WeldEffect {
+    /// In words: "would merge 640 vertices into others at the same position, making one closed
+    /// surface (sphere)" or "..., leaving 2 pieces with 3 boundary loops (...)".
+    pub fn describe(&self) -> String {
+        let a = &self.after;
+        let names: Vec<String> = a.surfaces.iter().map(crate::SurfaceKind::name).collect();
+        let what = if a.boundary_edges == 0 && a.components == 1 {
+            format!("making one closed surface ({})", names.join(""))
+        } else {
+            format!(
+                "leaving {} piece{} with {} boundary loop{} ({})",
+                a.components,
+                if a.components == 1 { "" } else { "s" },
+                a.boundary_loops,
+                if a.boundary_loops == 1 { "" } else { "s" },
+                names.join(" + ")
+            )
+        };
+        format!(
+            "would merge {} vertices into others at the same position, {what}",
+            self.merged
+        )
+    }
+}
+
+/// What welding would do to the soup of `positions` and `triangles` (inspected as `before`),
+/// when it helps: the soup has boundary edges or several pieces, some positions are equal, and
+/// the welded soup is a surface (no combinatorial problem) with fewer boundary edges or fewer
+/// pieces. `None` otherwise. O(n log n); meant for the paths where the answer is shown (an
+/// error, a note), not for every read.
+pub fn weld_effect(
+    positions: &[Point3],
+    triangles: &[[u32; 3]],
+    before: &crate::Inspection,
+) -> Option<WeldEffect> {
+    if before.boundary_edges == 0 && before.components <= 1 {
+        return None;
+    }
+    let (welded, map) = weld_exact(positions);
+    if welded.len() == positions.len() {
+        return None;
+    }
+    let merged_triangles: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|v| map.get(v as usize).copied().unwrap_or(v)))
+        .collect();
+    let after = crate::inspect(welded.len(), &merged_triangles);
+    let better =
+        after.boundary_edges < before.boundary_edges || after.components < before.components;
+    (better && after.is_combinatorially_valid()).then(|| WeldEffect {
+        merged: positions.len() - welded.len(),
+        after,
+    })
 }
 
 /// Interleaves the low 21 bits of three integers (Morton / Z-order code).

@@ -11,6 +11,8 @@
 //! - [`geometry`]: positions and edge lengths beside the topology; [`Surface`]: a mesh with its
 //!   positions.
 //! - [`generators`]: deterministic test and benchmark surfaces.
+//! - [`triangulate_polygons`]: polygon faces cut into triangles by ear clipping in their plane
+//!   (exact predicates; no degenerate triangle for a polygon simple in its plane).
 //!
 
 mod build;
@@ -25,6 +27,7 @@ pub mod geometry;
 mod gluing;
 mod ids;
 mod invariants;
+mod polygons;
 mod printable;
 mod surface;
 mod topology;
@@ -43,6 +46,10 @@ pub use cover::{
 pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
+pub use polygons::{
+    PolygonTriangulation, triangulate_polygon, triangulate_polygons,
+    triangulate_polygons_as_surface,
+};
 pub use printable::printable;
 pub use surface::Surface;
 pub use topology::{Outgoing, SurfaceMesh};

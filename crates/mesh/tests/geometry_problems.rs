@@ -105,3 +105,134 @@ fn counts_sum_to_the_total_and_geometric_problems_come_first() {
         ins.problem_count
     );
 }
+
+#[test]
+fn relative_height_is_scale_free() {
+    use surftopo_mesh::geometry::relative_height;
+    let equilateral = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.5, 3f64.sqrt() / 2.0, 0.0],
+    ];
+    let needle = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.4, 1e-9, 0.0]];
+    for scale in [1e-200, 1e-30, 1.0, 1e30, 1e200, 1e307] {
+        let [a, b, c] = equilateral.map(|p| p.map(|x| x * scale));
+        assert!(
+            (relative_height(a, b, c) - 3f64.sqrt() / 2.0).abs() < 1e-15,
+            "{scale}"
+        );
+        let [a, b, c] = needle.map(|p| p.map(|x| x * scale));
+        assert!(
+            (relative_height(a, b, c) / 1e-9 - 1.0).abs() < 1e-6,
+            "{scale}"
+        );
+    }
+    // Differences beyond the largest double.
+    let far = relative_height([-1e308, 0.0, 0.0], [1e308, 0.0, 0.0], [0.0, 1e308, 0.0]);
+    assert!((far - 0.5).abs() < 1e-15);
+    assert_eq!(relative_height([0.0; 3], [1.0; 3], [2.0; 3]), 0.0);
+    assert!(relative_height([0.0; 3], [f64::NAN, 0.0, 0.0], [1.0; 3]).is_nan());
+}
+
+#[test]
+fn near_degenerate_triangles_and_polygons_are_found() {
+    use surftopo_mesh::geometry::{
+        NEAR_DEGENERATE_RELATIVE_HEIGHT, is_near_degenerate_triangle, near_degenerate_faces,
+    };
+    let o = [0.0; 3];
+    let x = [1.0, 0.0, 0.0];
+    let at = |h: f64| [0.5, h, 0.0];
+    assert!(is_near_degenerate_triangle(o, x, at(1e-7)));
+    assert!(is_near_degenerate_triangle(o, x, at(1e-300)));
+    assert!(!is_near_degenerate_triangle(o, x, at(1e-5)));
+    assert!(
+        !is_near_degenerate_triangle(o, x, at(0.0)),
+        "exactly flat is a problem instead"
+    );
+
+    // Faces: a good triangle, a needle, a flat triangle (a problem, not a warning), a
+    // quadrilateral whose every triangulation has a needle (a corner nearly on the diagonal), a
+    // flat quadrilateral, a triangle repeating a vertex.
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.5, 1e-8, 0.0],
+        [2.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [3.0, 0.0, 0.0],
+        [0.5, -1e-8, 0.0],
+    ];
+    let faces: [&[u32]; 6] = [
+        &[0, 1, 2],
+        &[0, 1, 3],
+        &[0, 1, 4],
+        &[0, 7, 1, 3],
+        &[0, 1, 4, 6],
+        &[0, 1, 1],
+    ];
+    let cut = surftopo_mesh::triangulate_polygons(&positions, faces);
+    let found: Vec<usize> = near_degenerate_faces(&positions, &cut)
+        .into_iter()
+        .map(|(f, h)| {
+            assert!(h < NEAR_DEGENERATE_RELATIVE_HEIGHT);
+            f
+        })
+        .collect();
+    assert_eq!(found, [1, 3]);
+}
+
+#[test]
+fn welding_is_suggested_when_it_closes_or_joins() {
+    use surftopo_mesh::geometry::weld_effect;
+    let tetra_positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    // The tetrahedron as a soup: every triangle on three vertices of its own.
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    for t in TETRA {
+        let base = positions.len() as u32;
+        positions.extend(t.map(|v| tetra_positions[v as usize]));
+        triangles.push([base, base + 1, base + 2]);
+    }
+    let before = inspect(positions.len(), &triangles);
+    let effect = weld_effect(&positions, &triangles, &before).expect("welding closes it");
+    assert_eq!(effect.merged, 8);
+    assert!(effect.after.is_closed() && effect.after.components == 1);
+    assert_eq!(
+        effect.describe(),
+        "would merge 8 vertices into others at the same position, making one closed surface (sphere)"
+    );
+    // A closed surface, and a soup whose positions are all distinct: nothing to suggest.
+    let closed = inspect(4, &TETRA);
+    assert_eq!(weld_effect(&tetra_positions, &TETRA, &closed), None);
+    let apart: Vec<[f64; 3]> = (0..12).map(|i| [f64::from(i), 0.5, 0.25]).collect();
+    assert_eq!(weld_effect(&apart, &triangles, &before), None);
+    // Welding that would make an edge non-manifold (three triangles on one edge) is no fix.
+    let fins = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, -1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    let fin_positions: Vec<[f64; 3]> = [0, 1, 2, 0, 1, 3, 0, 1, 4].map(|i| fins[i]).to_vec();
+    let fin_triangles = [[0, 1, 2], [3, 4, 5], [6, 7, 8]];
+    let before = inspect(9, &fin_triangles);
+    assert_eq!(weld_effect(&fin_positions, &fin_triangles, &before), None);
+}
+
+#[test]
+fn the_build_report_maps_vertex_ids_back_to_the_input() {
+    // The tetrahedron on vertices 1, 3, 4, 6 of seven (0, 2 and 5 unreferenced).
+    let faces = TETRA.map(|t| t.map(|v| [1, 3, 4, 6][v as usize]));
+    let (_, report) = surftopo_mesh::build(7, &faces).unwrap();
+    assert_eq!(report.input_vertices(), [1, 3, 4, 6]);
+    for (id, &input) in report.input_vertices().iter().enumerate() {
+        assert_eq!(report.vertex_old_to_new[input as usize].idx(), id);
+    }
+}

@@ -12,6 +12,9 @@ call adds everything else (reading the numpy arrays, index conversion, building 
 scipy.sparse.csr_matrix), and the median over the rounds of wall / library - 1 is the overhead.
 
     python crates/python/benchmarks/laplacian_bench.py --rounds 15 --out results/python_laplacian.md
+
+`--cut-holes B` cuts B holes into every input first (open meshes: boundary edges are never
+flipped and keep their one half-cotangent in every contender).
 """
 
 from __future__ import annotations
@@ -56,6 +59,27 @@ def inputs(limit_faces: tuple[int, int]):
         print("note: SURFTOPO_MESHES is not set: generated inputs only", file=sys.stderr)
     yield "icosphere(6)", *surftopo.icosphere(6)
     yield "torus(250, 200)", *surftopo.torus(250, 200)
+
+
+def cut_holes(V, F, holes, seed):
+    """Removes the faces around `holes` vertices chosen at random (seeded), no two within two
+    edges of each other, so each hole is one boundary loop; the vertices stay (empty rows)."""
+    rng = np.random.default_rng(seed)
+    neighbours = [[] for _ in range(len(V))]
+    for a, b in np.vstack([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]).tolist():
+        neighbours[a].append(b)
+        neighbours[b].append(a)
+    blocked = np.zeros(len(V), bool)
+    centres = []
+    for v in rng.permutation(len(V)).tolist():
+        if len(centres) == holes:
+            break
+        ring = {v} | {w for u in [v, *neighbours[v]] for w in neighbours[u]}
+        ring |= {w for u in list(ring) for w in neighbours[u]}
+        if not blocked[list(ring)].any():
+            centres.append(v)
+            blocked[list(ring)] = True
+    return V, F[~np.isin(F, centres).any(axis=1)]
 
 
 def peers():
@@ -144,10 +168,15 @@ def main():
     parser.add_argument("--min-faces", type=int, default=80_000)
     parser.add_argument("--max-faces", type=int, default=120_000)
     parser.add_argument("--out", type=Path, help="markdown report (a .jsonl beside it)")
+    parser.add_argument("--cut-holes", type=int, default=0, help="holes cut into every input")
+    parser.add_argument("--seed", type=int, default=1, help="the holes' seed")
     args = parser.parse_args()
     contenders = peers()
     results = []
     for name, V, F in inputs((args.min_faces, args.max_faces)):
+        if args.cut_holes:
+            V, F = cut_holes(V, F, args.cut_holes, args.seed)
+            name += f" ({args.cut_holes} holes)"
         r = measure(name, V, F, args.rounds, contenders)
         results.append(r)
         print(json.dumps(r), file=sys.stderr)

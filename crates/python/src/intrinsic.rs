@@ -10,12 +10,14 @@ use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
+use surftopo_intrinsic::CoveredTriangulation;
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
     DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DelaunayInput, DelaunayMethod,
     DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation, IsometryOptions,
     PortalgonDoc, SparseMatrix, TriangleStyle, cotan_laplacian, delaunay_tessellation, lumped_mass,
 };
+use surftopo_mesh::{BuildError, CoveredSurface};
 
 /// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
 fn methods() -> [(&'static str, DelaunayMethod); 4] {
@@ -160,6 +162,16 @@ impl Csr {
         }
     }
 
+    /// The `scipy.sparse` matrix in `format`: `"csr"` (the arrays handed over without a copy)
+    /// or `"csc"` (robust_laplacian's; the same matrix, converted by scipy).
+    fn into_format<'py>(self, py: Python<'py>, format: Format) -> PyResult<Bound<'py, PyAny>> {
+        let csr = self.into_scipy(py)?;
+        match format {
+            Format::Csr => Ok(csr),
+            Format::Csc => csr.call_method0("tocsc"),
+        }
+    }
+
     /// The `scipy.sparse.csr_matrix` (the arrays are handed over without a copy).
     fn into_scipy(self, py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
         let data = vector(py, self.data);
@@ -173,6 +185,33 @@ impl Csr {
             .getattr("csr_matrix")?
             .call(((data, indices, indptr),), Some(&kwargs))
     }
+}
+
+/// The sparse format of the matrices returned.
+#[derive(Clone, Copy)]
+enum Format {
+    Csr,
+    Csc,
+}
+
+/// `format=` of [`laplacian`].
+fn sparse_format(name: &str) -> Result<Format, Failure> {
+    choose(
+        "format",
+        name,
+        &[("csr", Format::Csr), ("csc", Format::Csc)],
+    )
+}
+
+/// The CLI's refusal of matrices that are not representable (`inf` entries, a mass matrix of
+/// zeros: coordinates of 1e200 or 1e-200), as an `InvalidGeometryError`.
+fn check_matrices(l: &SparseMatrix, m: &SparseMatrix) -> Result<(), Failure> {
+    let refuse =
+        |what: &str, e: String| Failure::Invalid("InvalidGeometryError", format!("{what}: {e}"));
+    l.check_representable(false)
+        .map_err(|e| refuse("the cotan Laplacian", e))?;
+    m.check_representable(true)
+        .map_err(|e| refuse("the mass matrix", e))
 }
 
 /// The request of the Python arguments: `method=`, the flip limits, and the outputs.
@@ -517,25 +556,73 @@ fn laplacian_and_seconds<'py>(
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
     request: &DelaunayRequest,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
+    let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions();
     let computed = py.detach(|| {
         let start = Instant::now();
-        let located = Located::from_arrays(&positions, &triangles)?;
+        let located = match Located::from_arrays(&positions, &triangles) {
+            Err(Failure::Build(
+                BuildError::BoundaryEdge { .. }
+                | BuildError::NonOrientable { .. }
+                | BuildError::Disconnected { .. },
+            )) => return covered_matrices(&positions, &triangles, request, start),
+            located => located?,
+        };
         let (located, out) = located.delaunay(request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
         let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
+        let (l, m) = (matrix(out.laplacian), matrix(out.mass));
+        check_matrices(&l, &m)?;
         let matrices = (
-            Csr::new(matrix(out.laplacian), &rows, located.rows),
-            Csr::new(matrix(out.mass), &rows, located.rows),
+            Csr::new(l, &rows, located.rows),
+            Csr::new(m, &rows, located.rows),
         );
         Ok::<_, Failure>((matrices, seconds))
     });
     let ((l, m), seconds) = computed.map_err(|f| f.into_pyerr(py))?;
-    Ok((l.into_scipy(py)?, m.into_scipy(py)?, seconds))
+    Ok((
+        l.into_format(py, format)?,
+        m.into_format(py, format)?,
+        seconds,
+    ))
+}
+
+/// The Laplacian and mass matrices of a surface with boundary, non-orientable or in pieces
+/// (`surftopo_intrinsic::CoveredTriangulation`: flipping; the natural boundary condition), rows
+/// the input's vertex indices, and the seconds since `start`.
+fn covered_matrices(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    request: &DelaunayRequest,
+    start: Instant,
+) -> Result<((Csr, Csr), f64), Failure> {
+    let (surface, report) = CoveredSurface::from_triangles(positions.to_vec(), triangles)?;
+    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions)
+        .map_err(Failure::Geometry)?;
+    let request = DelaunayRequest {
+        outputs: DelaunayOutputs {
+            triangulation: false,
+            ..request.outputs
+        },
+        ..*request
+    };
+    let out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Covered(tri), &request)
+        .map_err(Failure::Intrinsic)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let rows = input_index(&report);
+    let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
+    let (l, m) = (matrix(out.laplacian), matrix(out.mass));
+    check_matrices(&l, &m)?;
+    let matrices = (
+        Csr::new(l, &rows, positions.len()),
+        Csr::new(m, &rows, positions.len()),
+    );
+    Ok((matrices, seconds))
 }
 
 /// The request of `laplacian`: the triangulation and both matrices.
@@ -555,9 +642,11 @@ fn laplacian_request(
 
 /// The cotan Laplacian `L` (positive semidefinite) and the lumped mass matrix `M` of the intrinsic
 /// Delaunay triangulation of `(V, F)` by `method`, as `robust_laplacian.mesh_laplacian` returns
-/// them. `exact=True` is refused: a mesh's lengths are square roots.
+/// them, in `format` (`"csr"` or `"csc"`), refused as the CLI refuses them when not
+/// representable. `exact=True` is refused: a mesh's lengths are square roots.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, method = "flip", exact = false, mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces, method = "flip", exact = false, mollify = None, max_flips = None, format = "csr"))]
+#[allow(clippy::too_many_arguments)] // the Python keyword arguments
 pub fn laplacian<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -566,12 +655,13 @@ pub fn laplacian<'py>(
     exact: bool,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    format: &str,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let request = laplacian_request(method, mollify, max_flips).map_err(|f| f.into_pyerr(py))?;
     if exact {
         return Err(not_exact().into_pyerr(py));
     }
-    laplacian_and_seconds(py, vertices, faces, &request).map(|(l, m, _)| (l, m))
+    laplacian_and_seconds(py, vertices, faces, &request, format).map(|(l, m, _)| (l, m))
 }
 
 /// [`laplacian`] with the default options, also returning the seconds spent in the library calls
@@ -583,7 +673,7 @@ pub fn _laplacian_timed<'py>(
     faces: &Bound<'py, PyAny>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let request = laplacian_request("flip", None, None).map_err(|f| f.into_pyerr(py))?;
-    laplacian_and_seconds(py, vertices, faces, &request)
+    laplacian_and_seconds(py, vertices, faces, &request, "csr")
 }
 
 /// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay

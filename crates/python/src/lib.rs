@@ -16,6 +16,7 @@ use pyo3::prelude::*;
 /// The native module: every function and class of the `surftopo` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(surface::read_mesh, m)?)?;
     m.add_function(wrap_pyfunction!(surface::write_mesh, m)?)?;
     m.add_function(wrap_pyfunction!(surface::info, m)?)?;

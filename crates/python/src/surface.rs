@@ -8,7 +8,7 @@
 use crate::arrays::{self, VertexArray, index_array, positions_array, vector};
 use crate::errors::{Failure, invalid};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 use std::path::PathBuf;
 use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
@@ -27,14 +27,7 @@ pub struct Input {
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
 pub fn input_index(report: &BuildReport) -> Vec<u32> {
-    let mut index = Vec::with_capacity(report.vertex_old_to_new.len());
-    for (old, new) in report.vertex_old_to_new.iter().enumerate() {
-        if new.is_valid() {
-            debug_assert_eq!(new.idx(), index.len());
-            index.push(old as u32);
-        }
-    }
-    index
+    report.input_vertices()
 }
 
 impl Input {
@@ -76,17 +69,51 @@ pub fn choose<T: Copy>(what: &str, name: &str, choices: &[(&str, T)]) -> Result<
         })
 }
 
+/// How [`read_mesh`] returns the faces (`polygons=`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum PolygonsAs {
+    /// One `(m, k)` array when every face has `k` sides, else a list.
+    Auto,
+    /// A list of 1-D arrays, one per face.
+    List,
+    /// An `(m, k_max)` array padded with -1, and the side counts.
+    Padded,
+    /// Triangles: polygons cut by the commands' rule
+    /// (`surftopo_mesh::triangulate_polygons_as_surface`).
+    Triangles,
+}
+
 /// Reads a mesh file (OBJ, OFF, PLY, STL, optionally `.gz`) as `(V, F)`: float64 positions
-/// `(n, 3)` and int64 faces `(m, k)` (every face must have the same number `k` of sides). STL is
-/// always welded (its triangles share no vertices); `weld=True` merges exactly equal positions in
-/// the other formats too.
+/// `(n, 3)`, every vertex of the file in its order (vertices in no face included), and int64
+/// faces as `polygons` says: `"auto"` an `(m, k)` array when every face has `k` sides, else a
+/// list of 1-D arrays; `"list"` always the list; `"padded"` an `(m, k_max)` array padded with -1
+/// followed by the side counts `(m,)` (then `(V, F, counts)`); `"triangles"` an `(m', 3)` array,
+/// polygons cut as the CLI's commands cut them. STL is always welded (its triangles share no
+/// vertices); `weld=True` merges exactly equal positions in the other formats too.
+/// `attributes=True` appends a dict of the per-vertex properties read (name -> float64 `(n,)`:
+/// `u`, `v` for texture coordinates, `nx`, `ny`, `nz`, colours, any PLY property), and, for OBJ
+/// values given per face corner, `corner_texcoords` / `corner_normals` as `(table, corners)`:
+/// the `(e, width)` float64 table and, per face corner in face order, its row (int64, -1 none).
 #[pyfunction]
-#[pyo3(signature = (path, weld = false))]
+#[pyo3(signature = (path, weld = false, polygons = "auto", attributes = false))]
 pub fn read_mesh<'py>(
     py: Python<'py>,
     path: PathBuf,
     weld: bool,
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    polygons: &str,
+    attributes: bool,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let mode = choose(
+        "polygons",
+        polygons,
+        &[
+            ("auto", PolygonsAs::Auto),
+            ("list", PolygonsAs::List),
+            ("padded", PolygonsAs::Padded),
+            ("triangles", PolygonsAs::Triangles),
+        ],
+    )
+    .map_err(|f| f.into_pyerr(py))?;
     let read = py.detach(|| -> Result<PolygonSoup, Failure> {
         let mut soup = surftopo_io::read_path(&path).map_err(Failure::Io)?;
         let is_stl = surftopo_io::Format::from_path(&path) == Some(surftopo_io::Format::Stl);
@@ -100,23 +127,76 @@ pub fn read_mesh<'py>(
         Ok(soup)
     });
     let soup = read.map_err(|f| f.into_pyerr(py))?;
+    let mut items: Vec<Bound<'py, PyAny>> = vec![positions_array(py, &soup.positions).into_any()];
     let sides = soup.faces().next().map_or(3, <[u32]>::len);
-    if let Some(k) = soup.faces().position(|f| f.len() != sides) {
-        return Err(Failure::Invalid(
-            "MeshFileError",
-            format!(
-                "{}: face 0 has {sides} sides, face {k} has {}: read_mesh returns faces of one size",
-                path.display(),
-                soup.face(k).len()
-            ),
-        )
-        .into_pyerr(py));
+    let uniform = soup.faces().all(|f| f.len() == sides);
+    match mode {
+        PolygonsAs::Triangles => {
+            let cut = py.detach(|| {
+                surftopo_mesh::triangulate_polygons_as_surface(&soup.positions, soup.faces())
+                    .0
+                    .triangles
+            });
+            items.push(index_array(py, &cut).into_any());
+        }
+        PolygonsAs::Auto if uniform => {
+            let faces: Vec<i64> = soup.face_indices.iter().map(|&i| i64::from(i)).collect();
+            items.push(crate::arrays::matrix(py, faces, sides).into_any());
+        }
+        PolygonsAs::Auto | PolygonsAs::List => {
+            let list: Vec<Bound<'py, PyAny>> = soup
+                .faces()
+                .map(|f| vector(py, f.iter().map(|&i| i64::from(i)).collect()).into_any())
+                .collect();
+            items.push(pyo3::types::PyList::new(py, list)?.into_any());
+        }
+        PolygonsAs::Padded => {
+            let width = soup.faces().map(<[u32]>::len).max().unwrap_or(0);
+            let mut padded = vec![-1i64; soup.face_count() * width];
+            for (row, f) in padded.chunks_exact_mut(width.max(1)).zip(soup.faces()) {
+                for (slot, &v) in row.iter_mut().zip(f) {
+                    *slot = i64::from(v);
+                }
+            }
+            let counts: Vec<i64> = soup.faces().map(|f| f.len() as i64).collect();
+            items.push(crate::arrays::matrix(py, padded, width).into_any());
+            items.push(vector(py, counts).into_any());
+        }
     }
-    let faces: Vec<i64> = soup.face_indices.iter().map(|&i| i64::from(i)).collect();
-    Ok((
-        positions_array(py, &soup.positions).into_any(),
-        crate::arrays::matrix(py, faces, sides).into_any(),
-    ))
+    if attributes {
+        items.push(attribute_dict(py, &soup)?.into_any());
+    }
+    PyTuple::new(py, items)
+}
+
+/// The `attributes=True` dict of [`read_mesh`].
+fn attribute_dict<'py>(py: Python<'py>, soup: &PolygonSoup) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for property in &soup.attributes.vertex {
+        d.set_item(&property.name, vector(py, property.values.clone()))?;
+    }
+    let tables = [
+        ("corner_texcoords", &soup.attributes.corner_texcoords),
+        ("corner_normals", &soup.attributes.corner_normals),
+    ];
+    for (name, table) in tables {
+        if let Some(table) = table {
+            let rows = crate::arrays::matrix(py, table.values.clone(), table.width.max(1));
+            let corners: Vec<i64> = table
+                .corners
+                .iter()
+                .map(|&c| {
+                    if c == surftopo_io::CornerTable::NONE {
+                        -1
+                    } else {
+                        i64::from(c)
+                    }
+                })
+                .collect();
+            d.set_item(name, (rows, vector(py, corners)))?;
+        }
+    }
+    Ok(d)
 }
 
 /// Writes `(V, F)` to a mesh file (format from the extension: `.obj`, `.off`, `.ply`, optionally
@@ -161,16 +241,24 @@ pub fn info<'py>(
             .for_each(|i| *i = map[*i as usize]);
         positions = merged.into();
     }
-    let inspection = py.detach(|| {
+    let (inspection, near, weld_hint) = py.detach(|| {
         let mut inspection = surftopo_mesh::inspect(positions.len(), &triangles);
+        let weld_hint = (!weld)
+            .then(|| geometry::weld_effect(&positions, &triangles, &inspection))
+            .flatten()
+            .map(|effect| format!("`weld=True` {}", effect.describe()));
         let faces = triangles.iter().map(|t| &t[..]);
         inspection.add_problems_first(geometry::problems(&positions, faces));
-        inspection
+        let cut = surftopo_mesh::triangulate_polygons(&positions, triangles.iter().map(|t| &t[..]));
+        let near = geometry::near_degenerate_faces(&positions, &cut);
+        (inspection, near, weld_hint)
     });
     let d = PyDict::new(py);
     d.set_item("vertices", inspection.vertices)?;
     d.set_item("edges", inspection.edges)?;
     d.set_item("faces", inspection.faces)?;
+    d.set_item("point_cloud", false)?;
+    d.set_item("vertex_properties", Vec::<String>::new())?;
     d.set_item("genus", inspection.genus())?;
     d.set_item("euler_characteristic", inspection.euler_characteristic())?;
     d.set_item("components", inspection.components)?;
@@ -194,6 +282,20 @@ pub fn info<'py>(
         .map(ToString::to_string)
         .collect();
     d.set_item("problems", problems)?;
+    d.set_item("near_degenerate_faces", near.len())?;
+    let warnings: Vec<String> = near
+        .iter()
+        .take(surftopo_mesh::MAX_LISTED_PROBLEMS)
+        .map(|&(face, height)| {
+            format!(
+                "face {face}: {}; `laplacian` may refuse it as a zero-area triangle \
+                 (`mollify=EPS` mollifies it)",
+                geometry::describe_near_degenerate(height)
+            )
+        })
+        .collect();
+    d.set_item("warnings", warnings)?;
+    d.set_item("weld_hint", weld_hint)?;
     d.set_item("surfaces", surfaces(py, &inspection.surfaces)?)?;
     Ok(d)
 }
@@ -233,13 +335,14 @@ fn counts<'py>(py: Python<'py>, inspection: &Inspection) -> PyResult<Bound<'py, 
 /// An irreducible triangulation of the surface `(V, F)` by topology-preserving edge contractions:
 /// any compact surface (boundary loops, non-orientable, several pieces; each piece reduced).
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, algorithm = "rs", seed = 1))]
+#[pyo3(signature = (vertices, faces, algorithm = "rs", seed = 1, compact = false))]
 pub fn irreducible<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
     algorithm: &str,
     seed: u64,
+    compact: bool,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyDict>)> {
     let algorithm = choose(
         "algorithm",
@@ -254,6 +357,7 @@ pub fn irreducible<'py>(
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions().into_owned();
+    let input_positions = (!compact).then(|| positions.clone());
     let count = |t: &[[u32; 3]]| {
         let n = t.iter().flatten().max().map_or(0, |&v| v as usize + 1);
         surftopo_mesh::inspect(n, t)
@@ -282,7 +386,19 @@ pub fn irreducible<'py>(
         .iter()
         .map(|&c| i64::from(input_index[c as usize]))
         .collect();
-    let (positions, triangles) = reduced.to_triangles();
+    // The input's vertex list and indices, or (compact) the survivors numbered densely.
+    let (positions, triangles) = match input_positions {
+        Some(positions) => {
+            let triangles: Vec<[u32; 3]> = reduced
+                .cover
+                .surface_triangles()
+                .iter()
+                .map(|t| t.map(|c| input_index[c as usize]))
+                .collect();
+            (positions, triangles)
+        }
+        None => reduced.to_triangles(),
+    };
     let (input_counts, output_counts) = (counts(py, &input)?, counts(py, &output)?);
     let stats = PyDict::new(py);
     stats.set_item("algorithm", algorithm.name())?;

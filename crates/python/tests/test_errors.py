@@ -12,7 +12,7 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
     V, F = surftopo.icosphere(1)
     removed = F[7]
     with pytest.raises(surftopo.InvalidMeshError) as caught:
-        surftopo.laplacian(V, np.delete(F, 7, axis=0))
+        surftopo.intrinsic_delaunay(V, np.delete(F, 7, axis=0))
     e = caught.value
     assert isinstance(e, ValueError) and isinstance(e, surftopo.SurftopoError)
     assert e.kind == "BoundaryEdge"
@@ -32,7 +32,6 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
 @pytest.mark.parametrize(
     "call",
     [
-        lambda V, F: surftopo.laplacian(V, F),
         lambda V, F: surftopo.intrinsic_delaunay(V, F),
         lambda V, F: surftopo.quadrangulate(V, F),
     ],
@@ -70,8 +69,11 @@ def test_non_manifold_edge_and_disconnected_and_non_finite():
     assert caught.value.kind == "NonManifoldEdge" and caught.value.edge == (0, 1)
     two = np.vstack([V, V + 5.0])
     with pytest.raises(surftopo.InvalidMeshError, match="connected components") as caught:
-        surftopo.laplacian(two, np.vstack([F, F + 4]))
+        surftopo.intrinsic_delaunay(two, np.vstack([F, F + 4]))
     assert caught.value.face == 4
+    # laplacian takes the two pieces: one block each.
+    L, _ = surftopo.laplacian(two, np.vstack([F, F + 4]))
+    assert L[:4, 4:].nnz == 0 and (L[:4, :4] != surftopo.laplacian(V, F)[0]).nnz == 0
     W = V.copy()
     W[3, 2] = np.nan
     with pytest.raises(surftopo.InvalidMeshError, match="vertex 3: non-finite") as caught:

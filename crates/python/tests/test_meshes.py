@@ -29,13 +29,16 @@ SURFACES = {
 @pytest.mark.parametrize("algorithm", ["rs", "schipper", "brute-force"])
 def test_irreducible(name, algorithm):
     V, F = SURFACES[name]()
-    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=5)
+    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=5, compact=True)
     chi = euler_characteristic(F)
     assert euler_characteristic(F2) == chi and is_closed_oriented(F2)
     assert is_irreducible(F2)
     assert np.array_equal(np.unique(F2), np.arange(len(V2)))
     kept = stats["vertex_indices"]
     assert np.array_equal(V2, V[kept]) and len(set(kept.tolist())) == len(kept)
+    # By default, the input's vertex list and numbering: the same triangles on V's indices.
+    V_all, F_all, _ = surftopo.irreducible(V, F, algorithm=algorithm, seed=5)
+    assert np.array_equal(V_all, V) and np.array_equal(F_all, kept[F2])
     genus = (2 - chi) // 2
     counts = {k: stats["input"][k] for k in ("vertices", "edges", "faces", "genus")}
     assert counts == {
@@ -116,12 +119,13 @@ def test_info():
     V, F = surftopo.torus(6, 4)
     info = surftopo.info(V, F)
     assert list(info) == [
-        "vertices", "edges", "faces", "genus", "euler_characteristic", "components", "closed",
-        "orientable", "boundary_loops", "boundary_edges", "simplicial", "valid",
-        "reoriented_faces", "unreferenced_vertices", "welded_vertices", "non_finite_coordinates",
-        "zero_area_faces", "degenerate_faces", "duplicate_faces", "non_manifold_edges",
-        "non_manifold_vertices", "other_problems", "problems_total", "problems_truncated",
-        "problems", "surfaces",
+        "vertices", "edges", "faces", "point_cloud", "vertex_properties", "genus",
+        "euler_characteristic", "components", "closed", "orientable", "boundary_loops",
+        "boundary_edges", "simplicial", "valid", "reoriented_faces", "unreferenced_vertices",
+        "welded_vertices", "non_finite_coordinates", "zero_area_faces", "degenerate_faces",
+        "duplicate_faces", "non_manifold_edges", "non_manifold_vertices", "other_problems",
+        "problems_total", "problems_truncated", "problems", "near_degenerate_faces", "warnings",
+        "weld_hint", "surfaces",
     ]
     assert (info["vertices"], info["edges"], info["faces"], info["genus"]) == (24, 72, 48, 1)
     assert info["valid"] and info["problems"] == []
@@ -189,9 +193,11 @@ def test_unreferenced_vertices_keep_input_indices():
     Q0, _ = surftopo.quadrangulate(V, F, algorithm="sg", seed=3)
     assert np.array_equal(Q, np.where(Q0 >= 3, Q0 + 1, Q0))
     assert quads_pair_triangles(Q, G)
-    V2, F2, stats = surftopo.irreducible(W, G)
+    V2, F2, stats = surftopo.irreducible(W, G, compact=True)
     assert 3 not in stats["vertex_indices"].tolist()
     assert np.array_equal(V2, W[stats["vertex_indices"]])
+    V3, F3, _ = surftopo.irreducible(W, G)
+    assert np.array_equal(V3, W) and 3 not in F3 and np.array_equal(V3[F3], V2[F2])
     assert surftopo.info(W, G)["unreferenced_vertices"] == 1
 
 
@@ -212,7 +218,7 @@ def test_irreducible_of_every_surface(name, algorithm):
     V, F = make()
     assert classify(F) == pieces
     names = [s["name"] for s in surftopo.info(V, F)["surfaces"]]
-    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=3)
+    V2, F2, stats = surftopo.irreducible(V, F, algorithm=algorithm, seed=3, compact=True)
     assert classify(F2) == pieces and is_irreducible_surface(F2)
     assert [s["name"] for s in stats["output"]["surfaces"]] == names
     assert np.array_equal(V2, V[stats["vertex_indices"]])

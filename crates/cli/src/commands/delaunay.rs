@@ -12,8 +12,8 @@ use crate::output::{OutputKind, Outputs};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod, DelaunayOutput,
-    DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
+    CoveredTriangulation, DEFAULT_LENGTH_TOLERANCE, DelaunayError, DelaunayInput, DelaunayMethod,
+    DelaunayOutput, DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicDelaunayError,
     IntrinsicTriangulation, Portalgon, PortalgonDoc, PortalgonError, RequestError, SparseMatrix,
     TriangleStyle,
 };
@@ -176,6 +176,55 @@ fn is_json_input(path: &Path) -> anyhow::Result<bool> {
 /// are then cut into triangles along shortcuts) as an intrinsic triangulation, within the limits
 /// (`--max-input-bytes` for the text, `--max-elements` for the polygons).
 pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriangulation> {
+    load_numbered(path, weld).map(|(tri, _)| tri)
+}
+
+/// Where the matrices' rows go in the input's vertex numbering: the input index of each vertex
+/// id of the triangulation read ([`surftopo_mesh::BuildReport::input_vertices`]), and the
+/// input's vertex count (vertices in no face get empty rows and columns).
+pub struct InputNumbering {
+    input_vertices: Vec<u32>,
+    count: usize,
+    /// The file's face (polygon) of each triangle, when polygons were cut.
+    polygon_of: Option<Vec<u32>>,
+}
+
+impl InputNumbering {
+    /// `matrix` (rows: the live vertices of `tri` in id order) on the input's rows and columns;
+    /// the matrix as it is when `tri` has vertex ids the input does not (none in practice: the
+    /// algorithms keep the vertices read).
+    fn on_input_rows(&self, tri: &IntrinsicTriangulation, matrix: &SparseMatrix) -> SparseMatrix {
+        self.rows_on_input(&tri.matrix_rows(), matrix)
+    }
+
+    /// `matrix` on the input's rows and columns, `rows` the matrix row of each vertex id (a
+    /// surface of any kind: its vertex ids are its rows).
+    fn rows_on_input(&self, rows: &[u32], matrix: &SparseMatrix) -> SparseMatrix {
+        let mut row_to_input = vec![0u32; matrix.n];
+        for (v, &row) in rows.iter().enumerate() {
+            match (
+                row_to_input.get_mut(row as usize),
+                self.input_vertices.get(v),
+            ) {
+                (Some(slot), Some(&input)) => *slot = input,
+                (None, _) => {}
+                (Some(_), None) => return matrix.clone(),
+            }
+        }
+        let triplets: Vec<(u32, u32, f64)> = matrix
+            .triplets()
+            .map(|(i, j, v)| (row_to_input[i as usize], row_to_input[j as usize], v))
+            .collect();
+        SparseMatrix::from_triplets(self.count, &triplets)
+    }
+}
+
+/// [`load_intrinsic`], with the input's vertex numbering for a mesh file (`None` for a portalgon
+/// file, whose vertices are its own).
+pub fn load_numbered(
+    path: &Path,
+    weld: bool,
+) -> anyhow::Result<(IntrinsicTriangulation, Option<InputNumbering>)> {
     let name = crate::input::name(path);
     if is_json_input(path)? {
         let bytes = crate::input::input_bytes(path)?;
@@ -183,7 +232,7 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
         drop(bytes);
         crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
         let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
-        return match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
+        let tri = match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
             // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
             Err(PortalgonError::NotTriangle { .. }) => {
                 let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
@@ -192,39 +241,52 @@ pub fn load_intrinsic(path: &Path, weld: bool) -> anyhow::Result<IntrinsicTriang
                     .map_err(fail)
             }
             other => other.map_err(fail),
-        };
+        }?;
+        return Ok((tri, None));
     }
     let loaded = crate::input::read_surface(path, weld)?;
-    IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
-        .map_err(|e| invalid(format!("{name}: {e}")))
+    let numbering = InputNumbering {
+        input_vertices: loaded.report.input_vertices(),
+        count: loaded.soup.vertex_count(),
+        polygon_of: loaded.polygon_of,
+    };
+    let tri =
+        IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
+            .map_err(|e| invalid(format!("{name}: {e}")))?;
+    Ok((tri, Some(numbering)))
 }
 
-/// Refuses to write a matrix with a non-finite entry, or (`positive_diagonal`: the mass matrix,
-/// whose diagonal holds areas) a diagonal entry that is not a positive normal number: the areas
-/// are beyond double precision's range (they overflow or underflow), and writing them would give
-/// `inf` or a silently zero matrix. Lengths themselves are handled scale-free
-/// (`surftopo_intrinsic::trig`; cotan weights do not depend on the scale), so this happens only
-/// when the results are not representable. (A Laplacian may have a zero diagonal: a one-vertex
-/// torus.)
+/// Reads a mesh file of any surface kind, with the input's vertex numbering: a closed
+/// orientable one as its intrinsic triangulation (every method), any other (boundary loops,
+/// non-orientable pieces) on its closed cover (flipping).
+fn load_mesh(path: &Path, weld: bool) -> anyhow::Result<(DelaunayInput, InputNumbering)> {
+    let name = crate::input::name(path);
+    let loaded = crate::input::read_covered(path, weld)?;
+    let fail = |e: surftopo_intrinsic::GeometryError| invalid(format!("{name}: {e}"));
+    let numbering = InputNumbering {
+        input_vertices: loaded.report.input_vertices(),
+        count: loaded.soup.vertex_count(),
+        polygon_of: loaded.polygon_of,
+    };
+    let surface = loaded.surface;
+    if surface.cover.is_plain() {
+        let s = surface
+            .into_plain()
+            .expect("a plain cover is a closed orientable surface");
+        let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).map_err(fail)?;
+        return Ok((DelaunayInput::Lengths(tri), numbering));
+    }
+    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions).map_err(fail)?;
+    Ok((DelaunayInput::Covered(tri), numbering))
+}
+
+/// Refuses to write a matrix that is not representable
+/// ([`SparseMatrix::check_representable`]: an `inf` entry, or a mass matrix of zeros). (A
+/// Laplacian may have a zero diagonal: a one-vertex torus.)
 fn check_matrix(matrix: &SparseMatrix, what: &str, positive_diagonal: bool) -> anyhow::Result<()> {
-    if let Some((i, j, v)) = matrix.triplets().find(|t| !t.2.is_finite()) {
-        return Err(invalid(format!(
-            "{what}: entry ({}, {}) is {v}: beyond double precision's range (scale the input)",
-            i + 1,
-            j + 1
-        )));
-    }
-    let small = (0..matrix.n)
-        .map(|i| (i, matrix.get(i, i)))
-        .find(|&(_, v)| v.is_nan() || v < f64::MIN_POSITIVE);
-    if let Some((i, v)) = small.filter(|_| positive_diagonal) {
-        return Err(invalid(format!(
-            "{what}: diagonal entry {} is {v:e}, not a positive normal number: the triangles are \
-             too small for double precision (scale the input)",
-            i + 1
-        )));
-    }
-    Ok(())
+    matrix
+        .check_representable(positive_diagonal)
+        .map_err(|e| invalid(format!("{what}: {e}")))
 }
 
 /// Refuses, before any work, outputs whose extensions do not fit (portalgon JSON for `-o`,
@@ -261,14 +323,17 @@ fn check_outputs(options: &Args) -> anyhow::Result<()> {
 pub fn run(options: &Args) -> anyhow::Result<()> {
     check_outputs(options)?;
     options.method.check()?;
-    let input = if options.method.exact {
-        DelaunayInput::Exact(crate::progress::step("reading", || {
-            load_exact(&options.input)
-        })?)
+    let (input, numbering) = if options.method.exact {
+        let p = crate::progress::step("reading", || load_exact(&options.input))?;
+        (DelaunayInput::Exact(p), None)
+    } else if is_json_input(&options.input)? {
+        let (tri, numbering) = crate::progress::step("reading", || {
+            load_numbered(&options.input, options.weld.weld)
+        })?;
+        (DelaunayInput::Lengths(tri), numbering)
     } else {
-        DelaunayInput::Lengths(crate::progress::step("reading", || {
-            load_intrinsic(&options.input, options.weld.weld)
-        })?)
+        let (input, numbering) = load_mesh(&options.input, options.weld.weld)?;
+        (input, Some(numbering))
     };
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
@@ -286,8 +351,8 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
     let out = crate::progress::steps(|progress| {
         surftopo_intrinsic::intrinsic_delaunay_reporting(input, &request, progress)
     })
-    .map_err(|e| run_error(options, e))?;
-    write_outputs(options, &out)?;
+    .map_err(|e| run_error(options, e, numbering.as_ref()))?;
+    write_outputs(options, &out, numbering.as_ref())?;
     report(options, &out)
 }
 
@@ -295,7 +360,15 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
 /// failure of double precision with advice (exit 4): flipping's breakdown, the `f64` wave's
 /// refusals and Theorem 1's failures in `f64`; degenerate lengths as [`geometry_error`] says;
 /// anything else invalid input (exit 2).
-fn run_error(options: &Args, e: IntrinsicDelaunayError) -> anyhow::Error {
+fn run_error(
+    options: &Args,
+    e: IntrinsicDelaunayError,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Error {
+    // `--mollify` applies to flipping: the hint names `--method flip` after another method.
+    let flipping = matches!(options.method.method, Method::Flip | Method::Auto);
+    let prefix = if flipping { "" } else { "--method flip " };
+    let polygons = numbering.and_then(|n| n.polygon_of.as_deref());
     let name = crate::input::name(&options.input);
     match e {
         IntrinsicDelaunayError::Request(e) => request_error(e),
@@ -306,7 +379,9 @@ fn run_error(options: &Args, e: IntrinsicDelaunayError) -> anyhow::Error {
             ))
         }
         IntrinsicDelaunayError::Flip(DelaunayError::Geometry(e))
-        | IntrinsicDelaunayError::Geometry(e) => geometry_error(&options.input, &e),
+        | IntrinsicDelaunayError::Geometry(e) => {
+            geometry_error(&options.input, &MollifyHint(&e, prefix, polygons))
+        }
         e if e.is_numerical() => crate::failure::numerical(format!(
             "{}: {e} (a numerical failure of double precision: try --exact on exact input, or \
              --method flip)",
@@ -337,6 +412,41 @@ pub fn geometry_error(input: &Path, e: &dyn std::fmt::Display) -> anyhow::Error 
     }
 }
 
+/// A degenerate-lengths error with the option that makes such input usable: `--mollify EPS`
+/// (after the given options, `--method flip ` where the method run is not flipping), and the
+/// file's polygon of the triangle it names when polygons were cut (the third field).
+struct MollifyHint<'a>(
+    &'a surftopo_intrinsic::GeometryError,
+    &'static str,
+    Option<&'a [u32]>,
+);
+
+impl std::fmt::Display for MollifyHint<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use surftopo_intrinsic::GeometryError as G;
+        write!(f, "{}", self.0)?;
+        let face = match self.0 {
+            G::ZeroArea { face, .. } | G::TriangleInequality { face, .. } => Some(*face),
+            _ => None,
+        };
+        if let Some(polygon) = face.and_then(|t| self.2?.get(t as usize)) {
+            write!(f, " (a triangle cut from the file's face {polygon})")?;
+        }
+        if matches!(
+            self.0,
+            G::ZeroArea { .. } | G::TriangleInequality { .. } | G::NonPositiveLength { .. }
+        ) {
+            write!(
+                f,
+                " (`{}--mollify EPS` mollifies degenerate triangles, EPS relative to the mean \
+                 edge length, e.g. 1e-6; `surftopo info` lists the near-degenerate ones)",
+                self.1
+            )?;
+        }
+        Ok(())
+    }
+}
+
 /// [`IntrinsicTriangulation::validate`] with [`geometry_error`]'s verdict.
 ///
 /// # Errors
@@ -347,8 +457,20 @@ pub fn validated(input: &Path, tri: &IntrinsicTriangulation) -> anyhow::Result<(
 
 /// Writes the outputs asked for (under temporary names, renamed together): `-o` (exact corners
 /// in exact mode, lengths otherwise), `--tessellation`, `--reduced`, `--laplacian`, `--mass`;
-/// the matrices are checked first ([`check_matrix`]).
-fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
+/// the matrices are checked first ([`check_matrix`]), then put on the input's vertex numbering
+/// when it is a mesh file (`numbering`: rows and columns of the vertices in no face are empty).
+fn write_outputs(
+    options: &Args,
+    out: &DelaunayOutput,
+    numbering: Option<&InputNumbering>,
+) -> anyhow::Result<()> {
+    let on_input = |m: &SparseMatrix| match (numbering, &out.triangulation, &out.covered) {
+        (Some(numbering), Some(tri), _) => numbering.on_input_rows(tri, m),
+        (Some(numbering), None, Some(_)) => {
+            numbering.rows_on_input(&(0..m.n as u32).collect::<Vec<_>>(), m)
+        }
+        _ => m.clone(),
+    };
     let mut outputs = Outputs::default();
     if let Some(path) = &options.output {
         if let Some(exact) = &out.exact_triangulation {
@@ -357,6 +479,9 @@ fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
             })?;
         } else if let Some(tri) = &out.triangulation {
             outputs.file(path, |w| Ok(tri.write_json(w, TriangleStyle::Lengths)?))?;
+        } else if let Some(covered) = &out.covered {
+            // Boundary sides unmatched, orientation-reversing gluings flagged (version 2).
+            outputs.file(path, |w| Ok(covered.to_doc().write(w, false)?))?;
         }
     }
     let portalgons = [
@@ -371,14 +496,18 @@ fn write_outputs(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
     if let (Some(path), Some(laplacian)) = (&options.laplacian, &out.laplacian) {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";
         check_matrix(laplacian, "the cotan Laplacian", false)?;
+        let laplacian = on_input(laplacian);
         outputs.file(path, |w| {
-            crate::output::fill_matrix(w, path, laplacian, comment)
+            crate::output::fill_matrix(w, path, &laplacian, comment)
         })?;
     }
     if let (Some(path), Some(mass)) = (&options.mass, &out.mass) {
         let comment = "lumped (barycentric) mass matrix: a third of the incident triangle areas";
         check_matrix(mass, "the mass matrix", true)?;
-        outputs.file(path, |w| crate::output::fill_matrix(w, path, mass, comment))?;
+        let mass = on_input(mass);
+        outputs.file(path, |w| {
+            crate::output::fill_matrix(w, path, &mass, comment)
+        })?;
     }
     outputs.commit()
 }

@@ -76,6 +76,7 @@ impl Demo {
         self.irreducible(&input)?;
         self.other_surfaces()?;
         self.quad(&input)?;
+        self.exported()?;
         let tori = self.flat_tori()?;
         self.delaunay(&input, &tori)?;
         self.isometric(&input, &tori)?;
@@ -245,11 +246,14 @@ impl Demo {
             &loaded.surface.to_triangles().1,
         )
         .surfaces;
-        let surface = loaded.surface.into();
+        let surface = loaded.surface.clone().into();
         for algorithm in Algorithm::all(1) {
-            let (reduced, report, _) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
+            let (reduced, report) = irreducible::reduce_covered(&surface, &pieces, algorithm)?;
             let name = format!("irreducible-{}.obj", algorithm.name());
-            crate::output::write_soup(&self.path(&name), &reduced)?;
+            crate::output::write_soup(
+                &self.path(&name),
+                &irreducible::on_input_vertices(&loaded.soup, &reduced, false),
+            )?;
             Self::line(
                 &format!("irreducible --algorithm {}", algorithm.name()),
                 &format!(
@@ -301,10 +305,13 @@ impl Demo {
                 &surftopo_io::PolygonSoup::from_triangles(positions, &triangles),
             )?;
             let pieces = surftopo_mesh::inspect(surface.positions.len(), &triangles).surfaces;
-            let (reduced, report, _) =
+            let (reduced, report) =
                 irreducible::reduce_covered(&surface, &pieces, Algorithm::RamaswamiSiqueira)?;
             let reduced_name = name.replace(".obj", "-irreducible.obj");
-            crate::output::write_soup(&self.path(&reduced_name), &reduced)?;
+            crate::output::write_soup(
+                &self.path(&reduced_name),
+                &surftopo_io::PolygonSoup::from_triangles(surface.positions.clone(), &reduced),
+            )?;
             Self::line(
                 label,
                 &format!(
@@ -325,7 +332,8 @@ impl Demo {
     /// `quad` with each algorithm of the quadrangulation paper, Karp–Sipser, and both quality
     /// objectives.
     fn quad(&self, input: &Path) -> anyhow::Result<()> {
-        let surface = crate::input::load_surface(input, false)?.surface;
+        let loaded = crate::input::load_surface(input, false)?;
+        let (surface, input_vertices) = (&loaded.surface, loaded.report.input_vertices());
         let fail =
             |e: surftopo_quad::QuadError| anyhow::anyhow!("{}: {e}", self.shown("input.obj"));
         let mut runs: Vec<(String, QualityQuads)> = Vec::new();
@@ -351,7 +359,7 @@ impl Demo {
             let name = format!("quads-{}.obj", q.result.stats.algorithm);
             crate::output::write_soup(
                 &self.path(&name),
-                &crate::commands::quad::quad_soup(&surface, &q.result),
+                &crate::commands::quad::quad_soup(&loaded.soup, &input_vertices, &q.result),
             )?;
             let stats = &q.result.stats;
             Self::line(
@@ -490,6 +498,45 @@ impl Demo {
             })?;
         }
         Ok(())
+    }
+
+    /// A mesh as modellers export them: a pentagonal prism (two pentagons, five quads) whose
+    /// vertex list has a vertex in no face; `delaunay` cuts the polygons into triangles and
+    /// writes the Laplacian on the file's vertex numbering (an empty row for the loose vertex).
+    fn exported(&self) -> anyhow::Result<()> {
+        let path = self.path("prism.obj");
+        let mut text = String::from("v 0 0 5\n");
+        for z in [0.0, 1.0] {
+            for k in 0..5 {
+                let t = std::f64::consts::TAU * f64::from(k) / 5.0;
+                text += &format!("v {} {} {z}\n", t.cos(), t.sin());
+            }
+        }
+        text += "f 6 5 4 3 2\nf 7 8 9 10 11\n";
+        for k in 0..5 {
+            let (a, b) = (k + 2, (k + 1) % 5 + 2);
+            text += &format!("f {a} {b} {} {}\n", b + 5, a + 5);
+        }
+        std::fs::write(&path, text).map_err(|e| crate::failure::unwritable(&path, &e))?;
+        Self::label("delaunay (polygons, a loose vertex)")?;
+        emit("[--laplacian: 11 rows, row 0 empty] ")?;
+        delaunay::run(&delaunay::Args {
+            input: path,
+            output: None,
+            tessellation: None,
+            laplacian: Some(self.path("prism-laplacian.mtx")),
+            mass: None,
+            max_flips: None,
+            mollify: None,
+            weld: crate::args::WeldArg { weld: false },
+            json: crate::args::JsonArg { json: false },
+            reduced: None,
+            method: delaunay::MethodOptions {
+                method: delaunay::Method::Flip,
+                exact: false,
+                faithful: false,
+            },
+        })
     }
 
     /// `isometric` on an isometric and a non-isometric pair of flat tori (exact, Dubois'

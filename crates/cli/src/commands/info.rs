@@ -1,13 +1,15 @@
 //! `surftopo info`: counts, topology and every problem found, valid mesh or not.
 //!
-//! Polygon meshes (quads from `surftopo quad`) are inspected through their fan triangulation, which
-//! has the same Euler characteristic, closedness, orientability and vertex fans; the face and edge
+//! Polygon meshes (quads from `surftopo quad`, exported quad meshes) are inspected through the
+//! triangles the other commands cut them into (`surftopo_mesh::triangulate_polygons`), which have
+//! the same Euler characteristic, closedness, orientability and vertex fans; the face and edge
 //! counts (of the whole and of each piece) are corrected for the added diagonals. (A diagonal that
-//! coincides with an existing edge shows up as a non-manifold edge.)
+//! coincides with an existing edge shows up as a non-manifold edge.) A point cloud (vertices, no
+//! faces) is described by its counts and vertex properties.
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
-use crate::input::{fan_triangles, locate, read_soup_with, renumber_face};
+use crate::input::{Read, cut_polygons, locate, read_mesh_or_points, renumber_face};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use surftopo_mesh::{ProblemCounts, SurfaceKind};
@@ -65,6 +67,30 @@ impl From<&SurfaceKind> for SurfaceJson {
     }
 }
 
+/// The names of a file's pieces in words: each name once, in the order of first appearance,
+/// with its count when above one (`torus + 3 × disk`), so a soup of 320 triangles reads
+/// `320 × disk`.
+pub fn piece_names(names: impl IntoIterator<Item = String>) -> String {
+    let mut counted: Vec<(String, usize)> = Vec::new();
+    for name in names {
+        match counted.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, count)) => *count += 1,
+            None => counted.push((name, 1)),
+        }
+    }
+    let parts: Vec<String> = counted
+        .into_iter()
+        .map(|(name, count)| {
+            if count == 1 {
+                name
+            } else {
+                format!("{count} × {name}")
+            }
+        })
+        .collect();
+    parts.join(" + ")
+}
+
 /// The facts `info` reports (JSON keys as named; the text labels are the same words).
 #[derive(Serialize)]
 pub struct Info {
@@ -74,6 +100,12 @@ pub struct Info {
     pub edges: usize,
     /// Faces.
     pub faces: usize,
+    /// Whether the file holds vertices and no faces (a point cloud: every other command needs
+    /// faces; the surface keys are then 0, false or null).
+    pub point_cloud: bool,
+    /// The names of the per-vertex properties read beside the positions (`nx`, `u`, `red`, ...:
+    /// what the commands that keep the vertex list carry along).
+    pub vertex_properties: Vec<String>,
     /// Genus, when the faces form one orientable surface, closed or not (whatever the
     /// coordinates: non-finite ones and zero-area faces leave it defined).
     pub genus: Option<i64>,
@@ -112,6 +144,18 @@ pub struct Info {
     pub problems_truncated: bool,
     /// The problems (at most 100), each saying where and what.
     pub problems: Vec<String>,
+    /// Faces that are not degenerate but nearly so (warnings, not problems: `valid` does not
+    /// count them): the height of a triangle below
+    /// [`surftopo_mesh::geometry::NEAR_DEGENERATE_RELATIVE_HEIGHT`] times its longest side,
+    /// where double-precision side lengths lose their digits (`delaunay` may refuse them without
+    /// `--mollify`).
+    pub near_degenerate_faces: usize,
+    /// The warnings (at most 100), each saying where and what.
+    pub warnings: Vec<String>,
+    /// What `--weld` would do, when the faces have boundary edges or several pieces that
+    /// merging vertices of equal positions would close or join (null otherwise, and with
+    /// `--weld`).
+    pub weld_hint: Option<String>,
     /// One classification per connected component, in the order of their first face (empty
     /// when the faces do not form a surface).
     pub surfaces: Vec<SurfaceJson>,
@@ -159,10 +203,25 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
 /// # Errors
 /// A file that cannot be read or parsed (exit 2).
 pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
-    let (soup, welded) = read_soup_with(path, weld, surftopo_io::NonFinite::Keep)?;
-    // Polygon meshes are inspected through their fan triangulation (see `fan_triangles`).
-    let (triangles, polygon_of) = fan_triangles(&soup);
-    let mut inspection = surftopo_mesh::inspect(soup.positions.len(), &triangles);
+    let (soup, welded) = match read_mesh_or_points(path, weld, surftopo_io::NonFinite::Keep)? {
+        Read::Mesh(soup, welded) => (soup, welded),
+        Read::PointCloud(points) => return Ok(point_cloud(path, &points)),
+    };
+    // Polygon meshes are inspected through the triangles the commands cut them into.
+    let (cut, fans_because) = cut_polygons(&soup);
+    let (triangles, polygon_of) = (&cut.triangles, &cut.face_of);
+    let mut inspection = surftopo_mesh::inspect(soup.positions.len(), triangles);
+    let cut_warning = fans_because.map(|problem| {
+        format!(
+            "{} (in the polygons cut by ear clipping; the fans of their corner 0, inspected \
+             here and used by the commands, make a surface)",
+            locate(path, &soup, &problem)
+        )
+    });
+    let weld_hint = (!weld)
+        .then(|| surftopo_mesh::geometry::weld_effect(&soup.positions, triangles, &inspection))
+        .flatten()
+        .map(|effect| format!("`--weld` {}", effect.describe()));
     let diagonals = triangles.len() - soup.face_count();
     let all_triangles = diagonals == 0;
     inspection.faces = soup.face_count();
@@ -170,14 +229,23 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
     inspection.problems = inspection
         .problems
         .into_iter()
-        .map(|p| renumber_face(p, &polygon_of))
+        .map(|p| renumber_face(p, polygon_of))
         .collect();
     let faces = (0..soup.face_count()).map(|k| soup.face(k));
     inspection.add_problems_first(surftopo_mesh::geometry::problems(&soup.positions, faces));
     let mut surfaces: Vec<SurfaceJson> = inspection.surfaces.iter().map(Into::into).collect();
     if !all_triangles {
-        polygon_counts(soup.positions.len(), &triangles, &polygon_of, &mut surfaces);
+        polygon_counts(soup.positions.len(), triangles, polygon_of, &mut surfaces);
     }
+    let near = surftopo_mesh::geometry::near_degenerate_faces(&soup.positions, &cut);
+    let warnings = cut_warning
+        .into_iter()
+        .chain(
+            near.iter()
+                .take(surftopo_mesh::MAX_LISTED_PROBLEMS)
+                .map(|&(face, height)| near_degenerate_warning(path, &soup, face, height)),
+        )
+        .collect();
 
     let simplicial = all_triangles && !inspection.has_degenerate_faces();
     let valid = inspection.is_valid();
@@ -185,6 +253,8 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         vertices: inspection.vertices,
         edges: inspection.edges,
         faces: inspection.faces,
+        point_cloud: false,
+        vertex_properties: property_names(&soup),
         genus: inspection.genus(),
         euler_characteristic: inspection.euler_characteristic(),
         components: inspection.components,
@@ -205,8 +275,79 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
             .iter()
             .map(|p| locate(path, &soup, p))
             .collect(),
+        near_degenerate_faces: near.len(),
+        warnings,
+        weld_hint,
         surfaces,
     })
+}
+
+/// The warning of a near-degenerate face, with its file, line and face.
+fn near_degenerate_warning(
+    path: &Path,
+    soup: &surftopo_io::PolygonSoup,
+    face: usize,
+    height: f64,
+) -> String {
+    let line = soup
+        .face_line(face)
+        .map(|l| format!("line {l}: "))
+        .unwrap_or_default();
+    let height = surftopo_mesh::geometry::describe_near_degenerate(height);
+    format!(
+        "{}: {line}face {face}: {height}; `delaunay` may refuse it as a zero-area triangle \
+         (`--mollify EPS` mollifies it)",
+        crate::input::name(path)
+    )
+}
+
+/// The names of the soup's per-vertex properties.
+fn property_names(soup: &surftopo_io::PolygonSoup) -> Vec<String> {
+    soup.attributes
+        .vertex
+        .iter()
+        .map(|p| p.name.clone())
+        .collect()
+}
+
+/// What `info` reports on a point cloud: its vertex count, properties and non-finite
+/// coordinates; the surface keys 0, false or null.
+fn point_cloud(path: &Path, points: &surftopo_io::PolygonSoup) -> Info {
+    let mut counts = ProblemCounts::default();
+    let problems: Vec<_> =
+        surftopo_mesh::geometry::non_finite_coordinates(&points.positions).collect();
+    problems.iter().for_each(|p| counts.add(p));
+    Info {
+        vertices: points.vertex_count(),
+        edges: 0,
+        faces: 0,
+        point_cloud: true,
+        vertex_properties: property_names(points),
+        genus: None,
+        euler_characteristic: points.vertex_count() as i64,
+        components: 0,
+        closed: false,
+        orientable: false,
+        boundary_loops: 0,
+        boundary_edges: 0,
+        simplicial: false,
+        valid: problems.is_empty(),
+        reoriented_faces: 0,
+        unreferenced_vertices: 0,
+        welded_vertices: 0,
+        counts: Counts(counts),
+        problems_total: problems.len(),
+        problems_truncated: problems.len() > surftopo_mesh::MAX_LISTED_PROBLEMS,
+        problems: problems
+            .iter()
+            .take(surftopo_mesh::MAX_LISTED_PROBLEMS)
+            .map(|p| format!("{}: {p}", crate::input::name(path)))
+            .collect(),
+        near_degenerate_faces: 0,
+        warnings: Vec::new(),
+        weld_hint: None,
+        surfaces: Vec::new(),
+    }
 }
 
 /// The faces of each piece counted as polygons, not as the triangles of their fans.
@@ -229,6 +370,9 @@ fn polygon_counts(
     }
 }
 
+/// The pieces the text report lists one by one (a triangle soup has as many as triangles).
+const LISTED_PIECES: usize = 20;
+
 /// The text report: one line per fact, labelled with its JSON key's words (`_` read as a space).
 fn text(path: &Path, info: &Info) -> String {
     use std::fmt::Write;
@@ -238,6 +382,25 @@ fn text(path: &Path, info: &Info) -> String {
         writeln!(s, "  {:<24}{value}", key.replace('_', " ")).ok();
     };
     line("vertices", &info.vertices);
+    if info.point_cloud {
+        line(
+            "faces",
+            &"0: a point cloud (`info` describes it; every other command needs faces)",
+        );
+        if !info.vertex_properties.is_empty() {
+            line("vertex_properties", &info.vertex_properties.join(" "));
+        }
+        if info.problems_total == 0 {
+            line("problems_total", &"0 (none)");
+        } else {
+            line("problems_total", &info.problems_total);
+        }
+        let mut s = format!("{}\n{s}", crate::input::name(path));
+        for p in &info.problems {
+            writeln!(s, "    {p}").ok();
+        }
+        return s;
+    }
     line("edges", &info.edges);
     line("faces", &info.faces);
     match info.genus {
@@ -279,7 +442,19 @@ fn text(path: &Path, info: &Info) -> String {
             &format!("yes (the first {} listed)", info.problems.len()),
         );
     }
-    for (k, piece) in info.surfaces.iter().enumerate() {
+    if info.near_degenerate_faces > 0 {
+        line(
+            "near_degenerate_faces",
+            &format!("{} (warnings, listed below)", info.near_degenerate_faces),
+        );
+    }
+    if !info.vertex_properties.is_empty() {
+        line("vertex_properties", &info.vertex_properties.join(" "));
+    }
+    if let Some(hint) = &info.weld_hint {
+        line("weld_hint", hint);
+    }
+    for (k, piece) in info.surfaces.iter().enumerate().take(LISTED_PIECES) {
         let detail = match (piece.genus, piece.crosscaps) {
             (Some(g), _) => format!("orientable, genus {g}"),
             (_, Some(c)) => format!("non-orientable, {c} crosscaps"),
@@ -297,9 +472,21 @@ fn text(path: &Path, info: &Info) -> String {
             ),
         );
     }
+    if info.surfaces.len() > LISTED_PIECES {
+        line(
+            "surfaces",
+            &format!(
+                "{} more pieces (`--json` lists every one)",
+                info.surfaces.len() - LISTED_PIECES
+            ),
+        );
+    }
     let mut s = format!("{}\n{s}", crate::input::name(path));
     for p in &info.problems {
         writeln!(s, "    {p}").ok();
+    }
+    for w in &info.warnings {
+        writeln!(s, "    warning: {w}").ok();
     }
     s
 }

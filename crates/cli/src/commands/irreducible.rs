@@ -20,6 +20,10 @@ pub struct Args {
         value_parser = names(Algorithm::all(0).map(|a| (a.name(), a.summary()))),
     )]
     pub algorithm: String,
+    /// Write only the surviving vertices, numbered densely in input order (by default the
+    /// output keeps the input's whole vertex list, so its vertex numbers are the input's).
+    #[arg(long)]
+    pub compact: bool,
 }
 
 /// V, E, F, genus and the classification of a triangulated surface.
@@ -68,10 +72,9 @@ impl Counts {
         }
     }
 
-    /// The surfaces' names, joined by ` + `.
+    /// The surfaces' names ([`crate::commands::info::piece_names`]).
     pub fn names(&self) -> String {
-        let names: Vec<&str> = self.surfaces.iter().map(|s| s.name.as_str()).collect();
-        names.join(" + ")
+        crate::commands::info::piece_names(self.surfaces.iter().map(|s| s.name.clone()))
     }
 }
 
@@ -99,14 +102,12 @@ pub struct Report {
 
 /// Reduces `surface` (any compact surface, whose pieces are classified as `pieces`: the
 /// [`surftopo_mesh::BuildReport::surfaces`] of its building) to an irreducible triangulation;
-/// returns it (its vertices are the surviving input vertices with their positions, numbered
-/// densely in input order), the report, and the map from the input's vertex ids (classes) to
-/// the output's (`INVALID` for removed vertices): the survivors' attributes follow it.
+/// returns its triangles on the surface's vertex ids (the surviving ones) and the report.
 pub fn reduce_covered(
     surface: &CoveredSurface,
     pieces: &[surftopo_mesh::SurfaceKind],
     algorithm: Algorithm,
-) -> anyhow::Result<(PolygonSoup, Report, Vec<VertexId>)> {
+) -> anyhow::Result<(Vec<[u32; 3]>, Report)> {
     let input = Counts::of_pieces(pieces);
     let reduction = surftopo_irreducible::reduce_surface(surface.cover.clone(), algorithm)
         .map_err(|e| invalid(e.to_string()))?;
@@ -116,11 +117,7 @@ pub fn reduce_covered(
         contractions,
         seconds,
     } = reduction.counters;
-    let reduced = CoveredSurface {
-        cover: reduction.cover,
-        positions: surface.positions.clone(),
-    };
-    let triangles = reduced.cover.surface_triangles();
+    let triangles = reduction.cover.surface_triangles();
     let report = Report {
         algorithm: algorithm.name(),
         input,
@@ -134,18 +131,41 @@ pub fn reduce_covered(
             _ => None,
         },
     };
-    let (positions, dense) = reduced.to_triangles();
-    let mut old_to_new = vec![VertexId::INVALID; surface.positions.len()];
-    for (t, d) in triangles.iter().zip(&dense) {
-        for (&c, &n) in t.iter().zip(d) {
-            old_to_new[c as usize] = VertexId(n);
+    Ok((triangles, report))
+}
+
+/// The output mesh of triangles given by indices into `input`'s vertex list: on that whole
+/// list (the input's numbering, unreferenced vertices kept), or with `compact` on the vertices
+/// the triangles use, numbered densely in input order; per-vertex attributes follow.
+pub fn on_input_vertices(
+    input: &PolygonSoup,
+    triangles: &[[u32; 3]],
+    compact: bool,
+) -> PolygonSoup {
+    if !compact {
+        let mut soup = PolygonSoup::from_triangles(input.positions.clone(), triangles);
+        soup.attributes.vertex = input.attributes.vertex.clone();
+        return soup;
+    }
+    let mut old_to_new = vec![VertexId::INVALID; input.positions.len()];
+    for &v in triangles.iter().flatten() {
+        old_to_new[v as usize] = VertexId(0);
+    }
+    let mut positions = Vec::new();
+    for (old, new) in old_to_new.iter_mut().enumerate() {
+        if new.is_valid() {
+            *new = VertexId(positions.len() as u32);
+            positions.push(input.positions[old]);
         }
     }
-    Ok((
-        PolygonSoup::from_triangles(positions, &dense),
-        report,
-        old_to_new,
-    ))
+    let dense: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|v| old_to_new[v as usize].0))
+        .collect();
+    let mut soup = PolygonSoup::from_triangles(positions, &dense);
+    soup.attributes =
+        crate::attributes::renumbered(&input.attributes, soup.vertex_count(), &old_to_new);
+    soup
 }
 
 /// Runs `irreducible`.
@@ -155,13 +175,18 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = Algorithm::from_name(&args.algorithm, args.job.seed.seed)
         .ok_or_else(|| anyhow::anyhow!("no irreducible algorithm is called {}", args.algorithm))?;
     let loaded = args.job.read_covered()?;
-    let (mut soup, report, old_to_new) = crate::progress::step("contracting", || {
+    let (triangles, report) = crate::progress::step("contracting", || {
         reduce_covered(&loaded.surface, &loaded.report.surfaces, algorithm)
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
-    soup.attributes =
-        crate::attributes::renumbered(&loaded.attributes, soup.vertex_count(), &old_to_new);
-    args.job.write("irreducible", &soup, &loaded.attributes)?;
+    let input_vertices = loaded.report.input_vertices();
+    let triangles: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|v| input_vertices[v as usize]))
+        .collect();
+    let soup = on_input_vertices(&loaded.soup, &triangles, args.compact);
+    args.job
+        .write("irreducible", &soup, &loaded.soup.attributes)?;
     if args.job.json.json {
         crate::output::print_json(&report)?;
     } else {

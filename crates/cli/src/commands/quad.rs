@@ -2,8 +2,9 @@
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
+use crate::input::Loaded;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::Surface;
+use surftopo_mesh::{FaceId, Surface};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
     QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate_by_quality,
@@ -58,15 +59,48 @@ fn objective_named(name: &str) -> anyhow::Result<Option<QualityObjective>> {
         .ok_or_else(|| anyhow::anyhow!("no quad objective is called {name}"))
 }
 
-/// The quad mesh as a polygon soup on the surface's vertex list (same order, same positions; no
-/// attributes: `run` adds the input's per-vertex ones, which follow the vertex list).
-pub fn quad_soup(surface: &Surface, result: &QuadResult) -> PolygonSoup {
+/// The quad mesh on the input's vertex list (same order, same positions and per-vertex
+/// attributes, unreferenced vertices kept): the quads on the surface's vertex ids mapped back
+/// through `input_vertices` ([`surftopo_mesh::BuildReport::input_vertices`]).
+pub fn quad_soup(input: &PolygonSoup, input_vertices: &[u32], result: &QuadResult) -> PolygonSoup {
     let mut soup = PolygonSoup::new();
-    soup.positions = surface.positions.clone();
+    soup.positions = input.positions.clone();
+    soup.attributes.vertex = input.attributes.vertex.clone();
     for quad in &result.quads {
-        soup.push_face(&quad.map(|v| v.0));
+        soup.push_face(&quad.map(|v| input_vertices[v.idx()]));
     }
     soup
+}
+
+/// The input's own quads when every face of it is a quad, each as listed or reversed as the
+/// surface's orientation made it (building reorients faces against the majority of their
+/// piece): the quad mesh of a quad mesh is itself.
+fn own_quads(loaded: &Loaded) -> Option<Vec<[u32; 4]>> {
+    let soup = &loaded.soup;
+    if soup.face_count() == 0 || soup.faces().any(|f| f.len() != 4) {
+        return None;
+    }
+    let input_vertices = loaded.report.input_vertices();
+    let mesh = &loaded.surface.mesh;
+    let quads = soup.faces().enumerate().map(|(k, f)| {
+        let quad = [f[0], f[1], f[2], f[3]];
+        // The first of the quad's two triangles (face ids are the cut triangles' indices), as
+        // the mesh orients it: its corners run forward around the quad or backward.
+        let corners = mesh.face_vertices(FaceId(2 * k as u32)).map(|v| {
+            quad.iter()
+                .position(|&q| q == input_vertices[v.idx()])
+                .unwrap_or(0)
+        });
+        let steps: usize = (0..3)
+            .map(|i| (corners[(i + 1) % 3] + 4 - corners[i]) % 4)
+            .sum();
+        if steps == 4 {
+            quad
+        } else {
+            [quad[0], quad[3], quad[2], quad[1]]
+        }
+    });
+    Some(quads.collect())
 }
 
 /// The quads of `objective`, with their total cost, optimality gap (when known) and quality.
@@ -103,22 +137,55 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = args.job.read()?;
-    if !loaded.report.dropped_vertices.is_empty() {
-        stderr_println!(
-            "note: the quad mesh's vertex list is the input's without its unreferenced vertices"
-        );
-    }
+    let own = own_quads(&loaded);
+    let objective_name = if own.is_some() {
+        COUNT
+    } else {
+        &args.objective
+    };
+    let (algorithm, objective) = if own.is_some() {
+        (QuadAlgorithm::KarpSipser, None)
+    } else {
+        (algorithm, objective)
+    };
     let paired = crate::progress::step("pairing triangles", || {
         pair(&loaded.surface, algorithm, objective)
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    let mut soup = quad_soup(&loaded.surface, result);
-    soup.attributes.vertex = loaded.attributes.vertex.clone();
-    args.job.write("quad", &soup, &loaded.attributes)?;
+    // KS pairs the triangles cut from each quad back first (its file-order step); should it
+    // not, its own pairing is written, and said so.
+    let own = match own {
+        Some(quads) if result.stats.file_order => {
+            stderr_println!(
+                "note: {}: every face is a quad: its own quads are written (the two triangles \
+                 cut from each paired back by `ks`; --algorithm and --objective do not apply)",
+                crate::input::name(input)
+            );
+            Some(quads)
+        }
+        Some(_) => {
+            stderr_println!(
+                "note: {}: every face is a quad, but the triangles cut from them do not pair \
+                 back in file order: `ks`'s quads are written",
+                crate::input::name(input)
+            );
+            None
+        }
+        None => None,
+    };
+    let mut soup = quad_soup(&loaded.soup, &loaded.report.input_vertices(), result);
+    if let Some(quads) = own {
+        soup.face_indices.clear();
+        soup.face_offsets.truncate(1);
+        for quad in &quads {
+            soup.push_face(quad);
+        }
+    }
+    args.job.write("quad", &soup, &loaded.soup.attributes)?;
     let stats = &result.stats;
     if args.job.json.json {
-        crate::output::print_json(&paired.figures(&args.objective))?;
+        crate::output::print_json(&paired.figures(objective_name))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {

@@ -24,6 +24,7 @@ pub(crate) mod choice;
 
 use std::time::Instant;
 
+use crate::covered::CoveredTriangulation;
 use crate::dubois::{CapsError, DuboisReport, FlatDelaunayOptions, ReduceOptions};
 use crate::error::{DelaunayError, GeometryError, PortalgonError};
 use crate::flip::stats::DelaunayStats;
@@ -75,6 +76,10 @@ pub enum DelaunayInput {
     Lengths(IntrinsicTriangulation),
     /// A closed triangular portalgon given by exact corners: the wave and Theorem 1, exactly.
     Exact(Portalgon<Rational>),
+    /// Any compact surface (boundary loops, non-orientable pieces) on its closed cover, `f64`
+    /// lengths: flipping ([`CoveredTriangulation::flip_to_delaunay`]); the wave and Theorem 1
+    /// are refused ([`IntrinsicDelaunayError::NotClosedOrientable`]).
+    Covered(CoveredTriangulation),
 }
 
 /// The outputs wanted; what is not asked for is not computed.
@@ -168,6 +173,19 @@ pub enum IntrinsicDelaunayError {
     /// The tessellation could not be cut into triangles.
     #[error(transparent)]
     Portalgon(#[from] PortalgonError),
+    /// The method or output asked for is defined on closed orientable surfaces only (the wave and
+    /// Theorem 1: Dubois treats closed surfaces), and the input has boundary or is
+    /// non-orientable.
+    #[error(
+        "{what} takes closed orientable surfaces only, and this surface has boundary or is \
+         non-orientable: {instead}"
+    )]
+    NotClosedOrientable {
+        /// What was asked: "the voronoi method", "the Delaunay tessellation", ...
+        what: &'static str,
+        /// What works instead.
+        instead: &'static str,
+    },
 }
 
 impl IntrinsicDelaunayError {
@@ -234,6 +252,8 @@ pub struct DelaunayOutput {
     /// The Delaunay triangulation in `f64` (flipping: the input flipped; the wave and Theorem 1:
     /// the tessellation cut along shortcuts, vertex ids the input's dense vertex indices).
     pub triangulation: Option<IntrinsicTriangulation>,
+    /// The Delaunay triangulation of a [`DelaunayInput::Covered`] surface (the input flipped).
+    pub covered: Option<CoveredTriangulation>,
     /// Exact mode: the tessellation cut along shortcuts, by exact corners.
     pub exact_triangulation: Option<Portalgon<Rational>>,
     /// The Delaunay tessellation.
@@ -319,6 +339,7 @@ pub fn intrinsic_delaunay_reporting(
     let exact = matches!(input, DelaunayInput::Exact(_));
     request.check(exact)?;
     match input {
+        DelaunayInput::Covered(tri) => covered(tri, request, progress),
         DelaunayInput::Exact(p) => {
             let method = match request.method {
                 DelaunayMethod::Auto if request.outputs.reduced => DelaunayMethod::Dubois,
@@ -393,6 +414,7 @@ fn flipped_output(
         method: DelaunayMethod::Flip,
         arithmetic: f64::ARITHMETIC,
         triangulation: wanted.triangulation.then_some(tri),
+        covered: None,
         exact_triangulation: None,
         tessellation,
         reduced: None,
@@ -402,6 +424,58 @@ fn flipped_output(
         reduction: None,
         wave: None,
     }
+}
+
+/// Flipping on a surface of any kind ([`DelaunayInput::Covered`]): `auto` is `flip`; the wave,
+/// Theorem 1 and the tessellation are refused.
+fn covered(
+    mut tri: CoveredTriangulation,
+    request: &DelaunayRequest,
+    progress: &mut dyn FnMut(&'static str),
+) -> Result<DelaunayOutput, IntrinsicDelaunayError> {
+    let refuse = |what, instead| Err(IntrinsicDelaunayError::NotClosedOrientable { what, instead });
+    // Dubois' paper (the wave of Appendix D, Theorem 1) treats closed surfaces.
+    let flip = "use the flip method (--method flip; auto takes it)";
+    match request.method {
+        DelaunayMethod::Voronoi => return refuse("the voronoi method (Dubois, Appendix D)", flip),
+        DelaunayMethod::Dubois => return refuse("the dubois method (Dubois, Theorem 1)", flip),
+        DelaunayMethod::Auto | DelaunayMethod::Flip => {}
+    }
+    request.check_resolved(DelaunayMethod::Flip)?;
+    let wanted = request.outputs;
+    if wanted.tessellation {
+        return refuse(
+            "the Delaunay tessellation",
+            "the triangulation's Laplacian and mass matrix are computed (drop the tessellation)",
+        );
+    }
+    progress("flipping to Delaunay");
+    let start = Instant::now();
+    let report = tri.flip_to_delaunay(&request.flip_options())?;
+    let seconds = start.elapsed().as_secs_f64();
+    let stats = wanted.figures.then(|| tri.stats(&report, seconds));
+    let laplacian = wanted.laplacian.then(|| {
+        progress("building the Laplacian");
+        tri.laplacian()
+    });
+    let mass = wanted.mass.then(|| {
+        progress("building the mass matrix");
+        tri.mass()
+    });
+    Ok(DelaunayOutput {
+        method: DelaunayMethod::Flip,
+        arithmetic: f64::ARITHMETIC,
+        triangulation: None,
+        covered: wanted.triangulation.then_some(tri),
+        exact_triangulation: None,
+        tessellation: None,
+        reduced: None,
+        laplacian,
+        mass,
+        stats,
+        reduction: None,
+        wave: None,
+    })
 }
 
 /// The tessellation by the wave (`voronoi`) or by Theorem 1 (`dubois`) in the arithmetic of `p`,
@@ -511,6 +585,7 @@ where
         method,
         arithmetic: S::ARITHMETIC,
         triangulation: triangulation.filter(|_| wanted.triangulation),
+        covered: None,
         exact_triangulation,
         tessellation: wanted
             .tessellation

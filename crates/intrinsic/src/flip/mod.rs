@@ -26,7 +26,7 @@ pub(crate) mod tessellation;
 use crate::error::DelaunayError;
 use crate::triangulation::mollify::mollify;
 use crate::triangulation::{IntrinsicTriangulation, store_tan_half_sq};
-use surftopo_mesh::EdgeId;
+use surftopo_mesh::{EdgeId, HalfedgeId, SurfaceMesh};
 
 /// Default [`DelaunayOptions::tolerance`]: an edge is flipped when `tan(γ/2) tan(δ/2)` exceeds
 /// `1 + 1e-10` (γ + δ > π + about 1e-10 radians for well-shaped triangles). Lengths computed by
@@ -136,6 +136,47 @@ pub(crate) fn flip_unless(
     options: &DelaunayOptions,
     stop_at_needle: bool,
 ) -> Result<Option<(FlipReport, Vec<f64>)>, DelaunayError> {
+    flip_glued(tri, options, stop_at_needle, &mut Closed)
+}
+
+/// What the flip algorithm asks of the surface beyond the mesh: which edges may flip, and which
+/// edge flips together with one (see [`crate::covered`]). [`Closed`] is a closed oriented surface,
+/// the mesh itself: every edge may flip, none has a partner; monomorphised with it the algorithm
+/// is the plain one.
+pub(crate) trait Gluing {
+    /// Whether edge `e` may flip (the mesh's own rule, two distinct faces, is checked apart).
+    fn may_flip(&self, mesh: &SurfaceMesh, e: EdgeId) -> bool;
+    /// The half-edge whose edge flips together with the edge of `h`, seen as `h` is (the same
+    /// quad up to an isometry, `h`'s ends and left face matching), if any.
+    fn partner(&self, h: HalfedgeId) -> Option<HalfedgeId>;
+    /// Called after the edge of `h` and its partner `p` flipped.
+    fn flipped(&mut self, mesh: &SurfaceMesh, h: HalfedgeId, p: HalfedgeId);
+}
+
+/// A closed oriented surface: the mesh itself (see [`Gluing`]).
+pub(crate) struct Closed;
+
+impl Gluing for Closed {
+    #[inline(always)]
+    fn may_flip(&self, _: &SurfaceMesh, _: EdgeId) -> bool {
+        true
+    }
+    #[inline(always)]
+    fn partner(&self, _: HalfedgeId) -> Option<HalfedgeId> {
+        None
+    }
+    #[inline(always)]
+    fn flipped(&mut self, _: &SurfaceMesh, _: HalfedgeId, _: HalfedgeId) {}
+}
+
+/// [`flip_unless`] on a surface glued as `gluing` says: edges it forbids are never flipped (nor
+/// counted as non-Delaunay), and an edge's partner flips with it.
+pub(crate) fn flip_glued<G: Gluing>(
+    tri: &mut IntrinsicTriangulation,
+    options: &DelaunayOptions,
+    stop_at_needle: bool,
+    gluing: &mut G,
+) -> Result<Option<(FlipReport, Vec<f64>)>, DelaunayError> {
     let tol = options.tolerance;
     if !(tol.is_finite() && tol >= 0.0) {
         return Err(DelaunayError::InvalidTolerance(tol));
@@ -188,46 +229,32 @@ pub(crate) fn flip_unless(
             let t = h.twin();
             let mesh = tri.mesh();
             let product = t2[h.idx()] * t2[t.idx()];
-            if product > bound && mesh.face(h) != mesh.face(t) {
+            if product > bound && mesh.face(h) != mesh.face(t) && gluing.may_flip(mesh, e) {
                 if report.flips >= max_flips {
                     return Err(DelaunayError::MaxFlips {
                         flips: report.flips,
                         pending: stack.len() + 1,
                     });
                 }
-                // Quad a -> b with c on the left, d on the right: h1 = b -> c, h2 = c -> a,
-                // t1 = a -> d, t2 = d -> b. The angles at a are opposite h1 (in the left triangle)
-                // and t2 (in the right one).
-                let (h1, h2) = (mesh.next(h), mesh.prev(h));
-                let (t1, t2h) = (mesh.next(t), mesh.prev(t));
-                let [bc, ca, ad, db] = [h1, h2, t1, t2h].map(|g| tri.halfedge_length(g));
-                let length = crate::triangulation::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
-                if !(length.is_finite() && length > 0.0) {
-                    return Err(DelaunayError::NumericalBreakdown {
-                        edge: e.0,
-                        flips: report.flips,
-                        length,
-                    });
-                }
-                tri.apply_flip(e, length);
-                // The new triangles are (h: d -> c, h2, t1) and (t: c -> d, t2, h1).
-                let s0 = store_tan_half_sq([h, h2, t1], [length, ca, ad], &mut t2);
-                let s1 = store_tan_half_sq([t, t2h, h1], [length, db, bc], &mut t2);
-                if s0.is_nan() || s0 <= 0.0 || s1.is_nan() || s1 <= 0.0 {
-                    // The new triangles fail the triangle inequality: rounding has taken over.
-                    return Err(DelaunayError::NumericalBreakdown {
-                        edge: e.0,
-                        flips: report.flips,
-                        length,
-                    });
-                }
+                let partner = gluing.partner(h);
+                let sides = flip_one(tri, &mut t2, h, report.flips)?;
                 report.flips += 1;
-                for g in [h2, t1, t2h, h1] {
+                for g in sides {
                     let ge = g.edge();
                     if !queued[ge.idx()] {
                         queued[ge.idx()] = true;
                         stack.push(ge);
                     }
+                }
+                if let Some(p) = partner {
+                    for g in flip_one(tri, &mut t2, p, report.flips)? {
+                        let ge = g.edge();
+                        if !queued[ge.idx()] {
+                            queued[ge.idx()] = true;
+                            stack.push(ge);
+                        }
+                    }
+                    gluing.flipped(tri.mesh(), h, p);
                 }
             }
             next = stack.pop();
@@ -243,8 +270,56 @@ pub(crate) fn flip_unless(
         .filter(|&e| {
             let h = e.halfedge();
             let p = t2[h.idx()] * t2[h.twin().idx()];
-            (p.is_nan() || p > bound) && mesh.face(h) != mesh.face(h.twin())
+            (p.is_nan() || p > bound)
+                && mesh.face(h) != mesh.face(h.twin())
+                && gluing.may_flip(mesh, e)
         })
         .count();
     Ok(Some((report, t2)))
+}
+
+/// Flips the edge of `h = a -> b` (the caller decided it), sets its new length and the half-angle
+/// cache `t2` of its two new triangles; returns the four sides of the quad. `flips` is the count
+/// so far, for the error.
+///
+/// # Errors
+/// [`DelaunayError::NumericalBreakdown`] when the new length is not a positive finite number or
+/// the new triangles fail the triangle inequality as rounded.
+#[inline(always)]
+fn flip_one(
+    tri: &mut IntrinsicTriangulation,
+    t2: &mut [f64],
+    h: HalfedgeId,
+    flips: u64,
+) -> Result<[HalfedgeId; 4], DelaunayError> {
+    let e = h.edge();
+    let t = h.twin();
+    let mesh = tri.mesh();
+    // Quad a -> b with c on the left, d on the right: h1 = b -> c, h2 = c -> a, t1 = a -> d,
+    // t2 = d -> b. The angles at a are opposite h1 (in the left triangle) and t2 (in the right
+    // one).
+    let (h1, h2) = (mesh.next(h), mesh.prev(h));
+    let (t1, t2h) = (mesh.next(t), mesh.prev(t));
+    let [bc, ca, ad, db] = [h1, h2, t1, t2h].map(|g| tri.halfedge_length(g));
+    let length = crate::triangulation::trig::chord(t2[h1.idx()], t2[t2h.idx()], ca, ad);
+    if !(length.is_finite() && length > 0.0) {
+        return Err(DelaunayError::NumericalBreakdown {
+            edge: e.0,
+            flips,
+            length,
+        });
+    }
+    tri.apply_flip(e, length);
+    // The new triangles are (h: d -> c, h2, t1) and (t: c -> d, t2, h1).
+    let s0 = store_tan_half_sq([h, h2, t1], [length, ca, ad], t2);
+    let s1 = store_tan_half_sq([t, t2h, h1], [length, db, bc], t2);
+    if s0.is_nan() || s0 <= 0.0 || s1.is_nan() || s1 <= 0.0 {
+        // The new triangles fail the triangle inequality: rounding has taken over.
+        return Err(DelaunayError::NumericalBreakdown {
+            edge: e.0,
+            flips,
+            length,
+        });
+    }
+    Ok([h2, t1, t2h, h1])
 }

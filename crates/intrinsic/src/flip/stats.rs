@@ -34,13 +34,24 @@ impl DelaunayStats {
     /// The figures of `tri` after a run that made `report` in `seconds`.
     pub fn new(tri: &IntrinsicTriangulation, report: &FlipReport, seconds: f64) -> Self {
         let mesh = tri.mesh();
-        let mut pairs: Vec<(u32, u32)> = mesh
+        let pairs: Vec<(u32, u32)> = mesh
             .edges()
             .map(|e| {
                 let [a, b] = mesh.edge_vertices(e);
                 (a.0.min(b.0), a.0.max(b.0))
             })
             .collect();
+        let counts = [mesh.vertex_count(), mesh.edge_count(), mesh.face_count()];
+        Self::from_pairs(counts, pairs, report, seconds)
+    }
+
+    /// The figures from the vertex, edge and face counts and the edges' end pairs.
+    pub(crate) fn from_pairs(
+        [vertices, edges, faces]: [usize; 3],
+        mut pairs: Vec<(u32, u32)>,
+        report: &FlipReport,
+        seconds: f64,
+    ) -> Self {
         let loops = pairs.iter().filter(|(a, b)| a == b).count();
         pairs.sort_unstable();
         let multi_edges = pairs
@@ -49,9 +60,9 @@ impl DelaunayStats {
             .map(<[_]>::len)
             .sum();
         Self {
-            vertices: mesh.vertex_count(),
-            edges: mesh.edge_count(),
-            faces: mesh.face_count(),
+            vertices,
+            edges,
+            faces,
             flips: report.flips,
             non_delaunay_edges: report.non_delaunay_edges,
             seconds,

@@ -1,4 +1,4 @@
-//! The portalgon JSON format (`surftopo-portalgon`, version 1), read and written with serde.
+//! The portalgon JSON format (`surftopo-portalgon`, versions 1 and 2), read and written with serde.
 //!
 //! ```json
 //! {
@@ -26,7 +26,8 @@
 //!   number the Laplacian's rows; when read, they become the vertex ids.
 //! - `matching` lists pairs of sides `[[p, i], [q, j]]`: side `i` of polygon `p` is glued to side
 //!   `j` of polygon `q`, running in opposite directions (the start of one is the end of the other),
-//!   which keeps the surface oriented. A side appears in at most one pair; sides in no pair are
+//!   which keeps the surface oriented; version 2's `[[p, i], [q, j], true]` glues them in the
+//!   same direction (orientation-reversing: [`PortalgonDoc::reversed`]). A side appears in at most one pair; sides in no pair are
 //!   boundary. Matched sides must have equal lengths up to a relative tolerance
 //!   (`|a - b| <= tolerance · max(a, b)`, default [`crate::DEFAULT_LENGTH_TOLERANCE`] = 1e-9).
 //! - Every coordinate and length is a [`Number`]: a JSON number (the decimal it spells in exact
@@ -34,7 +35,8 @@
 //!   fraction (`"1000000000.333"`, `"3000000001/3"`); exact mode ([`PortalgonDoc::to_portalgon_in`]
 //!   with rationals) reads them exactly, and the writer writes a number when the value is what
 //!   its shortest text spells, a `"p/q"` string otherwise.
-//! - `format` and `version` may be omitted; if present they must be `"surftopo-portalgon"` and 1.
+//! - `format` and `version` may be omitted; if present they must be `"surftopo-portalgon"` and 1
+//!   or 2 (writers write 1 unless a gluing reverses orientation).
 //!   An optional `comment` string is kept. Unknown fields are errors (typos do not pass silently).
 //!
 //! A triangulation (closed surface) needs every polygon to be a triangle and every side matched.
@@ -64,14 +66,28 @@ fn json_error(e: &serde_json::Error) -> PortalgonError {
 
 /// The `format` field.
 pub const FORMAT_NAME: &str = "surftopo-portalgon";
-/// The `version` field.
-pub const FORMAT_VERSION: u32 = 1;
+/// The `version` field of the newest format: 2 adds orientation-reversing gluings
+/// ([`PortalgonDoc::reversed`]). Writers write 1 unless some gluing reverses orientation, so
+/// version-1 readers read every orientable file; both versions are read.
+pub const FORMAT_VERSION: u32 = 2;
+/// The version without orientation-reversing gluings.
+pub const ORIENTED_VERSION: u32 = 1;
 
 fn format_name() -> String {
     FORMAT_NAME.to_string()
 }
 fn format_version() -> u32 {
     FORMAT_VERSION
+}
+
+/// The version a document needs: [`FORMAT_VERSION`] with an orientation-reversing gluing, else
+/// [`ORIENTED_VERSION`].
+fn needed_version(reversed: &[bool]) -> u32 {
+    if reversed.iter().any(|&r| r) {
+        FORMAT_VERSION
+    } else {
+        ORIENTED_VERSION
+    }
 }
 
 /// A coordinate or a length of a portalgon file: a JSON number, or a string holding an exact
@@ -255,22 +271,129 @@ impl<'de> Deserialize<'de> for Number {
 
 /// A portalgon file, as parsed (see the module doc).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(try_from = "RawDoc", into = "RawDoc")]
 pub struct PortalgonDoc {
     /// Always `"surftopo-portalgon"`.
-    #[serde(default = "format_name")]
     pub format: String,
-    /// Always 1.
-    #[serde(default = "format_version")]
+    /// 1, or 2 when some gluing reverses orientation ([`FORMAT_VERSION`]).
     pub version: u32,
     /// Free text.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub comment: Option<String>,
     /// The polygons.
     pub polygons: Vec<PolygonDoc>,
     /// Pairs of glued sides `[[polygon, side], [polygon, side]]`.
-    #[serde(default)]
     pub matching: Vec<[[usize; 2]; 2]>,
+    /// Per pair of `matching`, whether its sides run in the **same** direction (an
+    /// orientation-reversing gluing: version 2, `[[p, i], [q, j], true]`); empty when none does.
+    pub reversed: Vec<bool>,
+}
+
+/// The document as JSON holds it: a matching entry may carry its orientation flag.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawDoc {
+    #[serde(default = "format_name")]
+    format: String,
+    #[serde(default = "format_version")]
+    version: u32,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    comment: Option<String>,
+    polygons: Vec<PolygonDoc>,
+    #[serde(default)]
+    matching: Vec<RawPair>,
+}
+
+/// A matching entry: `[[p, i], [q, j]]`, or `[[p, i], [q, j], reversed]`.
+struct RawPair([[usize; 2]; 2], bool);
+
+impl Serialize for RawPair {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeTuple;
+        let mut t = serializer.serialize_tuple(if self.1 { 3 } else { 2 })?;
+        t.serialize_element(&self.0[0])?;
+        t.serialize_element(&self.0[1])?;
+        if self.1 {
+            t.serialize_element(&true)?;
+        }
+        t.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for RawPair {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl<'de> serde::de::Visitor<'de> for Visitor {
+            type Value = RawPair;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str(
+                    "a pair of sides [[p, i], [q, j]], optionally followed by true or false",
+                )
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<RawPair, A::Error> {
+                use serde::de::Error;
+                let a = seq
+                    .next_element()?
+                    .ok_or_else(|| A::Error::invalid_length(0, &self))?;
+                let b = seq
+                    .next_element()?
+                    .ok_or_else(|| A::Error::invalid_length(1, &self))?;
+                let reversed = seq.next_element()?.unwrap_or(false);
+                if seq.next_element::<serde::de::IgnoredAny>()?.is_some() {
+                    return Err(A::Error::invalid_length(4, &self));
+                }
+                Ok(RawPair([a, b], reversed))
+            }
+        }
+        deserializer.deserialize_seq(Visitor)
+    }
+}
+
+impl TryFrom<RawDoc> for PortalgonDoc {
+    type Error = String;
+    fn try_from(raw: RawDoc) -> Result<Self, String> {
+        let reversed: Vec<bool> = raw.matching.iter().map(|p| p.1).collect();
+        let any = reversed.iter().any(|&r| r);
+        if let Some(k) = reversed.iter().position(|&r| r)
+            && raw.version < FORMAT_VERSION
+            && raw.format == FORMAT_NAME
+        {
+            return Err(format!(
+                "matching entry {k} reverses orientation, which needs \"version\": {FORMAT_VERSION} \
+                 (the file says {})",
+                raw.version
+            ));
+        }
+        Ok(Self {
+            format: raw.format,
+            version: raw.version,
+            comment: raw.comment,
+            polygons: raw.polygons,
+            matching: raw.matching.iter().map(|p| p.0).collect(),
+            reversed: if any { reversed } else { Vec::new() },
+        })
+    }
+}
+
+impl From<PortalgonDoc> for RawDoc {
+    fn from(doc: PortalgonDoc) -> Self {
+        let version = doc.version.max(needed_version(&doc.reversed));
+        let matching = doc
+            .matching
+            .iter()
+            .enumerate()
+            .map(|(k, &p)| RawPair(p, doc.reversed.get(k).copied().unwrap_or(false)))
+            .collect();
+        RawDoc {
+            format: doc.format,
+            version,
+            comment: doc.comment,
+            polygons: doc.polygons,
+            matching,
+        }
+    }
 }
 
 /// One polygon of a [`PortalgonDoc`].
@@ -346,11 +469,15 @@ impl PortalgonDoc {
         if !pretty {
             return write_compact(
                 writer,
+                self.version.max(needed_version(&self.reversed)),
                 self.comment.as_deref(),
                 self.polygons.len(),
                 |p, buf| push_polygon(buf, &self.polygons[p]),
                 self.matching.len(),
-                |k| self.matching[k],
+                |k| {
+                    let reversed = self.reversed.get(k).copied().unwrap_or(false);
+                    (self.matching[k], reversed)
+                },
             );
         }
         let mut w = std::io::BufWriter::new(writer);
@@ -372,7 +499,9 @@ impl PortalgonDoc {
     }
 
     fn check_header(&self) -> Result<(), PortalgonError> {
-        if self.format != FORMAT_NAME || self.version != FORMAT_VERSION {
+        if self.format != FORMAT_NAME
+            || !(ORIENTED_VERSION..=FORMAT_VERSION).contains(&self.version)
+        {
             return Err(PortalgonError::Version {
                 format: self.format.clone(),
                 version: self.version,
@@ -453,6 +582,10 @@ impl PortalgonDoc {
                 }
                 *u = true;
             }
+        }
+        if let Some(k) = self.reversed.iter().position(|&r| r) {
+            let [polygon, side] = self.matching[k][0];
+            return Err(PortalgonError::ReversedGluing { polygon, side });
         }
         Ok(self.matching.clone())
     }
@@ -692,10 +825,11 @@ impl PortalgonDoc {
             .collect();
         Self {
             format: format_name(),
-            version: FORMAT_VERSION,
+            version: ORIENTED_VERSION,
             comment: None,
             polygons,
             matching,
+            reversed: Vec::new(),
         }
     }
 
@@ -739,10 +873,11 @@ impl PortalgonDoc {
         let matching = (0..sides.edges.len()).map(|k| sides.pair(k)).collect();
         Self {
             format: format_name(),
-            version: FORMAT_VERSION,
+            version: ORIENTED_VERSION,
             comment: None,
             polygons,
             matching,
+            reversed: Vec::new(),
         }
     }
 }
@@ -793,17 +928,18 @@ const PAIRS_PER_BLOCK: usize = 8192;
 /// formatting, [`surftopo_mesh::decimal`]); callers check finiteness first.
 fn write_compact<W: Write>(
     mut out: W,
+    version: u32,
     comment: Option<&str>,
     polygons: usize,
     polygon: impl Fn(usize, &mut Vec<u8>) + Sync,
     pairs: usize,
-    pair: impl Fn(usize) -> [[usize; 2]; 2] + Sync,
+    pair: impl Fn(usize) -> ([[usize; 2]; 2], bool) + Sync,
 ) -> Result<(), PortalgonError> {
     let mut head = Vec::new();
     head.extend_from_slice(b"{\"format\":");
     serde_json::to_writer(&mut head, FORMAT_NAME).map_err(|e| json_error(&e))?;
     head.extend_from_slice(b",\"version\":");
-    push_u64(&mut head, u64::from(FORMAT_VERSION));
+    push_u64(&mut head, u64::from(version));
     if let Some(c) = comment {
         head.extend_from_slice(b",\"comment\":");
         serde_json::to_writer(&mut head, c).map_err(|e| json_error(&e))?;
@@ -828,8 +964,12 @@ fn write_compact<W: Write>(
                 if e > 0 {
                     buf.push(b',');
                 }
-                let [a, b] = pair(e);
+                let ([a, b], reversed) = pair(e);
                 push_pair(buf, a, b);
+                if reversed {
+                    buf.pop();
+                    buf.extend_from_slice(b",true]");
+                }
             }
         }
     })
@@ -979,6 +1119,7 @@ impl IntrinsicTriangulation {
         let (dense, _) = dense_vertex_index(self);
         write_compact(
             writer,
+            ORIENTED_VERSION,
             None,
             sides.faces.len(),
             |p, buf| {
@@ -987,7 +1128,7 @@ impl IntrinsicTriangulation {
                 push_triangle(buf, self.face_sides(f), vertices);
             },
             sides.edges.len(),
-            |k| sides.pair(k),
+            |k| (sides.pair(k), false),
         )
     }
 }
@@ -1058,13 +1199,14 @@ mod tests {
     fn non_finite_lengths_are_refused_before_writing() {
         let doc = PortalgonDoc {
             format: format_name(),
-            version: FORMAT_VERSION,
+            version: ORIENTED_VERSION,
             comment: None,
             polygons: vec![PolygonDoc {
                 lengths: Some(vec![1.0.into(), f64::NAN.into(), 1.0.into()]),
                 ..PolygonDoc::default()
             }],
             matching: Vec::new(),
+            reversed: Vec::new(),
         };
         let mut out = Vec::new();
         assert!(matches!(

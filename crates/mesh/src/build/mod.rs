@@ -39,6 +39,23 @@ pub struct BuildReport {
     pub surfaces: Vec<SurfaceKind>,
 }
 
+impl BuildReport {
+    /// The input index of each vertex id of the input's vertices (the inverse of
+    /// [`Self::vertex_old_to_new`] on the referenced vertices, in id order): how an output on
+    /// the mesh's ids is put back in the input's vertex numbering.
+    pub fn input_vertices(&self) -> Vec<u32> {
+        let mut index =
+            Vec::with_capacity(self.vertex_old_to_new.len() - self.dropped_vertices.len());
+        for (old, new) in self.vertex_old_to_new.iter().enumerate() {
+            if new.is_valid() {
+                debug_assert_eq!(new.idx(), index.len());
+                index.push(old as u32);
+            }
+        }
+        index
+    }
+}
+
 /// Everything [`inspect`] finds out about a triangle soup, valid or not.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Inspection {

@@ -17,5 +17,6 @@ for every function; invalid input raises a subclass of :class:`InvalidInputError
 from . import _errors, _native
 from ._errors import *  # noqa: F403 (the exception classes, listed in _errors.__all__)
 from ._native import *  # noqa: F403 (the functions and classes; the type stubs list them)
+from ._native import __version__  # the package's version (the workspace's)
 
 __all__ = [name for name in dir(_native) if not name.startswith("_")] + _errors.__all__

@@ -4,7 +4,8 @@ Surfaces come as ``(V, F)``: float64 vertex positions of shape ``(n, 3)`` and in
 shape ``(m, 3)`` (int32 or int64, C or Fortran order; other integer dtypes and nested lists are
 converted first). The surface must be closed, connected and orientable; faces are reoriented to a
 consistent orientation, unreferenced vertices are ignored (and get empty rows in matrices). Every
-vertex index returned is an index into ``V``. The GIL is released while the libraries compute.
+vertex index returned is an index into ``V`` (the input's vertex numbering is kept everywhere, as
+in the CLI). The GIL is released while the libraries compute.
 
 Invalid input raises a subclass of :class:`InvalidInputError` (a :class:`ValueError`) whose
 message is the one the ``surftopo`` CLI prints and whose attributes name the element
@@ -70,6 +71,9 @@ __all__ = [
     "write_mesh",
 ]
 
+__version__: str
+"""The package's version (the surftopo workspace's, as ``surftopo --version`` prints it)."""
+
 _Vertices = Union[npt.NDArray[np.float64], Sequence[Sequence[float]]]
 """Vertex positions, ``(n, 3)``; float64 arrays are read in place when C-contiguous."""
 _Faces = Union[npt.NDArray[np.int32], npt.NDArray[np.int64], Sequence[Sequence[int]]]
@@ -78,14 +82,34 @@ _Surface = Union[Tuple[_Vertices, _Faces], "Portalgon", "IntrinsicTriangulation"
 """A closed polyhedral surface: ``(V, F)``, a :class:`Portalgon` or an intrinsic triangulation."""
 
 def read_mesh(
-    path: Union[str, os.PathLike[str]], weld: bool = False
-) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    path: Union[str, os.PathLike[str]],
+    weld: bool = False,
+    polygons: str = "auto",
+    attributes: bool = False,
+) -> tuple[Any, ...]:
     """Read a mesh file: OBJ, OFF, PLY or STL, optionally gzipped (``.gz``).
 
-    Returns ``(V, F)``: float64 positions ``(n, 3)`` and int64 faces ``(m, k)``; every face must
-    have the same number ``k`` of sides (3 for triangles, 4 for quads). STL is always welded (its
-    triangles share no vertices); ``weld=True`` also merges exactly equal positions in the other
-    formats.
+    Returns ``(V, F)``: float64 positions ``(n, 3)`` (every vertex of the file, in its order:
+    vertices in no face included, so indices match the file's) and int64 faces as ``polygons``
+    says:
+
+    - ``"auto"``: an ``(m, k)`` array when every face has ``k`` sides (3 for triangles, 4 for
+      quads), else a list of 1-D arrays, one per face;
+    - ``"list"``: always that list;
+    - ``"padded"``: an ``(m, k_max)`` array padded with ``-1``, followed by the side counts:
+      ``(V, F, counts)``;
+    - ``"triangles"``: an ``(m', 3)`` array, every polygon cut into triangles as the CLI's
+      commands cut them (ear clipping in the polygon's plane, exact predicates: no degenerate
+      triangle for a polygon simple in its plane), ready for :func:`laplacian`.
+
+    ``attributes=True`` appends a dict of the per-vertex properties read beside the positions
+    (name -> float64 ``(n,)``: ``u``, ``v`` for texture coordinates, ``nx``, ``ny``, ``nz``,
+    colours, any PLY vertex property) and, for OBJ values given per face corner,
+    ``corner_texcoords`` / ``corner_normals`` as ``(table, corners)``: the ``(e, width)`` float64
+    table and each face corner's row (int64, ``-1`` for none), corners in face order.
+
+    STL is always welded (its triangles share no vertices); ``weld=True`` also merges exactly
+    equal positions in the other formats.
 
     Raises :class:`MeshFileError` naming the file and line (or byte offset), or :class:`OSError`
     (e.g. :class:`FileNotFoundError`).
@@ -96,6 +120,17 @@ def read_mesh(
     >>> V, F = surftopo.read_mesh(path)
     >>> V.shape, F.shape
     ((162, 3), (320, 3))
+    >>> prism = os.path.join(tempfile.mkdtemp(), "prism.obj")
+    >>> with open(prism, "w") as f:
+    ...     _ = f.write("v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nv 0 0 1\\nv 1 0 1\\nv 0 1 1\\n"
+    ...                 "f 1 3 2\\nf 4 5 6\\nf 1 2 5 4\\nf 2 3 6 5\\nf 3 1 4 6\\n")
+    >>> [len(f) for f in surftopo.read_mesh(prism)[1]]
+    [3, 3, 4, 4, 4]
+    >>> V, F, counts = surftopo.read_mesh(prism, polygons="padded")
+    >>> F[0].tolist(), counts.tolist()
+    ([0, 2, 1, -1], [3, 3, 4, 4, 4])
+    >>> surftopo.read_mesh(prism, polygons="triangles")[1].shape
+    (8, 3)
     """
 
 def write_mesh(path: Union[str, os.PathLike[str]], vertices: _Vertices, faces: _Faces) -> None:
@@ -134,7 +169,11 @@ def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, An
     """
 
 def irreducible(
-    vertices: _Vertices, faces: _Faces, algorithm: str = "rs", seed: int = 1
+    vertices: _Vertices,
+    faces: _Faces,
+    algorithm: str = "rs",
+    seed: int = 1,
+    compact: bool = False,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], dict[str, Any]]:
     """An irreducible triangulation of the surface by topology-preserving edge contractions.
 
@@ -146,20 +185,26 @@ def irreducible(
     O(g² + gn)), ``"schipper"`` or ``"brute-force"`` (seeded by ``seed``; the CLI's default seed
     is also 1).
 
-    Returns ``(V2, F2, stats)``: ``V2`` the surviving vertices with their positions, ``F2`` the
-    triangles as indices into ``V2``, and ``stats`` the keys of ``surftopo irreducible --json``
-    (``algorithm``, ``input`` and ``output`` counts, ``link_tests``,
-    ``edges_tested_more_than_once``, ``contractions``, ``seconds``, ``seed`` for brute force)
-    plus ``vertex_indices``: the index into ``V`` of each row of ``V2``.
+    Returns ``(V2, F2, stats)``: ``V2`` a copy of ``V`` (the input's vertex list: as the CLI's
+    output, the numbering is kept) and ``F2`` the triangles as indices into it, on the surviving
+    vertices; with ``compact=True`` (the CLI's ``--compact``) ``V2`` holds the surviving vertices
+    only, in input order, and ``F2`` indexes them. ``stats``: the keys of
+    ``surftopo irreducible --json`` (``algorithm``, ``input`` and ``output`` counts,
+    ``link_tests``, ``edges_tested_more_than_once``, ``contractions``, ``seconds``, ``seed`` for
+    brute force) plus ``vertex_indices``: the index into ``V`` of each surviving vertex (each row
+    of ``V2`` with ``compact=True``).
 
     >>> V, F = surftopo.torus(24, 12)
     >>> V2, F2, stats = surftopo.irreducible(V, F)
     >>> {k: stats["output"][k] for k in ("vertices", "edges", "faces", "genus")}
     {'vertices': 7, 'edges': 21, 'faces': 14, 'genus': 1}
-    >>> bool((V2 == V[stats["vertex_indices"]]).all())
-    True
+    >>> V2.shape == V.shape, sorted(set(F2.ravel().tolist())) == stats["vertex_indices"].tolist()
+    (True, True)
+    >>> V3, F3, _ = surftopo.irreducible(V, F, compact=True)
+    >>> bool((V3 == V[stats["vertex_indices"]]).all()), bool((V3[F3] == V2[F2]).all())
+    (True, True)
     >>> V2, F2, stats = surftopo.irreducible(*surftopo.klein_bottle())
-    >>> stats["output"]["surfaces"][0]["name"], 8 <= len(V2) <= 11
+    >>> stats["output"]["surfaces"][0]["name"], 8 <= len(stats["vertex_indices"]) <= 11
     ('Klein bottle', True)
     """
 
@@ -229,20 +274,30 @@ def laplacian(
     exact: bool = False,
     mollify: float | None = None,
     max_flips: int | None = None,
-) -> tuple[scipy.sparse.csr_matrix, scipy.sparse.csr_matrix]:
+    format: str = "csr",
+) -> tuple[Any, Any]:
     """The cotan Laplacian ``L`` and the lumped mass matrix ``M`` of the intrinsic Delaunay
     triangulation, as ``robust_laplacian.mesh_laplacian`` returns them.
 
     Sign convention: ``L`` is **positive semidefinite** (positive diagonal, off-diagonal
     ``-w_ij`` with ``w_ij >= 0``), symmetric, with rows summing to zero; libigl's ``cotmatrix``
     is ``-L``. ``M`` is diagonal: a third of the incident triangle areas. Both are
-    ``len(V) x len(V)`` ``scipy.sparse.csr_matrix``. Degenerate input (a zero-length edge, a flat
-    triangle) raises :class:`InvalidGeometryError` unless ``mollify`` (epsilon relative to the
-    mean edge length) asks for intrinsic mollification; ``max_flips`` bounds the flips
-    (:class:`FlipLimitError`). ``method`` computes the Delaunay triangulation as in
-    :func:`intrinsic_delaunay` (every method gives the same ``L``); ``exact=True`` raises
-    :class:`InvalidInputError`: a mesh's lengths are square roots (use a :class:`Portalgon` given
-    by exact corners with :func:`intrinsic_delaunay`).
+    ``len(V) x len(V)`` (a vertex in no face gets an empty row and column), in ``format``:
+    ``"csr"`` (``scipy.sparse.csr_matrix``, the default) or ``"csc"`` (``csc_matrix``, as
+    robust_laplacian returns them). Degenerate input (a zero-length edge, a flat triangle) raises
+    :class:`InvalidGeometryError` unless ``mollify`` (epsilon relative to the mean edge length)
+    asks for intrinsic mollification; ``max_flips`` bounds the flips (:class:`FlipLimitError`).
+    Matrices beyond double precision's range (areas that overflow or underflow: coordinates of
+    1e200 or 1e-200) raise :class:`InvalidGeometryError`, as the CLI refuses them. ``method``
+    computes the Delaunay triangulation as in :func:`intrinsic_delaunay` (every method gives the
+    same ``L``); ``exact=True`` raises :class:`InvalidInputError`: a mesh's lengths are square
+    roots (use a :class:`Portalgon` given by exact corners with :func:`intrinsic_delaunay`).
+
+    Any manifold mesh is taken: boundary loops (boundary edges are never flipped and keep their
+    one half-cotangent: the natural Neumann boundary condition, libigl's
+    ``intrinsic_delaunay_cotmatrix``), non-orientable pieces and several pieces (``L`` is then
+    block-diagonal, one zero mode per piece), by flipping; ``method="voronoi"`` or ``"dubois"``
+    raise :class:`SurftopoError` on them (Dubois' methods treat closed orientable surfaces).
 
     >>> V, F = surftopo.icosphere(2)
     >>> L, M = surftopo.laplacian(V, F)
@@ -250,6 +305,9 @@ def laplacian(
     ((162, 162), True)
     >>> round(float(M.sum()), 4)  # the area of the polyhedron
     12.3291
+    >>> L, M = surftopo.laplacian(*surftopo.mobius_band(12, 3))
+    >>> round(float(M.sum()), 4), bool(abs(L.sum(axis=1)).max() < 1e-12)
+    (3.6806, True)
     """
 
 def intrinsic_delaunay(

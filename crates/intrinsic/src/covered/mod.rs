@@ -1,0 +1,402 @@
+//! Intrinsic Delaunay on every compact surface: boundary loops, non-orientable pieces, several
+//! components.
+//!
+//! A [`CoveredTriangulation`] is an intrinsic triangulation of a surface K held on the closed
+//! oriented mesh D of its [`ClosedCover`] (ARCHITECTURE.md, "The surface model"), with one length
+//! per edge of D. No new topology: flipping is [`crate::flip_to_delaunay`]'s algorithm on D with
+//! two rules ([`CoverGluing`]):
+//!
+//! - **Boundary loops.** D closes each loop with a cone over an apex. The cone's triangles are
+//!   *virtual*: an edge with an apex among the four vertices of its two faces (a boundary edge of
+//!   K, or an apex edge) never flips, so the virtual triangles never change and the real ones
+//!   stay real; the virtual triangles get any valid lengths (each apex edge as long as the
+//!   longest edge of its loop) and never enter the Laplacian, the mass matrix or the Delaunay
+//!   test. A boundary edge thus keeps its one half-cotangent: the natural (Neumann) boundary
+//!   condition of libigl's `intrinsic_delaunay_cotmatrix` and geometry-central.
+//! - **Non-orientable pieces.** D holds their orientable double cover; the deck map (each
+//!   half-edge to its *mirror*) is an isometry, so an edge is non-Delaunay iff its mirror is, and
+//!   the two flip together: D stays the double cover of a triangulation of K, which is K's
+//!   Delaunay triangulation (Bobenko and Springborn's criterion is local, edge by edge). An edge
+//!   whose two faces are each other's mirror (a triangle of K glued to itself with a reversal) is
+//!   never flipped: its opposite angles are the base angles of an isosceles triangle, so it is
+//!   Delaunay.
+//!
+//! Components are independent (flips are local). Matrices have one row per vertex of K, in the
+//! input's numbering without unreferenced vertices (the cover's vertex classes), block-diagonal
+//! over components. The alternative, half-edges with boundary half-edges and an orientation bit
+//! per gluing, would give `flip`, rotation and every test new cases on the closed orientable hot
+//! path; this module leaves that path's machine code as it was ([`crate::flip`]'s `Closed`).
+
+use crate::error::{DelaunayError, GeometryError};
+use crate::flip::stats::DelaunayStats;
+use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
+use crate::formats::portalgon_json::{
+    FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
+};
+use crate::laplacian::assemble_laplacian;
+use crate::sparse::SparseMatrix;
+use crate::triangulation::{IntrinsicTriangulation, trig};
+use surftopo_mesh::geometry::Point3;
+use surftopo_mesh::{ClosedCover, EdgeId, FaceId, HalfedgeId, Lifting, SurfaceMesh, VertexId};
+
+/// An intrinsic triangulation of a compact surface on its closed cover (see the module doc).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoveredTriangulation {
+    /// The cover D with a length per edge (apex edges included).
+    tri: IntrinsicTriangulation,
+    /// The surface vertex each vertex of D stands for; apexes are `surface_vertices`.
+    class: Vec<u32>,
+    /// Vertices of K (the rows of the matrices).
+    surface_vertices: usize,
+    /// Mirror of each half-edge of a doubled piece, `INVALID` elsewhere; empty when none.
+    mirror: Vec<HalfedgeId>,
+    /// Per edge of D: an apex among the four vertices of its faces (a boundary or apex edge).
+    frozen: Vec<bool>,
+}
+
+impl CoveredTriangulation {
+    /// The intrinsic triangulation of a surface in space: the cover's topology, each edge as
+    /// long as the segment between its ends' positions (`positions` by vertex class, as
+    /// [`surftopo_mesh::CoveredSurface`] holds them), each apex edge as long as the longest
+    /// boundary edge of its loop.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFiniteLength`] (huge coordinates).
+    pub fn from_cover(cover: &ClosedCover, positions: &[Point3]) -> Result<Self, GeometryError> {
+        let mesh = &cover.mesh;
+        let sheets = &cover.sheets;
+        let surface_vertices = sheets
+            .apex_class()
+            .map_or(sheets.class_count(), |a| a as usize);
+        let class: Vec<u32> = (0..mesh.vertex_slots())
+            .map(|v| {
+                let v = VertexId::new(v);
+                if mesh.is_vertex_live(v) {
+                    sheets.class(v)
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        let is_apex = |v: VertexId| class[v.idx()] as usize == surface_vertices;
+        let mut lengths = vec![0.0; mesh.edge_slots()];
+        for e in mesh.edges() {
+            let [a, b] = mesh.edge_vertices(e);
+            if !is_apex(a) && !is_apex(b) {
+                let [p, q] = [a, b].map(|v| positions[class[v.idx()] as usize]);
+                lengths[e.idx()] =
+                    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt();
+            }
+        }
+        // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
+        // (boundary edge ab, apex edges L, L) is then valid, ab ≤ L < 2L.
+        let mut longest = vec![0.0f64; mesh.vertex_slots()];
+        for h in mesh.halfedges() {
+            let apex = mesh.origin(h);
+            if is_apex(apex) {
+                let l = &mut longest[apex.idx()];
+                *l = l.max(lengths[mesh.next(h).edge().idx()]);
+            }
+        }
+        let mut frozen = vec![false; mesh.edge_slots()];
+        for e in mesh.edges() {
+            let h = e.halfedge();
+            let [a, b] = mesh.edge_vertices(e);
+            if let Some(apex) = [a, b].into_iter().find(|&v| is_apex(v)) {
+                lengths[e.idx()] = longest[apex.idx()];
+            }
+            let quad = [
+                a,
+                b,
+                mesh.opposite_vertex(h),
+                mesh.opposite_vertex(h.twin()),
+            ];
+            frozen[e.idx()] = quad.into_iter().any(is_apex);
+        }
+        let mirror = if sheets.doubled() {
+            (0..mesh.halfedge_slots())
+                .map(|h| {
+                    sheets
+                        .mirror(HalfedgeId::new(h))
+                        .unwrap_or(HalfedgeId::INVALID)
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let tri = IntrinsicTriangulation::from_parts(mesh.clone(), lengths)?;
+        Ok(Self {
+            tri,
+            class,
+            surface_vertices,
+            mirror,
+            frozen,
+        })
+    }
+
+    /// The cover D with its lengths (virtual triangles included).
+    pub fn cover(&self) -> &IntrinsicTriangulation {
+        &self.tri
+    }
+
+    /// The number of vertices of K: the rows of [`Self::laplacian`] and [`Self::mass`].
+    pub fn surface_vertex_count(&self) -> usize {
+        self.surface_vertices
+    }
+
+    /// The vertex of K a vertex of D stands for (`surface_vertex_count()` for an apex).
+    pub fn class(&self, v: VertexId) -> u32 {
+        self.class[v.idx()]
+    }
+
+    /// Whether a vertex of D is an apex (not a vertex of K).
+    pub fn is_apex(&self, v: VertexId) -> bool {
+        self.class[v.idx()] as usize == self.surface_vertices
+    }
+
+    /// The mirror of a half-edge of a doubled piece.
+    pub fn mirror(&self, h: HalfedgeId) -> Option<HalfedgeId> {
+        self.mirror.get(h.idx()).copied().filter(|m| m.is_valid())
+    }
+
+    /// Whether a face of D is a triangle of K: not a cone face (virtual), and the first (smaller
+    /// id) of its mirror pair on a doubled piece.
+    pub fn is_surface_face(&self, f: FaceId) -> bool {
+        let mesh = self.tri.mesh();
+        let h = mesh.face_halfedge(f);
+        self.is_real_face(f) && self.mirror(h).is_none_or(|m| f <= mesh.face(m))
+    }
+
+    /// Whether a face of D is real (no apex corner), mirror copies included.
+    fn is_real_face(&self, f: FaceId) -> bool {
+        let mesh = self.tri.mesh();
+        mesh.face_vertices(f).iter().all(|&v| !self.is_apex(v))
+    }
+
+    /// Whether an edge of D is an edge of K: no apex end, and the first of its mirror pair.
+    pub fn is_surface_edge(&self, e: EdgeId) -> bool {
+        let mesh = self.tri.mesh();
+        let [a, b] = mesh.edge_vertices(e);
+        !self.is_apex(a)
+            && !self.is_apex(b)
+            && self.mirror(e.halfedge()).is_none_or(|m| e <= m.edge())
+    }
+
+    /// Whether an edge of D lies on a boundary loop of K (one real face, one virtual).
+    pub fn is_boundary_edge(&self, e: EdgeId) -> bool {
+        let mesh = self.tri.mesh();
+        let h = e.halfedge();
+        self.is_real_face(mesh.face(h)) != self.is_real_face(mesh.face(h.twin()))
+    }
+
+    /// The edges of K (see [`Self::is_surface_edge`]).
+    pub fn surface_edges(&self) -> impl Iterator<Item = EdgeId> + '_ {
+        self.tri.mesh().edges().filter(|&e| self.is_surface_edge(e))
+    }
+
+    /// The triangles of K (see [`Self::is_surface_face`]).
+    pub fn surface_faces(&self) -> impl Iterator<Item = FaceId> + '_ {
+        self.tri.mesh().faces().filter(|&f| self.is_surface_face(f))
+    }
+
+    /// Whether the edge of K through `e` may flip: interior (no apex among its quad's vertices)
+    /// and its two faces not each other's mirror.
+    pub fn may_flip(&self, e: EdgeId) -> bool {
+        CoverGluing::may_flip_in(&self.frozen, &self.mirror, self.tri.mesh(), e)
+    }
+
+    /// Flips every interior edge of K whose opposite angles sum to more than π (up to the
+    /// tolerance) until none is left: [`crate::flip_to_delaunay`] on the cover under the rules
+    /// of the module doc. Boundary edges are never flipped. The report counts the flips of K
+    /// (a mirror pair is one flip) and the non-Delaunay interior edges of D left.
+    ///
+    /// # Errors
+    /// As [`crate::flip_to_delaunay`].
+    pub fn flip_to_delaunay(
+        &mut self,
+        options: &DelaunayOptions,
+    ) -> Result<FlipReport, DelaunayError> {
+        let mut gluing = CoverGluing {
+            frozen: &self.frozen,
+            mirror: &mut self.mirror,
+        };
+        let (mut report, _) = flip_glued(&mut self.tri, options, false, &mut gluing)?
+            .expect("flipping without the needle test always finishes");
+        if !self.mirror.is_empty() {
+            // Each non-Delaunay edge of a doubled piece was counted on both lifts.
+            report.non_delaunay_edges = self
+                .tri
+                .mesh()
+                .edges()
+                .filter(|&e| self.is_surface_edge(e) && self.may_flip(e))
+                .filter(|&e| !self.tri.is_delaunay_edge(e, options.tolerance))
+                .count();
+        }
+        Ok(report)
+    }
+
+    /// The cotan weight `w_e` of every edge of D (by edge id): half the cotangent of each
+    /// opposite angle in a real triangle; 0 on apex edges. A boundary edge gets its one
+    /// half-cotangent (the natural boundary condition).
+    pub fn cotan_weights(&self) -> Vec<f64> {
+        let mesh = self.tri.mesh();
+        let mut w = vec![0.0; mesh.edge_slots()];
+        for f in mesh.faces().filter(|&f| self.is_real_face(f)) {
+            for h in mesh.face_halfedges(f) {
+                w[h.edge().idx()] += 0.5 * self.tri.cot_opposite(h);
+            }
+        }
+        w
+    }
+
+    /// The cotan Laplacian of K (positive semidefinite, as [`crate::cotan_laplacian`]): one row
+    /// per vertex of K, each edge of K once (a mirror pair is one edge).
+    pub fn laplacian(&self) -> SparseMatrix {
+        let weights = self.cotan_weights();
+        let mesh = self.tri.mesh();
+        let class = &self.class;
+        let edges: Vec<EdgeId> = self.surface_edges().collect();
+        assemble_laplacian(self.surface_vertices, || {
+            edges.iter().map(|&e| {
+                let [a, b] = mesh.edge_vertices(e).map(|v| class[v.idx()] as usize);
+                (a, b, weights[e.idx()])
+            })
+        })
+    }
+
+    /// The lumped (barycentric) mass matrix of K: a third of each triangle's area per corner.
+    pub fn mass(&self) -> SparseMatrix {
+        let mesh = self.tri.mesh();
+        let mut mass = vec![0.0; self.surface_vertices];
+        for f in self.surface_faces() {
+            let [a, b, c] = self.tri.face_sides(f);
+            let third = trig::area(a, b, c) / 3.0;
+            for v in mesh.face_vertices(f) {
+                mass[self.class[v.idx()] as usize] += third;
+            }
+        }
+        SparseMatrix::diagonal(mass)
+    }
+}
+
+impl CoveredTriangulation {
+    /// The figures of a run that made `report` in `seconds`: the surface's own vertices, edges,
+    /// faces, loops and multi-edges (not the cover's).
+    pub fn stats(&self, report: &FlipReport, seconds: f64) -> DelaunayStats {
+        let mesh = self.tri.mesh();
+        let pairs: Vec<(u32, u32)> = self
+            .surface_edges()
+            .map(|e| {
+                let [a, b] = mesh.edge_vertices(e).map(|v| self.class(v));
+                (a.min(b), a.max(b))
+            })
+            .collect();
+        let faces = self.surface_faces().count();
+        let counts = [self.surface_vertex_count(), pairs.len(), faces];
+        DelaunayStats::from_pairs(counts, pairs, report, seconds)
+    }
+}
+
+impl CoveredTriangulation {
+    /// The portalgon document of K: its triangles by lengths (in face id order, vertex labels
+    /// the surface's vertices, sides in the order of the first lift's half-edges), each interior
+    /// edge one pair, reversed (version 2) where the two sides run the same way on the surface —
+    /// where its other side lies on the mirror copy of a doubled piece; boundary edges are
+    /// unmatched sides.
+    pub fn to_doc(&self) -> PortalgonDoc {
+        let mesh = self.tri.mesh();
+        let faces: Vec<FaceId> = self.surface_faces().collect();
+        let mut rank = vec![u32::MAX; mesh.face_slots()];
+        for (k, &f) in faces.iter().enumerate() {
+            rank[f.idx()] = k as u32;
+        }
+        let side = |h: HalfedgeId| {
+            let f = mesh.face(h);
+            let i = mesh.face_halfedges(f).iter().position(|&g| g == h);
+            [rank[f.idx()] as usize, i.expect("a half-edge of its face")]
+        };
+        let polygons = faces
+            .iter()
+            .map(|&f| PolygonDoc {
+                corners: None,
+                lengths: Some(self.tri.face_sides(f).map(Number::Double).to_vec()),
+                vertices: Some(mesh.face_vertices(f).map(|v| self.class(v)).to_vec()),
+            })
+            .collect();
+        let (mut matching, mut reversed) = (Vec::new(), Vec::new());
+        for &f in &faces {
+            for h in mesh.face_halfedges(f) {
+                let t = h.twin();
+                if !self.is_real_face(mesh.face(t)) {
+                    continue;
+                }
+                // The other side on the surface: t itself, or its mirror (same direction as h).
+                let (other, flip) = if rank[mesh.face(t).idx()] != u32::MAX {
+                    (t, false)
+                } else {
+                    (self.mirror(t).expect("a mirror copy has a mirror"), true)
+                };
+                let (a, b) = (side(h), side(other));
+                if a < b {
+                    matching.push([a, b]);
+                    reversed.push(flip);
+                }
+            }
+        }
+        if !reversed.contains(&true) {
+            reversed.clear();
+        }
+        PortalgonDoc {
+            format: FORMAT_NAME.to_string(),
+            version: ORIENTED_VERSION,
+            comment: None,
+            polygons,
+            matching,
+            reversed,
+        }
+    }
+}
+
+/// The flip rules of a cover (see the module doc).
+struct CoverGluing<'a> {
+    frozen: &'a [bool],
+    mirror: &'a mut Vec<HalfedgeId>,
+}
+
+impl CoverGluing<'_> {
+    fn may_flip_in(frozen: &[bool], mirror: &[HalfedgeId], mesh: &SurfaceMesh, e: EdgeId) -> bool {
+        if frozen[e.idx()] {
+            return false;
+        }
+        let h = e.halfedge();
+        match mirror.get(h.idx()) {
+            Some(m) if m.is_valid() => mesh.face(h.twin()) != mesh.face(*m),
+            _ => true,
+        }
+    }
+}
+
+impl Gluing for CoverGluing<'_> {
+    fn may_flip(&self, mesh: &SurfaceMesh, e: EdgeId) -> bool {
+        Self::may_flip_in(self.frozen, self.mirror, mesh, e)
+    }
+
+    /// The mirror edge, seen from `twin(mirror(h))`: it runs between the mirror lifts of h's
+    /// ends with the mirror of h's left face on its left.
+    fn partner(&self, h: HalfedgeId) -> Option<HalfedgeId> {
+        let m = *self.mirror.get(h.idx())?;
+        m.is_valid().then(|| m.twin())
+    }
+
+    /// Repairs the mirrors of the two flipped edges. The mirror copy of a face runs the other
+    /// way, so `next(mirror(x)) = mirror(prev(x))`; after the flips `prev(next(h)) = h` and the
+    /// sides keep their ids and mirrors, hence `mirror(h) = next(mirror(next(h)))`.
+    fn flipped(&mut self, mesh: &SurfaceMesh, h: HalfedgeId, p: HalfedgeId) {
+        for g in [h, h.twin()] {
+            let m = mesh.next(self.mirror[mesh.next(g).idx()]);
+            debug_assert_eq!(m.edge(), p.edge());
+            self.mirror[g.idx()] = m;
+            self.mirror[m.idx()] = g;
+        }
+    }
+}
