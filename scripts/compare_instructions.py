@@ -5,8 +5,9 @@ the ratio new/base per command and input, and the median ratio per command.
 
     scripts/compare_instructions.py BASE_BIN NEW_BIN MESH... [--commands info,irreducible,...]
 
-Commands: info, irreducible (rs), schipper, brute-force, quad (ks), delaunay (flip, with the
-Laplacian and mass matrix). Each output goes to a temporary folder; the whole process is counted
+Commands: info, irreducible (rs), schipper, brute-force, quad (ks), quad-sg, quad-ps, quad-lrs,
+quad-ds (`--algorithm`), quad-quality, quad-quality-fast (`--objective`), delaunay (flip, with
+the Laplacian and mass matrix). Each output goes to a temporary folder; the whole process is counted
 (reading, building, the algorithm, writing).
 """
 
@@ -27,6 +28,10 @@ COMMANDS = {
     "brute-force": lambda m, o: ["irreducible", m, "-o", f"{o}/i.obj", "--algorithm",
                                  "brute-force"],
     "quad": lambda m, o: ["quad", m, "-o", f"{o}/q.obj"],
+    **{f"quad-{a}": (lambda a: lambda m, o: ["quad", m, "-o", f"{o}/q.obj", "--algorithm", a])(a)
+       for a in ("sg", "ps", "lrs", "ds")},
+    **{f"quad-{q}": (lambda q: lambda m, o: ["quad", m, "-o", f"{o}/q.obj", "--objective", q])(q)
+       for q in ("quality", "quality-fast")},
     "delaunay": lambda m, o: ["delaunay", m, "-o", f"{o}/d.json", "--laplacian", f"{o}/L.mtx",
                               "--mass", f"{o}/M.mtx"],
 }

@@ -124,12 +124,6 @@ impl MeshJobArgs {
         crate::output::check_outputs(&[("-o", self.output.as_path(), kind)])
     }
 
-    /// Reads and validates the input surface (welded with `--weld`): closed, connected and
-    /// orientable.
-    pub fn read(&self) -> anyhow::Result<crate::input::Loaded> {
-        crate::input::read_surface(&self.mesh, self.weld.weld)
-    }
-
     /// Reads and validates the input surface of any kind (welded with `--weld`).
     pub fn read_covered(&self) -> anyhow::Result<crate::input::LoadedCovered> {
         crate::input::read_covered(&self.mesh, self.weld.weld)

@@ -194,7 +194,7 @@ fn polygon_meshes_are_cut_and_a_quad_mesh_is_its_own_quad_mesh() {
 }
 
 #[test]
-fn a_triangle_soup_is_refused_with_the_weld_hint() {
+fn a_triangle_soup_gets_the_weld_hint() {
     let dir = tempfile::tempdir().unwrap();
     let mut soup = String::new();
     for f in TETRA_FACES {
@@ -207,22 +207,34 @@ fn a_triangle_soup_is_refused_with_the_weld_hint() {
         soup += &format!("f {} {} {}\n", 3 * k + 1, 3 * k + 2, 3 * k + 3);
     }
     let path = write(dir.path(), "soup.obj", &soup);
+    let hint = "`--weld` would merge 8 vertices into others at the same position, making one \
+                closed surface (sphere)";
+    // `isometric` takes closed surfaces only: refused, with the hint.
     let run = surftopo()
-        .arg("quad")
+        .arg("isometric")
         .arg(&path)
-        .arg("-o")
-        .arg(dir.path().join("q.obj"))
+        .arg(&path)
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(2), "{stderr}");
-    assert!(
-        stderr.contains(
-            "`--weld` would merge 8 vertices into others at the same position, making one \
-             closed surface (sphere)"
-        ),
-        "{stderr}"
-    );
+    assert!(stderr.contains(hint), "{stderr}");
+    // `quad` and `delaunay` take several pieces (four lone triangles), with the hint as a note.
+    for (command, output) in [("quad", "q.obj"), ("delaunay", "d.json")] {
+        let run = surftopo()
+            .arg(command)
+            .arg(&path)
+            .arg("-o")
+            .arg(dir.path().join(output))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(0), "{command}: {stderr}");
+        assert!(
+            stderr.contains("note: ") && stderr.contains(hint),
+            "{command}: {stderr}"
+        );
+    }
     let out = surftopo()
         .args(["info", "--json"])
         .arg(&path)

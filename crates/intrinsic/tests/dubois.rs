@@ -320,10 +320,9 @@ fn faithful_and_default_give_identical_results() {
             faithful.report.inner_passes_bound
         );
         assert!(fast.report.inner_passes_total < faithful.report.inner_passes_total);
-        assert_eq!(
-            fast.report.vertices_deleted,
-            faithful.report.vertices_deleted
-        );
+        // Fewer when the outer iterations repeat (the periodic exit, docs/dubois.md §3.2).
+        assert!(fast.report.vertices_deleted <= faithful.report.vertices_deleted);
+        assert!(fast.report.inner_passes.len() <= faithful.report.inner_passes.len());
     }
 }
 

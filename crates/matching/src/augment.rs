@@ -189,10 +189,171 @@ pub fn augment_to_perfect<G: DualGraph + ?Sized>(
     if !nodes.is_multiple_of(2) {
         return Err(AugmentError::OddNodeCount { nodes });
     }
-    if unmatched.len() * MATERIALISE_FRACTION >= nodes {
-        augment_on(&CompactDual::new(graph), pairing, unmatched, strategy)
+    let done = if unmatched.len() * MATERIALISE_FRACTION >= nodes {
+        augment_on(
+            &CompactDual::new(graph),
+            pairing,
+            unmatched,
+            strategy,
+            Goal::Perfect,
+        )
     } else {
-        augment_on(graph, pairing, unmatched, strategy)
+        augment_on(graph, pairing, unmatched, strategy, Goal::Perfect)
+    };
+    done.map(|(stats, _, _)| stats)
+}
+
+/// Augments `pairing` along augmenting paths until none is left: a maximum matching of any
+/// [`DualGraph`] (a surface with boundary may have no perfect one). Returns the figures and the
+/// proof of maximality, the Tutte–Berge barrier of the last search ([`barrier`]).
+///
+/// The strategies are [`augment_to_perfect`]'s; a search that finds no augmenting path leaves
+/// its roots unmatched instead of failing (a pass of [`AugmentStrategy::Forest`] or
+/// [`AugmentStrategy::Global`] without an augmentation ends the run; a complete single-root
+/// search of [`AugmentStrategy::Local`] drops its root). Complexity: as
+/// [`augment_to_perfect`], plus the barrier's search from the roots left (O(n α(n))).
+///
+/// # Errors
+/// [`AugmentError::BadPairing`] when the pairing does not fit the graph (nothing is changed).
+pub fn augment_to_maximum<G: DualGraph + ?Sized>(
+    graph: &G,
+    pairing: &mut Pairing,
+    strategy: AugmentStrategy,
+) -> Result<(AugmentStats, Vec<u32>), AugmentError> {
+    if pairing.mate.len() != graph.node_slots() {
+        return Err(AugmentError::BadPairing(format!(
+            "{} mates for {} node slots",
+            pairing.mate.len(),
+            graph.node_slots()
+        )));
+    }
+    let unmatched = pairing.unmatched_nodes(graph);
+    if unmatched.is_empty() {
+        mates_of(graph, pairing)?;
+        return Ok((AugmentStats::default(), Vec::new()));
+    }
+    let (stats, mates, barrier) = if unmatched.len() * MATERIALISE_FRACTION >= graph.node_count() {
+        maximum_on(&CompactDual::new(graph), pairing, unmatched, strategy)?
+    } else {
+        maximum_on(graph, pairing, unmatched, strategy)?
+    };
+    for (m, [e, _]) in pairing.mate.iter_mut().zip(&mates) {
+        *m = *e;
+    }
+    Ok((stats, barrier))
+}
+
+/// [`augment_on`] to a maximum, then the barrier.
+#[allow(clippy::type_complexity)]
+fn maximum_on<G: DualGraph + ?Sized>(
+    graph: &G,
+    pairing: &mut Pairing,
+    pending: Vec<u32>,
+    strategy: AugmentStrategy,
+) -> Result<(AugmentStats, Vec<[u32; 2]>, Vec<u32>), AugmentError> {
+    let (mut stats, mut mates, mut search) =
+        augment_on(graph, pairing, pending, strategy, Goal::Maximum)?;
+    let barrier = barrier(graph, &mut mates, &mut search, &mut stats);
+    Ok((stats, mates, barrier))
+}
+
+/// Moves the unmatched nodes of a maximum matching to nodes where `prefer` holds, along even
+/// alternating paths, and returns the nodes so reached, now unmatched instead of their trees'
+/// roots. The barrier's search (see [`augment_to_maximum`]) grows one alternating tree from each
+/// unmatched node; every even node of a tree can be left unmatched instead of its root by
+/// flipping the even path between them (Tarjan's `path`, through blossoms), which keeps the
+/// matching's size. In each tree that holds an even node where `prefer` holds, the first such
+/// node in breadth-first order is chosen (the root itself when it qualifies). The trees are
+/// disjoint, so the paths of different trees are flipped independently. Augments first if the
+/// matching is not maximum. O(n α(n)).
+///
+/// # Errors
+/// [`AugmentError::BadPairing`] when the pairing does not fit the graph (nothing is changed).
+pub fn shift_unmatched<G: DualGraph + ?Sized>(
+    graph: &G,
+    pairing: &mut Pairing,
+    prefer: impl Fn(u32) -> bool,
+) -> Result<Vec<u32>, AugmentError> {
+    if pairing.mate.len() != graph.node_slots() {
+        return Err(AugmentError::BadPairing(format!(
+            "{} mates for {} node slots",
+            pairing.mate.len(),
+            graph.node_slots()
+        )));
+    }
+    let mut mates = mates_of(graph, pairing)?;
+    let mut search = Search::new(graph.node_slots());
+    let mut stats = AugmentStats::default();
+    let _ = barrier(graph, &mut mates, &mut search, &mut stats);
+    // The chosen node of each tree, in the order of the trees' first even nodes.
+    let mut chosen: Vec<(u32, u32)> = Vec::new();
+    let mut taken = vec![false; graph.node_slots()];
+    for &v in &search.queue {
+        if search.label(v) != EVEN || !prefer(v) {
+            continue;
+        }
+        let root = search.state[v as usize][ROOT];
+        if !std::mem::replace(&mut taken[root as usize], true) {
+            chosen.push((v, root));
+        }
+    }
+    for &(v, root) in &chosen {
+        if v == root {
+            continue;
+        }
+        search.path.clear();
+        search.collect(graph, &mates, v, root);
+        for &[f, a, b] in &search.path {
+            mates[a as usize] = [f, b];
+            mates[b as usize] = [f, a];
+        }
+        mates[v as usize] = [NONE, NONE];
+    }
+    for (m, [e, _]) in pairing.mate.iter_mut().zip(&mates) {
+        *m = *e;
+    }
+    Ok(chosen.into_iter().map(|(v, _)| v).collect())
+}
+
+/// The Tutte–Berge barrier of a maximum matching `mates`: one search from all unmatched nodes at
+/// once (augmenting along any path it still finds, and searching again), whose odd nodes are the
+/// barrier A, in increasing order. With no augmenting path left, every even node lies in a
+/// blossom (a single node, or an odd set shrunk together) all of whose neighbours are odd or in
+/// the same blossom, and the unreached nodes are matched among themselves; so the components of
+/// the graph without A are the outer blossoms (odd: one per tree, plus one per odd node of the
+/// tree, the blossom whose base is its mate) and sets of unreached nodes (even), and
+/// `odd(G − A) − |A|` is the number of trees, the unmatched nodes: by Tutte and Berge no matching
+/// leaves fewer. This is the Gallai–Edmonds set A(G). Empty when nothing is unmatched.
+/// O(n α(n)) per search (one, when `mates` is maximum).
+pub(crate) fn barrier<G: DualGraph + ?Sized>(
+    graph: &G,
+    mates: &mut [[u32; 2]],
+    search: &mut Search,
+    stats: &mut AugmentStats,
+) -> Vec<u32> {
+    loop {
+        let roots: Vec<u32> = (0..graph.node_slots() as u32)
+            .filter(|&v| graph.is_node(v) && mates[v as usize][0] == NONE)
+            .collect();
+        if roots.is_empty() {
+            return Vec::new();
+        }
+        stats.searches += 1;
+        let outcome = search.run(
+            graph,
+            mates,
+            &roots,
+            usize::MAX,
+            OnPath::Stop,
+            stats,
+            |_| true,
+        );
+        stats.reached += search.reached as u64;
+        if outcome == Outcome::Exhausted {
+            return (0..graph.node_slots() as u32)
+                .filter(|&v| search.label(v) == ODD)
+                .collect();
+        }
     }
 }
 
@@ -226,12 +387,21 @@ fn mates_of<G: DualGraph + ?Sized>(
     Ok(mates)
 }
 
+/// What the augmentation aims at: a perfect matching (a search without an augmenting path is an
+/// error), or a maximum one (such a search leaves its roots unmatched).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Goal {
+    Perfect,
+    Maximum,
+}
+
 fn augment_on<G: DualGraph + ?Sized>(
     graph: &G,
     pairing: &mut Pairing,
     pending: Vec<u32>,
     strategy: AugmentStrategy,
-) -> Result<AugmentStats, AugmentError> {
+    goal: Goal,
+) -> Result<(AugmentStats, Vec<[u32; 2]>, Search), AugmentError> {
     let mut mates = mates_of(graph, pairing)?;
     let mut stats = AugmentStats {
         unmatched_before: pending.len(),
@@ -245,6 +415,7 @@ fn augment_on<G: DualGraph + ?Sized>(
             &mut search,
             pending,
             OnPath::Stop,
+            goal,
             &mut stats,
         ),
         AugmentStrategy::Forest => forest(
@@ -253,6 +424,7 @@ fn augment_on<G: DualGraph + ?Sized>(
             &mut search,
             pending,
             OnPath::Wall,
+            goal,
             &mut stats,
         ),
         AugmentStrategy::Local { initial_budget } => local(
@@ -261,36 +433,43 @@ fn augment_on<G: DualGraph + ?Sized>(
             &mut search,
             pending,
             initial_budget,
+            goal,
             &mut stats,
         ),
     };
     for (m, [e, _]) in pairing.mate.iter_mut().zip(&mates) {
         *m = *e;
     }
-    result.map(|()| stats)
+    result.map(|()| (stats, mates, search))
 }
 
 /// Completes `mates` by the Forest strategy from the unmatched nodes `pending`, reusing `search`
 /// (for callers that already hold the mates and the search state, like [`crate::karp_sipser`]).
+/// With [`Goal::Maximum`], the roots left when a pass finds no augmenting path stay unmatched.
 pub(crate) fn complete<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
     search: &mut Search,
     pending: Vec<u32>,
+    goal: Goal,
     stats: &mut AugmentStats,
 ) -> Result<(), AugmentError> {
     stats.unmatched_before += pending.len();
-    forest(graph, mates, search, pending, OnPath::Reopen, stats)
+    forest(graph, mates, search, pending, OnPath::Reopen, goal, stats)
 }
 
 /// Passes of forest searches from the unmatched nodes until none is left: Global (`OnPath::Stop`,
 /// one augmentation per forest), Forest (`OnPath::Wall`) or the KS completion (`OnPath::Reopen`).
+/// A pass without an augmentation retired no tree, so it was a complete search from all the
+/// roots: none has an augmenting path (Edmonds), an error for [`Goal::Perfect`], the end for
+/// [`Goal::Maximum`] (the matching is maximum, by Berge's theorem).
 fn forest<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
     search: &mut Search,
     mut pending: Vec<u32>,
     on_path: OnPath,
+    goal: Goal,
     stats: &mut AugmentStats,
 ) -> Result<(), AugmentError> {
     while !pending.is_empty() {
@@ -299,6 +478,9 @@ fn forest<G: DualGraph + ?Sized>(
         search.run(graph, mates, &pending, usize::MAX, on_path, stats, |_| true);
         stats.reached += search.reached as u64;
         if stats.augmentations == before {
+            if goal == Goal::Maximum {
+                return Ok(());
+            }
             return Err(no_path(pending[0], search, pending.len(), stats));
         }
         pending.retain(|&v| mates[v as usize][0] == NONE);
@@ -306,12 +488,16 @@ fn forest<G: DualGraph + ?Sized>(
     Ok(())
 }
 
+/// Single-root searches with growing budgets. A root whose complete search finds no augmenting
+/// path has none after later augmentations either (Edmonds' lemma: a node on no augmenting path
+/// stays so), so with [`Goal::Maximum`] it is left unmatched.
 fn local<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
     search: &mut Search,
     mut pending: Vec<u32>,
     initial_budget: u32,
+    goal: Goal,
     stats: &mut AugmentStats,
 ) -> Result<(), AugmentError> {
     let nodes = graph.node_count() as u64;
@@ -339,6 +525,7 @@ fn local<G: DualGraph + ?Sized>(
                     stats.abandoned += 1;
                     next.push(r);
                 }
+                Outcome::Exhausted if goal == Goal::Maximum => {}
                 Outcome::Exhausted => {
                     let left = pending[i..]
                         .iter()
@@ -800,6 +987,7 @@ mod tests {
                     &mut mates,
                     &mut search,
                     (0..n).collect(),
+                    Goal::Perfect,
                     &mut stats,
                 )
                 .unwrap();

@@ -35,10 +35,15 @@ pub mod generators;
 mod greedy;
 mod karp_sipser;
 mod pulli_segal;
+mod surface_dual;
 mod verify;
+mod verify_maximum;
 pub mod weighted;
 
-pub use augment::{AugmentError, AugmentStats, AugmentStrategy, augment_to_perfect};
+pub use augment::{
+    AugmentError, AugmentStats, AugmentStrategy, augment_to_maximum, augment_to_perfect,
+    shift_unmatched,
+};
 pub use cubic_graph::{CubicGraph, GraphError};
 pub use diks_stanczyk::{DsStats, diks_stanczyk, diks_stanczyk_avoiding, diks_stanczyk_with_stats};
 pub use dual_graph::{
@@ -47,14 +52,18 @@ pub use dual_graph::{
 pub use dynamic_connectivity::{DynamicConnectivity, DynamicStats};
 pub use greedy::simple_greedy;
 pub use karp_sipser::{
-    KarpSipserOptions, KarpSipserStats, karp_sipser_perfect, karp_sipser_perfect_with,
+    KarpSipserOptions, KarpSipserStats, karp_sipser_maximum_with, karp_sipser_perfect,
+    karp_sipser_perfect_with,
 };
 pub use pulli_segal::pulli_segal;
+pub use surface_dual::{SurfaceDual, components_of};
 pub use verify::{
     MatchingError, PerfectPairing, verify_perfect_matching, verify_perfect_matching_edges,
     verify_perfect_matching_on, verify_perfect_pairing,
 };
+pub use verify_maximum::{ComponentPairing, MaximumPairing, verify_maximum_pairing};
 pub use weighted::{
-    Certificate, MinCostMatching, WeightedError, fast_min_cost_perfect_matching,
-    min_cost_perfect_matching, verify_min_cost_perfect_matching,
+    Certificate, MaximumCertificate, MinCostMatching, MinCostMaximumMatching, WeightedError,
+    fast_min_cost_maximum_matching, fast_min_cost_perfect_matching, min_cost_maximum_matching,
+    min_cost_perfect_matching, verify_min_cost_maximum_matching, verify_min_cost_perfect_matching,
 };

@@ -14,7 +14,8 @@ use crate::cubic_graph::CubicGraph;
 use crate::dual_graph::{DualGraph, NONE, Pairing};
 use thiserror::Error;
 
-/// Why a set of edges is not a perfect matching.
+/// Why a set of edges is not a perfect matching (or not a proven maximum one:
+/// [`crate::verify_maximum_pairing`]).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum MatchingError {
     /// The flag vector does not have one entry per edge (or the pairing one mate per node slot).
@@ -90,6 +91,28 @@ pub enum MatchingError {
         first: u32,
         /// The second one.
         second: u32,
+    },
+    /// A barrier node of a maximality certificate is not a live node, or is listed twice.
+    #[error("barrier node {node} is not a node of the graph, or is listed twice")]
+    BadBarrier {
+        /// The offending node.
+        node: u32,
+    },
+    /// The barrier does not prove the matching maximum in a connected component: it leaves more
+    /// nodes unmatched than `odd(C − A) − |A ∩ C|`.
+    #[error(
+        "component {component} (first node {first_node}): {unmatched} nodes unmatched, but the \
+         barrier only proves that at least {bound} must be"
+    )]
+    NotProvenMaximum {
+        /// The component (numbered in the order of its first node).
+        component: u32,
+        /// Its first node.
+        first_node: u32,
+        /// Its unmatched nodes.
+        unmatched: usize,
+        /// The barrier's bound `odd(C − A) − |A ∩ C|`.
+        bound: i64,
     },
 }
 

@@ -236,6 +236,7 @@ impl Failure {
                     return Failure::Irreducible(inner.clone()).class(d);
                 }
                 QuadError::Internal(_) => "InternalError",
+                QuadError::Unsupported(_) | QuadError::QualityTooLarge(_) => "InvalidInputError",
                 _ => "InvalidMeshError",
             },
             Failure::Geometry(e) => {

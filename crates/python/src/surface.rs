@@ -3,7 +3,7 @@
 //!
 //! Vertex indices in and out are the input's: a surface built from `(V, F)` drops unreferenced
 //! vertices (its vertex ids are the input indices without them, `surftopo_mesh::build`), so every
-//! index the libraries return is mapped back through [`Input::input_index`].
+//! index the libraries return is mapped back through [`input_index`].
 
 use crate::arrays::{self, VertexArray, index_array, positions_array, vector};
 use crate::errors::{Failure, invalid};
@@ -13,45 +13,16 @@ use std::path::PathBuf;
 use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox};
-use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, Surface, SurfaceKind, geometry};
+use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, SurfaceKind, geometry};
 use surftopo_quad::quality::QualityObjective;
-use surftopo_quad::{QuadAlgorithm, quadrangulate_by_quality, quadrangulate_with_quality};
-
-/// A surface built from arrays, with the input index of each vertex id.
-pub struct Input {
-    /// The validated surface (vertex ids: input indices without the unreferenced vertices).
-    pub surface: Surface,
-    /// Input index of each vertex id.
-    pub input_index: Vec<u32>,
-}
+use surftopo_quad::{
+    QuadAlgorithm, SurfaceOptions, positions_with_added, quadrangulate_surface_by_quality,
+    quadrangulate_surface_with_quality,
+};
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
 pub fn input_index(report: &BuildReport) -> Vec<u32> {
     report.input_vertices()
-}
-
-impl Input {
-    /// Builds and validates the surface of `positions` and `triangles`.
-    pub fn build(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
-        let (surface, report) = Surface::from_triangles_with_report(positions.to_vec(), triangles)?;
-        Ok(Self {
-            surface,
-            input_index: input_index(&report),
-        })
-    }
-}
-
-/// Reads `(V, F)` arrays into a validated surface, with the GIL released for the build.
-fn input_surface(
-    py: Python<'_>,
-    vertices: &Bound<'_, PyAny>,
-    faces: &Bound<'_, PyAny>,
-) -> PyResult<Input> {
-    let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
-    let positions = vertices.positions();
-    py.detach(|| Input::build(&positions, &triangles))
-        .map_err(|f| f.into_pyerr(py))
 }
 
 /// Picks `name` among `choices` (`(name, value)`), or an `InvalidInputError` naming them.
@@ -427,10 +398,14 @@ pub fn json_to_python<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, P
     py.import("json")?.call_method1("loads", (text,))
 }
 
-/// A quadrangulation of the surface `(V, F)` on the same vertices: a perfect pairing of its
-/// triangles.
+/// A quadrangulation of the surface `(V, F)` on the same vertices, any compact surface (boundary
+/// loops, non-orientable, several pieces): a maximum pairing of its triangles on every piece
+/// (perfect on closed pieces), as `surftopo quad`. Returns the quads and the CLI's `--json`
+/// figures, plus `triangles`, the triangles left unpaired (an `(t, 3)` array), and, for the
+/// vertices `all_quads` adds (numbered from `len(V)`), `added_positions` (`(a, 3)`, the
+/// midpoints of the boundary edges `added_edges`, `(a, 2)`).
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, algorithm = "ks", objective = "count", seed = 1))]
+#[pyo3(signature = (vertices, faces, algorithm = "ks", objective = "count", seed = 1, all_quads = false))]
 pub fn quadrangulate<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -438,6 +413,7 @@ pub fn quadrangulate<'py>(
     algorithm: &str,
     objective: &str,
     seed: u64,
+    all_quads: bool,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let algorithm = choose(
         "algorithm",
@@ -451,8 +427,8 @@ pub fn quadrangulate<'py>(
         ],
     )
     .map_err(|f| f.into_pyerr(py))?;
-    // `count`: any perfect pairing, by `algorithm`; `quality` / `quality-fast`: the pairing of
-    // least total cost 1 − η (Remacle et al.'s quality), exact or fast; `algorithm` unused.
+    // `count`: a maximum pairing by `algorithm`; `quality` / `quality-fast`: the maximum pairing
+    // of least total cost 1 − η (Remacle et al.'s quality), exact or fast; `algorithm` unused.
     let quality = choose(
         "objective",
         objective,
@@ -463,29 +439,53 @@ pub fn quadrangulate<'py>(
         ],
     )
     .map_err(|f| f.into_pyerr(py))?;
-    let input = input_surface(py, vertices, faces)?;
-    let (mesh, positions) = (&input.surface.mesh, &input.surface.positions);
-    let q = py
-        .detach(|| match quality {
-            None => quadrangulate_with_quality(mesh, positions, algorithm),
-            Some(quality) => quadrangulate_by_quality(mesh, positions, quality),
+    let vertices = VertexArray::extract(vertices)?;
+    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let positions = vertices.positions().into_owned();
+    let input_vertices = vertices.len() as u32;
+    let done = py
+        .detach(|| -> Result<_, Failure> {
+            let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
+            let pieces = &report.surfaces;
+            let q = match quality {
+                None => {
+                    let options = SurfaceOptions {
+                        all_quads,
+                        ..SurfaceOptions::default()
+                    };
+                    quadrangulate_surface_with_quality(&surface, pieces, algorithm, &options)
+                }
+                Some(quality) => {
+                    quadrangulate_surface_by_quality(&surface, pieces, quality, all_quads)
+                }
+            }
+            .map_err(Failure::Quad)?;
+            let added = positions_with_added(&surface.positions, &q.result)
+                [q.result.vertex_count..]
+                .to_vec();
+            Ok((q, input_index(&report), added))
         })
-        .map_err(|e| Failure::Quad(e).into_pyerr(py))?;
+        .map_err(|f| f.into_pyerr(py))?;
+    let (q, input_index, added_positions) = done;
     let result = &q.result;
-    let quads: Vec<[u32; 4]> = result
-        .quads
-        .iter()
-        .map(|q| q.map(|v| input.input_index[v.idx()]))
-        .collect();
+    // Surface vertex ids to the input's indices; added vertices after the input's.
+    let to_input = |v: u32| match input_index.get(v as usize) {
+        Some(&i) if (v as usize) < result.vertex_count => i,
+        _ => input_vertices + (v - result.vertex_count as u32),
+    };
+    let quads: Vec<[u32; 4]> = result.quads.iter().map(|q| q.map(to_input)).collect();
+    let left: Vec<[u32; 3]> = result.triangles.iter().map(|t| t.map(to_input)).collect();
+    let edges: Vec<[u32; 2]> = result.added.iter().map(|e| e.map(to_input)).collect();
     // The CLI's `quad --json` keys, in its order.
     let json = serde_json::to_string(&q.figures(objective));
-    let stats = json
+    let text = json
         .map_err(|e| Failure::Quad(surftopo_quad::QuadError::Internal(e.to_string())))
         .map_err(|f| f.into_pyerr(py))?;
-    Ok((
-        index_array(py, &quads).into_any(),
-        json_to_python(py, &stats)?,
-    ))
+    let stats = json_to_python(py, &text)?;
+    stats.set_item("triangles", index_array(py, &left))?;
+    stats.set_item("added_positions", positions_array(py, &added_positions))?;
+    stats.set_item("added_edges", index_array(py, &edges))?;
+    Ok((index_array(py, &quads).into_any(), stats))
 }
 
 /// The most triangles a generator makes (ids are `u32`; memory is the practical bound).

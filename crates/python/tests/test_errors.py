@@ -35,7 +35,6 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
     "call",
     [
         lambda V, F: surftopo.intrinsic_delaunay(V, F),
-        lambda V, F: surftopo.quadrangulate(V, F),
     ],
 )
 def test_every_function_names_the_boundary(call):

@@ -72,9 +72,12 @@ def test_quadrangulate(name, algorithm):
     assert list(stats) == [
         "algorithm", "faces", "initial_pairing_seconds", "paired_percent", "unpaired",
         "augmentation_seconds", "total_seconds", "flipped_edges", "file_order",
-        "subdivision_levels", "objective", "cost", "optimality_gap", "quality",
-        "bad_quads_percent", "median_max_angle_deviation",
+        "subdivision_levels", "unpaired_triangles", "deficiency_lower_bound", "added_vertices",
+        "objective", "cost", "optimality_gap", "quality", "bad_quads_percent",
+        "median_max_angle_deviation", "triangles", "added_positions", "added_edges",
     ]
+    assert stats["unpaired_triangles"] == stats["deficiency_lower_bound"] == 0
+    assert stats["triangles"].shape == (0, 3) and stats["added_positions"].shape == (0, 3)
     assert stats["objective"] == "count" and stats["optimality_gap"] is None
 
 

@@ -149,3 +149,110 @@ def quads_pair_triangles(Q: np.ndarray, F: np.ndarray) -> bool:
 
 def triangle_areas(V: np.ndarray, F: np.ndarray) -> np.ndarray:
     return 0.5 * np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]), axis=1)
+
+
+def dual_edges(F: np.ndarray) -> list[tuple[int, int]]:
+    """The pairs of triangles sharing an edge (the dual graph of a surface's triangles)."""
+    on_edge = defaultdict(list)
+    for f, face in enumerate(F.tolist()):
+        for i in range(3):
+            a, b = face[i], face[(i + 1) % 3]
+            on_edge[(min(a, b), max(a, b))].append(f)
+    return [(fs[0], fs[1]) for fs in on_edge.values() if len(fs) == 2]
+
+
+def maximum_matching_size(n: int, edges: list[tuple[int, int]]) -> int:
+    """The size of a maximum matching of a graph on nodes 0..n-1, by Edmonds' blossom algorithm
+    (the textbook version: a breadth-first alternating tree from each free node, odd cycles
+    contracted through their base; O(n^3), for test graphs)."""
+    adjacent = [[] for _ in range(n)]
+    for a, b in edges:
+        adjacent[a].append(b)
+        adjacent[b].append(a)
+    mate = [-1] * n
+
+    def augment_from(root):
+        parent = [-1] * n
+        base = list(range(n))
+        used = [False] * n
+        used[root] = True
+        queue = [root]
+
+        def lca(a, b):
+            seen = [False] * n
+            while True:
+                a = base[a]
+                seen[a] = True
+                if mate[a] == -1:
+                    break
+                a = parent[mate[a]]
+            while True:
+                b = base[b]
+                if seen[b]:
+                    return b
+                b = parent[mate[b]]
+
+        def mark(v, b, child, blossom):
+            while base[v] != b:
+                blossom[base[v]] = blossom[base[mate[v]]] = True
+                parent[v] = child
+                child = mate[v]
+                v = parent[mate[v]]
+
+        head = 0
+        while head < len(queue):
+            v = queue[head]
+            head += 1
+            for w in adjacent[v]:
+                if base[v] == base[w] or mate[v] == w:
+                    continue
+                if w == root or (mate[w] != -1 and parent[mate[w]] != -1):
+                    b = lca(v, w)
+                    blossom = [False] * n
+                    mark(v, b, w, blossom)
+                    mark(w, b, v, blossom)
+                    for u in range(n):
+                        if blossom[base[u]]:
+                            base[u] = b
+                            if not used[u]:
+                                used[u] = True
+                                queue.append(u)
+                elif parent[w] == -1:
+                    parent[w] = v
+                    if mate[w] == -1:
+                        while w != -1:
+                            pv = parent[w]
+                            ppv = mate[pv]
+                            mate[w], mate[pv] = pv, w
+                            w = ppv
+                        return True
+                    used[mate[w]] = True
+                    queue.append(mate[w])
+        return False
+
+    for v in range(n):
+        if mate[v] == -1:
+            augment_from(v)
+    return sum(1 for v in range(n) if mate[v] != -1) // 2
+
+
+def pairing_uses_triangles(Q: np.ndarray, T: np.ndarray, F: np.ndarray, n: int,
+                           added_edges: np.ndarray) -> bool:
+    """Every input triangle is a triangle left (a row of T), or half of one quad [a, d, b, c]
+    (the triangles (a, b, c) and (b, a, d) glued along the diagonal a-b), or split at an added
+    vertex w = corner 0 (numbered from n) of the quad [w, y, z, x], w the midpoint of the
+    boundary edge x-y of the input triangle (x, y, z). Corner orders are not checked here."""
+    want = Counter(tuple(sorted(t)) for t in F.tolist())
+    got: Counter = Counter()
+    for a, d, b, c in Q.tolist():
+        if a >= n:
+            x, y = added_edges[a - n].tolist()
+            if (d, c) != (y, x):
+                return False
+            got[tuple(sorted((x, y, b)))] += 1
+        else:
+            got[tuple(sorted((a, b, c)))] += 1
+            got[tuple(sorted((b, a, d)))] += 1
+    for t in T.tolist():
+        got[tuple(sorted(t))] += 1
+    return got == want

@@ -34,10 +34,12 @@ mod support;
 use std::error::Error;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::process::Command;
-use std::time::Instant;
 
-use support::{Results, export_dual, lemon_weighted, machine_note, thread_cpu_seconds, write_off};
+use support::peers::run_peer;
+use support::{
+    Results, Seconds, export_dual, lemon_weighted, machine_note, median, ratio_summary, ratios,
+    timed, write_off,
+};
 use surftopo_matching::weighted::{min_cost_perfect_matching, verify_min_cost_perfect_matching};
 use surftopo_mesh::Surface;
 use surftopo_mesh::generators::{genus_surface, icosphere, random_flips, random_vertex_splits};
@@ -127,9 +129,6 @@ fn make_input(spec: &str, seed: u64) -> Result<Surface, Box<dyn Error>> {
     })
 }
 
-/// Wall and CPU seconds of one run.
-type Seconds = (f64, f64);
-
 /// One tool's times over the rounds.
 #[derive(Clone, Debug, Default, serde::Serialize)]
 struct Times {
@@ -174,31 +173,6 @@ struct Record {
     gmsh_triangles_left: usize,
 }
 
-fn median(values: &[f64]) -> f64 {
-    let mut v = values.to_vec();
-    v.sort_by(f64::total_cmp);
-    match v.len() {
-        0 => f64::NAN,
-        n if n % 2 == 1 => v[n / 2],
-        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
-    }
-}
-
-/// Per-round ratios `a[i] / b[i]`.
-fn ratios(a: &[f64], b: &[f64]) -> Vec<f64> {
-    a.iter().zip(b).map(|(x, y)| x / y).collect()
-}
-
-/// `median (smallest–largest)` of per-round ratios, or `-`.
-fn ratio_summary(r: &[f64]) -> String {
-    if r.is_empty() {
-        return "-".into();
-    }
-    let lo = r.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = r.iter().copied().fold(0.0, f64::max);
-    format!("{:.2} ({lo:.2}–{hi:.2})", median(r))
-}
-
 /// Gmsh's Blossom recombination once (`quad_peers.py gmsh-blossom`): (wall, CPU) seconds, quads
 /// and triangles left; fails when the output does not keep the input's vertices.
 fn gmsh_round(
@@ -206,52 +180,16 @@ fn gmsh_round(
     input: &Path,
     vertices: usize,
 ) -> Result<(Seconds, usize, usize), Box<dyn Error>> {
-    let harness = Path::new(env!("CARGO_MANIFEST_DIR")).join("peer/quad_peers.py");
-    let output = input.with_extension("gmsh.off");
-    let run = Command::new(python)
-        .arg(&harness)
-        .arg("gmsh-blossom")
-        .arg(input)
-        .arg(&output)
-        .output()?;
-    if !run.status.success() {
-        return Err(format!("gmsh: {}", String::from_utf8_lossy(&run.stderr)).into());
-    }
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    let line = stdout
-        .lines()
-        .rfind(|l| l.starts_with('{'))
-        .ok_or("no timing line")?;
-    let v: serde_json::Value = serde_json::from_str(line)?;
-    let seconds = v["seconds"].as_f64().ok_or("no seconds")?;
-    let cpu = v["cpu_seconds"].as_f64().ok_or("no cpu_seconds")?;
-    let text = std::fs::read_to_string(&output)?;
-    std::fs::remove_file(&output)?;
-    let mut words = text.split_whitespace().skip(1);
-    let count = |w: Option<&str>| w.and_then(|w| w.parse::<usize>().ok()).ok_or("bad OFF");
-    let kept = count(words.next())?;
+    let output = run_peer(python, "gmsh-blossom", input)?;
+    let kept = output.positions.len();
     if kept != vertices {
         return Err(format!("gmsh: {kept} vertices out of {vertices}").into());
     }
-    let (mut quads, mut triangles) = (0, 0);
-    for line in text.lines().skip(2 + vertices) {
-        match line.split_whitespace().next() {
-            Some("4") => quads += 1,
-            Some("3") => triangles += 1,
-            _ => {}
-        }
-    }
-    Ok(((seconds, cpu), quads, triangles))
-}
-
-/// (wall, this thread's CPU) seconds of `f`, and its result.
-fn timed<T>(f: impl FnOnce() -> T) -> (Seconds, T) {
-    let (start, cpu) = (Instant::now(), thread_cpu_seconds());
-    let out = f();
-    (
-        (start.elapsed().as_secs_f64(), thread_cpu_seconds() - cpu),
-        out,
-    )
+    Ok((
+        (output.seconds, output.cpu_seconds),
+        output.quads().len(),
+        output.triangles_left(),
+    ))
 }
 
 fn measure(name: &str, surface: &Surface, args: &Args) -> Result<Record, Box<dyn Error>> {

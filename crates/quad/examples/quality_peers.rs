@@ -18,9 +18,9 @@ mod support;
 use std::error::Error;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::Instant;
 
+use support::peers::{peer_version, run_peer};
 use support::{Results, thread_cpu_seconds, write_off};
 use surftopo_mesh::Surface;
 use surftopo_quad::quality::space_quality_report;
@@ -38,72 +38,9 @@ struct Row {
     cpu_seconds: f64,
 }
 
-/// The vertices and faces of an OFF file written by the harness.
-type Polygons = (Vec<[f64; 3]>, Vec<Vec<usize>>);
-
-fn read_off(path: &Path) -> Result<Polygons, Box<dyn Error>> {
-    let text = std::fs::read_to_string(path)?;
-    let mut words = text.split_whitespace();
-    if words.next() != Some("OFF") {
-        return Err(format!("{}: not OFF", path.display()).into());
-    }
-    let vertices: usize = words.next().ok_or("no vertex count")?.parse()?;
-    let faces: usize = words.next().ok_or("no face count")?.parse()?;
-    words.next();
-    let mut positions = Vec::with_capacity(vertices);
-    for _ in 0..vertices {
-        let mut p = [0.0; 3];
-        for c in &mut p {
-            *c = words.next().ok_or("truncated vertex")?.parse()?;
-        }
-        positions.push(p);
-    }
-    let mut out = Vec::with_capacity(faces);
-    for _ in 0..faces {
-        let k: usize = words.next().ok_or("truncated face")?.parse()?;
-        let face = (0..k)
-            .map(|_| Ok(words.next().ok_or("truncated face")?.parse::<usize>()?))
-            .collect::<Result<Vec<_>, Box<dyn Error>>>()?;
-        if face.iter().any(|&v| v >= vertices) {
-            return Err(format!("{}: face {face:?} out of range", path.display()).into());
-        }
-        out.push(face);
-    }
-    Ok((positions, out))
-}
-
 fn peer(python: &Path, tool: &'static str, input: &Path) -> Result<Row, Box<dyn Error>> {
-    let harness = Path::new(env!("CARGO_MANIFEST_DIR")).join("peer/quad_peers.py");
-    let output = input.with_extension(format!("{tool}.off"));
-    let run = Command::new(python)
-        .arg(&harness)
-        .arg(tool)
-        .arg(input)
-        .arg(&output)
-        .output()?;
-    if !run.status.success() {
-        return Err(format!("{tool}: {}", String::from_utf8_lossy(&run.stderr)).into());
-    }
-    let stdout = String::from_utf8_lossy(&run.stdout);
-    let line = stdout
-        .lines()
-        .rfind(|l| l.starts_with("{\"seconds\""))
-        .ok_or("no timing line")?;
-    let field = |key: &str| -> Result<f64, Box<dyn Error>> {
-        let rest = line.split(key).nth(1).ok_or("no timing field")?;
-        let number = rest.trim_start_matches(['"', ':', ' ']);
-        let end = number.find([',', '}']).ok_or("bad timing line")?;
-        Ok(number[..end].trim().parse()?)
-    };
-    let (seconds, cpu_seconds) = (field("\"seconds\"")?, field("\"cpu_seconds\"")?);
-    let (positions, faces) = read_off(&output)?;
-    let quads: Vec<[usize; 4]> = faces
-        .iter()
-        .filter(|f| f.len() == 4)
-        .map(|f| [f[0], f[1], f[2], f[3]])
-        .collect();
-    let triangles_left = faces.iter().filter(|f| f.len() == 3).count();
-    std::fs::remove_file(&output)?;
+    let output = run_peer(python, tool, input)?;
+    let quads = output.quads();
     Ok(Row {
         tool: if tool == "gmsh" {
             "Gmsh Blossom recombination"
@@ -111,10 +48,10 @@ fn peer(python: &Path, tool: &'static str, input: &Path) -> Result<Row, Box<dyn 
             "Blender join_triangles"
         },
         quads: quads.len(),
-        triangles_left,
-        report: space_quality_report(&positions, &quads),
-        seconds,
-        cpu_seconds,
+        triangles_left: output.triangles_left(),
+        report: space_quality_report(&output.positions, &quads),
+        seconds: output.seconds,
+        cpu_seconds: output.cpu_seconds,
     })
 }
 
@@ -230,14 +167,4 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     md.push_str(&table);
     results.write_markdown(&md)
-}
-
-fn peer_version(python: &Path, module: &str, expr: &str) -> String {
-    Command::new(python)
-        .arg("-c")
-        .arg(format!("import {module}; print({expr})"))
-        .output()
-        .ok()
-        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
-        .unwrap_or_else(|| "?".into())
 }

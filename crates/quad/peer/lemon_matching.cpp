@@ -1,17 +1,22 @@
 // Peer benchmark: LEMON's MaxMatching (Edmonds' blossom algorithm, LEMON 1.3) on a dual graph
-// exported by `cargo run --release -p surftopo-quad --example quad_tables -- --lemon ...`, or
-// (`--weighted`) LEMON's MaxWeightedPerfectMatching on a dual graph with integer edge weights
-// exported by `... --example quality_tables -- --lemon ...`.
+// exported by `cargo run --release -p surftopo-quad --example quad_tables -- --lemon ...` (or
+// `--example open_peers`), or (`--weighted`) LEMON's MaxWeightedPerfectMatching on a dual graph
+// with integer edge weights exported by `... --example quality_tables -- --lemon ...`, or
+// (`--maximum-weighted`) LEMON's MaxWeightedMatching (a matching of greatest weight, of any
+// size) on a dual graph with integer weights exported by `... --example open_peers`, whose
+// weights `B - cost` with `B` above any matching's total cost make the heaviest matching a
+// maximum one of least cost.
 //
-// Usage: lemon_matching [--weighted] DUAL_GRAPH.bin [REPEAT]
+// Usage: lemon_matching [--weighted | --maximum-weighted] DUAL_GRAPH.bin [REPEAT]
 // Input (binary, little-endian): u32 node_count, u32 edge_count, then edge_count pairs of u32
-// node ids; with --weighted, then edge_count i64 weights. MaxMatching::run() (greedy
-// initialisation + augmentations), or MaxWeightedPerfectMatching::run() (fractional
-// initialisation + Edmonds' primal-dual steps, exact integer duals for an integer weight type),
-// is timed REPEAT times (default 1) on fresh objects. Output: one JSON line with the matching
-// size (and, weighted, whether it is perfect and its weight), the seconds to build the
-// SmartGraph, the minimum and median wall seconds of run(), the figure compared with surftopo's
-// time, and the mean thread CPU seconds of run() (robust to a loaded machine). Not part of CI.
+// node ids; with a weighted mode, then edge_count i64 weights. MaxMatching::run() (greedy
+// initialisation + augmentations), or MaxWeightedPerfectMatching::run() /
+// MaxWeightedMatching::run() (fractional initialisation + Edmonds' primal-dual steps, exact
+// integer duals for an integer weight type), is timed REPEAT times (default 1) on fresh objects.
+// Output: one JSON line with the matching size (and, weighted, whether it is perfect and its
+// weight), the seconds to build the SmartGraph, the minimum and median wall seconds of run(),
+// the figure compared with surftopo's time, and the mean thread CPU seconds of run() (robust to
+// a loaded machine). Not part of CI.
 #include <lemon/matching.h>
 #include <lemon/smart_graph.h>
 
@@ -25,13 +30,16 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-  const bool weighted = argc >= 2 && std::string(argv[1]) == "--weighted";
+  const bool perfect_weighted = argc >= 2 && std::string(argv[1]) == "--weighted";
+  const bool maximum_weighted = argc >= 2 && std::string(argv[1]) == "--maximum-weighted";
+  const bool weighted = perfect_weighted || maximum_weighted;
   if (weighted) {
     --argc;
     ++argv;
   }
   if (argc != 2 && argc != 3) {
-    std::fprintf(stderr, "usage: %s [--weighted] DUAL_GRAPH.bin [REPEAT]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--weighted | --maximum-weighted] DUAL_GRAPH.bin [REPEAT]\n",
+                 argv[0]);
     return 2;
   }
   const int repeat = argc == 3 ? std::max(1, std::atoi(argv[2])) : 1;
@@ -83,7 +91,31 @@ int main(int argc, char** argv) {
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
   };
-  if (weighted) {
+  if (maximum_weighted) {
+    lemon::SmartGraph::EdgeMap<long long> weight(graph);
+    for (std::uint32_t e = 0; e < m; ++e) weight[graph.edgeFromId(e)] = weights[e];
+    long long total = 0;
+    for (int r = 0; r < repeat; ++r) {
+      const double c0 = thread_cpu();
+      const auto s0 = Clock::now();
+      lemon::MaxWeightedMatching<lemon::SmartGraph, lemon::SmartGraph::EdgeMap<long long>>
+          matching(graph, weight);
+      matching.run();
+      const auto s1 = Clock::now();
+      cpu += thread_cpu() - c0;
+      runs.push_back(std::chrono::duration<double>(s1 - s0).count());
+      total = matching.matchingWeight();
+      size = matching.matchingSize();
+    }
+    std::sort(runs.begin(), runs.end());
+    std::printf("{\"nodes\":%u,\"edges\":%u,\"matching_size\":%d,\"matching_weight\":%lld,"
+                "\"build_seconds\":%.6f,\"run_seconds\":%.6f,\"median_run_seconds\":%.6f,"
+                "\"cpu_run_seconds\":%.6f,\"repeat\":%d}\n",
+                n, m, size, total, build, runs.front(), runs[runs.size() / 2], cpu / repeat,
+                repeat);
+    return 0;
+  }
+  if (perfect_weighted) {
     lemon::SmartGraph::EdgeMap<long long> weight(graph);
     for (std::uint32_t e = 0; e < m; ++e) weight[graph.edgeFromId(e)] = weights[e];
     bool perfect = false;

@@ -20,8 +20,10 @@
 
 mod error;
 mod lrs;
+mod lrs_surface;
 mod quadrangulate;
 pub mod quality;
+mod surface;
 
 pub use error::QuadError;
 pub use lrs::{Expansion, ExpansionCases, expand};
@@ -31,6 +33,11 @@ pub use quadrangulate::{
 pub use quality::{
     QuadFigures, QualityObjective, QualityQuads, QualityReport, QualitySummary, pair_costs,
     quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
+};
+pub use surface::{
+    AllQuads, ComponentQuads, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads, all_quads,
+    positions_with_added, quadrangulate_surface, quadrangulate_surface_by_quality,
+    quadrangulate_surface_with_quality, surface_pair_costs, surface_vertex_count,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

@@ -89,6 +89,45 @@ pub struct Expansion {
 /// [`QuadError::Internal`] when the history does not replay on `reduced` or a paper invariant is
 /// violated (a bug, or a history from another contraction order); the message names the record.
 pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion, QuadError> {
+    expand_guarded(reduced, history, &Unguarded)
+}
+
+/// What a step of the expansion may do: flip an edge, put an edge in M. Every step is allowed on
+/// a closed oriented triangulation ([`Unguarded`]); on the cover of a surface with boundary the
+/// boundary and cone edges are not ([`crate::lrs_surface`]).
+pub(crate) trait Guard {
+    /// Whether edge `e` of the mesh as split so far may be flipped.
+    fn may_flip(&self, mesh: &SurfaceMesh, e: EdgeId) -> bool;
+    /// Whether edge `e` of the mesh as split so far may pair its two triangles.
+    fn may_pair(&self, mesh: &SurfaceMesh, e: EdgeId) -> bool;
+}
+
+/// Every step allowed: the paper's expansion.
+pub(crate) struct Unguarded;
+
+impl Guard for Unguarded {
+    #[inline(always)]
+    fn may_flip(&self, _: &SurfaceMesh, _: EdgeId) -> bool {
+        true
+    }
+    #[inline(always)]
+    fn may_pair(&self, _: &SurfaceMesh, _: EdgeId) -> bool {
+        true
+    }
+}
+
+/// [`expand`] where `guard` may forbid a step: a step of Algorithm 3.1 that would flip or pair
+/// an edge the guard forbids is skipped as a whole (nothing flipped, nothing paired), but the
+/// unflip of Algorithm 3.2 (line 3), which only restores an edge the guard let flip. M stays a
+/// matching of K: a bare split moves the pair of a split edge onto the new triangle beside it and
+/// leaves the triangle across free, so every step's outcome is a matching of the next K with or
+/// without its own pair (Claim 3.1 (ii) needs no more than that). The triangles of a skipped
+/// step stay unpaired (the caller augments).
+pub(crate) fn expand_guarded<G: Guard>(
+    reduced: SurfaceMesh,
+    history: &[Contraction],
+    guard: &G,
+) -> Result<Expansion, QuadError> {
     let mut mesh = reduced;
     let slots = mesh.edge_slots();
     let mut in_m = vec![false; slots];
@@ -129,7 +168,9 @@ pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion
         mesh.split_vertex(record);
         let (x_matched, y_matched) = (in_m[ux.idx()], in_m[uy.idx()]);
         if !x_matched && !y_matched {
-            in_m[uv.idx()] = true; // line 7
+            if guard.may_pair(&mesh, uv) {
+                in_m[uv.idx()] = true; // line 7
+            }
             cases.neither_split_edge_matched += 1;
             continue;
         }
@@ -141,7 +182,9 @@ pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion
             return Err(fail("split faces are not [u, v, x] and [v, u, y]"));
         }
         let degree = mesh.degree(v);
-        let mut greater_than_4 = false;
+        // The flips and the pair of the branch taken, made only when the guard allows them all.
+        let mut flips: [Option<EdgeId>; 2] = [None, None];
+        let pair;
         if degree == 3 {
             // Algorithm 3.2: faces [u, v, x], [x, v, y], [v, u, y].
             let y_to_x = mesh.prev(to_x.twin());
@@ -153,15 +196,17 @@ pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion
                 toggle(xy, &mut flipped);
                 cases.degree3_unflips += 1;
             }
-            let inserted = match (x_matched, y_matched) {
+            pair = match (x_matched, y_matched) {
                 (true, true) => xy,
                 (true, false) => vy,
                 _ => vx,
             };
-            in_m[inserted.idx()] = true;
             cases.degree3 += 1;
-        } else if degree == 4 {
-            // Faces [u, v, x], [x, v, z], [z, v, y], [v, u, y].
+        } else if degree == 4
+            && !flipped[mesh.prev(to_x.twin()).edge().idx()]
+            && !flipped[mesh.next(from_y.twin()).edge().idx()]
+        {
+            // Algorithm 3.3: faces [u, v, x], [x, v, z], [z, v, y], [v, u, y].
             let v_to_z = mesh.next(to_x.twin());
             let z = mesh.dest(v_to_z);
             let z_to_x = mesh.prev(to_x.twin());
@@ -171,37 +216,47 @@ pub fn expand(reduced: SurfaceMesh, history: &[Contraction]) -> Result<Expansion
                     "degree 4 but the faces at v are not [x, v, z], [z, v, y]",
                 ));
             }
-            if !flipped[z_to_x.edge().idx()] && !flipped[y_to_z.edge().idx()] {
-                // Algorithm 3.3.
-                match (x_matched, y_matched) {
-                    (true, true) => in_m[v_to_z.edge().idx()] = true,
-                    (true, false) => {
-                        toggle(vx, &mut flipped);
-                        in_m[uv.idx()] = true;
-                    }
-                    _ => {
-                        toggle(vy, &mut flipped);
-                        in_m[uv.idx()] = true;
-                    }
+            match (x_matched, y_matched) {
+                (true, true) => pair = v_to_z.edge(),
+                (true, false) => {
+                    flips[0] = Some(vx);
+                    pair = uv;
                 }
-                cases.degree4 += 1;
-            } else {
-                greater_than_4 = true;
-                cases.degree4_with_flipped_edge += 1;
+                _ => {
+                    flips[0] = Some(vy);
+                    pair = uv;
+                }
             }
+            cases.degree4 += 1;
         } else {
-            greater_than_4 = true;
-            cases.degree_above4 += 1;
-        }
-        if greater_than_4 {
-            // Algorithm 3.4.
+            // Algorithm 3.4 (degree above 4, or 4 with [x, z] or [y, z] flipped).
+            if degree == 4 {
+                let (z_to_x, y_to_z) = (mesh.prev(to_x.twin()), mesh.next(from_y.twin()));
+                let z = mesh.origin(z_to_x);
+                if ends(z_to_x) != (z, x) || ends(y_to_z) != (y, z) {
+                    return Err(fail(
+                        "degree 4 but the faces at v are not [x, v, z], [z, v, y]",
+                    ));
+                }
+                cases.degree4_with_flipped_edge += 1;
+            } else {
+                cases.degree_above4 += 1;
+            }
             if x_matched {
-                toggle(vx, &mut flipped);
+                flips[0] = Some(vx);
             }
             if y_matched {
-                toggle(vy, &mut flipped);
+                flips[1] = Some(vy);
             }
-            in_m[uv.idx()] = true;
+            pair = uv;
+        }
+        let allowed = guard.may_pair(&mesh, pair)
+            && flips.iter().flatten().all(|&e| guard.may_flip(&mesh, e));
+        if allowed {
+            for &e in flips.iter().flatten() {
+                toggle(e, &mut flipped);
+            }
+            in_m[pair.idx()] = true;
         }
     }
     for (i, &e) in operations.iter().enumerate() {

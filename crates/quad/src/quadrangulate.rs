@@ -137,6 +137,17 @@ pub struct QuadStats {
     /// triangles four by four as the children of coarser triangles, level after level); 0
     /// otherwise.
     pub subdivision_levels: u32,
+    /// Triangles left unpaired at the end (0 on closed surfaces, and with all quads).
+    pub unpaired_triangles: usize,
+    /// The fewest triangles any pairing leaves, by the verified Tutte–Berge certificate (summed
+    /// over the pieces).
+    pub deficiency_lower_bound: usize,
+    /// Vertices added on boundary edges for all quads.
+    pub added_vertices: usize,
+    /// The figures of every piece, when there are several (in the order of their first
+    /// triangle).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub components: Vec<crate::surface::ComponentQuads>,
 }
 
 /// A quadrangulation and how it was obtained.
@@ -226,6 +237,7 @@ pub fn quadrangulate_with(
         flipped_edges: paired.flipped_edges,
         file_order: paired.karp_sipser.is_some_and(|ks| ks.file_order),
         subdivision_levels: paired.karp_sipser.map_or(0, |ks| ks.subdivision_levels),
+        ..QuadStats::default()
     };
     Ok(QuadResult {
         quads,

@@ -60,17 +60,40 @@ fn angle(apex: Point3, p: Point3, q: Point3) -> f64 {
 pub fn quad_corner_angles(mesh: &SurfaceMesh, positions: &[Point3], e: EdgeId) -> [f64; 4] {
     let h: HalfedgeId = e.halfedge();
     let at = |v: VertexId| positions[v.idx()];
-    let (a, b) = (at(mesh.origin(h)), at(mesh.dest(h)));
-    let (c, d) = (
-        at(mesh.opposite_vertex(h)),
+    diagonal_quad_angles([
+        at(mesh.origin(h)),
         at(mesh.opposite_vertex(h.twin())),
-    );
+        at(mesh.dest(h)),
+        at(mesh.opposite_vertex(h)),
+    ])
+}
+
+/// The corner angles (radians) of the quad `[a, d, b, c]` made of the triangles `(a, b, c)` and
+/// `(b, a, d)` glued along its diagonal from corner 0 to corner 2, measured on the surface as the
+/// module doc says: at `a` and `b` the sums of the two triangles' angles, at `c` and `d` theirs.
+pub fn diagonal_quad_angles([a, d, b, c]: [Point3; 4]) -> [f64; 4] {
     [
         angle(a, b, c) + angle(a, d, b),
         angle(d, b, a),
         angle(b, c, a) + angle(b, a, d),
         angle(c, a, b),
     ]
+}
+
+/// The integer pairing cost `round((1 − η) · COST_RESOLUTION)` of a quad of these corner angles.
+pub fn cost_of_angles(angles: [f64; 4]) -> i64 {
+    (((1.0 - quality_of_angles(angles)) * COST_RESOLUTION).round() as i64).clamp(0, MAX_COST)
+}
+
+/// The quality report of quads given by their corners, each with its diagonal from corner 0 to
+/// corner 2 (as [`crate::SurfaceQuads::quads`]), corners measured on the surface
+/// ([`diagonal_quad_angles`]). All zero for no quads.
+pub fn diagonal_quality_report(positions: &[Point3], quads: &[[u32; 4]]) -> QualityReport {
+    report_of_corners(
+        quads
+            .iter()
+            .map(|q| diagonal_quad_angles(q.map(|v| positions[v as usize]))),
+    )
 }
 
 /// Remacle et al.'s quality `η` of a quad with these corner angles (radians); 0 if one is NaN.
@@ -109,8 +132,7 @@ pub fn pair_costs(mesh: &SurfaceMesh, positions: &[Point3]) -> Vec<i64> {
         if mesh.face(h) == mesh.face(h.twin()) {
             continue;
         }
-        let q = pair_quality(mesh, positions, e);
-        costs[e.idx()] = (((1.0 - q) * COST_RESOLUTION).round() as i64).clamp(0, MAX_COST);
+        costs[e.idx()] = cost_of_angles(quad_corner_angles(mesh, positions, e));
     }
     costs
 }

@@ -419,6 +419,9 @@ fn stats_serialise_with_the_table_columns() {
         "flipped_edges",
         "file_order",
         "subdivision_levels",
+        "unpaired_triangles",
+        "deficiency_lower_bound",
+        "added_vertices",
     ];
     let mut got = keys.clone();
     got.sort_unstable();
@@ -428,4 +431,6 @@ fn stats_serialise_with_the_table_columns() {
     assert_eq!(json["faces"], 60);
     assert_eq!(json["file_order"], false);
     assert_eq!(json["subdivision_levels"], 0);
+    // `components` is listed only for several pieces.
+    assert!(json.get("components").is_none());
 }

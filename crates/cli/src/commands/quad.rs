@@ -1,14 +1,15 @@
-//! `surftopo quad`: a quadrangulation with the same vertices, by a perfect pairing of triangles.
+//! `surftopo quad`: a quadrangulation with the same vertices, by a maximum pairing of triangles
+//! (perfect on closed surfaces), on any compact surface.
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
-use crate::input::Loaded;
+use crate::input::LoadedCovered;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::{FaceId, Surface};
+use surftopo_mesh::{CoveredSurface, FaceId, SurfaceKind};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, QualityQuads, quadrangulate_by_quality,
-    quadrangulate_with_quality,
+    QuadAlgorithm, QuadError, QuadResult, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads,
+    quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
 };
 
 /// The arguments of `quad`.
@@ -33,6 +34,10 @@ pub struct Args {
         ),
     )]
     pub objective: String,
+    /// On a surface with boundary, turn the triangles no pairing can pair into quads, each by one
+    /// vertex added at the midpoint of a boundary edge (the fewest such vertices).
+    #[arg(long)]
+    pub all_quads: bool,
 }
 
 /// The `--objective` of any perfect pairing by `--algorithm` (the others are
@@ -72,23 +77,85 @@ pub fn quad_soup(input: &PolygonSoup, input_vertices: &[u32], result: &QuadResul
     soup
 }
 
+/// The quadrangulation of a compact surface on the input's vertex list (same order, same
+/// positions and per-vertex attributes, unreferenced vertices kept), then the vertices added for
+/// all quads (midpoints of their boundary edges; per-vertex attributes: the mean of the edge's
+/// ends, rounded for integer columns); the quads, then the triangles left unpaired. Surface
+/// vertex ids are mapped back through `input_vertices`
+/// ([`surftopo_mesh::BuildReport::input_vertices`]).
+pub fn surface_quad_soup(
+    input: &PolygonSoup,
+    input_vertices: &[u32],
+    result: &SurfaceQuads,
+) -> PolygonSoup {
+    let mut soup = PolygonSoup::new();
+    let base = input.positions.len() as u32;
+    let index = |v: u32| {
+        if (v as usize) < result.vertex_count {
+            input_vertices[v as usize]
+        } else {
+            base + (v - result.vertex_count as u32)
+        }
+    };
+    let ends: Vec<[usize; 2]> = result
+        .added
+        .iter()
+        .map(|e| e.map(|v| index(v) as usize))
+        .collect();
+    soup.positions = input.positions.clone();
+    for &[a, b] in &ends {
+        let (p, q) = (input.positions[a], input.positions[b]);
+        soup.positions
+            .push(std::array::from_fn(|k| 0.5 * (p[k] + q[k])));
+    }
+    soup.attributes.vertex = input
+        .attributes
+        .vertex
+        .iter()
+        .map(|p| {
+            let mut values = p.values.clone();
+            for &[a, b] in &ends {
+                let mean = 0.5 * (p.values[a] + p.values[b]);
+                values.push(if p.scalar.is_int() {
+                    mean.round()
+                } else {
+                    mean
+                });
+            }
+            surftopo_io::VertexProperty {
+                name: p.name.clone(),
+                scalar: p.scalar,
+                values,
+            }
+        })
+        .collect();
+    for quad in &result.quads {
+        soup.push_face(&quad.map(index));
+    }
+    for triangle in &result.triangles {
+        soup.push_face(&triangle.map(index));
+    }
+    soup
+}
+
 /// The input's own quads when every face of it is a quad, each as listed or reversed as the
-/// surface's orientation made it (building reorients faces against the majority of their
-/// piece): the quad mesh of a quad mesh is itself.
-fn own_quads(loaded: &Loaded) -> Option<Vec<[u32; 4]>> {
+/// surface's cover orients it (building reorients faces against the majority of their piece):
+/// the quad mesh of a quad mesh is itself.
+fn own_quads(loaded: &LoadedCovered) -> Option<Vec<[u32; 4]>> {
     let soup = &loaded.soup;
     if soup.face_count() == 0 || soup.faces().any(|f| f.len() != 4) {
         return None;
     }
     let input_vertices = loaded.report.input_vertices();
-    let mesh = &loaded.surface.mesh;
+    let cover = &loaded.surface.cover;
     let quads = soup.faces().enumerate().map(|(k, f)| {
         let quad = [f[0], f[1], f[2], f[3]];
-        // The first of the quad's two triangles (face ids are the cut triangles' indices), as
-        // the mesh orients it: its corners run forward around the quad or backward.
-        let corners = mesh.face_vertices(FaceId(2 * k as u32)).map(|v| {
+        // The first of the quad's two triangles (surface face ids are the cut triangles'
+        // indices), as the cover orients it: its corners run forward around the quad or
+        // backward.
+        let corners = cover.mesh.face_vertices(FaceId(2 * k as u32)).map(|v| {
             quad.iter()
-                .position(|&q| q == input_vertices[v.idx()])
+                .position(|&q| q == input_vertices[cover.class(v) as usize])
                 .unwrap_or(0)
         });
         let steps: usize = (0..3)
@@ -103,31 +170,29 @@ fn own_quads(loaded: &Loaded) -> Option<Vec<[u32; 4]>> {
     Some(quads.collect())
 }
 
-/// The quads of `objective`, with their total cost, optimality gap (when known) and quality.
+/// The quads of `objective` on any compact surface, with their total cost, optimality gap (when
+/// known) and quality.
 fn pair(
-    surface: &Surface,
+    surface: &CoveredSurface,
+    pieces: &[SurfaceKind],
     algorithm: QuadAlgorithm,
     objective: Option<QualityObjective>,
-) -> anyhow::Result<QualityQuads> {
-    let quality = match objective {
+    all_quads: bool,
+) -> anyhow::Result<SurfaceQualityQuads> {
+    let done = match objective {
         None => {
-            let q = quadrangulate_with_quality(&surface.mesh, &surface.positions, algorithm)
-                .map_err(|e| match e {
-                    QuadError::Internal(_) => anyhow::Error::new(e),
-                    other => invalid(other.to_string()),
-                })?;
-            return Ok(q);
+            let options = SurfaceOptions {
+                all_quads,
+                ..SurfaceOptions::default()
+            };
+            quadrangulate_surface_with_quality(surface, pieces, algorithm, &options)
         }
-        Some(quality) => quality,
+        Some(quality) => quadrangulate_surface_by_quality(surface, pieces, quality, all_quads),
     };
-    let q =
-        quadrangulate_by_quality(&surface.mesh, &surface.positions, quality).map_err(
-            |e| match e {
-                QuadError::Internal(_) => anyhow::Error::new(e),
-                other => invalid(other.to_string()),
-            },
-        )?;
-    Ok(q)
+    done.map_err(|e| match e {
+        QuadError::Internal(_) => anyhow::Error::new(e),
+        other => invalid(other.to_string()),
+    })
 }
 
 /// Runs `quad`.
@@ -136,7 +201,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     args.job.check_output()?;
     let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
-    let loaded = args.job.read()?;
+    let loaded = args.job.read_covered()?;
     let own = own_quads(&loaded);
     let objective_name = if own.is_some() {
         COUNT
@@ -148,8 +213,15 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     } else {
         (algorithm, objective)
     };
+    let pieces = &loaded.report.surfaces;
     let paired = crate::progress::step("pairing triangles", || {
-        pair(&loaded.surface, algorithm, objective)
+        pair(
+            &loaded.surface,
+            pieces,
+            algorithm,
+            objective,
+            args.all_quads,
+        )
     })
     .map_err(|e| e.context(crate::input::name(input)))?;
     let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
@@ -174,7 +246,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         }
         None => None,
     };
-    let mut soup = quad_soup(&loaded.soup, &loaded.report.input_vertices(), result);
+    let mut soup = surface_quad_soup(&loaded.soup, &loaded.report.input_vertices(), result);
     if let Some(quads) = own {
         soup.face_indices.clear();
         soup.face_offsets.truncate(1);
@@ -198,8 +270,22 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         } else {
             String::new()
         };
+        // What a surface with boundary leaves (said only when it is not all quads).
+        let left = if stats.unpaired_triangles > 0 {
+            format!(
+                "; {} triangles left (no pairing leaves fewer)",
+                stats.unpaired_triangles
+            )
+        } else if stats.added_vertices > 0 {
+            format!(
+                "; {} vertices added on boundary edges (one per triangle no pairing could pair)",
+                stats.added_vertices
+            )
+        } else {
+            String::new()
+        };
         crate::output::emit(&format!(
-            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads\n",
+            "{}: {} quads from {} triangles ({}{how}): initial pairing {:.1}% in {}, {} unpaired, augmentation {}, total {}, {} flipped edges; cost {cost:.3}, quality median {:.3}, {:.2}% bad quads{left}\n",
             crate::output::name(output),
             result.quads.len(),
             stats.faces,

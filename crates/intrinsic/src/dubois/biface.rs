@@ -198,7 +198,7 @@ impl<S: Scalar> Biface<S> {
         tolerance: f64,
     ) -> Result<Self, BifaceError> {
         for (corner, p) in [&a, &d, &b, &c].into_iter().enumerate() {
-            if !(p[0].to_f64().is_finite() && p[1].to_f64().is_finite()) {
+            if !(p[0].is_finite() && p[1].is_finite()) {
                 return Err(BifaceError::NonFinite { corner });
             }
         }

@@ -70,8 +70,8 @@ pub use flat_delaunay::{
     first_cone_point,
 };
 pub use reduction::{
-    DELETE_MAX_DEGREE, DuboisError, DuboisReport, INNER_REPETITIONS, ReduceOptions, Reduction,
-    outer_iterations, reduce, reduce_with_boundary,
+    DELETE_MAX_DEGREE, DuboisError, DuboisReport, INNER_REPETITIONS, MAX_WORKING_BITS,
+    OUTER_PERIOD_MAX, ReduceOptions, Reduction, outer_iterations, reduce, reduce_with_boundary,
 };
 
 use std::any::TypeId;

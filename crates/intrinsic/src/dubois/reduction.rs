@@ -78,9 +78,17 @@
 use crate::dubois::biface::{Biface, BifaceError, BifaceKind};
 use crate::dubois::tube::{Tube, TubeError, TubeRoute, sides_by_vertex};
 use crate::error::PortalgonError;
-use crate::geometry::Scalar;
+use crate::geometry::{MAX_INPUT_BITS, Scalar};
 use crate::portalgon::{EditError, VertexInfo};
 use crate::portalgon::{PolygonId, Portalgon, Regions, SideId};
+
+/// The growth limit of exact arithmetic: the most bits (numerator and denominator together) a
+/// corner coordinate of ALGORITHM's portalgon may reach, 8 × [`MAX_INPUT_BITS`]. Every
+/// coordinate of an input within [`MAX_INPUT_BITS`] starts below it and, with the charts moved
+/// to their first corners after every outer iteration, stays within a small multiple of the
+/// input's size on the inputs measured (`results/exact_growth.md`); past it the reduction
+/// stops with [`DuboisError::GrowthLimit`] instead of running on with ever larger numbers.
+pub const MAX_WORKING_BITS: u64 = 8 * MAX_INPUT_BITS;
 
 /// Section 4.5: the inner loop's repetitions.
 pub const INNER_REPETITIONS: u32 = 350;
@@ -120,6 +128,19 @@ pub enum DuboisError {
     /// A biface could not be built.
     #[error(transparent)]
     Biface(#[from] BifaceError),
+    /// An exact coordinate grew past [`MAX_WORKING_BITS`].
+    #[error(
+        "exact arithmetic stopped: a corner coordinate reached {bits} bits after {routine}, past \
+         the growth limit of {MAX_WORKING_BITS} bits (numerator and denominator together) on \
+         the numbers of Theorem 1; give the corners with fewer digits (scale or round them), or \
+         run in double precision (without --exact)"
+    )]
+    GrowthLimit {
+        /// The size reached.
+        bits: u64,
+        /// The routine after which it was measured.
+        routine: &'static str,
+    },
     /// A Section 4.4 invariant does not hold.
     #[error("Section 4.4 invariant: {0}")]
     Invariant(String),
@@ -156,7 +177,8 @@ pub struct DuboisReport {
     /// `N`, the outer iterations asked for.
     pub outer_iterations: u32,
     /// Inner repetitions run in each outer iteration done (fewer entries than `N` when `R_A`
-    /// became empty).
+    /// became empty, or, in exact mode, when an outer iteration ended in the state the previous
+    /// one ended in: docs/dubois.md §3.2).
     pub inner_passes: Vec<u32>,
     /// Their total.
     pub inner_passes_total: u64,
@@ -211,6 +233,18 @@ pub struct Reduction<S: Scalar = f64> {
     input_side: Vec<SideId>,
 }
 
+/// The longest period of outer iterations the exact-mode exit looks for
+/// ([`Reduction::repeats_from_here`]).
+pub const OUTER_PERIOD_MAX: usize = 4;
+
+/// What an outer iteration ends in: the portalgon, the regions and the input's side ids.
+#[derive(Clone, Debug, PartialEq)]
+struct OuterState<S: Scalar> {
+    portalgon: Portalgon<S>,
+    regions: Regions,
+    input_side: Vec<SideId>,
+}
+
 /// The two sides of an edge, lower id first.
 type EdgeSides = (SideId, SideId);
 
@@ -230,7 +264,7 @@ impl<S: Scalar> Reduction<S> {
             },
             input_side,
         };
-        r.after_routine("initialisation", true);
+        r.bookkeeping("initialisation", true);
         r
     }
 
@@ -251,6 +285,11 @@ impl<S: Scalar> Reduction<S> {
         if self.portalgon.side_slots() <= 2 * live + 64 {
             return;
         }
+        self.compact();
+    }
+
+    /// Compacts the portalgon (order kept) and renumbers the regions and the input's sides.
+    fn compact(&mut self) {
         let (side_map, polygon_map) = self.portalgon.compact_in_place();
         self.regions.renumber(&polygon_map);
         for s in &mut self.input_side {
@@ -348,7 +387,69 @@ impl<S: Scalar> Reduction<S> {
     /// `S(R_A)` (INSERTEDGES adds edges; the other routines delete vertices, replace tubes by
     /// bifaces with fewer, or make regions inactive), so the peak is measured after those
     /// (`adds_vertices`); debug builds check that no other routine exceeds it.
-    fn after_routine(&mut self, routine: &str, adds_vertices: bool) {
+    fn after_routine(
+        &mut self,
+        routine: &'static str,
+        adds_vertices: bool,
+    ) -> Result<(), DuboisError> {
+        self.bookkeeping(routine, adds_vertices);
+        self.check_growth(routine)
+    }
+
+    /// The periodic exit of the outer loop in exact mode (docs/dubois.md §3.2), called after
+    /// outer iteration `k = report.inner_passes.len()` of `n`. Every routine is
+    /// translation-equivariant in exact arithmetic and decides by the order of the ids, which
+    /// compaction keeps; so once the charts are moved to their first corners and the structure
+    /// compacted (the caller does both), the state an outer iteration ends in decides all later
+    /// ones. When it equals
+    /// the state of `p ≤` [`OUTER_PERIOD_MAX`] iterations before (kept in `history`), the
+    /// iterations repeat with period `p`: the state after iteration `n` is then restored from
+    /// `history` and `true` returned (the loop stops).
+    fn repeats_from_here(
+        &mut self,
+        history: &mut std::collections::VecDeque<OuterState<S>>,
+        n: u32,
+    ) -> bool {
+        let state = OuterState {
+            portalgon: self.portalgon.clone(),
+            regions: self.regions.clone(),
+            input_side: self.input_side.clone(),
+        };
+        let k = self.report.inner_passes.len();
+        let len = history.len();
+        if let Some(p) = (1..=len).find(|&p| history[len - p] == state) {
+            // s_j = s_{j−p} from here on: s_n = s_{k−p+((n−k) mod p)}.
+            let target = k - p + (n as usize - k) % p;
+            if target < k {
+                let s = history[len - (k - target)].clone();
+                self.portalgon = s.portalgon;
+                self.regions = s.regions;
+                self.input_side = s.input_side;
+            }
+            return true;
+        }
+        if len == OUTER_PERIOD_MAX {
+            history.pop_front();
+        }
+        history.push_back(state);
+        false
+    }
+
+    /// [`MAX_WORKING_BITS`] on the corners of `R` after `routine`: the growth limit of exact
+    /// arithmetic (never reached in rounded arithmetic, whose sizes are fixed).
+    ///
+    /// # Errors
+    /// [`DuboisError::GrowthLimit`] past the limit.
+    pub fn check_growth(&self, routine: &'static str) -> Result<(), DuboisError> {
+        let bits = self.portalgon.max_coordinate_bits();
+        if bits > MAX_WORKING_BITS {
+            return Err(DuboisError::GrowthLimit { bits, routine });
+        }
+        Ok(())
+    }
+
+    /// [`Self::after_routine`] without the growth limit.
+    fn bookkeeping(&mut self, routine: &str, adds_vertices: bool) {
         self.compact_if_sparse();
         if adds_vertices {
             let v = self.active_vertex_count();
@@ -391,7 +492,7 @@ impl<S: Scalar> Reduction<S> {
             self.portalgon.split_side(s, &half)?;
         }
         self.report.vertices_inserted += edges.len();
-        self.after_routine("INSERTVERTICES", true);
+        self.after_routine("INSERTVERTICES", true)?;
         Ok(edges.len())
     }
 
@@ -414,7 +515,7 @@ impl<S: Scalar> Reduction<S> {
                 }
             }
         }
-        self.after_routine("INSERTEDGES", false);
+        self.after_routine("INSERTEDGES", false)?;
         Ok(cuts)
     }
 
@@ -458,7 +559,7 @@ impl<S: Scalar> Reduction<S> {
             self.portalgon.delete_vertex(s, self.tolerance)?;
         }
         self.report.vertices_deleted += chosen.len();
-        self.after_routine("DELETEVERTICES", false);
+        self.after_routine("DELETEVERTICES", false)?;
         Ok(chosen.len())
     }
 
@@ -571,14 +672,14 @@ impl<S: Scalar> Reduction<S> {
                 (0, 0),
                 "a tube component right after GARDENING"
             );
-            self.after_routine("SIMPLIFYTUBES", false);
+            self.after_routine("SIMPLIFYTUBES", false)?;
             return Ok(((0, 0), info));
         }
         self.cut(&j);
         let produced = self.replace_tube_components(false);
         self.glue_back(&j)?;
         let produced = produced?;
-        self.after_routine("SIMPLIFYTUBES", false);
+        self.after_routine("SIMPLIFYTUBES", false)?;
         Ok((produced, info))
     }
 
@@ -589,7 +690,7 @@ impl<S: Scalar> Reduction<S> {
     /// A tube or edit error.
     pub fn gardening(&mut self) -> Result<usize, DuboisError> {
         let (thin, thick) = self.replace_tube_components(true)?;
-        self.after_routine("GARDENING", false);
+        self.after_routine("GARDENING", false)?;
         Ok(thin + thick)
     }
 
@@ -697,8 +798,9 @@ impl<S: Scalar> Reduction<S> {
 /// `Δ` (area `A_Δ`, longest side `ℓ_Δ`; `L` the longest side), i.e. `2^N ≥ 2 + L/(d/2)` with
 /// `d = min 2A_Δ/ℓ_Δ`. Exact in exact mode; in `f64` the right side is enlarged by a relative
 /// 1e-9 so that `N` is not underestimated. Polygons that are not triangles are measured the
-/// same way (their smallest height bounded by `2A/ℓ`). Capped at 4096 (`L/s` below `2^4096`
-/// for any input whose coordinates fit in memory many times over).
+/// same way (their smallest height bounded by `2A/ℓ`). Capped at 65536, never reached on an
+/// input within [`MAX_INPUT_BITS`]: its lengths are below `2^4096` and its areas above
+/// `2^−16384` (four denominators of at most 4096 bits), so `L/s < 2^24600`.
 pub fn outer_iterations<S: Scalar>(portalgon: &Portalgon<S>) -> u32 {
     let lengths2 = |q: PolygonId| {
         portalgon
@@ -716,20 +818,50 @@ pub fn outer_iterations<S: Scalar>(portalgon: &Portalgon<S>) -> u32 {
     } else {
         S::one() + S::from_f64(1e-9).expect("finite")
     };
-    let mut n = 1u32;
-    let mut power = S::from_i64(2);
-    loop {
-        let factor = power.clone() - S::from_i64(2);
-        let enough = portalgon.polygons().all(|q| {
+    // `enough` is monotone in N: a doubling search, then bisection (O(log N) evaluations).
+    let enough = |n: u32| {
+        let factor = power_of_two::<S>(n) - S::from_i64(2);
+        portalgon.polygons().all(|q| {
             let lhs = factor.clone() * portalgon.polygon_area(q);
             lhs.clone() * lhs >= longest2.clone() * lengths2(q) * margin.clone()
-        });
-        if enough || n >= 4096 {
-            return n;
-        }
-        n += 1;
-        power = power.clone() + power;
+        })
+    };
+    let mut high = 1u32;
+    while high < OUTER_ITERATIONS_MAX && !enough(high) {
+        high = (2 * high).min(OUTER_ITERATIONS_MAX);
     }
+    if high == OUTER_ITERATIONS_MAX && !enough(high) {
+        return high;
+    }
+    // The least N in (high / 2, high] with `enough(N)`.
+    let mut low = high / 2; // not enough (or 0)
+    while high - low > 1 {
+        let mid = low + (high - low) / 2;
+        if enough(mid) {
+            high = mid;
+        } else {
+            low = mid;
+        }
+    }
+    high
+}
+
+/// The cap of [`outer_iterations`].
+const OUTER_ITERATIONS_MAX: u32 = 65536;
+
+/// `2^n`, by squaring.
+fn power_of_two<S: Scalar>(n: u32) -> S {
+    let (mut result, mut base, mut e) = (S::one(), S::from_i64(2), n);
+    while e > 0 {
+        if e & 1 == 1 {
+            result = result * base.clone();
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * base;
+        }
+    }
+    result
 }
 
 /// Checks ALGORITHM's input: valid, closed unless `bounded`, triangular, every interior vertex
@@ -803,10 +935,13 @@ fn reduce_checked<S: Scalar>(
     t: &Portalgon<S>,
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
+    let mut r = Reduction::new(t.clone(), options.route, options.tolerance);
+    r.check_growth("reading the input")?;
     let n = options
         .outer_iterations
         .unwrap_or_else(|| outer_iterations(t));
-    let mut r = Reduction::new(t.clone(), options.route, options.tolerance);
+    // Exact mode: the states the last outer iterations ended in (`Reduction::repeats_from_here`).
+    let mut history = std::collections::VecDeque::new();
     // No component of S(R_A) is a tube: true after a GARDENING (each tube component became an
     // inactive biface), kept by the routines that change neither the components of S(R_A) nor
     // their boundary sides, and renewed by the GARDENING after every SIMPLIFYTUBES that changes
@@ -901,6 +1036,15 @@ fn reduce_checked<S: Scalar>(
             r.active_vertex_count() <= 3000 * (genus + m),
             "Proposition 5"
         );
+        if S::EXACT {
+            // Charts at their first corners, slots compacted: the canonical state (also in
+            // faithful runs, so that both give the same bytes).
+            r.portalgon.translate_to_first_corners();
+            r.compact();
+            if !options.faithful && r.repeats_from_here(&mut history, n) {
+                break;
+            }
+        }
     }
     r.report.triangles_after_reduction = r.portalgon.polygon_count();
     Ok(r)

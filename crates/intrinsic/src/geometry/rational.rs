@@ -540,6 +540,9 @@ impl Scalar for Rational {
     fn lengths_match(a: &Self, b: &Self, _tolerance: f64) -> bool {
         a == b
     }
+    fn bits(&self) -> u64 {
+        Rational::bits(self)
+    }
 
     /// The sign of `(b − a) × (c − a)`. Inline values: the rational operations (`i128`
     /// intermediates). Otherwise on unreduced fractions: the four differences and the two

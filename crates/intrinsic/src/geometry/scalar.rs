@@ -54,6 +54,12 @@ pub trait Scalar:
     /// The largest integer not above the value.
     fn floor(&self) -> Self;
 
+    /// The size of an exact value in bits: those of its numerator and denominator together
+    /// (0 for rounded types, whose size is fixed).
+    fn bits(&self) -> u64 {
+        0
+    }
+
     /// The square root to the type's precision, for rounded types (`None` for exact ones).
     fn approximate_sqrt(&self) -> Option<Self> {
         None

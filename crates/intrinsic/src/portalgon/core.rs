@@ -207,6 +207,42 @@ impl<S: Scalar> Portalgon<S> {
         }
     }
 
+    /// Moves every polygon's chart so that its first corner is the origin (a translation of
+    /// each polygon: the surface, the ids and the matching are unchanged, since gluings are
+    /// recomputed from the sides). In exact arithmetic the corners are then differences, as
+    /// small as the polygon whatever its position: charts that drift (a chart laid out by a
+    /// gluing motion far from the origin) stop carrying the drift's digits.
+    pub fn translate_to_first_corners(&mut self) {
+        for sides in &self.polygons {
+            let Some(&first) = sides.first() else {
+                continue;
+            };
+            let origin = self.start[first.idx()].clone();
+            if origin[0].is_zero() && origin[1].is_zero() {
+                continue;
+            }
+            for &s in sides {
+                let corner = &mut self.start[s.idx()];
+                *corner = sub(corner, &origin);
+            }
+        }
+    }
+
+    /// The largest size in bits of a live corner's coordinate ([`Scalar::bits`]; 0 in rounded
+    /// arithmetic).
+    pub fn max_coordinate_bits(&self) -> u64 {
+        if !S::EXACT {
+            return 0;
+        }
+        self.sides()
+            .map(|s| {
+                let [x, y] = &self.start[s.idx()];
+                x.bits().max(y.bits())
+            })
+            .max()
+            .unwrap_or(0)
+    }
+
     /// Number of live polygons.
     pub fn polygon_count(&self) -> usize {
         self.live_polygons

@@ -148,6 +148,25 @@ impl Greedy {
         self.deferred
     }
 
+    /// Before a run on a graph that is not cubic (the dual of a surface with boundary): the
+    /// nodes of free degree 1 are forced from the start (Karp and Sipser's rule), and those of
+    /// free degree 0, which no path reaches, count as stranded (never repaired, never deferred:
+    /// they stay unpaired).
+    pub(super) fn seed_low_degrees<G: DualGraph + ?Sized>(&mut self, pairs: &mut Pairs<G>) {
+        for v in 0..pairs.graph.node_slots() as u32 {
+            if !pairs.graph.is_node(v) {
+                continue;
+            }
+            match pairs.free[v as usize] {
+                0 => pairs.stranded += 1,
+                1 => self.forced.push(v),
+                _ => {}
+            }
+        }
+        // The forced stack is taken from its top: the lowest ids first.
+        self.forced.reverse();
+    }
+
     /// Pairs every node it can, repairing the isolated ones as they appear; records whether it
     /// swept in id order.
     pub(super) fn run<G: DualGraph + ?Sized>(
@@ -155,6 +174,9 @@ impl Greedy {
         pairs: &mut Pairs<G>,
         repairs: &mut Repairs,
     ) {
+        if !self.forced.is_empty() {
+            self.drain(pairs, repairs);
+        }
         let mut head = 0;
         while let Some(s) = self.next_start(pairs, &mut head) {
             let mut best: Option<(u8, u32, u32, u32)> = None;

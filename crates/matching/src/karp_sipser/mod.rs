@@ -39,7 +39,9 @@ mod subdivision;
 
 use std::time::Instant;
 
-use crate::augment::{AugmentError, AugmentStats, OnPath, Outcome, Search, complete};
+use crate::augment::{
+    AugmentError, AugmentStats, Goal, OnPath, Outcome, Search, barrier, complete,
+};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
 use file_order::file_order_pairing;
 use greedy::Greedy;
@@ -149,9 +151,32 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     graph: &G,
     options: &KarpSipserOptions,
 ) -> Result<(Pairing, KarpSipserStats), AugmentError> {
+    run(graph, options, Goal::Perfect).map(|(pairing, stats, _)| (pairing, stats))
+}
+
+/// KS to a maximum matching, on any [`DualGraph`] (the dual of a surface with boundary, whose
+/// triangles may not all pair): the phases of [`karp_sipser_perfect_with`], with three changes.
+/// The nodes of free degree 1 at the start (triangles with two boundary sides) are paired first,
+/// by Karp and Sipser's rule; nodes of free degree 0 at the start (a lone triangle) are left
+/// unpaired at once; and the completion stops at its first pass without an augmenting path (a
+/// complete search: the matching is then maximum). Returns the pairing, the figures and the
+/// Tutte–Berge barrier proving maximality (see [`crate::augment_to_maximum`]; empty when every
+/// node is paired). On a graph with a perfect matching the result is perfect. Deterministic.
+pub fn karp_sipser_maximum_with<G: DualGraph + ?Sized>(
+    graph: &G,
+    options: &KarpSipserOptions,
+) -> (Pairing, KarpSipserStats, Vec<u32>) {
+    run(graph, options, Goal::Maximum).expect("a maximum matching always exists")
+}
+
+fn run<G: DualGraph + ?Sized>(
+    graph: &G,
+    options: &KarpSipserOptions,
+    goal: Goal,
+) -> Result<(Pairing, KarpSipserStats, Vec<u32>), AugmentError> {
     let start = Instant::now();
     let nodes = graph.node_count();
-    if !nodes.is_multiple_of(2) {
+    if goal == Goal::Perfect && !nodes.is_multiple_of(2) {
         return Err(AugmentError::OddNodeCount { nodes });
     }
     if options.file_order
@@ -162,14 +187,16 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
             greedy_seconds: start.elapsed().as_secs_f64(),
             ..KarpSipserStats::default()
         };
-        return Ok((pairing, stats));
+        return Ok((pairing, stats, Vec::new()));
     }
     // The copy serves the greedy too; the lift reads it rather than the mesh, whose half-edges
     // need not be in face order.
     let (compact, degrees) = CompactDual::with_degrees(graph);
     if options.subdivision
         && let Some(level) = coarsen(&compact)
-        && let Ok((coarse, coarse_stats)) = karp_sipser_perfect_with(level.coarse(), options)
+        && let Ok((coarse, coarse_stats, coarse_barrier)) = run(level.coarse(), options, goal)
+        && (goal == Goal::Perfect
+            || (coarse_barrier.is_empty() && coarse.unmatched_count(level.coarse()) == 0))
     {
         let pairing = level.lift(&compact, &coarse);
         let stats = KarpSipserStats {
@@ -178,10 +205,13 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
             greedy_seconds: start.elapsed().as_secs_f64() - coarse_stats.augmentation_seconds,
             ..coarse_stats
         };
-        return Ok((pairing, stats));
+        return Ok((pairing, stats, Vec::new()));
     }
     let mut pairs = Pairs::new(&compact, degrees);
     let mut greedy = Greedy::new(&compact);
+    if goal == Goal::Maximum {
+        greedy.seed_low_degrees(&mut pairs);
+    }
     let mut repairs = Repairs::new(compact.node_slots(), options.repair_budget);
     greedy.run(&mut pairs, &mut repairs);
     let mut deferred = greedy.into_deferred();
@@ -193,18 +223,26 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     let mut stats = pairs.stats;
     deferred.retain(|&v| pairs.mates[v as usize][0] == NONE);
     stats.completed = deferred.len();
-    if !deferred.is_empty() {
+    let mut barrier_nodes = Vec::new();
+    if !deferred.is_empty() || (goal == Goal::Maximum && pairs.unpaired > 0) {
         let complete_start = Instant::now();
         let before = stats.augment.reached;
-        complete(
-            &compact,
-            &mut pairs.mates,
-            pairs
-                .search
-                .get_or_insert_with(|| Search::new(graph.node_slots())),
-            deferred,
-            &mut stats.augment,
-        )?;
+        let search = pairs
+            .search
+            .get_or_insert_with(|| Search::new(graph.node_slots()));
+        if !deferred.is_empty() {
+            complete(
+                &compact,
+                &mut pairs.mates,
+                search,
+                deferred,
+                goal,
+                &mut stats.augment,
+            )?;
+        }
+        if goal == Goal::Maximum {
+            barrier_nodes = barrier(&compact, &mut pairs.mates, search, &mut stats.augment);
+        }
         stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
         stats.completion_reached += stats.augment.reached - before;
     }
@@ -212,7 +250,7 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
     let pairing = Pairing {
         mate: pairs.mates.iter().map(|&[e, _]| e).collect(),
     };
-    Ok((pairing, stats))
+    Ok((pairing, stats, barrier_nodes))
 }
 
 /// [`Pairs::free`] of a paired node.

@@ -186,8 +186,10 @@ struct EdgeSlot {
 /// The per-id fields read on every reduced cost live together in `slots` ([`Slot`]); the
 /// vertex-set scheme is described at `node_set`, with `set_of`, `set_outer` and `set_acc`
 /// standing for the `set`, `outer` and `acc` fields of the slots.
-struct Solver {
+struct Solver<X: Extra = NoExtra> {
     n: usize,
+    /// The edges beyond a vertex's three slots (none on a mesh dual; see [`Extra`]).
+    extra: X,
     /// Per node: its tree (an index into `trees`) while it is an outermost tree node.
     tree: Vec<u32>,
     edges: Vec<EdgeSlot>,
@@ -269,35 +271,111 @@ pub fn min_cost_perfect_matching<G: DualGraph + ?Sized>(
     if !nodes.is_multiple_of(2) {
         return Err(WeightedError::OddNodeCount { nodes });
     }
-    let mut solver = Solver::new(graph, costs);
-    let start = Instant::now();
-    solver.greedy_init();
-    solver.stats.greedy_seconds = start.elapsed().as_secs_f64();
-    let start = Instant::now();
-    solver.grow_forest(true)?;
-    solver.round_half_cycles();
-    solver.stats.fractional_seconds = start.elapsed().as_secs_f64();
-    solver.stats.exposed_after_fractional = (0..solver.n)
-        .filter(|&v| solver.is_live[v] && solver.slots[v].mate == NONE)
-        .count();
-    solver.grow_forest(false)?;
-    solver.stats.search_seconds = start.elapsed().as_secs_f64();
-    // In increasing order: each matched edge from the mate of its first end.
-    let edges: Vec<u32> = (0..solver.edges.len() as u32)
-        .filter(|&e| {
-            let [u, _] = solver.edges[e as usize].ends;
-            u != NONE && solver.slots[u as usize].mate == e
-        })
-        .collect();
+    let (edges, certificate, stats) = Solver::new(graph, costs).solve()?;
     let cost = edges.iter().map(|&e| costs[e as usize]).sum();
-    let certificate = solver.certificate();
-    solver.stats.blossoms = certificate.blossoms.len();
     Ok(MinCostMatching {
         edges,
         cost,
         certificate,
-        stats: solver.stats,
+        stats,
     })
+}
+
+/// Edges of a vertex beyond the three of its record: none on a mesh dual ([`NoExtra`]); lists
+/// on the auxiliary graph of a maximum-cardinality matching ([`ExtraLists`], see
+/// [`super::maximum`]), whose dummy nodes are joined to many vertices. Its
+/// [`Extra::edges_of`] gives all of a vertex's non-loop edges, without borrowing the solver.
+pub(super) trait Extra {
+    /// The vertex's non-loop `(edge, neighbour)` pairs: the live ones of `adjacent` (its record's
+    /// three), then its extra ones.
+    fn edges_of(
+        &self,
+        adjacent: [(u32, u32); 3],
+        v: u32,
+    ) -> impl Iterator<Item = (u32, u32)> + use<Self>;
+}
+
+/// No edge beyond the three of a vertex's record.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct NoExtra;
+
+impl Extra for NoExtra {
+    #[inline]
+    fn edges_of(
+        &self,
+        adjacent: [(u32, u32); 3],
+        v: u32,
+    ) -> impl Iterator<Item = (u32, u32)> + use<> {
+        adjacent
+            .into_iter()
+            .filter(move |&(e, w)| e != NONE && w != v)
+    }
+}
+
+/// Extra `(edge, neighbour)` pairs per vertex, as one shared list with offsets (shared, so that
+/// an iterator over a vertex's pairs holds no borrow of the solver).
+#[derive(Clone, Debug)]
+pub(super) struct ExtraLists {
+    /// Per vertex, the start of its pairs in `pairs` (one more entry at the end).
+    pub start: std::rc::Rc<[u32]>,
+    pub pairs: std::rc::Rc<[(u32, u32)]>,
+}
+
+/// A vertex's pairs of an [`ExtraLists`].
+pub(super) struct ExtraIter {
+    pairs: std::rc::Rc<[(u32, u32)]>,
+    next: usize,
+    end: usize,
+}
+
+impl Iterator for ExtraIter {
+    type Item = (u32, u32);
+    #[inline]
+    fn next(&mut self) -> Option<(u32, u32)> {
+        (self.next < self.end).then(|| {
+            self.next += 1;
+            self.pairs[self.next - 1]
+        })
+    }
+}
+
+impl Extra for ExtraLists {
+    #[inline]
+    fn edges_of(
+        &self,
+        adjacent: [(u32, u32); 3],
+        v: u32,
+    ) -> impl Iterator<Item = (u32, u32)> + use<> {
+        let (next, end) = match self.start.get(v as usize + 1) {
+            Some(&end) => (self.start[v as usize] as usize, end as usize),
+            None => (0, 0),
+        };
+        NoExtra.edges_of(adjacent, v).chain(ExtraIter {
+            pairs: self.pairs.clone(),
+            next,
+            end,
+        })
+    }
+}
+
+/// The solver on a graph given as vertex records (three `(edge, neighbour)` pairs each, `NONE`
+/// pairs unused), extra pairs per vertex, edge ends with their (undoubled) costs, and the live
+/// vertices: the auxiliary graph of [`super::maximum`]. Returns the matched edges in increasing
+/// order, the certificate (for the doubled costs) and the figures.
+pub(super) fn solve_with_extra(
+    adjacency: Vec<[(u32, u32); 3]>,
+    extra: ExtraLists,
+    edges: &[([u32; 2], i64)],
+    is_live: Vec<bool>,
+) -> Result<(Vec<u32>, Certificate, BlossomStats), WeightedError> {
+    let edges = edges
+        .iter()
+        .map(|&(ends, cost)| EdgeSlot {
+            ends,
+            cost: 2 * cost,
+        })
+        .collect();
+    Solver::from_parts(adjacency, edges, is_live, extra).solve()
 }
 
 impl Solver {
@@ -318,6 +396,21 @@ impl Solver {
                 }
             }
         }
+        let is_live = (0..n as u32).map(|v| graph.is_node(v)).collect();
+        Solver::from_parts(adjacency, edges, is_live, NoExtra)
+    }
+}
+
+impl<X: Extra> Solver<X> {
+    /// A solver for the graph of these vertex records (three pairs each), edges (ends and
+    /// doubled costs), live vertices and extra edges.
+    fn from_parts(
+        adjacency: Vec<[(u32, u32); 3]>,
+        edges: Vec<EdgeSlot>,
+        is_live: Vec<bool>,
+        extra: X,
+    ) -> Self {
+        let n = adjacency.len();
         let slots = (0..n as u32)
             .map(|v| Slot {
                 adjacent: adjacency[v as usize],
@@ -326,10 +419,11 @@ impl Solver {
             .collect();
         Solver {
             n,
+            extra,
             tree: vec![NONE; n],
             edges,
             slots,
-            is_live: (0..n as u32).map(|v| graph.is_node(v)).collect(),
+            is_live,
             set_next: vec![NONE; n],
             node_set: (0..n as u32).collect(),
             segment: (0..n as u32).map(|v| [v, v, 1]).collect(),
@@ -362,6 +456,33 @@ impl Solver {
         }
     }
 
+    /// Runs the algorithm of the module doc: the matched edges in increasing order, the
+    /// certificate and the figures.
+    fn solve(mut self) -> Result<(Vec<u32>, Certificate, BlossomStats), WeightedError> {
+        let start = Instant::now();
+        self.greedy_init();
+        self.stats.greedy_seconds = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        self.grow_forest(true)?;
+        self.round_half_cycles();
+        self.stats.fractional_seconds = start.elapsed().as_secs_f64();
+        self.stats.exposed_after_fractional = (0..self.n)
+            .filter(|&v| self.is_live[v] && self.slots[v].mate == NONE)
+            .count();
+        self.grow_forest(false)?;
+        self.stats.search_seconds = start.elapsed().as_secs_f64();
+        // In increasing order: each matched edge from the mate of its first end.
+        let edges: Vec<u32> = (0..self.edges.len() as u32)
+            .filter(|&e| {
+                let [u, _] = self.edges[e as usize].ends;
+                u != NONE && self.slots[u as usize].mate == e
+            })
+            .collect();
+        let certificate = self.certificate();
+        self.stats.blossoms = certificate.blossoms.len();
+        Ok((edges, certificate, self.stats))
+    }
+
     #[inline]
     fn is_blossom(&self, x: u32) -> bool {
         x as usize >= self.n
@@ -373,11 +494,10 @@ impl Solver {
         if a == v { b } else { a }
     }
 
-    /// The non-loop `(edge, neighbour)` pairs of vertex `v`.
+    /// The non-loop `(edge, neighbour)` pairs of vertex `v` (its record's, then its extra ones).
     #[inline]
-    fn edges_of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + use<> {
-        let pairs = self.slots[v as usize].adjacent;
-        pairs.into_iter().filter(move |&(e, w)| e != NONE && w != v)
+    fn edges_of(&self, v: u32) -> impl Iterator<Item = (u32, u32)> + use<X> {
+        self.extra.edges_of(self.slots[v as usize].adjacent, v)
     }
 
     fn greedy_init(&mut self) {

@@ -135,6 +135,10 @@ pub enum CertificateError {
         /// Matched edges with both ends inside.
         inside: u64,
     },
+    /// The barrier of a maximum-cardinality certificate does not prove the matching maximum
+    /// ([`super::verify_min_cost_maximum_matching`]).
+    #[error("the matching is not proven maximum: {0}")]
+    NotMaximum(String),
     /// Primal and dual objectives differ (cannot happen when the other checks pass; kept as
     /// an arithmetic cross-check).
     #[error("primal cost {primal} (doubled) differs from dual objective {dual}")]
@@ -157,10 +161,59 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     matched: &[u32],
     certificate: &Certificate,
 ) -> Result<i64, CertificateError> {
-    check_sizes(graph, costs, certificate)?;
+    if costs.len() != graph.edge_slots() {
+        return Err(CertificateError::Size(format!(
+            "{} costs for {} edge slots",
+            costs.len(),
+            graph.edge_slots()
+        )));
+    }
+    verify_on(&(graph, costs), matched, certificate)
+}
+
+/// A graph with edge costs as the verifier reads it: node slots and their liveness, edge slots
+/// with their ends (live edges only) and costs.
+pub(super) trait CostGraph {
+    /// Node slots.
+    fn node_slots(&self) -> usize;
+    /// Whether node slot `v` is a live node.
+    fn is_node(&self, v: u32) -> bool;
+    /// Edge slots.
+    fn edge_slots(&self) -> usize;
+    /// The ends of live edge `e` (equal for a loop), `None` for a removed slot.
+    fn ends(&self, e: u32) -> Option<[u32; 2]>;
+    /// The cost of live edge `e`.
+    fn cost(&self, e: u32) -> i64;
+}
+
+impl<G: DualGraph + ?Sized> CostGraph for (&G, &[i64]) {
+    fn node_slots(&self) -> usize {
+        self.0.node_slots()
+    }
+    fn is_node(&self, v: u32) -> bool {
+        self.0.is_node(v)
+    }
+    fn edge_slots(&self) -> usize {
+        self.0.edge_slots()
+    }
+    fn ends(&self, e: u32) -> Option<[u32; 2]> {
+        self.0.is_edge(e).then(|| self.0.endpoints(e))
+    }
+    fn cost(&self, e: u32) -> i64 {
+        self.1[e as usize]
+    }
+}
+
+/// [`verify_min_cost_perfect_matching`] on any [`CostGraph`].
+pub(super) fn verify_on<C: CostGraph>(
+    graph: &C,
+    matched: &[u32],
+    certificate: &Certificate,
+) -> Result<i64, CertificateError> {
+    check_sizes(graph, certificate)?;
     let cover = perfect_cover(graph, matched)?;
     let family = Family::new(graph, certificate)?;
-    let (primal, inside_here) = check_edges(graph, costs, certificate, &family, &cover)?;
+    let (primal, inside_here) = check_edges(graph, certificate, &family, &cover)?;
     family.check_slackness(inside_here)?;
     let dual: i128 = (0..graph.node_slots())
         .filter(|&v| graph.is_node(v as u32))
@@ -173,19 +226,9 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     Ok((primal / 2) as i64)
 }
 
-/// One cost per edge slot, one dual and one set per node slot.
-fn check_sizes<G: DualGraph + ?Sized>(
-    graph: &G,
-    costs: &[i64],
-    certificate: &Certificate,
-) -> Result<(), CertificateError> {
-    let (node_slots, edge_slots) = (graph.node_slots(), graph.edge_slots());
-    if costs.len() != edge_slots {
-        return Err(CertificateError::Size(format!(
-            "{} costs for {edge_slots} edge slots",
-            costs.len()
-        )));
-    }
+/// One dual and one set per node slot.
+fn check_sizes<C: CostGraph>(graph: &C, certificate: &Certificate) -> Result<(), CertificateError> {
+    let node_slots = graph.node_slots();
     if certificate.node_duals.len() != node_slots || certificate.node_blossom.len() != node_slots {
         return Err(CertificateError::Size(format!(
             "{} node duals and {} node sets for {node_slots} node slots",
@@ -198,16 +241,15 @@ fn check_sizes<G: DualGraph + ?Sized>(
 
 /// The primal check: `matched` are live non-loop edges covering every live node once. Returns
 /// each node slot's matched edge (`NO_SET` for none).
-fn perfect_cover<G: DualGraph + ?Sized>(
-    graph: &G,
-    matched: &[u32],
-) -> Result<Vec<u32>, CertificateError> {
+fn perfect_cover<C: CostGraph>(graph: &C, matched: &[u32]) -> Result<Vec<u32>, CertificateError> {
     let mut cover = vec![NO_SET; graph.node_slots()];
     for &e in matched {
-        if (e as usize) >= graph.edge_slots() || !graph.is_edge(e) {
+        let Some([a, b]) = ((e as usize) < graph.edge_slots())
+            .then(|| graph.ends(e))
+            .flatten()
+        else {
             return Err(CertificateError::BadEdge { edge: e });
-        }
-        let [a, b] = graph.endpoints(e);
+        };
         if a == b {
             return Err(CertificateError::BadEdge { edge: e });
         }
@@ -244,8 +286,8 @@ struct Family<'a> {
 }
 
 impl<'a> Family<'a> {
-    fn new<G: DualGraph + ?Sized>(
-        graph: &G,
+    fn new<C: CostGraph>(
+        graph: &C,
         certificate: &'a Certificate,
     ) -> Result<Self, CertificateError> {
         let sets = &certificate.blossoms[..];
@@ -342,9 +384,8 @@ impl<'a> Family<'a> {
 
 /// Dual feasibility of every non-loop edge and tightness of the matched ones. Returns twice the
 /// matching's cost and, per set, the matched edges whose smallest common set it is.
-fn check_edges<G: DualGraph + ?Sized>(
-    graph: &G,
-    costs: &[i64],
+fn check_edges<C: CostGraph>(
+    graph: &C,
     certificate: &Certificate,
     family: &Family,
     cover: &[u32],
@@ -352,10 +393,9 @@ fn check_edges<G: DualGraph + ?Sized>(
     let mut inside_here = vec![0u64; family.sets.len()];
     let mut primal: i128 = 0;
     for e in 0..graph.edge_slots() as u32 {
-        if !graph.is_edge(e) {
+        let Some([u, v]) = graph.ends(e) else {
             continue;
-        }
-        let [u, v] = graph.endpoints(e);
+        };
         if u == v {
             continue;
         }
@@ -366,7 +406,8 @@ fn check_edges<G: DualGraph + ?Sized>(
         let common = smallest_common_set(family.sets, &family.depth, su, sv);
         let crossing =
             family.dual_above(su) + family.dual_above(sv) - 2 * family.dual_above(common);
-        let reduced = 2 * i128::from(costs[e as usize])
+        let cost = graph.cost(e);
+        let reduced = 2 * i128::from(cost)
             - i128::from(certificate.node_duals[u as usize])
             - i128::from(certificate.node_duals[v as usize])
             - crossing;
@@ -377,7 +418,7 @@ fn check_edges<G: DualGraph + ?Sized>(
             if reduced != 0 {
                 return Err(CertificateError::MatchedNotTight { edge: e, reduced });
             }
-            primal += 2 * i128::from(costs[e as usize]);
+            primal += 2 * i128::from(cost);
             if common != NO_SET {
                 inside_here[common as usize] += 1;
             }

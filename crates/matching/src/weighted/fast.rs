@@ -24,7 +24,7 @@ use std::collections::VecDeque;
 use std::time::Instant;
 
 use super::{WeightedError, check_costs};
-use crate::augment::{AugmentStrategy, augment_to_perfect};
+use crate::augment::{AugmentStrategy, augment_to_maximum, augment_to_perfect};
 use crate::dual_graph::{DualGraph, NONE, Pairing};
 
 /// Largest number of matched edges on an exchanged cycle (cycles of up to 8 edges).
@@ -70,6 +70,29 @@ pub fn fast_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     graph: &G,
     costs: &[i64],
 ) -> Result<FastMatching, WeightedError> {
+    fast(graph, costs, false)
+}
+
+/// The fast mode for a graph without a perfect matching (the dual of a surface with boundary):
+/// the steps of [`fast_min_cost_perfect_matching`], the completion by augmenting paths to a
+/// *maximum* matching ([`crate::augment_to_maximum`]), so that as few nodes as possible stay
+/// unmatched; the exchanges along alternating cycles keep its size. Not of least cost in
+/// general (an exchange that moves an unmatched node is not tried).
+///
+/// # Errors
+/// [`WeightedError::CostCount`] / [`WeightedError::CostOutOfRange`] for bad costs.
+pub fn fast_min_cost_maximum_matching<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+) -> Result<FastMatching, WeightedError> {
+    fast(graph, costs, true)
+}
+
+fn fast<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+    maximum: bool,
+) -> Result<FastMatching, WeightedError> {
     check_costs(graph, costs)?;
     let mut order: Vec<u32> = Vec::with_capacity(graph.edge_slots());
     for e in 0..graph.edge_slots() as u32 {
@@ -101,8 +124,13 @@ pub fn fast_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     stats.exposed_after_greedy = pairing.unmatched_count(graph);
     stats.greedy_seconds = start.elapsed().as_secs_f64();
     let start = Instant::now();
-    augment_to_perfect(graph, &mut pairing, AugmentStrategy::Forest)
-        .map_err(WeightedError::Augment)?;
+    if maximum {
+        augment_to_maximum(graph, &mut pairing, AugmentStrategy::Forest)
+            .map_err(WeightedError::Augment)?;
+    } else {
+        augment_to_perfect(graph, &mut pairing, AugmentStrategy::Forest)
+            .map_err(WeightedError::Augment)?;
+    }
     stats.completion_seconds = start.elapsed().as_secs_f64();
     let mut mate = pairing.mates().to_vec();
     stats.cost_before_improvement = total_cost(graph, &mate, costs);
@@ -225,6 +253,10 @@ fn find_cycle<G: DualGraph + ?Sized>(
             continue;
         }
         let m = mate[c as usize];
+        if m == NONE {
+            // An unmatched node (a maximum matching): no cycle through it.
+            continue;
+        }
         let d = graph.opposite(m, c);
         if path[..len].contains(&d) {
             continue;

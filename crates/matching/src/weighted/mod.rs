@@ -9,6 +9,10 @@
 //! * [`certificate`] — the dual solution and [`verify_min_cost_perfect_matching`], which checks a
 //!   matching and a certificate without any of the solver's code: primal perfection, dual
 //!   feasibility and complementary slackness, hence optimality.
+//! * [`maximum`] — the minimum-cost *maximum* matching of a graph without a perfect matching
+//!   (the dual of a surface with boundary): the exact solver on an auxiliary graph with dummy
+//!   nodes, its certificate and verifier ([`min_cost_maximum_matching`],
+//!   [`verify_min_cost_maximum_matching`]).
 //! * [`fast`] — a cost-ordered greedy matching completed by augmenting paths
 //!   ([`crate::augment_to_perfect`]), then improved along short negative alternating cycles:
 //!   deterministic, not optimal in general.
@@ -35,6 +39,7 @@
 pub mod blossom;
 pub mod certificate;
 pub mod fast;
+pub mod maximum;
 mod radix_heap;
 
 use thiserror::Error;
@@ -46,7 +51,13 @@ pub use blossom::{BlossomStats, MinCostMatching, min_cost_perfect_matching};
 pub use certificate::{
     BlossomDual, Certificate, CertificateError, verify_min_cost_perfect_matching,
 };
-pub use fast::{FastMatching, FastStats, fast_min_cost_perfect_matching};
+pub use fast::{
+    FastMatching, FastStats, fast_min_cost_maximum_matching, fast_min_cost_perfect_matching,
+};
+pub use maximum::{
+    MaximumCertificate, MinCostMaximumMatching, min_cost_maximum_matching,
+    verify_min_cost_maximum_matching,
+};
 
 /// Largest cost accepted (2³¹ − 1): with doubled costs and at most 2³² nodes every dual and every
 /// sum the solver forms stays far inside `i64`.
@@ -101,6 +112,18 @@ pub enum WeightedError {
     NoPerfectMatching {
         /// The exposed node searched from.
         node: u32,
+    },
+    /// The auxiliary graph of a minimum-cost maximum matching would be too large: a piece with
+    /// a large deficiency and many nodes that a maximum matching may leave unmatched.
+    #[error(
+        "the exact pairing of least cost would need {dummies} dummy nodes with {dummy_edges} \
+         edges (pieces where many triangles must stay unpaired); use the fast objective"
+    )]
+    AuxiliaryTooLarge {
+        /// Dummy nodes (the unmatched nodes of a maximum matching).
+        dummies: usize,
+        /// Their edges.
+        dummy_edges: usize,
     },
     /// The fast mode's completion by augmenting paths failed.
     #[error("completion by augmenting paths: {0}")]

@@ -247,24 +247,41 @@ def quadrangulate(
     algorithm: str = "ks",
     objective: str = "count",
     seed: int = 1,
+    all_quads: bool = False,
 ) -> tuple[npt.NDArray[np.int64], dict[str, Any]]:
-    """A quad mesh on the same vertices: a perfect pairing of the triangles.
+    """A quad mesh on the same vertices: a maximum pairing of the triangles, on any compact
+    surface (boundary loops, non-orientable, several pieces), as ``surftopo quad``.
 
-    Each quad is two adjacent triangles glued along their shared edge, counter-clockwise.
+    Each quad ``[a, d, b, c]`` is the triangles ``(a, b, c)`` and ``(b, a, d)`` glued along their
+    shared edge ``a-b``, its corners in the order of the first (on an orientable piece its
+    consistent orientation; on a non-orientable one, the input's order of that triangle). A
+    closed piece is paired entirely; a piece with boundary may leave triangles that no pairing
+    can pair (an odd count, a triangle with three ears): as few as possible, proven by a
+    Tutte–Berge certificate checked before the quads are built.
     ``algorithm``: ``"ks"`` (Karp–Sipser with local repairs, the fastest), ``"sg"`` (simple
     greedy) and ``"ps"`` (Pulli–Segal), both seeded by ``seed``, ``"lrs"`` (contraction and
-    expansion; its quads pair triangles of a flipped triangulation), ``"ds"`` (Diks–Stanczyk).
-    ``objective``: ``"count"`` (any perfect pairing, by ``algorithm``), ``"quality"`` (the pairing
-    of least total cost 1 − η, η being Remacle et al.'s quad quality, exact, its optimality
-    certificate verified; ``algorithm`` unused) or ``"quality-fast"`` (a cheaper approximation).
+    expansion; its quads pair triangles of a flipped triangulation; orientable pieces only),
+    ``"ds"`` (Diks–Stanczyk). ``objective``: ``"count"`` (a maximum pairing, by ``algorithm``),
+    ``"quality"`` (the maximum pairing of least total cost 1 − η, η being Remacle et al.'s quad
+    quality, exact, its certificate verified; ``algorithm`` unused) or ``"quality-fast"`` (a
+    cheaper approximation). ``all_quads``: turn each triangle left into a quad by one vertex added
+    at the midpoint of a boundary edge (the fewest such vertices).
 
-    Returns ``(Q, stats)``: ``Q`` an int64 ``(m/2, 4)`` array of indices into ``V``, and the keys
-    of ``surftopo quad --json`` (with ``cost``, ``optimality_gap`` and ``quality``).
+    Returns ``(Q, stats)``: ``Q`` an int64 ``(k, 4)`` array of vertex indices, and the keys of
+    ``surftopo quad --json`` (with ``cost``, ``optimality_gap``, ``quality``,
+    ``unpaired_triangles``, ``deficiency_lower_bound``, ``added_vertices``, and ``components``
+    when there are several pieces), plus ``triangles`` (the ``(t, 3)`` triangles left),
+    ``added_positions`` (``(a, 3)``: the added vertices, numbered from ``len(V)``) and
+    ``added_edges`` (``(a, 2)``: the boundary edge each is the midpoint of).
 
     >>> V, F = surftopo.torus(24, 12)
     >>> Q, stats = surftopo.quadrangulate(V, F)
     >>> Q.shape, stats["paired_percent"]
     ((288, 4), 100.0)
+    >>> V, F = surftopo.disk(3)
+    >>> Q, stats = surftopo.quadrangulate(V, F[:-1], all_quads=True)
+    >>> Q.shape, stats["added_vertices"], stats["added_positions"].shape
+    ((9, 4), 1, (1, 3))
     """
 
 def laplacian(

@@ -1,7 +1,10 @@
-//! What the quad examples share: this thread's CPU time, their results files and the command
-//! line that made them, and the inputs of the peer harnesses (`crates/quad/peer`): the dual graph in the LEMON
-//! harness's binary format and the mesh as OFF for the Python harness.
+//! What the quad examples share: this thread's CPU time, medians and paired ratios, their results
+//! files and the command line that made them, and the inputs of the peer harnesses
+//! (`crates/quad/peer`): the dual graph in the LEMON harness's binary format and the mesh as OFF
+//! for the Python harness, which [`peers`] runs.
 #![allow(dead_code)]
+
+pub mod peers;
 
 use std::error::Error;
 use std::fmt::Write as _;
@@ -18,6 +21,45 @@ pub fn thread_cpu_seconds() -> f64 {
         .ok()
         .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
         .map_or(0.0, |ns| ns * 1e-9)
+}
+
+/// Wall and CPU seconds of one run.
+pub type Seconds = (f64, f64);
+
+/// (wall, this thread's CPU) seconds of `f`, and its result.
+pub fn timed<T>(f: impl FnOnce() -> T) -> (Seconds, T) {
+    let (start, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let out = f();
+    (
+        (start.elapsed().as_secs_f64(), thread_cpu_seconds() - cpu),
+        out,
+    )
+}
+
+/// The median (NaN when empty).
+pub fn median(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    match v.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => v[n / 2],
+        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+    }
+}
+
+/// Per-round ratios `a[i] / b[i]`.
+pub fn ratios(a: &[f64], b: &[f64]) -> Vec<f64> {
+    a.iter().zip(b).map(|(x, y)| x / y).collect()
+}
+
+/// `median (smallest–largest)` of per-round ratios, or `-`.
+pub fn ratio_summary(r: &[f64]) -> String {
+    if r.is_empty() {
+        return "-".into();
+    }
+    let lo = r.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = r.iter().copied().fold(0.0, f64::max);
+    format!("{:.2} ({lo:.2}–{hi:.2})", median(r))
 }
 
 /// The day (UTC) and the machine's load averages (1, 5 and 15 minutes) now, for a results
@@ -89,8 +131,7 @@ impl Results {
 }
 
 /// Writes the dual graph of `surface` (dense ids) for the LEMON harness into a temporary file
-/// named after `tag`: `u32` node and edge counts, each edge's two faces, then, when `weights`
-/// are given (one per edge), the `i64` weights (`lemon_matching --weighted`).
+/// named after `tag` ([`export_graph`]), with `weights` (one per edge) when given.
 pub fn export_dual(
     surface: &Surface,
     weights: Option<&[i64]>,
@@ -98,19 +139,36 @@ pub fn export_dual(
 ) -> Result<PathBuf, Box<dyn Error>> {
     let mesh = &surface.mesh;
     assert_eq!(mesh.face_slots(), mesh.face_count(), "dense ids expected");
+    let edges: Vec<[u32; 2]> = mesh
+        .edges()
+        .map(|e| {
+            let h = e.halfedge();
+            [mesh.face(h).0, mesh.face(h.twin()).0]
+        })
+        .collect();
+    let weights: Option<Vec<i64>> = weights.map(|w| mesh.edges().map(|e| w[e.idx()]).collect());
+    export_graph(mesh.face_count(), &edges, weights.as_deref(), tag)
+}
+
+/// Writes a graph for the LEMON harness into a temporary file named after `tag`: `u32` node and
+/// edge counts, each edge's two nodes, then, when `weights` are given (one per edge, in the same
+/// order), the `i64` weights (`lemon_matching --weighted` or `--maximum-weighted`).
+pub fn export_graph(
+    nodes: usize,
+    edges: &[[u32; 2]],
+    weights: Option<&[i64]>,
+    tag: &str,
+) -> Result<PathBuf, Box<dyn Error>> {
     let path = std::env::temp_dir().join(format!("surftopo-{tag}-{}.bin", std::process::id()));
     let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
-    out.write_all(&(mesh.face_count() as u32).to_le_bytes())?;
-    out.write_all(&(mesh.edge_count() as u32).to_le_bytes())?;
-    for e in mesh.edges() {
-        let h = e.halfedge();
-        out.write_all(&mesh.face(h).0.to_le_bytes())?;
-        out.write_all(&mesh.face(h.twin()).0.to_le_bytes())?;
+    out.write_all(&(nodes as u32).to_le_bytes())?;
+    out.write_all(&(edges.len() as u32).to_le_bytes())?;
+    for [a, b] in edges {
+        out.write_all(&a.to_le_bytes())?;
+        out.write_all(&b.to_le_bytes())?;
     }
-    if let Some(weights) = weights {
-        for e in mesh.edges() {
-            out.write_all(&weights[e.idx()].to_le_bytes())?;
-        }
+    for w in weights.unwrap_or_default() {
+        out.write_all(&w.to_le_bytes())?;
     }
     out.flush()?;
     Ok(path)
@@ -148,19 +206,26 @@ pub fn lemon_weighted(
 /// Writes `surface` as an OFF file (positions with every bit kept), for the Python harness.
 pub fn write_off(surface: &Surface, path: &Path) -> Result<(), Box<dyn Error>> {
     let mesh = &surface.mesh;
+    let triangles: Vec<[u32; 3]> = mesh
+        .faces()
+        .map(|f| mesh.face_vertices(f).map(|v| v.0))
+        .collect();
+    write_off_triangles(&surface.positions, &triangles, path)
+}
+
+/// Writes a triangle soup as an OFF file (positions with every bit kept).
+pub fn write_off_triangles(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    path: &Path,
+) -> Result<(), Box<dyn Error>> {
     let mut out = String::new();
-    writeln!(
-        out,
-        "OFF\n{} {} 0",
-        surface.positions.len(),
-        mesh.face_count()
-    )?;
-    for p in &surface.positions {
+    writeln!(out, "OFF\n{} {} 0", positions.len(), triangles.len())?;
+    for p in positions {
         writeln!(out, "{:?} {:?} {:?}", p[0], p[1], p[2])?;
     }
-    for f in mesh.faces() {
-        let [a, b, c] = mesh.face_vertices(f);
-        writeln!(out, "3 {} {} {}", a.idx(), b.idx(), c.idx())?;
+    for [a, b, c] in triangles {
+        writeln!(out, "3 {a} {b} {c}")?;
     }
     std::fs::write(path, out)?;
     Ok(())

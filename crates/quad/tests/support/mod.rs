@@ -234,3 +234,151 @@ pub fn naive_contractions(mesh: &SurfaceMesh) -> (SurfaceMesh, Vec<Contraction>)
     }
     (mesh, history)
 }
+
+/// Every check of a quadrangulation of a compact surface, written from the input's triangles
+/// (vertex ids, one per input face) alone: each input triangle is a leftover triangle or half of
+/// exactly one quad, glued to an adjacent triangle along the quad's diagonal (corner 0 to corner
+/// 2), or (all quads) the union of a quad's two halves at an added boundary vertex; the quads'
+/// corners run in the order of their first triangle; the triangles left are as few as
+/// petgraph's maximum matching of the dual allows; the figures add up. For the triangles of the
+/// paired triangulation, `paired` (LRS's K) replaces `input` in the covering checks.
+pub fn check_surface_result(
+    name: &str,
+    input: &[[u32; 3]],
+    paired: &[[u32; 3]],
+    result: &surftopo_quad::SurfaceQuads,
+    all_quads: bool,
+) {
+    use petgraph::algo::maximum_matching;
+    use petgraph::graph::UnGraph;
+    let key = |t: [u32; 3]| {
+        let mut k = t;
+        k.sort_unstable();
+        k
+    };
+    let index: HashMap<[u32; 3], usize> = paired
+        .iter()
+        .enumerate()
+        .map(|(f, &t)| (key(t), f))
+        .collect();
+    assert_eq!(index.len(), paired.len(), "{name}: duplicate triangles");
+    let mut edge_faces: HashMap<[u32; 2], Vec<usize>> = HashMap::new();
+    for (f, t) in paired.iter().enumerate() {
+        for i in 0..3 {
+            let (a, b) = (t[i], t[(i + 1) % 3]);
+            edge_faces.entry([a.min(b), a.max(b)]).or_default().push(f);
+        }
+    }
+    let boundary: HashSet<[u32; 2]> = edge_faces
+        .iter()
+        .filter(|(_, f)| f.len() == 1)
+        .map(|(&e, _)| e)
+        .collect();
+    let cyclic = |q: &[u32], t: [u32; 3]| (0..3).any(|r| (0..3).all(|i| q[i] == t[(i + r) % 3]));
+    let n = result.vertex_count as u32;
+    let mut used = vec![0u32; paired.len()];
+    let mut added_seen = HashSet::new();
+    for q in &result.quads {
+        let [a, d, b, c] = *q;
+        if let Some(k) = q.iter().position(|&v| v >= n) {
+            // A split triangle: [w, y, z, x] with w the midpoint of boundary edge xy.
+            assert!(all_quads, "{name}: added vertex without all quads");
+            assert_eq!(k, 0, "{name}: quad {q:?}: the added vertex is not corner 0");
+            let [x, y] = result.added[(q[0] - n) as usize];
+            assert_eq!((q[1], q[3]), (y, x), "{name}: quad {q:?}");
+            assert!(boundary.contains(&[x.min(y), x.max(y)]), "{name}: {q:?}");
+            assert!(
+                added_seen.insert(q[0]),
+                "{name}: vertex {} added twice",
+                q[0]
+            );
+            let f = index[&key([x, y, q[2]])];
+            assert!(
+                cyclic(&[x, y, q[2]], paired[f]),
+                "{name}: {q:?} not in order"
+            );
+            used[f] += 1;
+            continue;
+        }
+        let first = index
+            .get(&key([a, b, c]))
+            .unwrap_or_else(|| panic!("{name}: quad {q:?}: no triangle {a} {b} {c}"));
+        let second = index
+            .get(&key([b, a, d]))
+            .unwrap_or_else(|| panic!("{name}: quad {q:?}: no triangle {b} {a} {d}"));
+        assert_ne!(first, second);
+        assert!(
+            cyclic(&[a, b, c], paired[*first]),
+            "{name}: quad {q:?} does not run in its first triangle's order {:?}",
+            paired[*first]
+        );
+        used[*first] += 1;
+        used[*second] += 1;
+    }
+    for t in &result.triangles {
+        used[index[&key(*t)]] += 1;
+    }
+    assert!(
+        used.iter().all(|&u| u == 1),
+        "{name}: a triangle is not used once"
+    );
+    assert_eq!(added_seen.len(), result.added.len(), "{name}");
+    // Maximum: as few triangles left as petgraph's maximum matching of the input's dual leaves.
+    let mut graph = UnGraph::<(), ()>::with_capacity(paired.len(), 0);
+    for _ in paired {
+        graph.add_node(());
+    }
+    for faces in edge_faces.values() {
+        if let [f, g] = faces[..] {
+            graph.add_edge((f as u32).into(), (g as u32).into(), ());
+        }
+    }
+    let fewest = paired.len() - 2 * maximum_matching(&graph).len();
+    let s = &result.stats;
+    assert_eq!(
+        s.deficiency_lower_bound, fewest,
+        "{name}: the certificate's bound"
+    );
+    if all_quads {
+        assert!(result.triangles.is_empty(), "{name}");
+        assert_eq!(
+            result.added.len(),
+            fewest,
+            "{name}: one vertex per leftover"
+        );
+        assert_eq!(2 * result.quads.len(), paired.len() + fewest, "{name}");
+    } else {
+        assert_eq!(result.triangles.len(), fewest, "{name}: not maximum");
+        assert_eq!(2 * result.quads.len() + fewest, paired.len(), "{name}");
+    }
+    assert_eq!(s.unpaired_triangles, result.triangles.len(), "{name}");
+    assert_eq!(s.added_vertices, result.added.len(), "{name}");
+    assert_eq!(s.faces, input.len(), "{name}");
+    let sum = |f: fn(&surftopo_quad::ComponentQuads) -> usize| -> usize {
+        result.components.iter().map(f).sum()
+    };
+    assert_eq!(sum(|c| c.faces), input.len(), "{name}");
+    assert_eq!(sum(|c| c.quads), result.quads.len(), "{name}");
+    assert_eq!(sum(|c| c.added_vertices), result.added.len(), "{name}");
+    assert_eq!(sum(|c| c.deficiency_lower_bound), fewest, "{name}");
+    assert_eq!(
+        s.components.len(),
+        if result.components.len() > 1 {
+            result.components.len()
+        } else {
+            0
+        },
+        "{name}"
+    );
+    // Every vertex of the input is a corner of the output.
+    let corners: HashSet<u32> = result
+        .quads
+        .iter()
+        .flatten()
+        .chain(result.triangles.iter().flatten())
+        .copied()
+        .collect();
+    for &v in input.iter().flatten() {
+        assert!(corners.contains(&v), "{name}: vertex {v} lost");
+    }
+}
