@@ -1,4 +1,4 @@
-//! `surftopo`: triangulations of closed surfaces from the command line.
+//! `surftopo`: triangulated surfaces (closed or with boundary, orientable or not, in pieces) from the command line.
 //!
 //! A thin layer over the surftopo libraries. Exit codes (see [`failure`]): 0 on success, 2 on
 //! invalid input, usage or an unwritable output (message on stderr starting with `error:`), 1 on
@@ -35,8 +35,8 @@ mod progress;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-/// Triangulations of closed surfaces: irreducible triangulations, quadrangulations, intrinsic
-/// Delaunay triangulations.
+/// Triangulated surfaces (closed or with boundary, orientable or not, in pieces): irreducible
+/// triangulations, quadrangulations, intrinsic Delaunay triangulations.
 #[derive(Parser, Debug)]
 #[command(name = "surftopo", version, about, long_about = None, after_help = EXIT_CODES)]
 struct Cli {
