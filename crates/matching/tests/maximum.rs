@@ -540,3 +540,32 @@ fn min_cost_maximum_certificates_are_checked() {
     }
     assert!(checked > 10, "{checked}");
 }
+
+/// KS proves a pairing maximum by parity alone (an empty barrier) when it leaves one triangle
+/// in each piece of odd size and none elsewhere, and searches for a barrier otherwise; the
+/// verifier accepts both.
+#[test]
+fn ks_proves_maximum_by_parity_when_it_can() {
+    let cases = [
+        ("odd disk", odd_disk(6), 1, true),
+        (
+            "two odd disks",
+            {
+                let mut t = odd_disk(4);
+                let shift = t.iter().flatten().max().unwrap() + 1;
+                t.extend(odd_disk(3).iter().map(|f| f.map(|v| v + shift)));
+                t
+            },
+            2,
+            true,
+        ),
+        ("three ears", three_ears(), 2, false),
+    ];
+    for (name, triangles, unmatched, by_parity) in cases {
+        let dual = SurfaceDual::of_cover(&cover_of(&triangles));
+        let (pairing, _, barrier) = karp_sipser_maximum_with(&dual, &KarpSipserOptions::default());
+        assert_eq!(pairing.unmatched_count(&dual), unmatched, "{name}");
+        assert_eq!(barrier.is_empty(), by_parity, "{name}: {barrier:?}");
+        check_maximum(name, &dual, pairing, &barrier);
+    }
+}

@@ -39,6 +39,8 @@ mod subdivision;
 
 use std::time::Instant;
 
+use surftopo_mesh::UnionFind;
+
 use crate::augment::{
     AugmentError, AugmentStats, Goal, OnPath, Outcome, Search, barrier, complete,
 };
@@ -160,8 +162,10 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
 /// by Karp and Sipser's rule; nodes of free degree 0 at the start (a lone triangle) are left
 /// unpaired at once; and the completion stops at its first pass without an augmenting path (a
 /// complete search: the matching is then maximum). Returns the pairing, the figures and the
-/// Tutte–Berge barrier proving maximality (see [`crate::augment_to_maximum`]; empty when every
-/// node is paired). On a graph with a perfect matching the result is perfect. Deterministic.
+/// Tutte–Berge barrier proving maximality (see [`crate::augment_to_maximum`]); it is empty when
+/// every node is paired, and also when the greedy leaves one node unpaired in each piece of odd
+/// size and none elsewhere, which no matching betters (the barrier A = ∅: no search is run
+/// then). On a graph with a perfect matching the result is perfect. Deterministic.
 pub fn karp_sipser_maximum_with<G: DualGraph + ?Sized>(
     graph: &G,
     options: &KarpSipserOptions,
@@ -224,7 +228,13 @@ fn run<G: DualGraph + ?Sized>(
     deferred.retain(|&v| pairs.mates[v as usize][0] == NONE);
     stats.completed = deferred.len();
     let mut barrier_nodes = Vec::new();
-    if !deferred.is_empty() || (goal == Goal::Maximum && pairs.unpaired > 0) {
+    // A maximum matching leaves at least one node of every odd piece unpaired (Tutte–Berge with
+    // an empty barrier); when KS leaves exactly that many, it is maximum without a search.
+    let proven_by_parity = goal == Goal::Maximum
+        && pairs.unpaired > 0
+        && unpaired_nodes(&compact, &pairs.mates) == odd_pieces(&compact);
+    if !proven_by_parity && (!deferred.is_empty() || (goal == Goal::Maximum && pairs.unpaired > 0))
+    {
         let complete_start = Instant::now();
         let before = stats.augment.reached;
         let search = pairs
@@ -251,6 +261,31 @@ fn run<G: DualGraph + ?Sized>(
         mate: pairs.mates.iter().map(|&[e, _]| e).collect(),
     };
     Ok((pairing, stats, barrier_nodes))
+}
+
+/// The live nodes of `graph` that `mates` leaves unpaired.
+fn unpaired_nodes<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) -> usize {
+    (0..graph.node_slots() as u32)
+        .filter(|&v| graph.is_node(v) && mates[v as usize][0] == NONE)
+        .count()
+}
+
+/// The connected components of `graph` with an odd number of nodes: every matching leaves at
+/// least this many nodes unmatched.
+fn odd_pieces<G: DualGraph + ?Sized>(graph: &G) -> usize {
+    let slots = graph.node_slots();
+    let mut sets = UnionFind::new(slots);
+    for e in (0..graph.edge_slots() as u32).filter(|&e| graph.is_edge(e)) {
+        let [a, b] = graph.endpoints(e);
+        if a != b {
+            sets.union(a, b);
+        }
+    }
+    let mut size = vec![0u32; slots];
+    for v in (0..slots as u32).filter(|&v| graph.is_node(v)) {
+        size[sets.find(v) as usize] += 1;
+    }
+    size.iter().filter(|&&s| s % 2 == 1).count()
 }
 
 /// [`Pairs::free`] of a paired node.

@@ -42,6 +42,7 @@ use surftopo_mesh::UnionFind;
 use super::blossom::{BlossomStats, ExtraLists, solve_with_extra};
 use super::certificate::{Certificate, CertificateError, CostGraph, verify_on};
 use super::{WeightedError, check_costs, min_cost_perfect_matching};
+use crate::augment::AugmentStrategy;
 use crate::dual_graph::{DualGraph, NONE};
 use crate::verify_maximum::verify_maximum_pairing;
 
@@ -95,7 +96,14 @@ pub fn min_cost_maximum_matching<G: DualGraph + ?Sized>(
     costs: &[i64],
 ) -> Result<MinCostMaximumMatching, WeightedError> {
     check_costs(graph, costs)?;
-    let (_, _, barrier) = crate::karp_sipser_maximum_with(graph, &Default::default());
+    let (mut pairing, _, mut barrier) = crate::karp_sipser_maximum_with(graph, &Default::default());
+    if barrier.is_empty() && pairing.unmatched_count(graph) > 0 {
+        // KS proved maximality by parity alone; the exposure sets want the Gallai–Edmonds
+        // barrier, which a search from the unmatched nodes gives.
+        barrier = crate::augment_to_maximum(graph, &mut pairing, AugmentStrategy::Forest)
+            .expect("KS's pairing fits its graph")
+            .1;
+    }
     let sets = ExposureSets::of(graph, &barrier);
     if sets.dummies == 0 {
         let exact = min_cost_perfect_matching(graph, costs)?;
