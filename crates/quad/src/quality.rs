@@ -322,15 +322,20 @@ pub struct QuadFigures<'a> {
     pub median_max_angle_deviation: f64,
 }
 
-impl QualityQuads {
-    /// The figures of `surftopo quad --json`, for the objective named `objective`.
-    pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
-        let r = &self.report;
+impl<'a> QuadFigures<'a> {
+    /// The figures of a pairing's quads: its statistics, objective, cost and quality report.
+    pub(crate) fn of(
+        stats: &'a crate::QuadStats,
+        objective: &'a str,
+        cost: f64,
+        optimality_gap: Option<f64>,
+        r: &QualityReport,
+    ) -> Self {
         QuadFigures {
-            stats: &self.result.stats,
+            stats,
             objective,
-            cost: self.cost,
-            optimality_gap: self.optimality_gap,
+            cost,
+            optimality_gap,
             quality: QualitySummary {
                 min: r.min,
                 p5: r.p5,
@@ -340,6 +345,19 @@ impl QualityQuads {
             bad_quads_percent: r.bad_quads_percent,
             median_max_angle_deviation: r.median_max_angle_deviation_degrees,
         }
+    }
+}
+
+impl QualityQuads {
+    /// The figures of `surftopo quad --json`, for the objective named `objective`.
+    pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
+        QuadFigures::of(
+            &self.result.stats,
+            objective,
+            self.cost,
+            self.optimality_gap,
+            &self.report,
+        )
     }
 }
 

@@ -31,7 +31,7 @@ use crate::quality::{
     COST_RESOLUTION, QualityObjective, QualityReport, cost_of_angles, diagonal_quad_angles,
     diagonal_quality_report,
 };
-use crate::{QuadAlgorithm, QuadError, QuadFigures, QualitySummary};
+use crate::{QuadAlgorithm, QuadError, QuadFigures};
 
 /// A quality-aware quadrangulation of a compact surface: the quads, their total cost and quality.
 #[derive(Clone, Debug)]
@@ -51,21 +51,13 @@ pub struct SurfaceQualityQuads {
 impl SurfaceQualityQuads {
     /// The figures of `surftopo quad --json`, for the objective named `objective`.
     pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
-        let r = &self.report;
-        QuadFigures {
-            stats: &self.result.stats,
+        QuadFigures::of(
+            &self.result.stats,
             objective,
-            cost: self.cost,
-            optimality_gap: self.optimality_gap,
-            quality: QualitySummary {
-                min: r.min,
-                p5: r.p5,
-                median: r.median,
-                mean: r.mean,
-            },
-            bad_quads_percent: r.bad_quads_percent,
-            median_max_angle_deviation: r.median_max_angle_deviation_degrees,
-        }
+            self.cost,
+            self.optimality_gap,
+            &self.report,
+        )
     }
 
     /// Wraps a quadrangulation with its cost and quality, measured on the quads.
