@@ -161,6 +161,15 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
     matched: &[u32],
     certificate: &Certificate,
 ) -> Result<i64, CertificateError> {
+    cost_count(graph, costs)?;
+    verify_on(&(graph, costs), matched, certificate)
+}
+
+/// A verifier's first check: one cost per edge slot of `graph`.
+pub(super) fn cost_count<G: DualGraph + ?Sized>(
+    graph: &G,
+    costs: &[i64],
+) -> Result<(), CertificateError> {
     if costs.len() != graph.edge_slots() {
         return Err(CertificateError::Size(format!(
             "{} costs for {} edge slots",
@@ -168,7 +177,7 @@ pub fn verify_min_cost_perfect_matching<G: DualGraph + ?Sized>(
             graph.edge_slots()
         )));
     }
-    verify_on(&(graph, costs), matched, certificate)
+    Ok(())
 }
 
 /// A graph with edge costs as the verifier reads it: node slots and their liveness, edge slots

@@ -40,7 +40,7 @@
 use surftopo_mesh::UnionFind;
 
 use super::blossom::{BlossomStats, ExtraLists, solve_with_extra};
-use super::certificate::{Certificate, CertificateError, CostGraph, verify_on};
+use super::certificate::{Certificate, CertificateError, CostGraph, cost_count, verify_on};
 use super::{WeightedError, check_costs, min_cost_perfect_matching};
 use crate::augment::AugmentStrategy;
 use crate::dual_graph::{DualGraph, NONE};
@@ -286,13 +286,7 @@ pub fn verify_min_cost_maximum_matching<G: DualGraph + ?Sized>(
     matched: &[u32],
     certificate: &MaximumCertificate,
 ) -> Result<i64, CertificateError> {
-    if costs.len() != graph.edge_slots() {
-        return Err(CertificateError::Size(format!(
-            "{} costs for {} edge slots",
-            costs.len(),
-            graph.edge_slots()
-        )));
-    }
+    cost_count(graph, costs)?;
     let kappa = certificate.exposure_cost;
     if !(0..=super::MAX_COST).contains(&kappa) {
         return Err(CertificateError::Size(format!("exposure cost {kappa}")));
