@@ -308,7 +308,7 @@ pub fn classify_surface(triangles: &[[u32; 3]]) -> Result<Vec<Piece>, String> {
                     if g == f {
                         continue;
                     }
-                    // Consistent orientations run a shared edge in opposite directions.
+                    // Two faces oriented alike traverse their shared edge in opposite directions.
                     let want = sign[f].unwrap() ^ (forward == (a < b));
                     match sign[g] {
                         None => {
