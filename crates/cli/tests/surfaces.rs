@@ -173,17 +173,15 @@ fn commands_name_what_they_do_not_support_yet() {
     ];
     for (input, message) in &cases {
         let out = surftopo()
-            .arg("isometric")
+            .args(["generate", "intrinsic-flips", "--count", "3", "--input"])
             .arg(input)
-            .arg(input)
+            .arg("-o")
+            .arg(dir.path().join("flipped.json"))
             .output()
             .unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{stderr}");
-        assert!(
-            stderr.contains(&format!("isometric: {message}")),
-            "{stderr}"
-        );
+        assert!(stderr.contains(&format!("generate: {message}")), "{stderr}");
     }
 }
 

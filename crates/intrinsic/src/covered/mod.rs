@@ -150,6 +150,29 @@ impl CoveredTriangulation {
         })
     }
 
+    /// A closed orientable surface as its own cover (no apex, no mirror, vertex ids as the
+    /// vertices of K), so that it can be compared with a surface of any kind.
+    pub fn from_closed(tri: IntrinsicTriangulation) -> Self {
+        let mesh = tri.mesh();
+        let class = (0..mesh.vertex_slots())
+            .map(|v| {
+                if mesh.is_vertex_live(VertexId::new(v)) {
+                    v as u32
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        let (surface_vertices, frozen) = (mesh.vertex_slots(), vec![false; mesh.edge_slots()]);
+        Self {
+            tri,
+            class,
+            surface_vertices,
+            mirror: Vec::new(),
+            frozen,
+        }
+    }
+
     /// The cover D with its lengths (virtual triangles included).
     pub fn cover(&self) -> &IntrinsicTriangulation {
         &self.tri

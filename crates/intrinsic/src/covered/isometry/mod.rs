@@ -47,8 +47,10 @@
 //! co-circularity ×10³, ×10⁻³ and length ×10², ×10⁻² (as [`crate::decide_isometry`]'s step 4);
 //! *unsure* otherwise (a flat vertex, or a variant finds a correspondence). The surfaces are
 //! isometric when the pieces pair up with pairs that are the same; not isometric when no pairing
-//! avoids a different pair (then every pairing contains a proven difference); undecidable
-//! otherwise. A numerical breakdown of the flips is undecidable too.
+//! avoids a different pair (then every pairing contains a proven difference); otherwise
+//! [`IsometryDecision::Undecided`] when the unsure pair has a flat vertex (the method's limit,
+//! not rounding's), [`IsometryDecision::Undecidable`] when a tolerance variant matched. A
+//! numerical breakdown of the flips is undecidable too.
 
 mod pieces;
 
@@ -145,7 +147,10 @@ pub fn piece_tessellations(
 enum PairVerdict {
     Same(String),
     Different(String),
+    /// A tolerance variant finds a correspondence: rounding cannot settle it.
     Unsure(String),
+    /// A flat vertex is kept, so a failed comparison proves nothing.
+    Flat(String),
 }
 
 /// Whether two surfaces of any kind are isometric, not isometric (proven), or undecidable in
@@ -294,7 +299,7 @@ fn pair_verdict(
         })
     };
     if let Some(reason) = flat(p.flat, "first").or_else(|| flat(q.flat, "second")) {
-        return Ok(PairVerdict::Unsure(format!(
+        return Ok(PairVerdict::Flat(format!(
             "the tessellations differ ({difference}), which proves nothing: {reason}"
         )));
     }
@@ -353,8 +358,12 @@ fn pair_up(
         }
     }
     let is_same = |v: &Option<PairVerdict>| matches!(v, Some(PairVerdict::Same(_)));
-    let maybe =
-        |v: &Option<PairVerdict>| matches!(v, Some(PairVerdict::Same(_) | PairVerdict::Unsure(_)));
+    let maybe = |v: &Option<PairVerdict>| {
+        matches!(
+            v,
+            Some(PairVerdict::Same(_) | PairVerdict::Unsure(_) | PairVerdict::Flat(_))
+        )
+    };
     // If the greedy pairing fails: every pair of the same kind, then augmenting paths.
     let mut table = vec![vec![None; n]; n];
     let paired = if partner.iter().all(|&j| j != usize::MAX) {
@@ -379,9 +388,12 @@ fn pair_up(
     }
     let pair_reason = |i: usize, j: usize| -> String {
         let text = match &table[i][j] {
-            Some(PairVerdict::Same(r) | PairVerdict::Different(r) | PairVerdict::Unsure(r)) => {
-                r.clone()
-            }
+            Some(
+                PairVerdict::Same(r)
+                | PairVerdict::Different(r)
+                | PairVerdict::Unsure(r)
+                | PairVerdict::Flat(r),
+            ) => r.clone(),
             None => "they are different surfaces".into(),
         };
         if n == 1 {
@@ -396,7 +408,10 @@ fn pair_up(
                 .map(|i| (i, partner[i]))
                 .find(|&(i, j)| !is_same(&table[i][j]))
                 .expect("some pair of an unsure matching is unsure");
-            Ok(IsometryDecision::Undecidable(pair_reason(i, j)))
+            Ok(match table[i][j] {
+                Some(PairVerdict::Flat(_)) => IsometryDecision::Undecided(pair_reason(i, j)),
+                _ => IsometryDecision::Undecidable(pair_reason(i, j)),
+            })
         }
         None => {
             // A piece of the first with no possible partner names the proof; otherwise every
@@ -435,7 +450,10 @@ fn described(
     second: &mut Surface,
 ) -> Result<String, IsometryError> {
     let reason = match verdict(first, second, 0, partner[0])? {
-        PairVerdict::Same(r) | PairVerdict::Different(r) | PairVerdict::Unsure(r) => r,
+        PairVerdict::Same(r)
+        | PairVerdict::Different(r)
+        | PairVerdict::Unsure(r)
+        | PairVerdict::Flat(r) => r,
     };
     if partner.len() == 1 {
         return Ok(reason);
