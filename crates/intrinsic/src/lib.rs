@@ -29,7 +29,8 @@
 //! - [`voronoi`] (Appendix D): the wave and the dual of its Voronoi diagram.
 //! - [`dubois`] (Sections 3, 4, 8; Theorem 1): ALGORITHM, tubes and bifaces, caps,
 //!   [`dubois::delaunay_tessellation_dubois`]. `isometry/` (Appendix A, Corollary 2):
-//!   [`isometric`], [`decide_isometry`]. `laplacian`: [`cotan_laplacian`] (positive
+//!   [`isometric`], [`decide_isometry`]; on surfaces with boundary, non-orientable or in
+//!   pieces, [`decide_isometry_on_cover`] (ours, `docs/isometry_every_surface.md`). `laplacian`: [`cotan_laplacian`] (positive
 //!   semidefinite), [`lumped_mass`], [`intrinsic_delaunay_laplacian`] (flips and assembles in one
 //!   call, libigl's `intrinsic_delaunay_cotmatrix`).
 //! - `tufted/`: [`tufted_laplacian`], the Laplacian and mass matrix of any triangle soup
