@@ -79,7 +79,7 @@ struct Surface<'a> {
 
 impl<'a> Surface<'a> {
     fn new(input: &'a CoveredTriangulation, index: usize, options: &IsometryOptions) -> Self {
-        let (component, _) = components(input);
+        let component = components(input);
         let margin = FLAT_MARGIN_FACTOR * options.angle_tolerance;
         let pieces = pieces(input, &component, margin);
         Self {
@@ -272,9 +272,9 @@ fn pair_verdict(
                    cocircular: f64,
                    length: f64|
      -> Result<Result<MapMatch, String>, IsometryError> {
-        let ma = first.map(i, cocircular, options)?.clone();
+        let ma = first.map(i, cocircular, options)?;
         let mb = second.map(j, cocircular, options)?;
-        Ok(compare_twisted(&ma, mb, length, both_senses).map_err(|d| d.to_string()))
+        Ok(compare_twisted(ma, mb, length, both_senses).map_err(|d| d.to_string()))
     };
     let default = compare(
         first,

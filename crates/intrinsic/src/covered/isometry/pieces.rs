@@ -44,9 +44,9 @@ impl Piece {
     }
 }
 
-/// The component of every face of the cover D (a component of D is the lift of one of K), by
-/// the smallest face id in it, and the components in that order.
-pub(crate) fn components(tri: &CoveredTriangulation) -> (Vec<u32>, Vec<FaceId>) {
+/// The component of every face of the cover D (a component of D is the lift of one of K),
+/// numbered in the order of their smallest face ids; `u32::MAX` for dead face slots.
+pub(crate) fn components(tri: &CoveredTriangulation) -> Vec<u32> {
     let mesh = tri.tri.mesh();
     let mut sets = UnionFind::new(mesh.face_slots());
     for h in mesh.halfedges() {
@@ -54,16 +54,16 @@ pub(crate) fn components(tri: &CoveredTriangulation) -> (Vec<u32>, Vec<FaceId>) 
     }
     let mut component = vec![u32::MAX; mesh.face_slots()];
     let mut roots = vec![u32::MAX; mesh.face_slots()];
-    let mut firsts = Vec::new();
+    let mut count = 0;
     for f in mesh.faces() {
         let root = sets.find(f.0) as usize;
         if roots[root] == u32::MAX {
-            roots[root] = firsts.len() as u32;
-            firsts.push(f);
+            roots[root] = count;
+            count += 1;
         }
         component[f.idx()] = roots[root];
     }
-    (component, firsts)
+    component
 }
 
 /// The pieces of K, in the order of [`components`], with their invariants; a vertex is taken
