@@ -218,7 +218,10 @@ fn a_triangle_soup_gets_the_weld_hint() {
         .unwrap();
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(0), "{stderr}");
-    assert!(stderr.contains("note: ") && stderr.contains(hint), "{stderr}");
+    assert!(
+        stderr.contains("note: ") && stderr.contains(hint),
+        "{stderr}"
+    );
     assert!(stderr.contains("the 4 pieces pair up"), "{stderr}");
     // `quad` and `delaunay` take several pieces (four lone triangles), with the hint as a note.
     for (command, output) in [("quad", "q.obj"), ("delaunay", "d.json")] {

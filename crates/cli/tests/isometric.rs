@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{generated_genus_surface, surftopo};
+use common::{generate, generated_genus_surface, surftopo};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -191,19 +191,6 @@ fn tessellation_files_of_delaunay_are_inputs() {
     expect(&far, &tessellation, &[], 1, Value::Bool(false));
 }
 
-/// `surftopo generate ARGS -o dir/name`.
-fn generated(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
-    let path = dir.join(name);
-    surftopo()
-        .arg("generate")
-        .args(args)
-        .arg("-o")
-        .arg(&path)
-        .assert()
-        .success();
-    path
-}
-
 /// The vertices and faces (1-based) of an OBJ file of triangles.
 fn obj(path: &Path) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
     let text = std::fs::read_to_string(path).unwrap();
@@ -263,10 +250,10 @@ fn every_surface_kind_against_its_copies_mirror_images_and_scaled_copies() {
     for (name, args) in kinds {
         let mut args = args.to_vec();
         args.extend(["--seed", "5"]);
-        let mesh = generated(d, &format!("{name}.obj"), &args);
+        let mesh = generate(d, &format!("{name}.obj"), &args);
         let mut shuffled_args = args.clone();
         shuffled_args.push("--shuffle-faces");
-        let shuffled = generated(d, &format!("{name}-shuffled.obj"), &shuffled_args);
+        let shuffled = generate(d, &format!("{name}-shuffled.obj"), &shuffled_args);
         let json = expect(&mesh, &shuffled, &[], 0, Value::Bool(true));
         assert!(
             json["reason"].as_str().unwrap().contains("correspond"),
@@ -291,8 +278,8 @@ fn every_surface_kind_against_its_copies_mirror_images_and_scaled_copies() {
 fn pieces_boundary_lengths_and_kinds_are_compared() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let band = generated(d, "band.obj", &["mobius-band"]);
-    let ring = generated(d, "ring.obj", &["annulus"]);
+    let band = generate(d, "band.obj", &["mobius-band"]);
+    let ring = generate(d, "ring.obj", &["annulus"]);
     let both = joined(d, "both.obj", &[&band, &ring], |p| p);
     let swapped = joined(d, "swapped.obj", &[&ring, &band], |p| p);
     expect(&both, &swapped, &[], 0, Value::Bool(true));
@@ -324,7 +311,7 @@ fn pieces_boundary_lengths_and_kinds_are_compared() {
         "{json}"
     );
     // A closed mesh of one piece against a band: compared, not refused.
-    let torus = generated(d, "torus.obj", &["torus"]);
+    let torus = generate(d, "torus.obj", &["torus"]);
     expect(&torus, &band, &[], 1, Value::Bool(false));
 }
 
@@ -332,9 +319,9 @@ fn pieces_boundary_lengths_and_kinds_are_compared() {
 fn flat_vertices_on_open_surfaces_are_undecided_and_the_wave_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let band = generated(d, "band.obj", &["mobius-band"]);
+    let band = generate(d, "band.obj", &["mobius-band"]);
     // Midpoint subdivision keeps the surface and adds flat vertices: no proof either way.
-    let finer = generated(d, "finer.obj", &["mobius-band", "--subdivide", "1"]);
+    let finer = generate(d, "finer.obj", &["mobius-band", "--subdivide", "1"]);
     let json = expect(&band, &finer, &[], 3, Value::Null);
     assert_eq!(json["verdict"], "undecided");
     assert!(json["reason"].as_str().unwrap().contains("flat"), "{json}");

@@ -1,4 +1,4 @@
-//! `surftopo isometric`: whether two closed polyhedral surfaces are isometric (Corollary 2 of the
+//! `surftopo isometric`: whether two polyhedral surfaces are isometric (Corollary 2 of the
 //! intrinsic-Delaunay paper: their canonical Delaunay tessellations are equal), or that double
 //! precision cannot decide. The canonical tessellations come from flipping (`--method flip`),
 //! from the Voronoi wave from the singular vertices (`--method voronoi`), or from Dubois'
