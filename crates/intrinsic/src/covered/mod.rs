@@ -344,17 +344,27 @@ impl CoveredTriangulation {
                 }
             }
         }
-        if !reversed.contains(&true) {
-            reversed.clear();
-        }
-        PortalgonDoc {
-            format: FORMAT_NAME.to_string(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons,
-            matching,
-            reversed,
-        }
+        glued_doc(polygons, matching, reversed)
+    }
+}
+
+/// The document of polygons glued by `matching`, `reversed` per pair (kept only when some pair
+/// reverses orientation).
+fn glued_doc(
+    polygons: Vec<PolygonDoc>,
+    matching: Vec<[[usize; 2]; 2]>,
+    mut reversed: Vec<bool>,
+) -> PortalgonDoc {
+    if !reversed.contains(&true) {
+        reversed.clear();
+    }
+    PortalgonDoc {
+        format: FORMAT_NAME.to_string(),
+        version: ORIENTED_VERSION,
+        comment: None,
+        polygons,
+        matching,
+        reversed,
     }
 }
 
@@ -409,18 +419,8 @@ impl CoveredTriangulation {
                 .iter()
                 .map(|&(s, t, _)| [polygon_of(s), polygon_of(t)])
                 .collect();
-            let mut reversed: Vec<bool> = cells.gluings.iter().map(|g| g.2).collect();
-            if !reversed.contains(&true) {
-                reversed.clear();
-            }
-            PortalgonDoc {
-                format: FORMAT_NAME.to_string(),
-                version: ORIENTED_VERSION,
-                comment: None,
-                polygons,
-                matching,
-                reversed,
-            }
+            let reversed = cells.gluings.iter().map(|g| g.2).collect();
+            glued_doc(polygons, matching, reversed)
         })
     }
 }
