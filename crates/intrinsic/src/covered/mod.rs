@@ -190,6 +190,11 @@ impl CoveredTriangulation {
         self.is_real_face(mesh.face(h)) != self.is_real_face(mesh.face(h.twin()))
     }
 
+    /// The edge of K an edge of D stands for: itself, or the first of its mirror pair.
+    pub fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        self.mirror(e.halfedge()).map_or(e, |m| e.min(m.edge()))
+    }
+
     /// The edges of K (see [`Self::is_surface_edge`]).
     pub fn surface_edges(&self) -> impl Iterator<Item = EdgeId> + '_ {
         self.tri.mesh().edges().filter(|&e| self.is_surface_edge(e))
@@ -440,7 +445,7 @@ impl CellSurface for CoveredTriangulation {
     }
 
     fn surface_edge(&self, e: EdgeId) -> EdgeId {
-        self.mirror(e.halfedge()).map_or(e, |m| e.min(m.edge()))
+        CoveredTriangulation::surface_edge(self, e)
     }
 
     fn label(&self, v: VertexId) -> u32 {
