@@ -209,9 +209,10 @@ pub fn augment_to_perfect<G: DualGraph + ?Sized>(
 ///
 /// The strategies are [`augment_to_perfect`]'s; a search that finds no augmenting path leaves
 /// its roots unmatched instead of failing (a pass of [`AugmentStrategy::Forest`] or
-/// [`AugmentStrategy::Global`] without an augmentation ends the run; a complete single-root
-/// search of [`AugmentStrategy::Local`] drops its root). Complexity: as
-/// [`augment_to_perfect`], plus the barrier's search from the roots left (O(n α(n))).
+/// [`AugmentStrategy::Global`] without an augmentation ends the run, and that pass, a search
+/// from every unmatched node, gives the barrier; a complete single-root search of
+/// [`AugmentStrategy::Local`] drops its root, and the barrier takes one more search from the
+/// roots left). Complexity: as [`augment_to_perfect`], plus O(n α(n)) for Local's barrier.
 ///
 /// # Errors
 /// [`AugmentError::BadPairing`] when the pairing does not fit the graph (nothing is changed).
@@ -243,7 +244,9 @@ pub fn augment_to_maximum<G: DualGraph + ?Sized>(
     Ok((stats, barrier))
 }
 
-/// [`augment_on`] to a maximum, then the barrier.
+/// [`augment_on`] to a maximum, then the barrier: with every node matched, none; after the
+/// Forest or Global passes, whose last was a search from every unmatched node that found no
+/// augmenting path, its odd nodes; after Local's single-root searches, [`barrier`]'s search.
 #[allow(clippy::type_complexity)]
 fn maximum_on<G: DualGraph + ?Sized>(
     graph: &G,
@@ -253,7 +256,13 @@ fn maximum_on<G: DualGraph + ?Sized>(
 ) -> Result<(AugmentStats, Vec<[u32; 2]>, Vec<u32>), AugmentError> {
     let (mut stats, mut mates, mut search) =
         augment_on(graph, pairing, pending, strategy, Goal::Maximum)?;
-    let barrier = barrier(graph, &mut mates, &mut search, &mut stats);
+    let perfect =
+        (0..graph.node_slots() as u32).all(|v| !graph.is_node(v) || mates[v as usize][0] != NONE);
+    let barrier = match strategy {
+        _ if perfect => Vec::new(),
+        AugmentStrategy::Forest | AugmentStrategy::Global => search.odd_nodes(),
+        AugmentStrategy::Local { .. } => barrier(graph, &mut mates, &mut search, &mut stats),
+    };
     Ok((stats, mates, barrier))
 }
 
