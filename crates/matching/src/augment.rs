@@ -209,9 +209,10 @@ pub fn augment_to_perfect<G: DualGraph + ?Sized>(
 ///
 /// The strategies are [`augment_to_perfect`]'s; a search that finds no augmenting path leaves
 /// its roots unmatched instead of failing (a pass of [`AugmentStrategy::Forest`] or
-/// [`AugmentStrategy::Global`] without an augmentation ends the run; a complete single-root
-/// search of [`AugmentStrategy::Local`] drops its root). Complexity: as
-/// [`augment_to_perfect`], plus the barrier's search from the roots left (O(n α(n))).
+/// [`AugmentStrategy::Global`] without an augmentation ends the run, and that pass, a search
+/// from every unmatched node, gives the barrier; a complete single-root search of
+/// [`AugmentStrategy::Local`] drops its root, and the barrier takes one more search from the
+/// roots left). Complexity: as [`augment_to_perfect`], plus O(n α(n)) for Local's barrier.
 ///
 /// # Errors
 /// [`AugmentError::BadPairing`] when the pairing does not fit the graph (nothing is changed).
@@ -243,7 +244,9 @@ pub fn augment_to_maximum<G: DualGraph + ?Sized>(
     Ok((stats, barrier))
 }
 
-/// [`augment_on`] to a maximum, then the barrier.
+/// [`augment_on`] to a maximum, then the barrier: with every node matched, none; after the
+/// Forest or Global passes, whose last was a search from every unmatched node that found no
+/// augmenting path, its odd nodes; after Local's single-root searches, [`barrier`]'s search.
 #[allow(clippy::type_complexity)]
 fn maximum_on<G: DualGraph + ?Sized>(
     graph: &G,
@@ -253,7 +256,13 @@ fn maximum_on<G: DualGraph + ?Sized>(
 ) -> Result<(AugmentStats, Vec<[u32; 2]>, Vec<u32>), AugmentError> {
     let (mut stats, mut mates, mut search) =
         augment_on(graph, pairing, pending, strategy, Goal::Maximum)?;
-    let barrier = barrier(graph, &mut mates, &mut search, &mut stats);
+    let perfect =
+        (0..graph.node_slots() as u32).all(|v| !graph.is_node(v) || mates[v as usize][0] != NONE);
+    let barrier = match strategy {
+        _ if perfect => Vec::new(),
+        AugmentStrategy::Forest | AugmentStrategy::Global => search.odd_nodes(),
+        AugmentStrategy::Local { .. } => barrier(graph, &mut mates, &mut search, &mut stats),
+    };
     Ok((stats, mates, barrier))
 }
 
@@ -345,14 +354,13 @@ pub(crate) fn barrier<G: DualGraph + ?Sized>(
             &roots,
             usize::MAX,
             OnPath::Stop,
+            1,
             stats,
             |_| true,
         );
         stats.reached += search.reached as u64;
         if outcome == Outcome::Exhausted {
-            return (0..graph.node_slots() as u32)
-                .filter(|&v| search.label(v) == ODD)
-                .collect();
+            return search.odd_nodes();
         }
     }
 }
@@ -416,6 +424,7 @@ fn augment_on<G: DualGraph + ?Sized>(
             pending,
             OnPath::Stop,
             goal,
+            None,
             &mut stats,
         ),
         AugmentStrategy::Forest => forest(
@@ -425,6 +434,7 @@ fn augment_on<G: DualGraph + ?Sized>(
             pending,
             OnPath::Wall,
             goal,
+            None,
             &mut stats,
         ),
         AugmentStrategy::Local { initial_budget } => local(
@@ -446,23 +456,47 @@ fn augment_on<G: DualGraph + ?Sized>(
 /// Completes `mates` by the Forest strategy from the unmatched nodes `pending`, reusing `search`
 /// (for callers that already hold the mates and the search state, like [`crate::karp_sipser`]).
 /// With [`Goal::Maximum`], the roots left when a pass finds no augmenting path stay unmatched.
+/// With a `floor` (only with `pending` holding every unmatched node): the completion stops, even
+/// inside a pass, once only `floor` nodes are unmatched, where `floor` is a bound no matching
+/// betters (see [`forest`]).
 pub(crate) fn complete<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
     search: &mut Search,
     pending: Vec<u32>,
     goal: Goal,
+    floor: Option<usize>,
     stats: &mut AugmentStats,
 ) -> Result<(), AugmentError> {
     stats.unmatched_before += pending.len();
-    forest(graph, mates, search, pending, OnPath::Reopen, goal, stats)
+    forest(
+        graph,
+        mates,
+        search,
+        pending,
+        OnPath::Reopen,
+        goal,
+        floor,
+        stats,
+    )
 }
 
 /// Passes of forest searches from the unmatched nodes until none is left: Global (`OnPath::Stop`,
 /// one augmentation per forest), Forest (`OnPath::Wall`) or the KS completion (`OnPath::Reopen`).
 /// A pass without an augmentation retired no tree, so it was a complete search from all the
 /// roots: none has an augmenting path (Edmonds), an error for [`Goal::Perfect`], the end for
-/// [`Goal::Maximum`] (the matching is maximum, by Berge's theorem).
+/// [`Goal::Maximum`] (the matching is maximum, by Berge's theorem); the search state then holds
+/// that search, whose odd nodes are the Tutte–Berge barrier ([`Search::odd_nodes`], as
+/// [`barrier`] finds it) when `pending` held every unmatched node.
+///
+/// `floor`, when given, is a number of unmatched nodes that no matching of the graph betters
+/// (e.g. its pieces of odd size: Tutte–Berge with an empty barrier), and `pending` must hold every
+/// unmatched node: the passes then stop, in the middle of one if need be, after the augmentation
+/// that leaves `floor` nodes unmatched, which proves the matching maximum without the complete
+/// search that would otherwise end the run. Without it a lone root left in the last pass grows
+/// its tree over its whole piece, once more in the pass that finds nothing, and once more in the
+/// barrier's search.
+#[allow(clippy::too_many_arguments)]
 fn forest<G: DualGraph + ?Sized>(
     graph: &G,
     mates: &mut [[u32; 2]],
@@ -470,12 +504,27 @@ fn forest<G: DualGraph + ?Sized>(
     mut pending: Vec<u32>,
     on_path: OnPath,
     goal: Goal,
+    floor: Option<usize>,
     stats: &mut AugmentStats,
 ) -> Result<(), AugmentError> {
     while !pending.is_empty() {
+        // Each augmentation matches two unmatched nodes.
+        let max_paths = floor.map_or(usize::MAX, |f| pending.len().saturating_sub(f) / 2);
+        if max_paths == 0 {
+            return Ok(());
+        }
         stats.searches += 1;
         let before = stats.augmentations;
-        search.run(graph, mates, &pending, usize::MAX, on_path, stats, |_| true);
+        search.run(
+            graph,
+            mates,
+            &pending,
+            usize::MAX,
+            on_path,
+            max_paths,
+            stats,
+            |_| true,
+        );
         stats.reached += search.reached as u64;
         if stats.augmentations == before {
             if goal == Goal::Maximum {
@@ -517,7 +566,7 @@ fn local<G: DualGraph + ?Sized>(
                 continue;
             }
             stats.searches += 1;
-            let outcome = search.run(graph, mates, &[r], limit, OnPath::Stop, stats, |_| true);
+            let outcome = search.run(graph, mates, &[r], limit, OnPath::Stop, 1, stats, |_| true);
             stats.reached += search.reached as u64;
             match outcome {
                 Outcome::Augmented => {}
@@ -722,7 +771,8 @@ impl Search {
     }
 
     /// One search from `roots` (all unmatched), reaching at most `budget` nodes; after each
-    /// augmenting path it does what `on_path` says ([`OnPath`]).
+    /// augmenting path it does what `on_path` says ([`OnPath`]), and it stops after `max_paths`
+    /// of them (at least 1).
     /// Confined to the nodes for which `allowed` holds (and the roots, and the mates of allowed
     /// nodes): a node outside is never reached through a non-matching edge.
     #[allow(clippy::too_many_arguments)]
@@ -733,6 +783,7 @@ impl Search {
         roots: &[u32],
         budget: usize,
         on_path: OnPath,
+        max_paths: usize,
         stats: &mut AugmentStats,
         allowed: impl Fn(u32) -> bool,
     ) -> Outcome {
@@ -749,7 +800,7 @@ impl Search {
             self.queue.push(r);
         }
         let keep_going = on_path != OnPath::Stop;
-        let mut augmented = false;
+        let mut paths = 0;
         let mut head = 0;
         'scan: while head < self.queue.len() {
             self.prefetch_ahead(graph, mates, head);
@@ -781,8 +832,8 @@ impl Search {
                     let [_, m] = mates[w as usize];
                     if m == NONE {
                         self.augment(graph, mates, v, e, w, false, stats);
-                        augmented = true;
-                        if !keep_going {
+                        paths += 1;
+                        if !keep_going || paths == max_paths {
                             break 'scan;
                         }
                         continue 'scan;
@@ -799,8 +850,8 @@ impl Search {
                 } else if label == EVEN {
                     if self.state[v as usize][ROOT] != self.state[w as usize][ROOT] {
                         self.augment(graph, mates, v, e, w, true, stats);
-                        augmented = true;
-                        if !keep_going {
+                        paths += 1;
+                        if !keep_going || paths == max_paths {
                             break 'scan;
                         }
                         continue 'scan;
@@ -811,11 +862,19 @@ impl Search {
                 } // odd: nothing to do
             }
         }
-        if augmented {
+        if paths > 0 {
             Outcome::Augmented
         } else {
             Outcome::Exhausted
         }
+    }
+
+    /// The nodes labelled odd by the last search, in increasing order: after a search from every
+    /// unmatched node that found no augmenting path, the Tutte–Berge barrier (see [`barrier`]).
+    pub(crate) fn odd_nodes(&self) -> Vec<u32> {
+        (0..self.stamp.len() as u32)
+            .filter(|&v| self.label(v) == ODD)
+            .collect()
     }
 
     /// Starts loading what the scans of the queued nodes ahead of `head` will read: the
@@ -988,6 +1047,7 @@ mod tests {
                     &mut search,
                     (0..n).collect(),
                     Goal::Perfect,
+                    None,
                     &mut stats,
                 )
                 .unwrap();

@@ -569,3 +569,61 @@ fn ks_proves_maximum_by_parity_when_it_can() {
         check_maximum(name, &dual, pairing, &barrier);
     }
 }
+
+/// Surfaces with many holes (one per ~170 triangles, as `open_peers` cuts 600 into 100k), cut
+/// around random vertices of randomly flipped spheres: boundary-heavy pieces whose triangle
+/// counts are odd or even, where KS without repairs defers many triangles to its completion.
+/// The completion stops at the floor of Tutte–Berge with an empty barrier (one triangle per odd
+/// piece) instead of searching the whole piece again, twice (the pass that finds nothing and
+/// the barrier's search); above the floor its barrier is the last pass's. Each result is checked
+/// by the verifier and against petgraph.
+#[test]
+fn ks_completion_stops_at_the_parity_floor_on_boundary_heavy_pieces() {
+    use surftopo_mesh::CoveredSurface;
+    use surftopo_mesh::generators::{icosphere, random_flips_covered};
+    let sphere: CoveredSurface = icosphere(3).into();
+    let without_repairs = KarpSipserOptions {
+        repair_budget: 0,
+        guided_completion: false,
+        ..KarpSipserOptions::default()
+    };
+    let (mut odd, mut searched) = (0, 0);
+    for seed in 0..12u64 {
+        let flipped = random_flips_covered(&sphere, 600, seed);
+        let (holed, cut) = cut_holes(&flipped, 8, seed);
+        let triangles = holed.cover.surface_triangles();
+        let dual = SurfaceDual::of_cover(&cover_of(&triangles));
+        let nodes = dual.node_count();
+        let odd_pieces = {
+            let (component, count) = dual.components();
+            let mut sizes = vec![0usize; count];
+            for v in (0..dual.node_slots() as u32).filter(|&v| dual.is_node(v)) {
+                sizes[component[v as usize] as usize] += 1;
+            }
+            sizes.iter().filter(|&&s| s % 2 == 1).count()
+        };
+        for options in [without_repairs, KarpSipserOptions::default()] {
+            let name = format!("sphere with {cut} holes, seed {seed}, {options:?}");
+            let (pairing, stats, barrier) = karp_sipser_maximum_with(&dual, &options);
+            let left = check_maximum(&name, &dual, pairing, &barrier);
+            if left == odd_pieces {
+                assert!(barrier.is_empty(), "{name}: {barrier:?}");
+            }
+            if options == without_repairs && stats.completed > 1 && odd_pieces > 0 {
+                // Before the floor, the lone root's pass and the barrier's search alone reached
+                // every node of its piece twice.
+                assert!(
+                    stats.completion_reached < nodes as u64,
+                    "{name}: {} nodes reached, {nodes} nodes",
+                    stats.completion_reached
+                );
+                searched += 1;
+            }
+        }
+        odd += usize::from(odd_pieces > 0);
+    }
+    assert!(
+        odd >= 3 && searched >= 3,
+        "{odd} odd inputs, {searched} searched"
+    );
+}

@@ -22,6 +22,16 @@
 //! complete search, so the result is always perfect, or an [`AugmentError`] proves that the
 //! graph has no perfect matching.
 //!
+//! To a maximum ([`karp_sipser_maximum_with`]), phase 5 starts from every unpaired node and stops
+//! as soon as the unpaired nodes are as few as the pieces of odd size, even in the middle of a
+//! pass: the Tutte–Berge bound with an empty barrier (Berge, 1958: every matching leaves at least
+//! one node of each component of odd size unmatched) proves the matching maximum then, where
+//! going on would grow the last root's tree over its whole piece for nothing, twice (the pass
+//! that finds no path, and the barrier's search). Otherwise its last pass is a complete search
+//! from every unpaired node that found no augmenting path, and the odd nodes of that search are
+//! the Gallai–Edmonds barrier (as [`crate::augment_to_maximum`] finds it), taken without
+//! searching again.
+//!
 //! Figures are those of the paper's Table 4.3: the greedy counts as the initial pairing; every
 //! repair and the completion count as augmentation (timed separately); "unpaired" is the number
 //! of isolated nodes met.
@@ -39,12 +49,9 @@ mod subdivision;
 
 use std::time::Instant;
 
-use surftopo_mesh::UnionFind;
-
-use crate::augment::{
-    AugmentError, AugmentStats, Goal, OnPath, Outcome, Search, barrier, complete,
-};
+use crate::augment::{AugmentError, AugmentStats, Goal, OnPath, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
+use crate::surface_dual::components_of;
 use file_order::file_order_pairing;
 use greedy::Greedy;
 use guided::GuidedCompletion;
@@ -160,12 +167,13 @@ pub fn karp_sipser_perfect_with<G: DualGraph + ?Sized>(
 /// triangles may not all pair): the phases of [`karp_sipser_perfect_with`], with three changes.
 /// The nodes of free degree 1 at the start (triangles with two boundary sides) are paired first,
 /// by Karp and Sipser's rule; nodes of free degree 0 at the start (a lone triangle) are left
-/// unpaired at once; and the completion stops at its first pass without an augmenting path (a
-/// complete search: the matching is then maximum). Returns the pairing, the figures and the
-/// Tutte–Berge barrier proving maximality (see [`crate::augment_to_maximum`]); it is empty when
-/// every node is paired, and also when the greedy leaves one node unpaired in each piece of odd
-/// size and none elsewhere, which no matching betters (the barrier A = ∅: no search is run
-/// then). On a graph with a perfect matching the result is perfect. Deterministic.
+/// unpaired at once; and the completion, from every unpaired node, stops once one node per
+/// piece of odd size is left unpaired (which no matching betters: the barrier A = ∅), or at its
+/// first pass without an augmenting path (a complete search: the matching is then maximum).
+/// Returns the pairing, the figures and the Tutte–Berge barrier proving maximality (see
+/// [`crate::augment_to_maximum`]): empty in the first case (no search at all when the greedy
+/// leaves exactly that many), the odd nodes of that last search in the second. On a graph with
+/// a perfect matching the result is perfect. Deterministic.
 pub fn karp_sipser_maximum_with<G: DualGraph + ?Sized>(
     graph: &G,
     options: &KarpSipserOptions,
@@ -228,30 +236,37 @@ fn run<G: DualGraph + ?Sized>(
     deferred.retain(|&v| pairs.mates[v as usize][0] == NONE);
     stats.completed = deferred.len();
     let mut barrier_nodes = Vec::new();
-    // A maximum matching leaves at least one node of every odd piece unpaired (Tutte–Berge with
-    // an empty barrier); when KS leaves exactly that many, it is maximum without a search.
-    let proven_by_parity = goal == Goal::Maximum
-        && pairs.unpaired > 0
-        && unpaired_nodes(&compact, &pairs.mates) == odd_pieces(&compact);
-    if !proven_by_parity && (!deferred.is_empty() || (goal == Goal::Maximum && pairs.unpaired > 0))
-    {
+    // To a maximum: from every unpaired node, down to the floor of Tutte–Berge with an empty
+    // barrier (a maximum matching leaves at least one node of every odd piece unpaired); when KS
+    // leaves exactly that many, it is maximum without a search.
+    let pending = match goal {
+        Goal::Maximum if pairs.unpaired > 0 => {
+            let floor = odd_pieces(&compact);
+            let unpaired = unpaired_nodes(&compact, &pairs.mates);
+            (unpaired.len() > floor).then_some((unpaired, Some(floor)))
+        }
+        Goal::Maximum => None,
+        Goal::Perfect => (!deferred.is_empty()).then_some((deferred, None)),
+    };
+    if let Some((pending, floor)) = pending {
         let complete_start = Instant::now();
         let before = stats.augment.reached;
         let search = pairs
             .search
             .get_or_insert_with(|| Search::new(graph.node_slots()));
-        if !deferred.is_empty() {
-            complete(
-                &compact,
-                &mut pairs.mates,
-                search,
-                deferred,
-                goal,
-                &mut stats.augment,
-            )?;
-        }
-        if goal == Goal::Maximum {
-            barrier_nodes = barrier(&compact, &mut pairs.mates, search, &mut stats.augment);
+        complete(
+            &compact,
+            &mut pairs.mates,
+            search,
+            pending,
+            goal,
+            floor,
+            &mut stats.augment,
+        )?;
+        // Above the floor, the completion ended with a search from every unpaired node that
+        // found no augmenting path: its odd nodes are the barrier.
+        if floor.is_some_and(|f| unpaired_nodes(&compact, &pairs.mates).len() > f) {
+            barrier_nodes = search.odd_nodes();
         }
         stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
         stats.completion_reached += stats.augment.reached - before;
@@ -263,29 +278,22 @@ fn run<G: DualGraph + ?Sized>(
     Ok((pairing, stats, barrier_nodes))
 }
 
-/// The live nodes of `graph` that `mates` leaves unpaired.
-fn unpaired_nodes<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) -> usize {
+/// The live nodes of `graph` that `mates` leaves unpaired, in increasing order.
+fn unpaired_nodes<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) -> Vec<u32> {
     (0..graph.node_slots() as u32)
         .filter(|&v| graph.is_node(v) && mates[v as usize][0] == NONE)
-        .count()
+        .collect()
 }
 
 /// The connected components of `graph` with an odd number of nodes: every matching leaves at
 /// least this many nodes unmatched.
 fn odd_pieces<G: DualGraph + ?Sized>(graph: &G) -> usize {
-    let slots = graph.node_slots();
-    let mut sets = UnionFind::new(slots);
-    for e in (0..graph.edge_slots() as u32).filter(|&e| graph.is_edge(e)) {
-        let [a, b] = graph.endpoints(e);
-        if a != b {
-            sets.union(a, b);
-        }
+    let (component, count) = components_of(graph);
+    let mut odd = vec![false; count];
+    for &c in component.iter().filter(|&&c| c != NONE) {
+        odd[c as usize] ^= true;
     }
-    let mut size = vec![0u32; slots];
-    for v in (0..slots as u32).filter(|&v| graph.is_node(v)) {
-        size[sets.find(v) as usize] += 1;
-    }
-    size.iter().filter(|&&s| s % 2 == 1).count()
+    odd.iter().filter(|&&o| o).count()
 }
 
 /// [`Pairs::free`] of a paired node.
@@ -346,6 +354,7 @@ impl<'g, G: DualGraph + ?Sized> Pairs<'g, G> {
             &[root],
             budget,
             OnPath::Stop,
+            1,
             &mut self.stats.augment,
             allowed,
         );
