@@ -6,6 +6,7 @@
 
 use crate::arrays::{self, VertexArray, index_array, vector};
 use crate::errors::{Failure, invalid};
+use crate::interrupt::interruptible;
 use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -541,10 +542,10 @@ pub fn intrinsic_delaunay(
     let request = request(method, mollify, max_flips, outputs).map_err(|f| f.into_pyerr(py))?;
     let (located, out) = if exact {
         let p = exact_portalgon(vertices, faces).map_err(|f| f.into_pyerr(py))?;
-        py.detach(|| Located::exact_delaunay(p, &request))
+        interruptible(py, move |_| Located::exact_delaunay(p, &request))?
     } else {
         let located = located_surface(py, vertices, faces)?;
-        py.detach(|| located.delaunay(&request))
+        interruptible(py, move |_| located.delaunay(&request))?
     }
     .map_err(|f| f.into_pyerr(py))?;
     let stats = out.stats.expect("the figures are asked for");
@@ -571,8 +572,9 @@ fn laplacian_and_seconds<'py>(
     let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
-    let positions = vertices.positions();
-    let computed = py.detach(|| {
+    let positions = vertices.positions().into_owned();
+    let request = *request;
+    let computed = interruptible(py, move |_| {
         let start = Instant::now();
         if tufted.asked == Some(true) {
             let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
@@ -584,7 +586,8 @@ fn laplacian_and_seconds<'py>(
                 | BuildError::NonOrientable { .. }
                 | BuildError::Disconnected { .. },
             )) => {
-                let (matrices, seconds) = covered_matrices(&positions, &triangles, request, start)?;
+                let (matrices, seconds) =
+                    covered_matrices(&positions, &triangles, &request, start)?;
                 return Ok((matrices, seconds, false));
             }
             Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
@@ -593,7 +596,7 @@ fn laplacian_and_seconds<'py>(
             }
             located => located?,
         };
-        let (located, out) = located.delaunay(request)?;
+        let (located, out) = located.delaunay(&request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
         let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
@@ -604,7 +607,7 @@ fn laplacian_and_seconds<'py>(
             Csr::new(m, &rows, located.rows),
         );
         Ok::<_, Failure>((matrices, seconds, false))
-    });
+    })?;
     let ((l, m), seconds, automatic) = computed.map_err(|f| f.into_pyerr(py))?;
     if automatic {
         let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
@@ -753,9 +756,11 @@ pub fn isometric(
         allow_reflection,
         ..IsometryOptions::default()
     };
-    py.detach(|| surftopo_intrinsic::isometric(first, second, &options))
-        .map(|outcome| outcome.is_isometric())
-        .map_err(|e| Failure::Isometry(e).into_pyerr(py))
+    interruptible(py, move |_| {
+        surftopo_intrinsic::isometric(first, second, &options)
+    })?
+    .map(|outcome| outcome.is_isometric())
+    .map_err(|e| Failure::Isometry(e).into_pyerr(py))
 }
 
 /// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles
