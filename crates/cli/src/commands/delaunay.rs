@@ -242,6 +242,8 @@ pub fn load_numbered(
             // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
             Err(PortalgonError::NotTriangle { .. }) => {
                 let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
+                // Every side glued before any cut: a missing gluing is named at once.
+                p.check_closed().map_err(fail)?;
                 let triangles = p.triangulated().map_err(fail)?;
                 IntrinsicTriangulation::from_portalgon(&triangles, DEFAULT_LENGTH_TOLERANCE)
                     .map_err(fail)
