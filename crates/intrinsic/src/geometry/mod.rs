@@ -72,10 +72,10 @@ pub fn norm2<S: Scalar>(a: &Point<S>) -> S {
     dot(a, a)
 }
 
-/// `|a − b|²`.
+/// `|a − b|²` ([`Scalar::squared_distance`]: exact rationals reduce the result only).
 #[inline]
 pub fn dist2<S: Scalar>(a: &Point<S>, b: &Point<S>) -> S {
-    norm2(&sub(a, b))
+    S::squared_distance(a, b)
 }
 
 /// `|a − b|` as a double (a square root: only for reports and f64 geometry).
