@@ -27,6 +27,8 @@
 //! per gluing, would give `flip`, rotation and every test new cases on the closed orientable hot
 //! path; this module leaves that path's machine code as it was ([`crate::flip`]'s `Closed`).
 
+pub(crate) mod isometry;
+
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
 use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
@@ -63,6 +65,22 @@ impl CoveredTriangulation {
     /// # Errors
     /// [`GeometryError::NonFiniteLength`] (huge coordinates).
     pub fn from_cover(cover: &ClosedCover, positions: &[Point3]) -> Result<Self, GeometryError> {
+        Self::from_cover_lengths(cover, |a, b| {
+            let [p, q] = [a, b].map(|v| positions[v as usize]);
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+    }
+
+    /// The intrinsic triangulation of K with each edge as long as `length(a, b)` says for its
+    /// ends' vertices of K (an abstract metric: a flat strip glued into an annulus or a Möbius
+    /// band, say); apex edges as [`Self::from_cover`] makes them.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFiniteLength`] when a length is not finite.
+    pub fn from_cover_lengths(
+        cover: &ClosedCover,
+        length: impl Fn(u32, u32) -> f64,
+    ) -> Result<Self, GeometryError> {
         let mesh = &cover.mesh;
         let sheets = &cover.sheets;
         let surface_vertices = sheets
@@ -83,9 +101,7 @@ impl CoveredTriangulation {
         for e in mesh.edges() {
             let [a, b] = mesh.edge_vertices(e);
             if !is_apex(a) && !is_apex(b) {
-                let [p, q] = [a, b].map(|v| positions[class[v.idx()] as usize]);
-                lengths[e.idx()] =
-                    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt();
+                lengths[e.idx()] = length(class[a.idx()], class[b.idx()]);
             }
         }
         // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
@@ -132,6 +148,29 @@ impl CoveredTriangulation {
             mirror,
             frozen,
         })
+    }
+
+    /// A closed orientable surface as its own cover (no apex, no mirror, vertex ids as the
+    /// vertices of K), so that it can be compared with a surface of any kind.
+    pub fn from_closed(tri: IntrinsicTriangulation) -> Self {
+        let mesh = tri.mesh();
+        let class = (0..mesh.vertex_slots())
+            .map(|v| {
+                if mesh.is_vertex_live(VertexId::new(v)) {
+                    v as u32
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        let (surface_vertices, frozen) = (mesh.vertex_slots(), vec![false; mesh.edge_slots()]);
+        Self {
+            tri,
+            class,
+            surface_vertices,
+            mirror: Vec::new(),
+            frozen,
+        }
     }
 
     /// The cover D with its lengths (virtual triangles included).
@@ -233,6 +272,42 @@ impl CoveredTriangulation {
                 .count();
         }
         Ok(report)
+    }
+
+    /// Re-triangulates K isometrically by up to `count` random intrinsic flips, as
+    /// [`crate::generators::random_flips`] does on a closed surface: edges of D drawn uniformly
+    /// (seeded), an interior edge of K flipped when its quad is convex with margin and keeps its
+    /// area, its mirror edge with it (the same new length). Boundary edges never flip. At most
+    /// `20 · count` draws. Returns the number of flips of K made. Same seed, same result.
+    pub fn random_flips(&mut self, count: u64, seed: u64) -> u64 {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let slots = self.tri.mesh().edge_slots();
+        let mut flips = 0;
+        for _ in 0..count.saturating_mul(20) {
+            if flips == count || slots == 0 {
+                break;
+            }
+            let e = EdgeId::new(rng.random_range(0..slots));
+            if !self.tri.mesh().is_edge_live(e) || !self.may_flip(e) {
+                continue;
+            }
+            let h = e.halfedge();
+            let partner = self.mirror(h).map(HalfedgeId::twin);
+            if !self.tri.flip_if_convex_with_margin(e, 0.9) {
+                continue;
+            }
+            if let Some(p) = partner {
+                self.tri.apply_flip(p.edge(), self.tri.length(e));
+                let mut gluing = CoverGluing {
+                    frozen: &self.frozen,
+                    mirror: &mut self.mirror,
+                };
+                gluing.flipped(self.tri.mesh(), h, p);
+            }
+            flips += 1;
+        }
+        flips
     }
 
     /// The cotan weight `w_e` of every edge of D (by edge id): half the cotangent of each
