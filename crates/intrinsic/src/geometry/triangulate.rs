@@ -25,6 +25,17 @@ fn above<S: Scalar>(c: &[Point<S>], a: usize, b: usize) -> bool {
     }
 }
 
+/// The sweep order of two corners: `Less` when `a` comes first ([`above`]).
+fn sweep_order<S: Scalar>(c: &[Point<S>], a: usize, b: usize) -> Ordering {
+    if a == b {
+        Ordering::Equal
+    } else if above(c, a, b) {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    }
+}
+
 #[derive(Clone, Copy, PartialEq)]
 enum Kind {
     Start,
@@ -238,24 +249,9 @@ fn triangulate_monotone<S: Scalar>(
     out: &mut Vec<[usize; 3]>,
 ) -> bool {
     let m = piece.len();
-    let top = (0..m)
-        .min_by(|&a, &b| {
-            if above(c, piece[a], piece[b]) {
-                Ordering::Less
-            } else {
-                Ordering::Greater
-            }
-        })
-        .unwrap_or(0);
-    let bottom = (0..m)
-        .max_by(|&a, &b| {
-            if above(c, piece[a], piece[b]) {
-                Ordering::Less
-            } else {
-                Ordering::Greater
-            }
-        })
-        .unwrap_or(0);
+    let mut order: Vec<usize> = (0..m).collect();
+    order.sort_by(|&a, &b| sweep_order(c, piece[a], piece[b]));
+    let (top, bottom) = (order[0], order[m - 1]);
     // Counter-clockwise from the top runs down the left chain to the bottom.
     let mut left = vec![false; m];
     let mut i = top;
@@ -263,16 +259,6 @@ fn triangulate_monotone<S: Scalar>(
         left[i] = true;
         i = (i + 1) % m;
     }
-    let mut order: Vec<usize> = (0..m).collect();
-    order.sort_by(|&a, &b| {
-        if a == b {
-            Ordering::Equal
-        } else if above(c, piece[a], piece[b]) {
-            Ordering::Less
-        } else {
-            Ordering::Greater
-        }
-    });
     let mut flat = false;
     let mut emit = |a: usize, b: usize, d: usize, out: &mut Vec<[usize; 3]>| {
         let (a, b, d) = (piece[a], piece[b], piece[d]);
@@ -323,15 +309,7 @@ pub fn triangulate_polygon<S: Scalar>(c: &[Point<S>]) -> Option<Vec<[usize; 3]>>
         return None;
     }
     let mut order: Vec<usize> = (0..k).collect();
-    order.sort_by(|&a, &b| {
-        if a == b {
-            Ordering::Equal
-        } else if above(c, a, b) {
-            Ordering::Less
-        } else {
-            Ordering::Greater
-        }
-    });
+    order.sort_by(|&a, &b| sweep_order(c, a, b));
     let diagonals = monotone_diagonals(c, &order)?;
     let mut out = Vec::with_capacity(k - 2);
     for piece in pieces(c, &diagonals)? {
