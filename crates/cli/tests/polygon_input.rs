@@ -1,6 +1,6 @@
-//! Portalgon files of big polygons: the gluing is validated before any polygon is checked or cut, and a
-//! polygon of thousands of corners is cut into triangles (O(k log k)) rather than along
-//! shortcuts (a full sort of the O(k²) corner pairs per cut).
+//! Portalgon files of big polygons: the gluing is validated before any polygon is checked or
+//! cut, and a polygon of thousands of corners is cut into triangles (O(k log k)) rather than
+//! along shortcuts (a full sort of the O(k²) corner pairs per cut).
 
 mod common;
 
