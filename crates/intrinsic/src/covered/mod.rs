@@ -31,6 +31,7 @@ pub(crate) mod isometry;
 
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
+use crate::flip::tessellation::{CellSurface, Tessellation, tessellate};
 use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
 use crate::formats::portalgon_json::{
     FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
@@ -228,6 +229,11 @@ impl CoveredTriangulation {
         self.is_real_face(mesh.face(h)) != self.is_real_face(mesh.face(h.twin()))
     }
 
+    /// The edge of K an edge of D stands for: itself, or the first of its mirror pair.
+    pub fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        self.mirror(e.halfedge()).map_or(e, |m| e.min(m.edge()))
+    }
+
     /// The edges of K (see [`Self::is_surface_edge`]).
     pub fn surface_edges(&self) -> impl Iterator<Item = EdgeId> + '_ {
         self.tri.mesh().edges().filter(|&e| self.is_surface_edge(e))
@@ -418,17 +424,111 @@ impl CoveredTriangulation {
                 }
             }
         }
-        if !reversed.contains(&true) {
-            reversed.clear();
+        glued_doc(polygons, matching, reversed)
+    }
+}
+
+/// The document of polygons glued by `matching`, `reversed` per pair (kept only when some pair
+/// reverses orientation).
+fn glued_doc(
+    polygons: Vec<PolygonDoc>,
+    matching: Vec<[[usize; 2]; 2]>,
+    mut reversed: Vec<bool>,
+) -> PortalgonDoc {
+    if !reversed.contains(&true) {
+        reversed.clear();
+    }
+    PortalgonDoc {
+        format: FORMAT_NAME.to_string(),
+        version: ORIENTED_VERSION,
+        comment: None,
+        polygons,
+        matching,
+        reversed,
+    }
+}
+
+impl CoveredTriangulation {
+    /// The Delaunay tessellation of K (run [`Self::flip_to_delaunay`] first): the triangles of
+    /// K merged across every interior edge whose two triangles are co-circular, decided as
+    /// [`crate::delaunay_tessellation`] decides it on a closed surface (`|√(tan²(γ/2)
+    /// tan²(δ/2)) - 1| <= tolerance`, a spanning forest over K's triangles), once per edge of K;
+    /// never across a boundary edge. Each polygon is laid out on one lift in D, so its corners
+    /// run counter-clockwise in that lift's orientation.
+    ///
+    /// The document (portalgon JSON, version 2 when some gluing reverses orientation): polygons
+    /// by `corners` with `vertices` (the surface's vertices), a pair per interior side, flagged
+    /// `true` where its two sides run the same way (the neighbour was laid out on the other
+    /// sheet: on a non-orientable piece, no choice of lifts avoids it), boundary sides
+    /// unmatched. The faces are K's triangles (the first lift's face ids), the merged edges K's
+    /// edges (first lifts), the side half-edges those of the lifts laid out.
+    ///
+    /// Uniqueness: on a closed surface the Delaunay tessellation is unique (Bobenko and
+    /// Springborn, Proposition 4). With boundary, every triangulation of K with these vertices
+    /// has the boundary edges (the boundary is the union of the segments between consecutive
+    /// boundary vertices), so the tessellation is the constrained one: each cell is the set of
+    /// triangles whose circumdisks, developed across interior edges only, coincide; flipping
+    /// reaches a triangulation whose interior edges are all Delaunay, in which the developed
+    /// circumdisk of a triangle is empty of vertices it sees (the planar argument of Lee and
+    /// Lin's constrained Delaunay triangulation, local across interior edges), and these disks
+    /// depend on the metric and the vertices alone, so the cells do not depend on the flips
+    /// that led there (see README, "The Delaunay tessellation on every surface").
+    pub fn tessellation(&self, tolerance: f64) -> Tessellation<PortalgonDoc> {
+        tessellate(&self.tri, tolerance, self).with_polygons(|cells| {
+            let polygon_of = |s: u32| {
+                let k = cells.side_start.partition_point(|&start| start <= s) - 1;
+                [k, (s - cells.side_start[k]) as usize]
+            };
+            let polygons = (0..cells.side_start.len() - 1)
+                .map(|k| {
+                    let sides = cells.sides(k);
+                    PolygonDoc {
+                        corners: Some(
+                            cells.corners[sides.clone()]
+                                .iter()
+                                .map(|c| c.map(Number::Double))
+                                .collect(),
+                        ),
+                        lengths: None,
+                        vertices: Some(cells.labels[sides].to_vec()),
+                    }
+                })
+                .collect();
+            let matching = cells
+                .gluings
+                .iter()
+                .map(|&(s, t, _)| [polygon_of(s), polygon_of(t)])
+                .collect();
+            let reversed = cells.gluings.iter().map(|g| g.2).collect();
+            glued_doc(polygons, matching, reversed)
+        })
+    }
+}
+
+/// K as [`tessellate`] sees it: K's triangles and edges are the first lifts, cone faces are
+/// not on it, labels are the vertex classes.
+impl CellSurface for CoveredTriangulation {
+    fn surface_face(&self, f: FaceId) -> Option<FaceId> {
+        if !self.is_real_face(f) {
+            return None;
         }
-        PortalgonDoc {
-            format: FORMAT_NAME.to_string(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons,
-            matching,
-            reversed,
-        }
+        let mesh = self.tri.mesh();
+        Some(
+            self.mirror(mesh.face_halfedge(f))
+                .map_or(f, |m| f.min(mesh.face(m))),
+        )
+    }
+
+    fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        CoveredTriangulation::surface_edge(self, e)
+    }
+
+    fn label(&self, v: VertexId) -> u32 {
+        self.class(v)
+    }
+
+    fn mirror(&self, h: HalfedgeId) -> Option<HalfedgeId> {
+        CoveredTriangulation::mirror(self, h)
     }
 }
 
