@@ -64,17 +64,10 @@ pub fn census<'py>(
     max_vertices: Option<usize>,
 ) -> PyResult<Vec<Bound<'py, PyAny>>> {
     let kind = SurfaceKind::parse(surface).map_err(|e| census_error(py, &e))?;
-    // Ctrl-C: the search asks every few thousand nodes whether Python has a signal pending
-    // (KeyboardInterrupt then).
-    let interrupted = std::sync::atomic::AtomicBool::new(false);
-    let stop = || {
-        let pending = Python::attach(|py| py.check_signals().is_err());
-        if pending {
-            interrupted.store(true, std::sync::atomic::Ordering::Relaxed);
-        }
-        pending
-    };
-    let result = py.detach(|| {
+    // Ctrl-C: `interruptible` raises KeyboardInterrupt; the search, asking its stop hook every
+    // few thousand nodes, then ends on its thread.
+    let result = crate::interrupt::interruptible(py, move |stop| {
+        let stop = || stop.is_set();
         surftopo_census::census(
             kind,
             CensusOptions {
@@ -83,13 +76,7 @@ pub fn census<'py>(
                 ..Default::default()
             },
         )
-    });
-    if interrupted.load(std::sync::atomic::Ordering::Relaxed) {
-        py.check_signals()?;
-        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err(
-            "census stopped",
-        ));
-    }
+    })?;
     let result = result.map_err(|e| census_error(py, &e))?;
     Ok(result
         .triangulations

@@ -7,6 +7,7 @@
 use crate::arrays::{self, VertexArray, index_array, vector};
 use crate::covered::Covered;
 use crate::errors::{Failure, invalid};
+use crate::interrupt::interruptible;
 use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -669,52 +670,52 @@ fn delaunay_surface(
     if let Some(faces) = faces {
         let vertices = VertexArray::extract(surface)?;
         let triangles = arrays::faces::<3>(faces, vertices.len())?;
-        let positions = vertices.positions();
-        let run_tufted = |automatic| {
-            let start = Instant::now();
-            let t = crate::tufted::tufted(&positions, &triangles, &tufted.options)?;
-            let report = FlipReport {
-                flips: t.report.flips,
-                mollify_delta: Some(t.report.mollify_delta),
-                non_delaunay_edges: t.cover.non_delaunay_edges(DEFAULT_TOLERANCE),
+        let positions = vertices.positions().into_owned();
+        let tufted = *tufted;
+        return interruptible(py, move |_| {
+            let run_tufted = |automatic| {
+                let start = Instant::now();
+                let t = crate::tufted::tufted(&positions, &triangles, &tufted.options)?;
+                let report = FlipReport {
+                    flips: t.report.flips,
+                    mollify_delta: Some(t.report.mollify_delta),
+                    non_delaunay_edges: t.cover.non_delaunay_edges(DEFAULT_TOLERANCE),
+                };
+                let stats = DelaunayStats::new(&t.cover, &report, start.elapsed().as_secs_f64());
+                let mut row_of = t.cover_input_vertex;
+                row_of.resize(t.cover.mesh().vertex_slots(), u32::MAX);
+                let located = Located {
+                    tri: t.cover,
+                    row_of,
+                    rows: positions.len(),
+                };
+                let held = Held::Tufted {
+                    located,
+                    laplacian: t.laplacian,
+                    mass: t.mass,
+                };
+                Ok::<_, Failure>(Start::Tufted(held, stats, automatic))
             };
-            let stats = DelaunayStats::new(&t.cover, &report, start.elapsed().as_secs_f64());
-            let mut row_of = t.cover_input_vertex;
-            row_of.resize(t.cover.mesh().vertex_slots(), u32::MAX);
-            let located = Located {
-                tri: t.cover,
-                row_of,
-                rows: positions.len(),
-            };
-            let held = Held::Tufted {
-                located,
-                laplacian: t.laplacian,
-                mass: t.mass,
-            };
-            Ok::<_, Failure>(Start::Tufted(held, stats, automatic))
-        };
-        return py
-            .detach(|| {
-                if tufted.asked == Some(true) {
-                    return run_tufted(false);
-                }
-                match Located::from_arrays(&positions, &triangles) {
-                    Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, &triangles)
-                        .map(|c| Start::Run(Held::Covered(c))),
-                    Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
-                        match method {
-                            DelaunayMethod::Auto | DelaunayMethod::Flip => run_tufted(true),
-                            _ => Err(invalid(format!(
-                                "method={:?}: the mesh is not a manifold ({f}); its tufted cover \
-                                 is flipped: method='flip' only",
-                                method.name()
-                            ))),
-                        }
+            if tufted.asked == Some(true) {
+                return run_tufted(false);
+            }
+            match Located::from_arrays(&positions, &triangles) {
+                Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, &triangles)
+                    .map(|c| Start::Run(Held::Covered(c))),
+                Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
+                    match method {
+                        DelaunayMethod::Auto | DelaunayMethod::Flip => run_tufted(true),
+                        _ => Err(invalid(format!(
+                            "method={:?}: the mesh is not a manifold ({f}); its tufted cover \
+                             is flipped: method='flip' only",
+                            method.name()
+                        ))),
                     }
-                    located => located.map(|l| Start::Run(Held::Closed(l))),
                 }
-            })
-            .map_err(|f| f.into_pyerr(py));
+                located => located.map(|l| Start::Run(Held::Closed(l))),
+            }
+        })?
+        .map_err(|f| f.into_pyerr(py));
     }
     if let Ok(t) = surface.cast::<Intrinsic>()
         && let Held::Covered(covered) = &t.get().held
@@ -767,7 +768,7 @@ pub fn intrinsic_delaunay(
             return Err(not_exact().into_pyerr(py));
         }
         let p = exact_portalgon(vertices, faces).map_err(|f| f.into_pyerr(py))?;
-        py.detach(|| Located::exact_delaunay(p, &request))
+        interruptible(py, move |_| Located::exact_delaunay(p, &request))?
             .map(|(located, out)| (Held::Closed(located), out))
     } else {
         match delaunay_surface(py, vertices, faces, &tufted, request.method)? {
@@ -777,15 +778,16 @@ pub fn intrinsic_delaunay(
                 }
                 return Ok(Intrinsic { held, stats });
             }
-            Start::Run(Held::Covered(covered)) => py
-                .detach(|| covered.delaunay(&request))
-                .map(|(covered, out)| (Held::Covered(covered), out)),
+            Start::Run(Held::Covered(covered)) => {
+                interruptible(py, move |_| covered.delaunay(&request))?
+                    .map(|(covered, out)| (Held::Covered(covered), out))
+            }
             Start::Run(held) => {
                 let located = match held {
                     Held::Closed(located) => located,
                     _ => unreachable!("a surface to run is closed or covered"),
                 };
-                py.detach(|| located.delaunay(&request))
+                interruptible(py, move |_| located.delaunay(&request))?
                     .map(|(located, out)| (Held::Closed(located), out))
             }
         }
@@ -857,8 +859,9 @@ fn laplacian_and_seconds<'py>(
     let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
-    let positions = vertices.positions();
-    let computed = py.detach(|| {
+    let positions = vertices.positions().into_owned();
+    let request = *request;
+    let computed = interruptible(py, move |_| {
         let start = Instant::now();
         if tufted.asked == Some(true) {
             let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
@@ -866,7 +869,8 @@ fn laplacian_and_seconds<'py>(
         }
         let located = match Located::from_arrays(&positions, &triangles) {
             Err(f) if needs_cover(&f) => {
-                let (matrices, seconds) = covered_matrices(&positions, &triangles, request, start)?;
+                let (matrices, seconds) =
+                    covered_matrices(&positions, &triangles, &request, start)?;
                 return Ok((matrices, seconds, false));
             }
             Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
@@ -875,7 +879,7 @@ fn laplacian_and_seconds<'py>(
             }
             located => located?,
         };
-        let (located, out) = located.delaunay(request)?;
+        let (located, out) = located.delaunay(&request)?;
         let seconds = start.elapsed().as_secs_f64();
         let rows = located.dense_rows();
         let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
@@ -886,7 +890,7 @@ fn laplacian_and_seconds<'py>(
             Csr::new(m, &rows, located.rows),
         );
         Ok::<_, Failure>((matrices, seconds, false))
-    });
+    })?;
     let ((l, m), seconds, automatic) = computed.map_err(|f| f.into_pyerr(py))?;
     if automatic {
         warn_tufted(py)?;
@@ -1010,9 +1014,11 @@ pub fn isometric(
         allow_reflection,
         ..IsometryOptions::default()
     };
-    py.detach(|| surftopo_intrinsic::isometric(first, second, &options))
-        .map(|outcome| outcome.is_isometric())
-        .map_err(|e| Failure::Isometry(e).into_pyerr(py))
+    interruptible(py, move |_| {
+        surftopo_intrinsic::isometric(first, second, &options)
+    })?
+    .map(|outcome| outcome.is_isometric())
+    .map_err(|e| Failure::Isometry(e).into_pyerr(py))
 }
 
 /// The flat torus T_x of the intrinsic-Delaunay paper (Section 9): one vertex, two triangles

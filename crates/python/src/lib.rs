@@ -1,7 +1,7 @@
 //! The native module `surftopo._native` of the surftopo Python package (pyo3, built by maturin).
 //!
 //! A thin layer over the libraries: numpy arrays in (`arrays.rs`), the library call with the GIL
-//! released, numpy arrays and `scipy.sparse.csr_matrix` out, typed errors as the exceptions of
+//! released (long calls through `interrupt.rs`, so Ctrl-C stops them), numpy arrays and `scipy.sparse.csr_matrix` out, typed errors as the exceptions of
 //! `surftopo._errors` (`errors.rs`). The public Python API, its docstrings and its type stubs are
 //! in `python/surftopo/`.
 
@@ -9,6 +9,7 @@ mod arrays;
 mod census;
 mod covered;
 mod errors;
+mod interrupt;
 mod intrinsic;
 mod surface;
 mod tufted;

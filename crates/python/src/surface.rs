@@ -333,21 +333,20 @@ pub fn irreducible<'py>(
         let n = t.iter().flatten().max().map_or(0, |&v| v as usize + 1);
         surftopo_mesh::inspect(n, t)
     };
-    let reduced = py
-        .detach(|| -> Result<_, Failure> {
-            let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
-            let input_index = input_index(&report);
-            let input = count(&surface.cover.surface_triangles());
-            let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
-                .map_err(Failure::Irreducible)?;
-            let reduced = CoveredSurface {
-                cover: reduction.cover,
-                positions: surface.positions,
-            };
-            let output = count(&reduced.cover.surface_triangles());
-            Ok((reduced, input_index, input, output, reduction.counters))
-        })
-        .map_err(|f| f.into_pyerr(py))?;
+    let reduced = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
+        let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
+        let input_index = input_index(&report);
+        let input = count(&surface.cover.surface_triangles());
+        let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
+            .map_err(Failure::Irreducible)?;
+        let reduced = CoveredSurface {
+            cover: reduction.cover,
+            positions: surface.positions,
+        };
+        let output = count(&reduced.cover.surface_triangles());
+        Ok((reduced, input_index, input, output, reduction.counters))
+    })?
+    .map_err(|f| f.into_pyerr(py))?;
     let (reduced, input_index, input, output, counters) = reduced;
     // The surviving vertices in class order, which `to_triangles` numbers densely.
     let mut kept_classes: Vec<u32> = reduced.cover.surface_triangles().concat();
@@ -443,29 +442,25 @@ pub fn quadrangulate<'py>(
     let triangles = arrays::faces::<3>(faces, vertices.len())?;
     let positions = vertices.positions().into_owned();
     let input_vertices = vertices.len() as u32;
-    let done = py
-        .detach(|| -> Result<_, Failure> {
-            let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
-            let pieces = &report.surfaces;
-            let q = match quality {
-                None => {
-                    let options = SurfaceOptions {
-                        all_quads,
-                        ..SurfaceOptions::default()
-                    };
-                    quadrangulate_surface_with_quality(&surface, pieces, algorithm, &options)
-                }
-                Some(quality) => {
-                    quadrangulate_surface_by_quality(&surface, pieces, quality, all_quads)
-                }
+    let done = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
+        let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
+        let pieces = &report.surfaces;
+        let q = match quality {
+            None => {
+                let options = SurfaceOptions {
+                    all_quads,
+                    ..SurfaceOptions::default()
+                };
+                quadrangulate_surface_with_quality(&surface, pieces, algorithm, &options)
             }
-            .map_err(Failure::Quad)?;
-            let added = positions_with_added(&surface.positions, &q.result)
-                [q.result.vertex_count..]
-                .to_vec();
-            Ok((q, input_index(&report), added))
-        })
-        .map_err(|f| f.into_pyerr(py))?;
+            Some(quality) => quadrangulate_surface_by_quality(&surface, pieces, quality, all_quads),
+        }
+        .map_err(Failure::Quad)?;
+        let added =
+            positions_with_added(&surface.positions, &q.result)[q.result.vertex_count..].to_vec();
+        Ok((q, input_index(&report), added))
+    })?
+    .map_err(|f| f.into_pyerr(py))?;
     let (q, input_index, added_positions) = done;
     let result = &q.result;
     // Surface vertex ids to the input's indices; added vertices after the input's.

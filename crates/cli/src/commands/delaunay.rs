@@ -162,7 +162,9 @@ pub fn load_exact(path: &Path) -> anyhow::Result<Portalgon<Rational>> {
     }
     let name = crate::input::name(path);
     let bytes = crate::input::input_bytes(path)?;
+    // The gluing first: a missing one is named before any polygon is checked.
     let p = PortalgonDoc::from_slice(&bytes)
+        .and_then(|doc| doc.check_closed().map(|()| doc))
         .and_then(|doc| doc.to_portalgon_in::<Rational>(0.0))
         .map_err(|e| invalid(format!("{name}: {e}")))?;
     p.check_closed()
@@ -243,6 +245,9 @@ pub fn load_numbered(
         let tri = match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
             // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
             Err(PortalgonError::NotTriangle { .. }) => {
+                // Every side glued before any polygon is checked or cut: a missing gluing is
+                // named at once.
+                doc.check_closed().map_err(fail)?;
                 let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
                 let triangles = p.triangulated().map_err(fail)?;
                 IntrinsicTriangulation::from_portalgon(&triangles, DEFAULT_LENGTH_TOLERANCE)

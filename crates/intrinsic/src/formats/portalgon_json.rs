@@ -590,6 +590,27 @@ impl PortalgonDoc {
         Ok(self.matching.clone())
     }
 
+    /// Whether every side of every polygon is glued, checked on the file's structure alone
+    /// (O(sides), before any corner is read or polygon checked): the first free side is named.
+    ///
+    /// # Errors
+    /// [`PortalgonError::Unmatched`], and the structural errors of the matching
+    /// ([`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`], ...).
+    pub fn check_closed(&self) -> Result<(), PortalgonError> {
+        let counts = self.side_counts()?;
+        let pairs = self.checked_pairs(&counts)?;
+        let mut glued: Vec<Vec<bool>> = counts.iter().map(|&k| vec![false; k]).collect();
+        for [polygon, side] in pairs.iter().flatten() {
+            glued[*polygon][*side] = true;
+        }
+        for (polygon, sides) in glued.iter().enumerate() {
+            if let Some(side) = sides.iter().position(|&g| !g) {
+                return Err(PortalgonError::Unmatched { polygon, side });
+            }
+        }
+        Ok(())
+    }
+
     fn labels_present(&self) -> Result<bool, PortalgonError> {
         let with = self
             .polygons

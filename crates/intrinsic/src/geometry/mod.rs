@@ -17,15 +17,19 @@
 //!   and predicates are exact.
 //!
 //! Points are `[S; 2]` ([`Point`]): `Point<f64>` is the crate's `Point2`.
+//!
+//! [`triangulate_polygon`] cuts a simple polygon into triangles in O(n log n) (`triangulate.rs`).
 
 mod double_double;
 mod rational;
 mod scalar;
+mod triangulate;
 
 pub use double_double::DoubleDouble;
 pub(crate) use rational::small_literal;
 pub use rational::{MAX_INPUT_BITS, ParseRationalError, Rational};
 pub use scalar::Scalar;
+pub use triangulate::triangulate_polygon;
 
 use std::cmp::Ordering;
 
@@ -68,10 +72,10 @@ pub fn norm2<S: Scalar>(a: &Point<S>) -> S {
     dot(a, a)
 }
 
-/// `|a − b|²`.
+/// `|a − b|²` ([`Scalar::squared_distance`]: exact rationals reduce the result only).
 #[inline]
 pub fn dist2<S: Scalar>(a: &Point<S>, b: &Point<S>) -> S {
-    norm2(&sub(a, b))
+    S::squared_distance(a, b)
 }
 
 /// `|a − b|` as a double (a square root: only for reports and f64 geometry).

@@ -83,6 +83,12 @@ pub trait Scalar:
     /// relative tolerance `|a − b| ≤ tolerance · max(|a|, |b|)`.
     fn lengths_match(a: &Self, b: &Self, tolerance: f64) -> bool;
 
+    /// `|a − b|²` (see [`super::dist2`]). The default forms the differences, squares and sum in
+    /// the type's arithmetic.
+    fn squared_distance(a: &Point<Self>, b: &Point<Self>) -> Self {
+        super::norm2(&super::sub(a, b))
+    }
+
     /// The sign of the orientation determinant of `a, b, c` (see [`super::orient`]). The default
     /// evaluates the determinant, which is exact for exact types.
     fn orient2d(a: &Point<Self>, b: &Point<Self>, c: &Point<Self>) -> Ordering {

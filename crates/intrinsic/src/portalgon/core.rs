@@ -939,19 +939,87 @@ impl<S: Scalar> Portalgon<S> {
         Ok(p)
     }
 
-    /// A copy with every polygon cut along shortcuts into triangles
-    /// ([`Self::triangulate_by_shortcuts`], INSERTEDGES of Section 4.1), dense ids, labels kept:
-    /// e.g. a Delaunay tessellation as a Delaunay triangulation.
+    /// A copy with every polygon cut into triangles ([`Self::triangulate_polygon`], O(k log k)
+    /// for a polygon of k corners), dense ids, labels kept: e.g. a Delaunay tessellation as a
+    /// Delaunay triangulation, or a portalgon file's polygons.
     ///
     /// # Errors
-    /// As [`Self::triangulate_by_shortcuts`] (a polygon that cannot be cut is not convex).
+    /// As [`Self::triangulate_polygon`].
     pub fn triangulated(&self) -> Result<Portalgon<S>, PortalgonError> {
         let mut t = self.clone();
         let polygons: Vec<_> = t.polygons().collect();
         for q in polygons {
-            t.triangulate_by_shortcuts(q)?;
+            t.triangulate_polygon(q)?;
         }
         Ok(t.compacted().0)
+    }
+
+    /// Cuts polygon `p` (simple, counter-clockwise) into triangles by
+    /// [`crate::geometry::triangulate_polygon`] (monotone pieces, O(k log k) exact predicates,
+    /// no flat triangle); the new sides are matched in pairs. Returns the triangles (the first
+    /// is `p`). Any triangulation, where [`Self::triangulate_by_shortcuts`] is INSERTEDGES' rule.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchPolygon`]; [`PortalgonError::NotAnArc`] (naming the polygon) if
+    /// the sweep finds the polygon is not simple.
+    pub fn triangulate_polygon(&mut self, p: PolygonId) -> Result<Vec<PolygonId>, PortalgonError> {
+        if !self.is_polygon_live(p) {
+            return Err(PortalgonError::NoSuchPolygon(p.idx()));
+        }
+        let sides = self.polygons[p.idx()].clone();
+        let k = sides.len();
+        if k == 3 {
+            return Ok(vec![p]);
+        }
+        let corners = self.corners(p);
+        let triangles =
+            crate::geometry::triangulate_polygon(&corners).ok_or(PortalgonError::NotAnArc {
+                polygon: p.idx(),
+                i: 0,
+                j: 0,
+            })?;
+        // The side of each diagonal made so far, by its (from, to) corners.
+        let mut diagonal: std::collections::HashMap<(usize, usize), SideId> =
+            std::collections::HashMap::new();
+        let mut out = Vec::with_capacity(triangles.len());
+        for (n, t) in triangles.iter().enumerate() {
+            let q = if n == 0 {
+                p
+            } else {
+                self.polygons.push(Vec::new());
+                self.live_polygons += 1;
+                PolygonId(self.polygons.len() as u32 - 1)
+            };
+            let mut own = Vec::with_capacity(3);
+            for m in 0..3 {
+                let (a, b) = (t[m], t[(m + 1) % 3]);
+                if b == (a + 1) % k {
+                    own.push(sides[a]);
+                    continue;
+                }
+                let s = SideId(self.start.len() as u32);
+                self.start.push(corners[a].clone());
+                self.owner.push(q);
+                self.mate.push(SideId::INVALID);
+                self.label.push(self.label[sides[a].idx()]);
+                self.slot.push(0);
+                self.next.push(SideId::INVALID);
+                self.live_sides += 1;
+                if let Some(other) = diagonal.remove(&(b, a)) {
+                    self.mate[s.idx()] = other;
+                    self.mate[other.idx()] = s;
+                } else {
+                    diagonal.insert((a, b), s);
+                }
+                own.push(s);
+            }
+            self.set_polygon(q, own);
+            if !S::EXACT {
+                self.recenter(q);
+            }
+            out.push(q);
+        }
+        Ok(out)
     }
 
     /// INSERTEDGES (Section 4.1) on one polygon: as long as a piece is not a triangle, cut it along
