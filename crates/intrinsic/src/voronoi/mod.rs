@@ -37,6 +37,7 @@
 //! tolerance.
 
 pub mod dual;
+mod flat;
 pub mod singular;
 pub mod wave;
 
