@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{json_of, surftopo, write};
 use serde_json::Value;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -93,21 +93,14 @@ fn check(name: &str, input: &[[u32; 3]], output: &Path, json: &Value, all_quads:
 }
 
 fn quad_json(input: &Path, output: &Path, args: &[&str]) -> Value {
-    let out = surftopo()
-        .arg("quad")
+    let mut quad = surftopo();
+    quad.arg("quad")
         .arg(input)
         .arg("-o")
         .arg(output)
         .arg("--json")
-        .args(args)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+        .args(args);
+    json_of(&mut quad, &[])
 }
 
 #[test]

@@ -5,24 +5,17 @@
 
 mod common;
 
-use common::surftopo;
+use common::{json_of, surftopo};
 use serde_json::Value;
 use std::path::Path;
 
 /// `info --json` of a file, which must succeed (with `--strict` when `strict`).
 fn info_of(path: &Path, strict: bool) -> Value {
-    let out = surftopo()
-        .args(["info", "--json"])
+    let mut info = surftopo();
+    info.args(["info", "--json"])
         .args(strict.then_some("--strict"))
-        .arg(path)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+        .arg(path);
+    json_of(&mut info, &[])
 }
 
 /// `info --json` of a file whose combinatorics are valid: no problem but geometric ones (an
