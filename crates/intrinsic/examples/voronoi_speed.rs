@@ -12,9 +12,9 @@
 //!
 //! Per input: up to `--rounds` rounds (default 5), each a flip run then a voronoi run on a clone
 //! of the same edge lengths (the clone is not timed); after the first round, rounds stop once the
-//! input has taken `--mesh-budget` seconds (default 30). Printed per input: the median times, the
-//! ratio of the medians and the median of the per-round ratios voronoi / flip (the paired ratio),
-//! the wave's events and the system load; `--out` also writes the table as markdown. `--only`
+//! input has taken `--mesh-budget` seconds (default 30). Printed per input: the median wall times,
+//! the ratio of the medians and the median of the per-round ratios voronoi / flip (the paired
+//! ratio), the same in the thread's CPU time, the wave's events and the system load; `--out` also writes the table as markdown. `--only`
 //! keeps the inputs whose name contains NAME, `--skip` drops them (e.g. a mesh the wave takes
 //! minutes on: a run cannot be stopped in-process); the face range applies to the shared meshes.
 
@@ -117,8 +117,23 @@ fn median(v: &mut [f64]) -> f64 {
     }
 }
 
-/// One timed run of `method` on a clone of `tri` (the clone not timed); seconds and wave events.
-fn run(tri: &IntrinsicTriangulation, method: DelaunayMethod) -> Result<(f64, u64), String> {
+/// The CPU time this thread has run, in seconds (Linux: the first field of
+/// `/proc/thread-self/schedstat`, nanoseconds on the CPU), or NaN. Unlike wall time it does not
+/// grow while the thread waits for a core, which on a loaded machine a long run does far more
+/// than a short one.
+fn thread_cpu_seconds() -> f64 {
+    // The kernel brings the running thread's figure up to date when it yields (otherwise only
+    // at a tick or a switch, which a sub-millisecond run may not see).
+    std::thread::yield_now();
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok())
+        .map_or(f64::NAN, |ns| ns as f64 * 1e-9)
+}
+
+/// One timed run of `method` on a clone of `tri` (the clone not timed): wall seconds, CPU
+/// seconds ([`thread_cpu_seconds`]) and wave events.
+fn run(tri: &IntrinsicTriangulation, method: DelaunayMethod) -> Result<(f64, f64, u64), String> {
     let input = DelaunayInput::Lengths(tri.clone());
     let request = DelaunayRequest {
         method,
@@ -129,11 +144,11 @@ fn run(tri: &IntrinsicTriangulation, method: DelaunayMethod) -> Result<(f64, u64
         },
         ..DelaunayRequest::default()
     };
-    let start = Instant::now();
+    let (start, cpu) = (Instant::now(), thread_cpu_seconds());
     let out = intrinsic_delaunay(input, &request).map_err(|e| e.to_string())?;
-    let seconds = start.elapsed().as_secs_f64();
+    let (seconds, cpu) = (start.elapsed().as_secs_f64(), thread_cpu_seconds() - cpu);
     std::hint::black_box(&out.laplacian);
-    Ok((seconds, out.wave.map_or(0, |w| w.events)))
+    Ok((seconds, cpu, out.wave.map_or(0, |w| w.events)))
 }
 
 /// Alternating rounds on one input; its table row.
@@ -142,34 +157,43 @@ fn measure(name: &str, tri: &IntrinsicTriangulation, args: &Args) -> String {
     let load = load_average();
     let started = Instant::now();
     let (mut flip, mut wave, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut flip_cpu, mut wave_cpu, mut cpu_ratios) = (Vec::new(), Vec::new(), Vec::new());
     let mut events = 0;
     for round in 0..args.rounds {
         if round > 0 && started.elapsed().as_secs_f64() > args.mesh_budget {
             break;
         }
-        let f = match run(tri, DelaunayMethod::Flip) {
-            Ok((s, _)) => s,
+        let (f, fc) = match run(tri, DelaunayMethod::Flip) {
+            Ok((s, c, _)) => (s, c),
             Err(e) => return format!("| {name} | {faces} | flip failed: {e} |"),
         };
-        let w = match run(tri, DelaunayMethod::Voronoi) {
-            Ok((s, e)) => {
+        let (w, wc) = match run(tri, DelaunayMethod::Voronoi) {
+            Ok((s, c, e)) => {
                 events = e;
-                s
+                (s, c)
             }
             Err(e) => return format!("| {name} | {faces} | voronoi refused: {e} |"),
         };
         flip.push(f);
         wave.push(w);
         ratios.push(w / f);
+        flip_cpu.push(fc);
+        wave_cpu.push(wc);
+        cpu_ratios.push(wc / fc);
     }
     let rounds = flip.len();
     let (f, w) = (median(&mut flip), median(&mut wave));
+    let (fc, wc) = (median(&mut flip_cpu), median(&mut wave_cpu));
     format!(
-        "| {name} | {faces} | {rounds} | {:.2} | {:.1} | {:.1} | {:.1} | {events} | {:.2} | {load:.1} |",
+        "| {name} | {faces} | {rounds} | {:.2} | {:.1} | {:.1} | {:.1} | {:.2} | {:.1} | {:.1} | \
+         {events} | {:.2} | {load:.1} |",
         1e3 * f,
         1e3 * w,
         w / f,
         median(&mut ratios),
+        1e3 * fc,
+        1e3 * wc,
+        median(&mut cpu_ratios),
         events as f64 / faces as f64,
     )
 }
@@ -177,8 +201,9 @@ fn measure(name: &str, tri: &IntrinsicTriangulation, args: &Args) -> String {
 fn main() {
     let args = parse_args();
     let header = "| input | F | rounds | flip ms | voronoi ms | ratio of medians | paired ratio | \
-                  wave events | events / F | load |\n\
-                  |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
+                  flip CPU ms | voronoi CPU ms | paired CPU ratio | wave events | events / F | \
+                  load |\n\
+                  |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
     let mut md = String::new();
     writeln!(md, "{header}").unwrap();
     println!("{header}");
