@@ -46,3 +46,16 @@ pub fn generated_genus_surface(dir: &Path, name: &str, genus: u32) -> PathBuf {
         .success();
     path
 }
+
+/// `surftopo generate ARGS -o DIR/NAME`, which must succeed; returns the path.
+pub fn generate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+    let path = dir.join(name);
+    surftopo()
+        .arg("generate")
+        .args(args)
+        .arg("-o")
+        .arg(&path)
+        .assert()
+        .success();
+    path
+}

@@ -6,23 +6,10 @@
 
 mod common;
 
-use common::{json_of, surftopo, write};
+use common::{generate, json_of, surftopo, write};
 use serde_json::Value;
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
-
-/// `generate ARGS -o DIR/NAME`; returns the path.
-fn generate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
-    let path = dir.join(name);
-    surftopo()
-        .arg("generate")
-        .args(args)
-        .arg("-o")
-        .arg(&path)
-        .assert()
-        .success();
-    path
-}
+use std::path::Path;
 
 /// The faces of an OBJ file by the testkit's statement reader (1-based indices made 0-based).
 fn obj_faces(path: &Path) -> (usize, Vec<Vec<u32>>) {
