@@ -62,7 +62,7 @@ fn check_empty_circles<S: Scalar>(v: &VoronoiDelaunay<S>) {
                 assert_eq!(incircle(&c[0], &c[1], &c[2], x), Ordering::Equal);
             }
         }
-        for x in &v.wave.points[tri.idx()] {
+        for x in v.wave.points(*tri) {
             let inside = if S::EXACT {
                 incircle(&c[0], &c[1], &c[2], x) == Ordering::Greater
             } else {

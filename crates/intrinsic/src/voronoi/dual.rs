@@ -56,7 +56,7 @@
 
 use std::cmp::Ordering;
 
-use super::wave::Wave;
+use super::wave::{SideCell, Wave};
 use crate::error::PortalgonError;
 use crate::geometry::{Motion, Point, Scalar, add, cross, dist2, dot, scale, sub};
 use crate::portalgon::DEFAULT_LENGTH_TOLERANCE;
@@ -143,6 +143,30 @@ struct Dual<'a, S: Scalar> {
     instances: Vec<Vec<Instance<S>>>,
     /// The most triangles a followed edge may cross (a guard against an `f64` loop).
     step_budget: usize,
+    scratch: Scratch<S>,
+}
+
+/// Buffers of [`Dual::find_vertices`], reused from one triangle to the next.
+struct Scratch<S> {
+    /// Instances to explore.
+    todo: Vec<usize>,
+    /// Parameters of the boundary points of a side.
+    params: Vec<S>,
+    /// The sites at a boundary point.
+    sites: Vec<u32>,
+    /// The sites around the instance being explored.
+    around: Vec<u32>,
+}
+
+impl<S> Default for Scratch<S> {
+    fn default() -> Self {
+        Self {
+            todo: Vec::new(),
+            params: Vec::new(),
+            sites: Vec::new(),
+            around: Vec::new(),
+        }
+    }
 }
 
 /// The result of [`build_dual`].
@@ -169,8 +193,8 @@ fn onto_bisector<S: Scalar>(x: &Point<S>, a: &Point<S>, b: &Point<S>) -> Point<S
     sub(x, &scale(&(excess / (ww.clone() + ww)), &w))
 }
 
-/// Builds the Delaunay tessellation (and the Voronoi diagram) from a finished wave; `labels[c]`
-/// is the output vertex label of vertex class `c` (of V).
+/// Builds the Delaunay tessellation (and the Voronoi diagram) from a finished wave; `labels` has
+/// an entry per vertex class `c` of `p`: the output vertex label of `c` (`u32::MAX` off V).
 pub(crate) fn build_dual<S: Scalar>(
     p: &Portalgon<S>,
     wave: &Wave<S>,
@@ -179,7 +203,7 @@ pub(crate) fn build_dual<S: Scalar>(
     merge_clusters: bool,
     sources: usize,
 ) -> Result<DualOutput<S>, DualError> {
-    let scale = p.sides().map(|s| p.side_length(s)).fold(0.0f64, f64::max);
+    let scale = wave.side_length.iter().copied().fold(0.0f64, f64::max);
     let mut dual = Dual {
         p,
         wave,
@@ -187,6 +211,7 @@ pub(crate) fn build_dual<S: Scalar>(
         merge_clusters,
         instances: vec![Vec::new(); p.polygon_slots()],
         step_budget: 4 * (p.polygon_slots() + wave.total_points()) + 16,
+        scratch: Scratch::default(),
     };
     for q in p.polygons() {
         dual.find_vertices(q);
@@ -198,6 +223,7 @@ pub(crate) fn build_dual<S: Scalar>(
         edges: Vec::new(),
     };
     let mut owner_of: Vec<(PolygonId, usize)> = Vec::new();
+    let (mut corners, mut polygon_labels): (Vec<Point<S>>, Vec<u32>) = (Vec::new(), Vec::new());
     for q in p.polygons() {
         for k in 0..dual.instances[q.idx()].len() {
             let inst = &dual.instances[q.idx()][k];
@@ -209,16 +235,18 @@ pub(crate) fn build_dual<S: Scalar>(
             if !owned {
                 continue;
             }
-            let corners: Vec<Point<S>> = inst
-                .sites
-                .iter()
-                .map(|&i| wave.points[q.idx()][i as usize].clone())
-                .collect();
-            let polygon_labels: Vec<u32> = inst
-                .sites
-                .iter()
-                .map(|&i| labels[wave.sources[q.idx()][i as usize] as usize])
-                .collect();
+            corners.clear();
+            corners.extend(
+                inst.sites
+                    .iter()
+                    .map(|&i| wave.points(q)[i as usize].clone()),
+            );
+            polygon_labels.clear();
+            polygon_labels.extend(
+                inst.sites
+                    .iter()
+                    .map(|&i| labels[wave.sources(q)[i as usize] as usize]),
+            );
             let id = out.add_polygon(&corners)?;
             out.set_vertex_labels(id, &polygon_labels)?;
             diagram.vertices.push((q, inst.at.clone()));
@@ -258,7 +286,8 @@ pub(crate) fn build_dual<S: Scalar>(
         }
     }
     let vertices = out.vertex_classes().1;
-    let (euler, expected) = (euler(&out, vertices), euler(p, p.vertex_classes().1));
+    // `labels` has one entry per vertex class of `p`.
+    let (euler, expected) = (euler(&out, vertices), euler(p, labels.len()));
     if vertices != sources || euler != expected {
         return Err(DualError::Topology {
             vertices,
@@ -290,7 +319,7 @@ enum Exit<S> {
 
 impl<S: Scalar> Dual<'_, S> {
     fn pts(&self, q: PolygonId) -> &[Point<S>] {
-        &self.wave.points[q.idx()]
+        self.wave.points(q)
     }
 
     fn zero_or_less(&self, x: &S, scale2: f64) -> bool {
@@ -311,9 +340,29 @@ impl<S: Scalar> Dual<'_, S> {
 
     /// The sites nearest to `x` among X_q, and their squared distance.
     fn nearest(&self, q: PolygonId, x: &Point<S>) -> Vec<u32> {
+        let mut out = Vec::new();
+        self.nearest_into(q, x, &mut out);
+        out
+    }
+
+    /// [`Self::nearest`] into `out` (cleared first): the dual asks this at every boundary point
+    /// and vertex, so the hot paths reuse one buffer instead of allocating a list each time.
+    fn nearest_into(&self, q: PolygonId, x: &Point<S>, out: &mut Vec<u32>) {
+        out.clear();
+        let (best, tol) = self.nearest_distance(q, x);
         let pts = self.pts(q);
+        out.extend(
+            (0..pts.len() as u32)
+                .filter(|&i| self.same_value(&dist2(x, &pts[i as usize]), &best, tol)),
+        );
+    }
+
+    /// The least squared distance from `x` to X_q, and the tolerance within which another
+    /// squared distance is the same ([`Self::nearest`]).
+    fn nearest_distance(&self, q: PolygonId, x: &Point<S>) -> (S, f64) {
         // Two passes instead of a buffer of distances: constellations are small.
-        let best = pts
+        let best = self
+            .pts(q)
             .iter()
             .map(|y| dist2(x, y))
             .fold(None::<S>, |m, v| match m {
@@ -322,9 +371,7 @@ impl<S: Scalar> Dual<'_, S> {
             })
             .unwrap_or_else(S::zero);
         let tol = 4.0 * self.eps * best.to_f64().sqrt().max(self.eps);
-        (0..pts.len() as u32)
-            .filter(|&i| self.same_value(&dist2(x, &pts[i as usize]), &best, tol))
-            .collect()
+        (best, tol)
     }
 
     /// Sorts sites counter-clockwise around `v` (exact angular order).
@@ -367,7 +414,7 @@ impl<S: Scalar> Dual<'_, S> {
         let e = sub(b, a);
         let point = add(x, &scale(&t, dir));
         let u = dot(&sub(&point, a), &e) / dot(&e, &e);
-        let tol = self.eps / p.side_length(s).max(f64::MIN_POSITIVE);
+        let tol = self.eps / self.wave.side_length[s.idx()].max(f64::MIN_POSITIVE);
         if self.same_value(&u, &S::zero(), tol) {
             (Exit::Corner(s), t)
         } else if self.same_value(&u, &S::one(), tol) {
@@ -377,49 +424,75 @@ impl<S: Scalar> Dual<'_, S> {
         }
     }
 
-    /// The sites whose cells on side `s` contain parameter `u` (exact mode: from the side's list,
-    /// O(log k); `f64`: the nearest sites of the point, by a scan with the tolerance, so that all
-    /// the `f64` decisions agree with [`Self::nearest`]).
-    fn sites_at(&self, s: SideId, u: &S) -> Vec<u32> {
+    /// The sites whose cells on side `s` contain parameter `u`, sorted, into `out` (exact mode:
+    /// from the side's list, O(log k); `f64`: the nearest sites of the point, by a scan with the
+    /// tolerance, so that all the `f64` decisions agree with [`Self::nearest`]).
+    fn sites_at_into(&self, s: SideId, u: &S, out: &mut Vec<u32>) {
         if !S::EXACT {
-            let p = self.p;
-            let d = sub(p.end_ref(s), p.start_ref(s));
-            let x = add(p.start_ref(s), &scale(u, &d));
-            let mut out = self.nearest(p.owner(s), &x);
+            let x = self.point_on(s, u);
+            self.nearest_into(self.p.owner(s), &x, out);
             out.sort_unstable();
-            return out;
+            return;
         }
-        let cells = &self.wave.cells[s.idx()];
-        let tol = self.eps / self.p.side_length(s).max(f64::MIN_POSITIVE);
-        let le = |a: &S, b: &S| {
-            if S::EXACT {
-                *a <= *b
-            } else {
-                a.to_f64() <= b.to_f64() + tol
-            }
-        };
-        let start = cells.partition_point(|c| !le(u, &c.hi));
-        let mut out = Vec::new();
-        for c in &cells[start..] {
-            if !le(&c.lo, u) {
-                break;
-            }
-            out.push(c.site);
-        }
+        out.clear();
+        out.extend(self.cells_at(s, u).map(|c| c.site));
         out.sort_unstable();
         out.dedup();
-        out
+    }
+
+    /// Whether the sites at parameter `u` of side `s` ([`Self::sites_at_into`]) are two, `i`
+    /// and `j` among them, without listing them.
+    fn sites_at_are(&self, s: SideId, u: &S, i: u32, j: u32) -> bool {
+        let mut found = [u32::MAX; 2];
+        let mut count = 0;
+        let mut two_at_most = |k: u32| {
+            if found[..count].contains(&k) {
+                return true;
+            }
+            if count == 2 {
+                return false;
+            }
+            found[count] = k;
+            count += 1;
+            true
+        };
+        let at_most_two = if S::EXACT {
+            self.cells_at(s, u).all(|c| two_at_most(c.site))
+        } else {
+            let (q, x) = (self.p.owner(s), self.point_on(s, u));
+            let (best, tol) = self.nearest_distance(q, &x);
+            let pts = self.pts(q);
+            (0..pts.len() as u32)
+                .filter(|&k| self.same_value(&dist2(&x, &pts[k as usize]), &best, tol))
+                .all(two_at_most)
+        };
+        at_most_two && count == 2 && found.contains(&i) && found.contains(&j)
+    }
+
+    /// The point at parameter `u` of side `s`.
+    fn point_on(&self, s: SideId, u: &S) -> Point<S> {
+        let p = self.p;
+        let d = sub(p.end_ref(s), p.start_ref(s));
+        add(p.start_ref(s), &scale(u, &d))
+    }
+
+    /// Exact mode: the cells of side `s`'s list containing parameter `u`, in order.
+    fn cells_at<'w>(&'w self, s: SideId, u: &'w S) -> impl Iterator<Item = &'w SideCell<S>> {
+        let cells = self.wave.cells(s);
+        let start = cells.partition_point(|c| *u > c.hi);
+        cells[start..].iter().take_while(move |c| c.lo <= *u)
     }
 
     /// The first point `x + t·dir`, `0 < t ≤ t_max`, equidistant from site `i` and another site
-    /// closer than `i` beyond it: the next Voronoi vertex on the edge of `i` (and its partner).
+    /// closer than `i` beyond it, in neither list of `skip`: the next Voronoi vertex on the
+    /// edge of `i` (and its partner).
     fn first_vertex(
         &self,
         q: PolygonId,
         x: &Point<S>,
         dir: &Point<S>,
         i: u32,
-        skip: &[u32],
+        skip: [&[u32]; 2],
         t_max: &S,
     ) -> Option<Point<S>> {
         let pts = self.pts(q);
@@ -428,7 +501,7 @@ impl<S: Scalar> Dual<'_, S> {
         let mut best: Option<S> = None;
         let dir2 = dot(dir, dir).to_f64();
         for (k, yk) in pts.iter().enumerate() {
-            if k as u32 == i || skip.contains(&(k as u32)) {
+            if k as u32 == i || skip.iter().any(|list| list.contains(&(k as u32))) {
                 continue;
             }
             let den = dot(dir, &sub(yk, yi));
@@ -468,7 +541,7 @@ impl<S: Scalar> Dual<'_, S> {
             let on = if S::EXACT {
                 c.is_zero()
             } else {
-                c.to_f64().abs() <= self.eps * p.side_length(s)
+                c.to_f64().abs() <= self.eps * self.wave.side_length[s.idx()]
             };
             if on {
                 return Place::Side(s);
@@ -541,10 +614,7 @@ impl<S: Scalar> Dual<'_, S> {
     /// edge (the exit is again a boundary of exactly those two cells).
     fn edge_runs_through(&self, exit: &Exit<S>, i: u32, j: u32) -> bool {
         match exit {
-            Exit::Side(s, u) => {
-                let at = self.sites_at(*s, u);
-                at.len() == 2 && at.contains(&i) && at.contains(&j)
-            }
+            Exit::Side(s, u) => self.sites_at_are(*s, u, i, j),
             _ => false,
         }
     }
@@ -552,16 +622,25 @@ impl<S: Scalar> Dual<'_, S> {
     /// All Voronoi vertices in the closed triangle `q`.
     fn find_vertices(&mut self, q: PolygonId) {
         let p = self.p;
-        let mut todo: Vec<usize> = Vec::new();
+        // The buffers live in `self.scratch` between calls: nothing is allocated per triangle.
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let Scratch {
+            todo,
+            params,
+            sites,
+            around,
+        } = &mut scratch;
+        todo.clear();
         for &s in p.polygon_sides(q) {
             let (a, b) = (p.start(s), p.end(s));
             let d = sub(&b, &a);
             let inward = rot_left(&d);
             // Boundary points: where consecutive cells meet (the bisector of their sites; in
             // exact mode that is where the cells end), and the start corner.
-            let cells = &self.wave.cells[s.idx()];
+            let cells = self.wave.cells(s);
             let pts = self.pts(q);
-            let mut params: Vec<S> = vec![S::zero()];
+            params.clear();
+            params.push(S::zero());
             for w in cells.windows(2) {
                 let (yi, yj) = (&pts[w[0].site as usize], &pts[w[1].site as usize]);
                 let den = dot(&d, &sub(yj, yi));
@@ -575,14 +654,14 @@ impl<S: Scalar> Dual<'_, S> {
             }
             params.sort_by(|x, y| x.partial_cmp(y).unwrap_or(Ordering::Equal));
             params.dedup();
-            for u in params {
+            for u in params.drain(..) {
                 let x = add(&a, &scale(&u, &d));
                 let corner = u.is_zero();
-                let sites = if corner {
-                    self.nearest(q, &x)
+                if corner {
+                    self.nearest_into(q, &x, sites);
                 } else {
-                    self.sites_at(s, &u)
-                };
+                    self.sites_at_into(s, &u, sites);
+                }
                 if sites.len() >= 3 {
                     if let Some((k, true)) = self.record(q, x) {
                         todo.push(k);
@@ -619,7 +698,7 @@ impl<S: Scalar> Dual<'_, S> {
                 if self.edge_runs_through(&exit, i, j) {
                     continue;
                 }
-                if let Some(v) = self.first_vertex(q, &x, &dir, i, &[j], &t_exit)
+                if let Some(v) = self.first_vertex(q, &x, &dir, i, [&[j], &[]], &t_exit)
                     && let Some((k, true)) = self.record(q, v)
                 {
                     todo.push(k);
@@ -628,23 +707,27 @@ impl<S: Scalar> Dual<'_, S> {
         }
         // Explore from the vertices found along their edges.
         while let Some(k) = todo.pop() {
-            let inst = self.instances[q.idx()][k].clone();
-            let m = inst.sites.len();
+            let inst = &self.instances[q.idx()][k];
+            let at = inst.at.clone();
+            around.clear();
+            around.extend_from_slice(&inst.sites);
+            let m = around.len();
             for e in 0..m {
-                let (a, b) = (inst.sites[e], inst.sites[(e + 1) % m]);
+                let (a, b) = (around[e], around[(e + 1) % m]);
                 let pts = self.pts(q);
                 let dir = rot_right(&sub(&pts[b as usize], &pts[a as usize]));
-                let (exit, t_exit) = self.exit(q, &inst.at, &dir);
+                let (exit, t_exit) = self.exit(q, &at, &dir);
                 if matches!(exit, Exit::None) || self.edge_runs_through(&exit, a, b) {
                     continue;
                 }
-                if let Some(v) = self.first_vertex(q, &inst.at, &dir, a, &inst.sites, &t_exit)
+                if let Some(v) = self.first_vertex(q, &at, &dir, a, [around, &[]], &t_exit)
                     && let Some((k2, true)) = self.record(q, v)
                 {
                     todo.push(k2);
                 }
             }
         }
+        self.scratch = scratch;
     }
 
     /// The instance of the vertex at `v` in triangle `q`: at the same point, or (in `f64`, for
@@ -669,15 +752,13 @@ impl<S: Scalar> Dual<'_, S> {
         if S::EXACT {
             return None;
         }
-        let mut sites = self.nearest(q, v);
+        let sites = self.nearest(q, v);
         if sites.len() < 3 {
             return None;
         }
-        sites.sort_unstable();
+        // The same set of sites (each list has distinct sites).
         list.iter().position(|inst| {
-            let mut own = inst.sites.clone();
-            own.sort_unstable();
-            own == sites
+            inst.sites.len() == sites.len() && inst.sites.iter().all(|i| sites.contains(i))
         })
     }
 
@@ -708,7 +789,8 @@ impl<S: Scalar> Dual<'_, S> {
         let mut dir = rot_right(&sub(&yb, &ya));
         let mut x = inst.at.clone();
         let mut tri = q;
-        let mut skip: Vec<u32> = inst.sites.clone();
+        // Sites that cannot end the edge: the vertex's own in the first triangle, none after.
+        let mut skip: &[u32] = &inst.sites;
         let mut segments = Vec::new();
         for step in 0..self.step_budget {
             let missing = |y: &Point<S>| {
@@ -739,12 +821,10 @@ impl<S: Scalar> Dual<'_, S> {
                 return Err("the edge does not leave a triangle".into());
             }
             let through = self.edge_runs_through(&exit, ia, ib);
-            let mut skip_here = vec![ib];
-            skip_here.extend(skip.iter().copied());
             let vertex = if through {
                 None
             } else {
-                self.first_vertex(tri, &x, &dir, ia, &skip_here, &t_exit)
+                self.first_vertex(tri, &x, &dir, ia, [&[ib], skip], &t_exit)
             };
             if let Some(v) = vertex {
                 segments.push((tri, x.clone(), v.clone()));
@@ -760,7 +840,7 @@ impl<S: Scalar> Dual<'_, S> {
             }
             let end = add(&x, &scale(&t_exit, &dir));
             segments.push((tri, x.clone(), end.clone()));
-            skip.clear();
+            skip = &[];
             match exit {
                 Exit::Side(s, _) => {
                     let motion = &self.wave.to_mate[s.idx()];

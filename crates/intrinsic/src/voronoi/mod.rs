@@ -8,7 +8,9 @@
 //! - [`wave`]: the multi-source wave of Appendix D.2 (Propositions 11, 13, 14; Lemmas 40, 41),
 //!   giving the constellations X_Δ;
 //! - [`dual`]: the Delaunay tessellation as the dual of the Voronoi diagram (Appendix C,
-//!   Lemmas 29–31; Proposition 12 by docs/dubois.md §3.7's route), and the Voronoi diagram itself.
+//!   Lemmas 29–31; Proposition 12 by docs/dubois.md §3.7's route), and the Voronoi diagram itself;
+//! - `flat`: where the wave keeps its many small lists (constellations, side lists): one vector
+//!   per kind instead of an allocation per triangle or side.
 //!
 //! [`voronoi_delaunay`] runs them in order on a closed triangular portalgon in any [`Scalar`]:
 //! `f64`, or [`crate::geometry::Rational`] for exact results (then every predicate and
@@ -37,6 +39,7 @@
 //! tolerance.
 
 pub mod dual;
+mod flat;
 pub mod singular;
 pub mod wave;
 

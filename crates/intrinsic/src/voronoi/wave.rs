@@ -40,6 +40,7 @@
 use std::cmp::{Ordering, Reverse};
 use std::collections::{BinaryHeap, HashMap};
 
+use super::flat::FlatLists;
 use crate::geometry::{Motion, Point, Scalar, dist2, dot, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
@@ -62,12 +63,12 @@ pub struct SideCell<S> {
 /// The wave's result: the constellations X_Δ and the side diagrams (Lemma 41's lists at the end).
 #[derive(Clone, Debug)]
 pub struct Wave<S: Scalar> {
-    /// Per polygon id (triangle): the constellation, in the triangle's frame.
-    pub points: Vec<Vec<Point<S>>>,
-    /// Per polygon id: the vertex class (of [`Portalgon::vertex_classes`]) of each point's source.
-    pub sources: Vec<Vec<u32>>,
-    /// Per side id: the cells meeting the side, in order along it.
-    pub cells: Vec<Vec<SideCell<S>>>,
+    /// Per polygon id (triangle): the constellation, in the triangle's frame ([`Self::points`]).
+    points: FlatLists<Point<S>>,
+    /// Per polygon id: the vertex class of each point's source ([`Self::sources`]).
+    sources: FlatLists<u32>,
+    /// Per side id: the cells meeting the side, in order along it ([`Self::cells`]).
+    cells: FlatLists<SideCell<S>>,
     /// Per side id: the gluing isometry λ from its triangle's frame to the frame of its mate's
     /// triangle.
     pub to_mate: Vec<Motion<S>>,
@@ -77,6 +78,8 @@ pub struct Wave<S: Scalar> {
     pub stale_events: u64,
     point_tolerance: f64,
     scale: f64,
+    /// Per side id: its length as a double ([`Portalgon::side_length`], computed once).
+    pub(crate) side_length: Vec<f64>,
     index: HashMap<(u32, i64, i64), Vec<u32>>,
     /// Per stamp: whether a cell still carries it.
     alive: Vec<bool>,
@@ -194,7 +197,9 @@ pub fn run_wave<S: Scalar>(
 ) -> Result<Wave<S>, WaveError> {
     check_input(p)?;
     let n = p.polygon_slots();
-    let scale = p.sides().map(|s| p.side_length(s)).fold(0.0f64, f64::max);
+    // Dense ids (checked above): side `s` is entry `s` of `side_length`.
+    let side_length: Vec<f64> = p.sides().map(|s| p.side_length(s)).collect();
+    let scale = side_length.iter().copied().fold(0.0f64, f64::max);
     let to_mate = (0..p.side_slots() as u32)
         .map(|s| {
             let s = SideId(s);
@@ -202,15 +207,25 @@ pub fn run_wave<S: Scalar>(
             super::singular::gluing(p, s, m)
         })
         .collect();
+    // Room for the three corners and one more point per triangle, four cells per side, in
+    // three flat vectors (lists that outgrow their room move to the end).
+    let origin = [S::zero(), S::zero()];
+    let no_cell = SideCell {
+        site: u32::MAX,
+        lo: S::zero(),
+        hi: S::zero(),
+        stamp: 0,
+    };
     let mut wave = Wave {
-        points: vec![Vec::new(); n],
-        sources: vec![Vec::new(); n],
-        cells: vec![Vec::new(); p.side_slots()],
+        points: FlatLists::new(n, 4, origin),
+        sources: FlatLists::new(n, 4, u32::MAX),
+        cells: FlatLists::new(p.side_slots(), 4, no_cell),
         to_mate,
         events: 0,
         stale_events: 0,
         point_tolerance: options.point_tolerance,
         scale,
+        side_length,
         index: HashMap::new(),
         alive: Vec::new(),
         scratch: Scratch::default(),
@@ -237,7 +252,7 @@ pub fn run_wave<S: Scalar>(
         }
     }
     for q in p.polygons() {
-        for site in 0..wave.points[q.idx()].len() as u32 {
+        for site in 0..wave.points.len(q.idx()) as u32 {
             wave.update_sides(p, q, site, &mut heap);
         }
     }
@@ -249,7 +264,7 @@ pub fn run_wave<S: Scalar>(
         }
         let from = p.owner(side);
         let target = p.owner(p.mate(side).expect("closed"));
-        let x = wave.to_mate[side.idx()].apply(&wave.points[from.idx()][event.site as usize]);
+        let x = wave.to_mate[side.idx()].apply(&wave.points(from)[event.site as usize]);
         if wave.find(target, &x).is_some() {
             wave.stale_events += 1;
             continue;
@@ -258,7 +273,7 @@ pub fn run_wave<S: Scalar>(
             return Err(WaveError::Budget(max_events));
         }
         wave.events += 1;
-        let source = wave.sources[from.idx()][event.site as usize];
+        let source = wave.sources(from)[event.site as usize];
         wave.insert(p, target, x, source, &mut heap);
     }
     Ok(wave)
@@ -273,14 +288,29 @@ fn along<S: Scalar>(a: &Point<S>, d: &Point<S>, u: &S) -> Point<S> {
 }
 
 impl<S: Scalar> Wave<S> {
+    /// The constellation X_q of triangle `q`, in the triangle's frame.
+    pub fn points(&self, q: PolygonId) -> &[Point<S>] {
+        self.points.get(q.idx())
+    }
+
+    /// The vertex class (of [`Portalgon::vertex_classes`]) of the source of each point of X_q.
+    pub fn sources(&self, q: PolygonId) -> &[u32] {
+        self.sources.get(q.idx())
+    }
+
+    /// The cells meeting side `s`, in order along it.
+    pub fn cells(&self, s: SideId) -> &[SideCell<S>] {
+        self.cells.get(s.idx())
+    }
+
     /// The largest constellation size, max |X_Δ|.
     pub fn max_constellation(&self) -> usize {
-        self.points.iter().map(Vec::len).max().unwrap_or(0)
+        self.points.lens().max().unwrap_or(0)
     }
 
     /// The total size of the constellations, Σ |X_Δ|.
     pub fn total_points(&self) -> usize {
-        self.points.iter().map(Vec::len).sum()
+        self.points.lens().sum()
     }
 
     fn eps(&self) -> f64 {
@@ -312,7 +342,7 @@ impl<S: Scalar> Wave<S> {
 
     /// The index of point `x` in the constellation of triangle `q`, if present.
     pub fn find(&self, q: PolygonId, x: &Point<S>) -> Option<u32> {
-        let points = &self.points[q.idx()];
+        let points = self.points(q);
         if points.len() <= INDEXED {
             return (0..points.len() as u32).find(|&i| self.same_point(&points[i as usize], x));
         }
@@ -321,7 +351,7 @@ impl<S: Scalar> Wave<S> {
             for dy in -1..=1 {
                 if let Some(list) = self.index.get(&(q.0, bx + dx, by + dy)) {
                     for &i in list {
-                        if self.same_point(&self.points[q.idx()][i as usize], x) {
+                        if self.same_point(&points[i as usize], x) {
                             return Some(i);
                         }
                     }
@@ -347,11 +377,11 @@ impl<S: Scalar> Wave<S> {
 
     /// Adds `z` to X_q (and to the grid of a large constellation); returns its index.
     fn add_point(&mut self, q: PolygonId, z: Point<S>, source: u32) -> u32 {
-        let site = self.points[q.idx()].len() as u32;
-        self.points[q.idx()].push(z);
-        self.sources[q.idx()].push(source);
+        let site = self.points.len(q.idx()) as u32;
+        self.points.push(q.idx(), z);
+        self.sources.push(q.idx(), source);
         // Large constellations are found through a grid of buckets, small ones by a scan.
-        let count = self.points[q.idx()].len();
+        let count = self.points.len(q.idx());
         let newly_indexed = if count == INDEXED + 1 {
             0..count
         } else {
@@ -359,7 +389,7 @@ impl<S: Scalar> Wave<S> {
         };
         if count > INDEXED {
             for i in newly_indexed {
-                let key = self.bucket(&self.points[q.idx()][i]);
+                let key = self.bucket(&self.points(q)[i]);
                 self.index
                     .entry((q.0, key.0, key.1))
                     .or_default()
@@ -382,8 +412,8 @@ impl<S: Scalar> Wave<S> {
             let changed = self.insert_on_side(p, s, site);
             let target = p.owner(p.mate(s).expect("closed"));
             for &k in &changed {
-                let cell = &self.cells[s.idx()][k];
-                let y = &self.points[q.idx()][cell.site as usize];
+                let cell = &self.cells(s)[k];
+                let y = &self.points(q)[cell.site as usize];
                 // Points are never removed: an image already in the target's constellation can
                 // never be a candidate event again (Proposition 14's deletions, done early).
                 if self.find(target, &self.to_mate[s.idx()].apply(y)).is_some() {
@@ -420,9 +450,9 @@ impl<S: Scalar> Wave<S> {
         let q = p.owner(s);
         let (a, b) = (p.start_ref(s), p.end_ref(s));
         let d = sub(b, a);
-        let pts = &self.points[q.idx()];
+        let pts = self.points.get(q.idx());
         let z = &pts[site as usize];
-        let cells = &self.cells[s.idx()];
+        let cells = self.cells.get(s.idx());
         let mut changed = std::mem::take(&mut self.scratch.changed);
         changed.clear();
         let fresh = |alive: &mut Vec<bool>| {
@@ -431,12 +461,15 @@ impl<S: Scalar> Wave<S> {
         };
         if cells.is_empty() {
             let stamp = fresh(alive);
-            self.cells[s.idx()].push(SideCell {
-                site,
-                lo: S::zero(),
-                hi: S::one(),
-                stamp,
-            });
+            self.cells.push(
+                s.idx(),
+                SideCell {
+                    site,
+                    lo: S::zero(),
+                    hi: S::one(),
+                    stamp,
+                },
+            );
             changed.push(0);
             return changed;
         }
@@ -452,7 +485,7 @@ impl<S: Scalar> Wave<S> {
         // Ties: exact in exact mode; in f64 a difference of squared distances within
         // `4 eps (|a − y| + |d|)` (distances within about 2 eps) counts as a tie, so that a site
         // tied at a point keeps (or gets) its closed cell there despite rounding.
-        let side_len = p.side_length(s);
+        let side_len = self.side_length[s.idx()];
         let eps = self.eps();
         let tie = |j: u32| -> S {
             if S::EXACT {
@@ -608,7 +641,7 @@ impl<S: Scalar> Wave<S> {
         for (cell, same) in after.drain(..) {
             push(&mut run, cell, same);
         }
-        self.cells[s.idx()].splice(l..r, run.drain(..));
+        self.cells.splice(s.idx(), l, r, &mut run);
         self.scratch = Scratch {
             before,
             after,
