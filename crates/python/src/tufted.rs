@@ -32,8 +32,17 @@ fn failure(e: TuftedError) -> Failure {
     }
 }
 
+/// `surftopo_intrinsic::tufted_laplacian` with its errors as failures (call without the GIL).
+pub fn tufted(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    options: &TuftedOptions,
+) -> Result<TuftedLaplacian, Failure> {
+    tufted_laplacian(positions, triangles, options).map_err(failure)
+}
+
 /// The tufted Laplacian and mass matrix of `(positions, triangles)`, one row per input vertex
-/// (call without the GIL).
+/// (call without the GIL; the cover is freed on return).
 pub fn tufted_matrices(
     positions: &[[f64; 3]],
     triangles: &[[u32; 3]],
@@ -41,6 +50,6 @@ pub fn tufted_matrices(
 ) -> Result<(SparseMatrix, SparseMatrix), Failure> {
     let TuftedLaplacian {
         laplacian, mass, ..
-    } = tufted_laplacian(positions, triangles, options).map_err(failure)?;
+    } = tufted(positions, triangles, options)?;
     Ok((laplacian, mass))
 }
