@@ -4,23 +4,30 @@ igl.intrinsic_delaunay_cotmatrix (when installed), and surftopo's Python overhea
 call. A benchmark, not a test.
 
 Inputs: the shared meshes of about 100k faces (SURFTOPO_MESHES, relative to the repository root)
-and two generated ones. Each round calls every contender once on the same arrays, in turn; the
-table gives the minimum over the rounds and the ratios of minima. surftopo is timed through
-`surftopo._native._laplacian_timed`, the code of `surftopo.laplacian` that also returns the seconds
-of the library calls inside it (soup to matrices, GIL released); the wall time around the same
-call adds everything else (reading the numpy arrays, index conversion, building the two
+and two generated ones. Each round calls every contender once on the same arrays, the first one
+rotating from round to round; the table gives the median over the rounds, the ratio of the
+medians and the median of the per-round ratios (each peer's time over surftopo's in the same
+round). surftopo is timed through `surftopo._native._laplacian_timed`, the code of
+`surftopo.laplacian` that also returns the seconds of the library calls inside it (soup to
+matrices, GIL released); the wall time around the same call adds everything else (reading the
+numpy arrays, index conversion, the checks of the matrices, building the two
 scipy.sparse.csr_matrix), and the median over the rounds of wall / library - 1 is the overhead.
 
     python crates/python/benchmarks/laplacian_bench.py --rounds 15 --out results/python_laplacian.md
 
-`--cut-holes B` cuts B holes into every input first (open meshes: boundary edges are never
-flipped and keep their one half-cotangent in every contender).
+`--cut-holes B --seed S` cuts B seeded holes into every input and adds generated open surfaces
+(a disk, an annulus, a Möbius band of about 100k faces): open meshes, where boundary edges are
+never flipped and keep their one half-cotangent in surftopo and libigl, while robust_laplacian's
+tufted cover glues each face to its mirror image along the boundary, so a boundary edge facing an
+obtuse angle is flipped there (the columns `obtuse` and `robust / tufted`: README, "boundary
+condition").
 """
 
 from __future__ import annotations
 
 import argparse
 import datetime
+import itertools
 import json
 import os
 import platform
@@ -34,6 +41,8 @@ import numpy as np
 import surftopo
 
 REPOSITORY = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(REPOSITORY / "crates" / "python" / "tests"))
+from test_boundary_condition import boundary_edges  # noqa: E402  (the tests' count)
 SHARED = [
     "venus_50k.off.gz",
     "seahorse2_100K.off.gz",
@@ -59,6 +68,13 @@ def inputs(limit_faces: tuple[int, int]):
         print("note: SURFTOPO_MESHES is not set: generated inputs only", file=sys.stderr)
     yield "icosphere(6)", *surftopo.icosphere(6)
     yield "torus(250, 200)", *surftopo.torus(250, 200)
+
+
+def generated_open():
+    """(name, V, F) of generated open surfaces of about 100k faces."""
+    yield "disk(224)", *surftopo.disk(224)
+    yield "annulus(500, 100)", *surftopo.annulus(500, 100)
+    yield "mobius_band(500, 100)", *surftopo.mobius_band(500, 100)
 
 
 def cut_holes(V, F, holes, seed):
@@ -108,58 +124,113 @@ def timed(f, *args):
 
 
 def measure(name, V, F, rounds, contenders):
-    rows = {"surftopo": [], "library": [], "overhead": []}
-    rows.update({k: [] for k in contenders})
+    calls = {"surftopo": None, **contenders}
+    times = {k: [] for k in calls}
+    library, overhead = [], []
     timed(surftopo.laplacian, V, F)  # warm-up
-    for _ in range(rounds):
-        # The same code as surftopo.laplacian, also returning the seconds of the library calls.
-        wall, (_, _, library) = timed(surftopo._native._laplacian_timed, V, F)
-        rows["surftopo"].append(wall)
-        rows["library"].append(library)
-        rows["overhead"].append(wall / library - 1.0)
-        for peer, f in contenders.items():
-            rows[peer].append(timed(f, V, F)[0])
+    for peer, f in contenders.items():
+        timed(f, V, F)
+    for k in range(rounds):
+        order = list(calls)
+        for who in order[k % len(order):] + order[:k % len(order)]:
+            if who == "surftopo":
+                # The code of surftopo.laplacian, also returning the seconds of the library calls.
+                wall, (_, _, seconds) = timed(surftopo._native._laplacian_timed, V, F)
+                times[who].append(wall)
+                library.append(seconds)
+                overhead.append(wall / seconds - 1.0)
+            else:
+                times[who].append(timed(calls[who], V, F)[0])
     # The same operator: libigl's with the opposite sign; robust_laplacian's (PSD like surftopo's)
     # after its default intrinsic mollification (1e-5), which changes the lengths around
-    # near-degenerate triangles, so it is compared with surftopo's mollified by the same factor.
-    L, _ = surftopo.laplacian(V, F)
+    # near-degenerate triangles, so it is compared with surftopo's mollified by the same factor,
+    # and on open meshes also with surftopo's tufted Laplacian (the same cover).
+    # Rows of referenced vertices only: robust_laplacian puts a 1 on the diagonal of the others
+    # (the centres of the holes cut).
+    used = np.unique(F)
+    referenced = lambda A: A.tocsr()[used][:, used]  # noqa: E731
+    L = referenced(surftopo.laplacian(V, F)[0])
     agreement = {}
     for peer, f in contenders.items():
-        other = f(V, F)
+        other = referenced(f(V, F))
         if peer == "igl":
             agreement[peer] = float(abs(L + other).max() / abs(L).max())
         else:
-            mollified, _ = surftopo.laplacian(V, F, mollify=1e-5)
+            mollified = referenced(surftopo.laplacian(V, F, mollify=1e-5)[0])
             agreement[peer] = float(abs(mollified - other).max() / abs(L).max())
+            tufted = referenced(surftopo.laplacian(V, F, tufted=True, mollify_factor=1e-5)[0])
+            agreement[peer + "_tufted"] = float(abs(tufted - other).max() / abs(other).max())
+    boundary, obtuse = boundary_edges(V, F)
+    median = {k: statistics.median(v) for k, v in times.items()}
     return {
         "input": name,
         "faces": int(len(F)),
-        "surftopo_s": min(rows["surftopo"]),
-        "library_s": min(rows["library"]),
-        "overhead_median": statistics.median(rows["overhead"]),
-        "overhead_max": max(rows["overhead"]),
-        **{f"{peer}_s": min(rows[peer]) for peer in contenders},
-        **{f"{peer}_relative_difference": agreement[peer] for peer in contenders},
+        "boundary_edges": boundary,
+        "boundary_edges_facing_obtuse": obtuse,
+        "surftopo_s": median["surftopo"],
+        "library_s": statistics.median(library),
+        "overhead_median": statistics.median(overhead),
+        "overhead_max": max(overhead),
+        **{f"{peer}_s": median[peer] for peer in contenders},
+        **{f"{peer}_ratio_of_medians": median[peer] / median["surftopo"] for peer in contenders},
+        **{
+            f"{peer}_median_paired_ratio": statistics.median(
+                p / q for p, q in zip(times[peer], times["surftopo"])
+            )
+            for peer in contenders
+        },
+        **{f"{peer}_relative_difference": d for peer, d in agreement.items()},
+        "rounds": {k: v for k, v in times.items()},
     }
 
 
 def table(results, contenders):
-    head = "| input | faces | surftopo.laplacian (ms) | Rust call (ms) | overhead (median, max) |"
-    rule = "|---|---:|---:|---:|---:|"
+    head = ("| input | faces | boundary edges (facing an obtuse angle) | surftopo.laplacian (ms) "
+            "| Rust call (ms) | overhead (median, max) |")
+    rule = "|---|---:|---:|---:|---:|---:|"
     for peer in contenders:
-        head += f" {peer} (ms) | {peer} / surftopo |"
-        rule += "---:|---:|"
+        head += f" {peer} (ms) | {peer} / surftopo (of medians, paired) | {peer} difference |"
+        rule += "---:|---:|---:|"
+    if "robust_laplacian" in contenders:
+        head += " robust_laplacian / surftopo tufted difference |"
+        rule += "---:|"
     lines = [head, rule]
     for r in results:
         line = (
-            f"| {r['input']} | {r['faces']} | {1e3 * r['surftopo_s']:.2f} | "
+            f"| {r['input']} | {r['faces']} | {r['boundary_edges']} "
+            f"({r['boundary_edges_facing_obtuse']}) | {1e3 * r['surftopo_s']:.2f} | "
             f"{1e3 * r['library_s']:.2f} | {100 * r['overhead_median']:.1f}%, "
             f"{100 * r['overhead_max']:.1f}% |"
         )
         for peer in contenders:
-            line += f" {1e3 * r[peer + '_s']:.1f} | {r[peer + '_s'] / r['surftopo_s']:.1f}x |"
+            line += (
+                f" {1e3 * r[peer + '_s']:.1f} | {r[peer + '_ratio_of_medians']:.1f}x, "
+                f"{r[peer + '_median_paired_ratio']:.1f}x | "
+                f"{r[peer + '_relative_difference']:.1e} |"
+            )
+        if "robust_laplacian" in contenders:
+            line += f" {r['robust_laplacian_tufted_relative_difference']:.1e} |"
         lines.append(line)
     return "\n".join(lines)
+
+
+def summary(results, contenders):
+    """The range and median of each peer's ratios over the inputs."""
+    lines = []
+    for peer in contenders:
+        of_medians = sorted(r[peer + "_ratio_of_medians"] for r in results)
+        paired = sorted(r[peer + "_median_paired_ratio"] for r in results)
+        lines.append(
+            f"{peer} / surftopo: ratios of medians {of_medians[0]:.1f}x to {of_medians[-1]:.1f}x "
+            f"(median {statistics.median(of_medians):.1f}x); medians of paired ratios "
+            f"{paired[0]:.1f}x to {paired[-1]:.1f}x (median {statistics.median(paired):.1f}x)."
+        )
+    overhead = [r["overhead_median"] for r in results]
+    lines.append(
+        f"Python layer over the Rust call: median overhead {100 * min(overhead):.1f}% to "
+        f"{100 * max(overhead):.1f}% per input."
+    )
+    return "\n\n".join(lines)
 
 
 def main():
@@ -172,14 +243,17 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="the holes' seed")
     args = parser.parse_args()
     contenders = peers()
+    load_start = os.getloadavg()[0]
+    cases = inputs((args.min_faces, args.max_faces))
+    if args.cut_holes:
+        holed = ((f"{name} ({args.cut_holes} holes)", *cut_holes(V, F, args.cut_holes, args.seed))
+                 for name, V, F in cases)
+        cases = itertools.chain(holed, generated_open())
     results = []
-    for name, V, F in inputs((args.min_faces, args.max_faces)):
-        if args.cut_holes:
-            V, F = cut_holes(V, F, args.cut_holes, args.seed)
-            name += f" ({args.cut_holes} holes)"
+    for name, V, F in cases:
         r = measure(name, V, F, args.rounds, contenders)
         results.append(r)
-        print(json.dumps(r), file=sys.stderr)
+        print(json.dumps({k: v for k, v in r.items() if k != "rounds"}), file=sys.stderr)
     command = "python " + " ".join([str(Path(sys.argv[0]))] + sys.argv[1:])
     versions = {"python": platform.python_version(), "numpy": np.__version__}
     for module in ("scipy", "robust_laplacian", "igl"):
@@ -193,21 +267,30 @@ def main():
         f"Command: `SURFTOPO_MESHES={os.environ.get('SURFTOPO_MESHES', '')} {command}`",
         "",
         f"Date: {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "
-        f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the end; "
+        f"{os.cpu_count()} cores, load average {load_start:.2f} at the start and "
+        f"{os.getloadavg()[0]:.2f} at the end; "
         + ", ".join(f"{k} {v}" for k, v in versions.items()),
         "",
-        f"Minimum wall time over {args.rounds} rounds (each round calls every contender once, in "
-        "turn, after one warm-up call of surftopo.laplacian). surftopo is timed through "
+        f"Median wall time over {args.rounds} rounds (each round calls every contender once, the "
+        "first one rotating, after one warm-up call each); the ratios are the ratio of the "
+        "medians and the median of the per-round ratios. surftopo is timed through "
         "`surftopo._native._laplacian_timed`, the code of surftopo.laplacian that also returns the "
         "seconds of the library calls inside it (mesh build, lengths, flips, Laplacian, mass: the "
         "Rust call column); the overhead is wall / Rust - 1 of the same call (median and maximum "
-        "over the rounds): reading the numpy arrays, converting the indices, building the two "
-        "scipy.sparse.csr_matrix. Every contender runs with its defaults (robust_laplacian "
-        "mollifies by 1e-5, surftopo does not). The peers' Laplacians agree with surftopo's to "
-        "the relative difference in the .jsonl (libigl's with the opposite sign; "
-        "robust_laplacian's with surftopo's `mollify=1e-5`).",
+        "over the rounds): reading the numpy arrays, converting the indices, checking the "
+        "matrices, building the two scipy.sparse.csr_matrix. Every contender runs with its "
+        "defaults (robust_laplacian mollifies by 1e-5, surftopo does not). Differences are the "
+        "largest entry difference over the largest entry, on the referenced vertices "
+        "(robust_laplacian puts a 1 on the diagonal of the others: the centres of the holes): "
+        "libigl's with the opposite sign; "
+        "robust_laplacian's with surftopo's `mollify=1e-5`, and (last column) with surftopo's "
+        "`tufted=True` (the same cover, the same factor). On open meshes robust_laplacian's tufted "
+        "cover flips the boundary edges facing an obtuse angle, which libigl and surftopo keep "
+        "(the natural boundary condition; README, boundary condition).",
         "",
         table(results, contenders),
+        "",
+        summary(results, contenders),
         "",
     ])
     print(report)

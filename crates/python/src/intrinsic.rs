@@ -144,12 +144,13 @@ impl Csr {
         }
         let identity = rows == m.n;
         let indices = if rows <= i32::MAX as usize && indptr[rows] <= i32::MAX as usize {
+            // Converted in place: `into_iter().map().collect()` reuses the `u32` buffer.
             let cols = if identity {
-                m.cols.iter().map(|&c| c as i32).collect()
+                m.cols.into_iter().map(|c| c as i32).collect()
             } else {
                 m.cols
-                    .iter()
-                    .map(|&c| rows_of_dense[c as usize] as i32)
+                    .into_iter()
+                    .map(|c| rows_of_dense[c as usize] as i32)
                     .collect()
             };
             CsrIndices::Narrow(cols, indptr.iter().map(|&p| p as i32).collect())
@@ -847,7 +848,8 @@ struct Tufted {
     options: TuftedOptions,
 }
 
-/// `laplacian` and the seconds of the library calls alone (soup to matrices), for the benchmark.
+/// `laplacian` and the seconds of the library calls alone (soup to matrices, their intermediate
+/// results freed), for the benchmark.
 fn laplacian_and_seconds<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
@@ -863,33 +865,18 @@ fn laplacian_and_seconds<'py>(
     let request = *request;
     let computed = interruptible(py, move |_| {
         let start = Instant::now();
-        if tufted.asked == Some(true) {
-            let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
-            return Ok((matrices, start.elapsed().as_secs_f64(), false));
-        }
-        let located = match Located::from_arrays(&positions, &triangles) {
-            Err(f) if needs_cover(&f) => {
-                let (matrices, seconds) =
-                    covered_matrices(&positions, &triangles, &request, start)?;
-                return Ok((matrices, seconds, false));
-            }
-            Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
-                let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
-                return Ok((matrices, start.elapsed().as_secs_f64(), true));
-            }
-            located => located?,
-        };
-        let (located, out) = located.delaunay(&request)?;
+        let matrices = library_matrices(&positions, &triangles, &request, tufted)?;
         let seconds = start.elapsed().as_secs_f64();
-        let rows = located.dense_rows();
-        let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
-        let (l, m) = (matrix(out.laplacian), matrix(out.mass));
-        check_matrices(&l, &m)?;
-        let matrices = (
-            Csr::new(l, &rows, located.rows),
-            Csr::new(m, &rows, located.rows),
+        if !matrices.tufted {
+            check_matrices(&matrices.laplacian, &matrices.mass)?;
+        }
+        let (rows, n) = (&matrices.rows, matrices.rows_out);
+        let csr = (
+            Csr::new(matrices.laplacian, rows, n),
+            Csr::new(matrices.mass, rows, n),
         );
-        Ok::<_, Failure>((matrices, seconds, false))
+        let automatic = matrices.tufted && tufted.asked.is_none();
+        Ok::<_, Failure>((csr, seconds, automatic))
     })?;
     let ((l, m), seconds, automatic) = computed.map_err(|f| f.into_pyerr(py))?;
     if automatic {
@@ -902,15 +889,67 @@ fn laplacian_and_seconds<'py>(
     ))
 }
 
+/// The matrices of `laplacian` as the libraries return them.
+struct Matrices {
+    laplacian: SparseMatrix,
+    mass: SparseMatrix,
+    /// Output row of each matrix row (increasing).
+    rows: Vec<u32>,
+    /// Number of output rows.
+    rows_out: usize,
+    /// Whether they are the tufted cover's.
+    tufted: bool,
+}
+
+/// The library calls of `laplacian` (call without the GIL): the closed surface's matrices, or a
+/// surface with boundary, non-orientable or in pieces ([`covered_matrices`]), or the tufted
+/// cover's as `tufted` says. The intermediate results are freed on return.
+fn library_matrices(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    request: &DelaunayRequest,
+    tufted: Tufted,
+) -> Result<Matrices, Failure> {
+    let tufted_matrices = || {
+        let (laplacian, mass) =
+            crate::tufted::tufted_matrices(positions, triangles, &tufted.options)?;
+        Ok(Matrices {
+            laplacian,
+            mass,
+            rows: (0..positions.len() as u32).collect(),
+            rows_out: positions.len(),
+            tufted: true,
+        })
+    };
+    if tufted.asked == Some(true) {
+        return tufted_matrices();
+    }
+    let located = match Located::from_arrays(positions, triangles) {
+        Err(f) if needs_cover(&f) => return covered_matrices(positions, triangles, request),
+        Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
+            return tufted_matrices();
+        }
+        located => located?,
+    };
+    let (located, out) = located.delaunay(request)?;
+    let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
+    Ok(Matrices {
+        laplacian: matrix(out.laplacian),
+        mass: matrix(out.mass),
+        rows: located.dense_rows(),
+        rows_out: located.rows,
+        tufted: false,
+    })
+}
+
 /// The Laplacian and mass matrices of a surface with boundary, non-orientable or in pieces
 /// (`surftopo_intrinsic::CoveredTriangulation`: flipping; the natural boundary condition), rows
-/// the input's vertex indices, and the seconds since `start`.
+/// the input's vertex indices.
 fn covered_matrices(
     positions: &[[f64; 3]],
     triangles: &[[u32; 3]],
     request: &DelaunayRequest,
-    start: Instant,
-) -> Result<((Csr, Csr), f64), Failure> {
+) -> Result<Matrices, Failure> {
     let covered = Covered::from_arrays(positions, triangles)?;
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
@@ -921,16 +960,14 @@ fn covered_matrices(
     };
     let out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Covered(covered.tri), &request)
         .map_err(Failure::Intrinsic)?;
-    let seconds = start.elapsed().as_secs_f64();
-    let rows = covered.rows;
     let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
-    let (l, m) = (matrix(out.laplacian), matrix(out.mass));
-    check_matrices(&l, &m)?;
-    let matrices = (
-        Csr::new(l, &rows, covered.count),
-        Csr::new(m, &rows, covered.count),
-    );
-    Ok((matrices, seconds))
+    Ok(Matrices {
+        laplacian: matrix(out.laplacian),
+        mass: matrix(out.mass),
+        rows: covered.rows,
+        rows_out: covered.count,
+        tufted: false,
+    })
 }
 
 /// The request of `laplacian`: the triangulation and both matrices.

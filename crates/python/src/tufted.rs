@@ -3,8 +3,9 @@
 //! input.
 
 use crate::errors::{Failure, invalid};
-use crate::intrinsic::Csr;
-use surftopo_intrinsic::{TuftedError, TuftedLaplacian, TuftedOptions, tufted_laplacian};
+use surftopo_intrinsic::{
+    SparseMatrix, TuftedError, TuftedLaplacian, TuftedOptions, tufted_laplacian,
+};
 use surftopo_mesh::BuildError;
 
 /// Whether a build error says the soup is not a manifold (a non-manifold edge or vertex, a
@@ -40,19 +41,15 @@ pub fn tufted(
     tufted_laplacian(positions, triangles, options).map_err(failure)
 }
 
-/// The tufted Laplacian and mass matrix of `(positions, triangles)` as CSR matrices with one row
-/// per input vertex (call without the GIL).
-pub fn tufted_csr(
+/// The tufted Laplacian and mass matrix of `(positions, triangles)`, one row per input vertex
+/// (call without the GIL; the cover is freed on return).
+pub fn tufted_matrices(
     positions: &[[f64; 3]],
     triangles: &[[u32; 3]],
     options: &TuftedOptions,
-) -> Result<(Csr, Csr), Failure> {
+) -> Result<(SparseMatrix, SparseMatrix), Failure> {
     let TuftedLaplacian {
         laplacian, mass, ..
     } = tufted(positions, triangles, options)?;
-    let rows: Vec<u32> = (0..positions.len() as u32).collect();
-    Ok((
-        Csr::new(laplacian, &rows, positions.len()),
-        Csr::new(mass, &rows, positions.len()),
-    ))
+    Ok((laplacian, mass))
 }

@@ -38,6 +38,9 @@ pub fn excesses(o: f64, x: f64, y: f64) -> [f64; 4] {
 /// Lengths whose products of four (Kahan's Heron formula) neither overflow nor underflow: the
 /// largest side within `[2^-250, 2^250]` needs no scaling.
 const SAFE_EXPONENT: i32 = 250;
+/// `2^-SAFE_EXPONENT` and `2^(SAFE_EXPONENT + 1)`: the largest side needs no scaling in between.
+const SAFE_LOW: f64 = f64::from_bits(((1023 - SAFE_EXPONENT) as u64) << 52);
+const SAFE_HIGH: f64 = f64::from_bits(((1023 + SAFE_EXPONENT + 1) as u64) << 52);
 
 /// The sides scaled by an exact power of two `2^-k` so that the largest lies in `[1, 2)`, and `k`;
 /// the sides themselves and `k = 0` when the largest is within `[2^-250, 2^250]` (or is zero or
@@ -47,7 +50,9 @@ const SAFE_EXPONENT: i32 = 250;
 #[inline]
 fn normalized(o: f64, x: f64, y: f64) -> (f64, f64, f64, i32) {
     let m = o.max(x).max(y);
-    if !(m.is_finite() && m > 0.0) {
+    // The common case first, by two comparisons (no logarithm): `2^-250 <= m < 2^251` is
+    // `-250 <= floor(log2 m) <= 250`; also the case of zero and non-finite sides.
+    if !(m.is_finite() && m > 0.0) || (SAFE_LOW..SAFE_HIGH).contains(&m) {
         return (o, x, y, 0);
     }
     let k = m.log2().floor() as i32;
@@ -357,6 +362,25 @@ mod tests {
     fn third_corner_matches_coordinates() {
         let [x, y] = third_corner(1.0, (16.0f64 + 4.0).sqrt(), (25.0f64 + 4.0).sqrt());
         assert!((x - 5.0).abs() < 1e-14 && (y - 2.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn the_comparisons_bound_the_unscaled_range() {
+        assert_eq!(SAFE_LOW, 2f64.powi(-SAFE_EXPONENT));
+        assert_eq!(SAFE_HIGH, 2f64.powi(SAFE_EXPONENT + 1));
+        // Either side of each bound, scaled or not, the formulas give the bits of the same
+        // triangle scaled exactly into [1, 2).
+        for bound in [SAFE_LOW, SAFE_HIGH] {
+            for m in [bound.next_down(), bound, bound.next_up()] {
+                let sides = [m, 0.75 * m, 0.6 * m];
+                let s = pow2(1023 - (m.to_bits() >> 52) as i32);
+                let unit = sides.map(|l| l * s);
+                assert!((1.0..2.0).contains(&unit[0]));
+                assert_eq!(tan_half_sq_all(sides).0, tan_half_sq_all(unit).0, "{m:e}");
+                let [a, b, c] = sides;
+                assert_eq!(area(a, b, c), area(unit[0], unit[1], unit[2]) / (s * s));
+            }
+        }
     }
 
     #[test]

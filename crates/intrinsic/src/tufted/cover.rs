@@ -74,89 +74,91 @@ pub(crate) fn tufted_cover(
         let t = &triangles[s / 3];
         (t[s % 3], t[(s % 3 + 1) % 3])
     };
-    // Face sides bucketed by their smaller end (a counting sort), then sorted by the larger end:
-    // each edge's sides become a run.
+    // Face sides bucketed by their smaller end (a counting sort), each bucket then sorted by the
+    // larger end and the side, as the integers `hi << 32 | s`: each edge's sides become a run.
     let mut start = vec![0u32; n + 1];
-    for s in 0..sides {
-        let (u, w) = ends(s);
-        start[u.min(w) as usize + 1] += 1;
+    for t in triangles {
+        for i in 0..3 {
+            start[t[i].min(t[(i + 1) % 3]) as usize + 1] += 1;
+        }
     }
     for v in 0..n {
         start[v + 1] += start[v];
     }
-    let mut by_edge = vec![0u32; sides];
+    let mut by_edge = vec![0u64; sides];
     let mut fill = start[..n].to_vec();
-    for s in 0..sides {
-        let (u, w) = ends(s);
-        let lo = u.min(w) as usize;
-        by_edge[fill[lo] as usize] = s as u32;
-        fill[lo] += 1;
+    for (f, t) in triangles.iter().enumerate() {
+        for i in 0..3 {
+            let (u, w) = (t[i], t[(i + 1) % 3]);
+            let lo = u.min(w) as usize;
+            by_edge[fill[lo] as usize] = u64::from(u.max(w)) << 32 | (3 * f + i) as u64;
+            fill[lo] += 1;
+        }
     }
-    let hi_of = |s: u32| {
-        let (u, w) = ends(s as usize);
-        u.max(w)
-    };
-    for lo in 0..n {
-        by_edge[start[lo] as usize..start[lo + 1] as usize]
-            .sort_unstable_by_key(|&s| (hi_of(s), s));
-    }
+    drop(fill);
+    let side_of = |key: u64| key as u32;
+    let hi_of = |key: u64| (key >> 32) as u32;
     // Glue each run.
     let mut pairs: Vec<(Side, Side)> = Vec::with_capacity(sides);
     let mut lengths: Vec<f64> = Vec::with_capacity(sides);
     let (mut input_edges, mut input_length_sum) = (0usize, 0.0f64);
     let (mut fin_edges, mut book_edges) = (0usize, 0usize);
     let mut ring: Vec<(f64, u32)> = Vec::new();
-    let mut k = 0;
-    while k < sides {
-        let first = by_edge[k];
-        let (u, w) = ends(first as usize);
-        let (lo, hi) = (u.min(w), u.max(w));
-        let mut end = k + 1;
-        while end < sides && {
-            let (a, b) = ends(by_edge[end] as usize);
-            (a.min(b), a.max(b)) == (lo, hi)
-        } {
-            end += 1;
-        }
-        let run = &by_edge[k..end];
-        let length = distance(positions[lo as usize], positions[hi as usize]);
-        input_edges += 1;
-        input_length_sum += length;
-        // d runs as the first face's side (u -> w). The side of face-side s's face that runs
-        // along d and the one against it.
-        let along_against = |s: u32| {
-            let (f, i) = (s as usize / 3, s as usize % 3);
-            let (front, back) = (side(2 * f, i), side(2 * f + 1, 2 - i));
-            if ends(s as usize).0 == u {
-                (front, back)
-            } else {
-                (back, front)
+    let mut run: Vec<u32> = Vec::new();
+    for lo in 0..n {
+        let bucket = &mut by_edge[start[lo] as usize..start[lo + 1] as usize];
+        bucket.sort_unstable();
+        let mut k = 0;
+        while k < bucket.len() {
+            let hi = hi_of(bucket[k]);
+            let mut end = k + 1;
+            while end < bucket.len() && hi_of(bucket[end]) == hi {
+                end += 1;
             }
-        };
-        ring.clear();
-        if run.len() >= 3 {
-            book_edges += 1;
-            let angle = frame_angle(positions, u, w);
-            // The faces in geometry-central's order of an edge's halfedges (the first face,
-            // then the others from the last), then a stable sort clockwise around d
-            // (decreasing angle): faces at the same angle keep that order.
-            let order = run[..1].iter().chain(run[1..].iter().rev());
-            ring.extend(order.map(|&s| {
-                let t = &triangles[s as usize / 3];
-                (angle(t[(s as usize % 3 + 2) % 3]), s)
-            }));
-            ring.sort_by(|a, b| b.0.total_cmp(&a.0));
-        } else {
-            fin_edges += usize::from(run.len() == 1);
-            ring.extend(run.iter().map(|&s| (0.0, s)));
+            run.clear();
+            run.extend(bucket[k..end].iter().map(|&key| side_of(key)));
+            k = end;
+            let first = run[0];
+            let (u, w) = ends(first as usize);
+            let lo = lo as u32;
+            let length = distance(positions[lo as usize], positions[hi as usize]);
+            input_edges += 1;
+            input_length_sum += length;
+            // d runs as the first face's side (u -> w). The side of face-side s's face that runs
+            // along d and the one against it.
+            let along_against = |s: u32| {
+                let (f, i) = (s as usize / 3, s as usize % 3);
+                let (front, back) = (side(2 * f, i), side(2 * f + 1, 2 - i));
+                if ends(s as usize).0 == u {
+                    (front, back)
+                } else {
+                    (back, front)
+                }
+            };
+            ring.clear();
+            if run.len() >= 3 {
+                book_edges += 1;
+                let angle = frame_angle(positions, u, w);
+                // The faces in geometry-central's order of an edge's halfedges (the first face,
+                // then the others from the last), then a stable sort clockwise around d
+                // (decreasing angle): faces at the same angle keep that order.
+                let order = run[..1].iter().chain(run[1..].iter().rev());
+                ring.extend(order.map(|&s| {
+                    let t = &triangles[s as usize / 3];
+                    (angle(t[(s as usize % 3 + 2) % 3]), s)
+                }));
+                ring.sort_by(|a, b| b.0.total_cmp(&a.0));
+            } else {
+                fin_edges += usize::from(run.len() == 1);
+                ring.extend(run.iter().map(|&s| (0.0, s)));
+            }
+            for j in 0..ring.len() {
+                let against = along_against(ring[j].1).1;
+                let along = along_against(ring[(j + 1) % ring.len()].1).0;
+                pairs.push((against, along));
+                lengths.push(length);
+            }
         }
-        for j in 0..ring.len() {
-            let against = along_against(ring[j].1).1;
-            let along = along_against(ring[(j + 1) % ring.len()].1).0;
-            pairs.push((against, along));
-            lengths.push(length);
-        }
-        k = end;
     }
     let (mesh, corner_vertex) = SurfaceMesh::from_gluing_pieces(2 * triangles.len(), &pairs)?;
     let mut input_vertex = vec![u32::MAX; mesh.vertex_slots()];

@@ -137,17 +137,21 @@ pub fn tufted_laplacian(
         cover_faces: cover.mesh.face_count(),
         ..TuftedReport::default()
     };
-    let side_lengths = |t: &[u32; 3]| {
-        [0, 1, 2].map(|i| distance(positions[t[i] as usize], positions[t[(i + 1) % 3] as usize]))
-    };
+    let side_lengths: Vec<[f64; 3]> = triangles
+        .iter()
+        .map(|t| {
+            [0, 1, 2]
+                .map(|i| distance(positions[t[i] as usize], positions[t[(i + 1) % 3] as usize]))
+        })
+        .collect();
     let mut lengths = cover.lengths;
     if factor > 0.0 {
         let margin = factor * cover.input_length_sum / cover.input_edges as f64;
-        report.mollify_delta = margin_delta(triangles.iter().map(side_lengths), margin);
+        report.mollify_delta = margin_delta(side_lengths.iter().copied(), margin);
         lengths.iter_mut().for_each(|l| *l += report.mollify_delta);
     }
-    for (f, t) in triangles.iter().enumerate() {
-        let sides = side_lengths(t).map(|l| l + report.mollify_delta);
+    for (f, sides) in side_lengths.iter().enumerate() {
+        let sides = sides.map(|l| l + report.mollify_delta);
         check_triangle(FaceId::new(f), sides).map_err(TuftedError::Degenerate)?;
     }
     let mut tri =
