@@ -490,10 +490,13 @@ fn located_surface(
 ) -> PyResult<Located> {
     if let Some(faces) = faces {
         let vertices = VertexArray::extract(surface)?;
-        let triangles = arrays::faces::<3>(faces, vertices.len())?;
+        let faces = arrays::any_faces(faces, vertices.len())?;
         let positions = vertices.positions();
         return py
-            .detach(|| Located::from_arrays(&positions, &triangles))
+            .detach(|| {
+                let cut = faces.triangulated(&positions);
+                Located::from_arrays(&positions, &cut.triangles).map_err(|f| cut.on_faces(f))
+            })
             .map_err(|f| f.into_pyerr(py));
     }
     if let Ok(p) = surface.cast::<Portalgon>() {
@@ -570,28 +573,31 @@ fn laplacian_and_seconds<'py>(
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let faces = arrays::any_faces(faces, vertices.len())?;
     let positions = vertices.positions();
     let computed = py.detach(|| {
         let start = Instant::now();
+        let cut = faces.triangulated(&positions);
+        let triangles = &cut.triangles;
         if tufted.asked == Some(true) {
-            let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
+            let matrices = crate::tufted::tufted_csr(&positions, triangles, &tufted.options)?;
             return Ok((matrices, start.elapsed().as_secs_f64(), false));
         }
-        let located = match Located::from_arrays(&positions, &triangles) {
+        let located = match Located::from_arrays(&positions, triangles) {
             Err(Failure::Build(
                 BuildError::BoundaryEdge { .. }
                 | BuildError::NonOrientable { .. }
                 | BuildError::Disconnected { .. },
             )) => {
-                let (matrices, seconds) = covered_matrices(&positions, &triangles, request, start)?;
+                let (matrices, seconds) = covered_matrices(&positions, triangles, request, start)
+                    .map_err(|f| cut.on_faces(f))?;
                 return Ok((matrices, seconds, false));
             }
             Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
-                let matrices = crate::tufted::tufted_csr(&positions, &triangles, &tufted.options)?;
+                let matrices = crate::tufted::tufted_csr(&positions, triangles, &tufted.options)?;
                 return Ok((matrices, start.elapsed().as_secs_f64(), true));
             }
-            located => located?,
+            located => located.map_err(|f| cut.on_faces(f))?,
         };
         let (located, out) = located.delaunay(request)?;
         let seconds = start.elapsed().as_secs_f64();
