@@ -76,9 +76,10 @@ enum Command {
     /// The intrinsic Delaunay triangulation by edge flipping; optionally its tessellation, the cotan
     /// Laplacian and the lumped mass matrix.
     Delaunay(commands::delaunay::Args),
-    /// Whether two closed polyhedral surfaces are isometric: prints `isometric` (exit 0),
-    /// `not isometric` (exit 1) or `undecidable in double precision` (exit 3); exit 2 for invalid
-    /// input, 4 for an internal failure.
+    /// Whether two polyhedral surfaces (any kind: boundary loops, non-orientable, several pieces)
+    /// are isometric: prints `isometric` (exit 0), `not isometric` (exit 1), `undecidable in
+    /// double precision` or `undecided` (exit 3); exit 2 for invalid input, 4 for an internal
+    /// failure.
     Isometric(commands::isometric::Args),
     /// Run every capability on a built-in example and write the results into a folder.
     Demo(commands::demo::Args),

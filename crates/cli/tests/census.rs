@@ -3,23 +3,12 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{json_of, surftopo, write};
 use serde_json::Value;
 use surftopo_census::{Triangulation, canonical_form, parse_lutz};
 
 fn run_json(args: &[&str], dir: &std::path::Path) -> Value {
-    let out = surftopo()
-        .current_dir(dir)
-        .args(args)
-        .arg("--json")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    json_of(surftopo().current_dir(dir).args(args).arg("--json"), &[])
 }
 
 #[test]

@@ -2,25 +2,10 @@
 
 mod common;
 
-use common::{read_mtx, surftopo, write};
+use common::{json_of, read_mtx, surftopo, write};
 use serde_json::Value;
 
 const TETRA: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
-
-/// Runs a command that must succeed and prints JSON with at least `keys`; returns the JSON.
-fn json_of(cmd: &mut assert_cmd::Command, keys: &[&str]) -> Value {
-    let out = cmd.output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-    for key in keys {
-        assert!(v.get(key).is_some(), "missing key {key} in {v}");
-    }
-    v
-}
 
 /// `surftopo COMMAND INPUT -o OUTPUT ARGS...`'s JSON, which must succeed and have `keys`.
 fn command_json(

@@ -10,6 +10,21 @@ pub fn surftopo() -> Command {
     Command::cargo_bin("surftopo").expect("binary built")
 }
 
+/// Runs a command that must succeed and prints JSON with at least `keys`; returns the JSON.
+pub fn json_of(cmd: &mut Command, keys: &[&str]) -> serde_json::Value {
+    let out = cmd.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in keys {
+        assert!(v.get(key).is_some(), "missing key {key} in {v}");
+    }
+    v
+}
+
 /// Writes `text` to `name` in `dir` and returns the path.
 pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let path = dir.join(name);
@@ -54,4 +69,17 @@ pub fn read_mtx(path: &std::path::Path) -> Vec<Vec<f64>> {
         }
     }
     m
+}
+
+/// `surftopo generate ARGS -o DIR/NAME`, which must succeed; returns the path.
+pub fn generate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+    let path = dir.join(name);
+    surftopo()
+        .arg("generate")
+        .args(args)
+        .arg("-o")
+        .arg(&path)
+        .assert()
+        .success();
+    path
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{json_of, surftopo, write};
 use serde_json::Value;
 use std::path::Path;
 
@@ -21,18 +21,7 @@ const CLASSES: [&str; 7] = [
 ];
 
 fn info_json(path: &Path) -> Value {
-    let out = surftopo()
-        .arg("info")
-        .arg(path)
-        .arg("--json")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    json_of(surftopo().arg("info").arg(path).arg("--json"), &[])
 }
 
 /// Checks what holds for every report: the documented keys in order, the class counts summing

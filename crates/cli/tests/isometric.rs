@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{generated_genus_surface, surftopo};
+use common::{generate, generated_genus_surface, surftopo};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -189,4 +189,187 @@ fn tessellation_files_of_delaunay_are_inputs() {
     }
     let far = moved_copy(&mesh, 1e-4, "far.obj");
     expect(&far, &tessellation, &[], 1, Value::Bool(false));
+}
+
+/// The vertices and faces (1-based) of an OBJ file of triangles.
+fn obj(path: &Path) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let (mut vertices, mut faces) = (Vec::new(), Vec::new());
+    for line in text.lines() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.first() {
+            Some(&"v") => vertices.push([1, 2, 3].map(|k| words[k].parse::<f64>().unwrap())),
+            Some(&"f") => faces.push([1, 2, 3].map(|k| words[k].parse::<usize>().unwrap())),
+            _ => {}
+        }
+    }
+    (vertices, faces)
+}
+
+/// The OBJ files `parts`, each moved by `map`, side by side in one file.
+fn joined(dir: &Path, name: &str, parts: &[&Path], map: impl Fn([f64; 3]) -> [f64; 3]) -> PathBuf {
+    let mut text = String::new();
+    let mut offset = 0;
+    let mut faces = String::new();
+    for (k, part) in parts.iter().enumerate() {
+        let (v, f) = obj(part);
+        for p in &v {
+            let [x, y, z] = map(*p);
+            text.push_str(&format!("v {} {y} {z}\n", x + 10.0 * k as f64));
+        }
+        for t in &f {
+            faces.push_str(&format!(
+                "f {} {} {}\n",
+                t[0] + offset,
+                t[1] + offset,
+                t[2] + offset
+            ));
+        }
+        offset += v.len();
+    }
+    text.push_str(&faces);
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn every_surface_kind_against_its_copies_mirror_images_and_scaled_copies() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let kinds: [(&str, &[&str]); 8] = [
+        ("disk", &["disk", "--n", "5"]),
+        ("annulus", &["annulus"]),
+        ("mobius", &["mobius-band"]),
+        ("rp2", &["projective-plane", "--subdivide", "1"]),
+        ("klein", &["klein-bottle"]),
+        ("n3", &["non-orientable", "--crosscaps", "3"]),
+        ("holes", &["torus", "--cut-holes", "2"]),
+        ("pieces", &["mobius-band", "--copies", "3"]),
+    ];
+    for (name, args) in kinds {
+        let mut args = args.to_vec();
+        args.extend(["--seed", "5"]);
+        let mesh = generate(d, &format!("{name}.obj"), &args);
+        let mut shuffled_args = args.clone();
+        shuffled_args.push("--shuffle-faces");
+        let shuffled = generate(d, &format!("{name}-shuffled.obj"), &shuffled_args);
+        let json = expect(&mesh, &shuffled, &[], 0, Value::Bool(true));
+        assert!(
+            json["reason"].as_str().unwrap().contains("correspond"),
+            "{name}: {json}"
+        );
+        let mirror = joined(d, &format!("{name}-mirror.obj"), &[&mesh], |p| {
+            [-p[0], p[1], p[2]]
+        });
+        expect(&mesh, &mirror, &[], 0, Value::Bool(true));
+        let scaled = joined(d, &format!("{name}-scaled.obj"), &[&mesh], |p| {
+            p.map(|x| 1.001 * x)
+        });
+        let json = expect(&mesh, &scaled, &[], 1, Value::Bool(false));
+        assert!(
+            json["reason"].as_str().unwrap().contains("areas"),
+            "{name}: {json}"
+        );
+    }
+}
+
+#[test]
+fn pieces_boundary_lengths_and_kinds_are_compared() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let band = generate(d, "band.obj", &["mobius-band"]);
+    let ring = generate(d, "ring.obj", &["annulus"]);
+    let both = joined(d, "both.obj", &[&band, &ring], |p| p);
+    let swapped = joined(d, "swapped.obj", &[&ring, &band], |p| p);
+    expect(&both, &swapped, &[], 0, Value::Bool(true));
+    // A Möbius band is not an annulus, whatever the lengths.
+    let json = expect(&band, &ring, &[], 1, Value::Bool(false));
+    assert!(
+        json["reason"].as_str().unwrap().contains("Möbius band"),
+        "{json}"
+    );
+    // The cylinder twice as wide and half as high: the same area, longer boundary loops.
+    let wide = joined(d, "wide.obj", &[&ring], |p| {
+        [2.0 * p[0], 2.0 * p[1], 0.5 * p[2]]
+    });
+    let json = expect(&ring, &wide, &[], 1, Value::Bool(false));
+    assert!(
+        json["reason"].as_str().unwrap().contains("boundary loops"),
+        "{json}"
+    );
+    let wide_both = joined(d, "wide-both.obj", &[&band, &wide], |p| p);
+    expect(&both, &wide_both, &[], 1, Value::Bool(false));
+    // Three pieces against two.
+    let three = joined(d, "three.obj", &[&band, &ring, &ring], |p| p);
+    let json = expect(&both, &three, &[], 1, Value::Bool(false));
+    assert!(
+        json["reason"]
+            .as_str()
+            .unwrap()
+            .contains("connected pieces"),
+        "{json}"
+    );
+    // A closed mesh of one piece against a band: compared, not refused.
+    let torus = generate(d, "torus.obj", &["torus"]);
+    expect(&torus, &band, &[], 1, Value::Bool(false));
+}
+
+#[test]
+fn flat_vertices_on_open_surfaces_are_undecided_and_the_wave_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let band = generate(d, "band.obj", &["mobius-band"]);
+    // Midpoint subdivision keeps the surface and adds flat vertices: no proof either way.
+    let finer = generate(d, "finer.obj", &["mobius-band", "--subdivide", "1"]);
+    let json = expect(&band, &finer, &[], 3, Value::Null);
+    assert_eq!(json["verdict"], "undecided");
+    assert!(json["reason"].as_str().unwrap().contains("flat"), "{json}");
+    for method in ["voronoi", "dubois"] {
+        let out = surftopo()
+            .arg("isometric")
+            .arg(&band)
+            .arg(&band)
+            .args(["--method", method])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains("band.obj") && stderr.contains("--method flip"),
+            "{stderr}"
+        );
+    }
+}
+
+#[test]
+fn portalgon_files_of_open_or_non_orientable_surfaces_are_refused_with_their_location() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (kind, expected) in [
+        ("mobius-band", "its gluing reverses orientation"),
+        ("annulus", "is unmatched"),
+    ] {
+        let mesh = generate(d, &format!("{kind}.obj"), &[kind]);
+        let doc = d.join(format!("{kind}.json"));
+        surftopo()
+            .arg("delaunay")
+            .arg(&mesh)
+            .arg("-o")
+            .arg(&doc)
+            .assert()
+            .success();
+        let out = surftopo()
+            .arg("isometric")
+            .arg(&doc)
+            .arg(&mesh)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains(&format!("{kind}.json: ")) && stderr.contains(expected),
+            "{stderr}"
+        );
+    }
 }

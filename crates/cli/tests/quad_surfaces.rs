@@ -6,23 +6,10 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{generate, json_of, surftopo, write};
 use serde_json::Value;
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
-
-/// `generate ARGS -o DIR/NAME`; returns the path.
-fn generate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
-    let path = dir.join(name);
-    surftopo()
-        .arg("generate")
-        .args(args)
-        .arg("-o")
-        .arg(&path)
-        .assert()
-        .success();
-    path
-}
+use std::path::Path;
 
 /// The faces of an OBJ file by the testkit's statement reader (1-based indices made 0-based).
 fn obj_faces(path: &Path) -> (usize, Vec<Vec<u32>>) {
@@ -93,21 +80,14 @@ fn check(name: &str, input: &[[u32; 3]], output: &Path, json: &Value, all_quads:
 }
 
 fn quad_json(input: &Path, output: &Path, args: &[&str]) -> Value {
-    let out = surftopo()
-        .arg("quad")
+    let mut quad = surftopo();
+    quad.arg("quad")
         .arg(input)
         .arg("-o")
         .arg(output)
         .arg("--json")
-        .args(args)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+        .args(args);
+    json_of(&mut quad, &[])
 }
 
 #[test]

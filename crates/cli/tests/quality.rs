@@ -4,27 +4,20 @@
 
 mod common;
 
-use common::surftopo;
+use common::{json_of, surftopo};
 
 fn quad_json(
     input: &std::path::Path,
     output: &std::path::Path,
     objective: &str,
 ) -> serde_json::Value {
-    let out = surftopo()
-        .args(["quad"])
+    let mut quad = surftopo();
+    quad.args(["quad"])
         .arg(input)
         .arg("-o")
         .arg(output)
-        .args(["--objective", objective, "--json"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{objective}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+        .args(["--objective", objective, "--json"]);
+    json_of(&mut quad, &[])
 }
 
 #[test]

@@ -29,7 +29,8 @@
 //! - [`voronoi`] (Appendix D): the wave and the dual of its Voronoi diagram.
 //! - [`dubois`] (Sections 3, 4, 8; Theorem 1): ALGORITHM, tubes and bifaces, caps,
 //!   [`dubois::delaunay_tessellation_dubois`]. `isometry/` (Appendix A, Corollary 2):
-//!   [`isometric`], [`decide_isometry`]. `laplacian`: [`cotan_laplacian`] (positive
+//!   [`isometric`], [`decide_isometry`]; on surfaces with boundary, non-orientable or in
+//!   pieces, [`decide_isometry_on_cover`] (ours, `docs/isometry_every_surface.md`). `laplacian`: [`cotan_laplacian`] (positive
 //!   semidefinite), [`lumped_mass`], [`intrinsic_delaunay_laplacian`] (flips and assembles in one
 //!   call, libigl's `intrinsic_delaunay_cotmatrix`).
 //! - `tufted/`: [`tufted_laplacian`], the Laplacian and mass matrix of any triangle soup
@@ -75,6 +76,7 @@ mod tufted;
 pub mod voronoi;
 
 pub use covered::CoveredTriangulation;
+pub use covered::isometry::{FLAT_MARGIN_FACTOR, decide_isometry_on_cover, piece_tessellations};
 pub use delaunay::choice::{
     DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
 };
@@ -108,6 +110,7 @@ pub use formats::portalgon_json::{
 pub use isometry::decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
 pub use isometry::flat_torus_lattice::flat_torus_invariants;
 pub use isometry::flat_vertices::{RemovalReport, remove_flat_vertices};
+pub use isometry::twisted::{MapDifference, MapMatch, TwistedMap, compare_twisted};
 pub use isometry::{
     ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
     MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,

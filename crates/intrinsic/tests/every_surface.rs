@@ -5,7 +5,9 @@
 //! the input positions, and a dense LDLᵀ for positive semidefiniteness.
 
 use std::collections::HashMap;
-use surftopo_intrinsic::{CoveredTriangulation, DelaunayOptions, SparseMatrix};
+use surftopo_intrinsic::{
+    CoveredTriangulation, DEFAULT_COCIRCULAR_TOLERANCE, DelaunayOptions, PortalgonDoc, SparseMatrix,
+};
 use surftopo_mesh::generators::{
     annulus, copies, crosscaps, cut_holes, disk, icosphere, klein_bottle, mobius_band,
     projective_plane, random_flips_covered, subdivide_midpoint_covered, torus,
@@ -271,3 +273,314 @@ fn flips_happen_and_mirrors_flip_together() {
         );
     }
 }
+
+/// The circumcentre and radius of three points (Cramer's rule).
+fn circumcircle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> ([f64; 2], f64) {
+    let (bx, by, cx, cy) = (b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]);
+    let det = 2.0 * (bx * cy - by * cx);
+    let (b2, c2) = (bx * bx + by * by, cx * cx + cy * cy);
+    let (ux, uy) = ((cy * b2 - by * c2) / det, (bx * c2 - cx * b2) / det);
+    ([a[0] + ux, a[1] + uy], ux.hypot(uy))
+}
+
+/// The angle at `c` between the directions to `a` and `b`.
+fn angle_at(c: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (u, v) = ([a[0] - c[0], a[1] - c[1]], [b[0] - c[0], b[1] - c[1]]);
+    (u[0] * v[1] - u[1] * v[0])
+        .abs()
+        .atan2(u[0] * v[0] + u[1] * v[1])
+}
+
+/// What a tessellation check found, for the tests that ask more.
+struct Cells {
+    /// Corner count of each polygon.
+    sizes: Vec<usize>,
+    /// Gluings that reverse orientation.
+    reversed: usize,
+    /// Each polygon's label cycle, least rotation (of both directions), sorted: the cells up
+    /// to renumbering of polygons and sides.
+    cycles: Vec<Vec<u32>>,
+}
+
+/// Checks the Delaunay tessellation of the flipped `tri` of `s` with code written without the
+/// tessellation's: the document read back by our reader; every polygon strictly convex and
+/// inscribed (corners on the circle of its first three, every triangle merged into it with that
+/// circumradius, abc/4A from the flipped lengths); the polygons partition K's triangles (each
+/// once, k - 2 per k-gon, equal areas); every glued pair is strictly Delaunay (the inscribed
+/// angles on its two sides sum to less than π), between equal sides whose ends agree with the
+/// gluing's direction; the unmatched sides are exactly K's boundary edges (ends and lengths
+/// from the input); V - E + F is K's Euler characteristic.
+fn check_tessellation(name: &str, s: &CoveredSurface, tri: &CoveredTriangulation) -> Cells {
+    let t = tri.tessellation(DEFAULT_COCIRCULAR_TOLERANCE);
+    assert_eq!(t.cycle_edges, 0, "{name}");
+    let mut bytes = Vec::new();
+    t.portalgon.write(&mut bytes, false).unwrap();
+    let doc = PortalgonDoc::from_slice(&bytes).unwrap();
+    let values = |d: &PortalgonDoc| {
+        let corners = d.polygons.iter().flat_map(|p| p.corners.iter().flatten());
+        corners
+            .map(|c| c.clone().map(|x| x.to_f64()))
+            .collect::<Vec<_>>()
+    };
+    assert!(
+        values(&doc) == values(&t.portalgon),
+        "{name}: corners read back"
+    );
+    assert!(doc.matching == t.portalgon.matching, "{name}: read back");
+    assert!(doc.reversed == t.portalgon.reversed, "{name}: read back");
+    let polygons: Vec<(Vec<[f64; 2]>, Vec<u32>)> = doc
+        .polygons
+        .iter()
+        .map(|p| {
+            let corners = p.corners.as_ref().unwrap();
+            let corners = corners.iter().map(|c| [c[0].to_f64(), c[1].to_f64()]);
+            (corners.collect(), p.vertices.clone().unwrap())
+        })
+        .collect();
+    // Inscribed, convex, and the triangles merged into each share its circle.
+    let cover = tri.cover();
+    let mut seen = vec![0u32; cover.mesh().face_slots()];
+    let mut radius = Vec::new();
+    for (k, (c, _)) in polygons.iter().enumerate() {
+        let n = c.len();
+        assert!(n >= 3, "{name}: polygon {k}");
+        let (centre, r) = circumcircle(c[0], c[1], c[2]);
+        for (i, x) in c.iter().enumerate() {
+            let d = (x[0] - centre[0]).hypot(x[1] - centre[1]);
+            assert!((d - r).abs() <= 1e-9 * r, "{name}: polygon {k} corner {i}");
+            let (a, b) = (c[(i + 1) % n], c[(i + 2) % n]);
+            let turn = (a[0] - x[0]) * (b[1] - a[1]) - (a[1] - x[1]) * (b[0] - a[0]);
+            assert!(turn > 0.0, "{name}: polygon {k} not convex");
+        }
+        let faces = t.faces_of(k);
+        assert_eq!(faces.len(), n - 2, "{name}: polygon {k}");
+        let mut area = 0.0;
+        for &f in faces {
+            seen[f.idx()] += 1;
+            let [a, b, d] = cover.face_sides(f);
+            let heron_area = heron([a, b, d]);
+            area += heron_area;
+            let circum = a * b * d / (4.0 * heron_area);
+            assert!((circum - r).abs() <= 1e-8 * r, "{name}: face {f:?} in {k}");
+        }
+        let shoelace: f64 = (0..n)
+            .map(|i| c[i][0] * c[(i + 1) % n][1] - c[(i + 1) % n][0] * c[i][1])
+            .sum::<f64>()
+            / 2.0;
+        assert!(
+            (shoelace - area).abs() <= 1e-9 * area,
+            "{name}: polygon {k}"
+        );
+        radius.push(r);
+    }
+    for f in cover.mesh().faces() {
+        let want = u32::from(tri.is_surface_face(f));
+        assert_eq!(seen[f.idx()], want, "{name}: face {f:?}");
+    }
+    // Glued sides: equal, ends as the direction says, strictly Delaunay.
+    let corner = |p: usize, i: usize| polygons[p].0[i % polygons[p].0.len()];
+    let label = |p: usize, i: usize| polygons[p].1[i % polygons[p].1.len()];
+    let side_length = |p: usize, i: usize| {
+        let (a, b) = (corner(p, i), corner(p, i + 1));
+        (a[0] - b[0]).hypot(a[1] - b[1])
+    };
+    let inscribed = |p: usize, i: usize| angle_at(corner(p, i + 2), corner(p, i), corner(p, i + 1));
+    let mut matched = vec![false; polygons.iter().map(|p| p.0.len()).sum::<usize>()];
+    let offset: Vec<usize> = polygons
+        .iter()
+        .scan(0, |acc, p| {
+            let o = *acc;
+            *acc += p.0.len();
+            Some(o)
+        })
+        .collect();
+    let mut reversed = 0;
+    for (k, &[[p, i], [q, j]]) in doc.matching.iter().enumerate() {
+        let same_way = doc.reversed.get(k).copied().unwrap_or(false);
+        reversed += usize::from(same_way);
+        for (x, y) in [(p, i), (q, j)] {
+            assert!(!matched[offset[x] + y], "{name}: side ({x}, {y}) twice");
+            matched[offset[x] + y] = true;
+        }
+        let ends = [label(p, i), label(p, i + 1)];
+        let other = [label(q, j), label(q, j + 1)];
+        let want = if same_way { ends } else { [ends[1], ends[0]] };
+        assert_eq!(other, want, "{name}: pair {k}");
+        let (a, b) = (side_length(p, i), side_length(q, j));
+        assert!((a - b).abs() <= 1e-9 * a, "{name}: pair {k}: {a} {b}");
+        let sum = inscribed(p, i) + inscribed(q, j);
+        assert!(
+            sum < std::f64::consts::PI,
+            "{name}: pair {k} not strictly Delaunay: {sum}"
+        );
+    }
+    // The unmatched sides are the boundary edges of the input.
+    let (positions, triangles) = s.to_triangles();
+    let mut count: HashMap<(u32, u32), usize> = HashMap::new();
+    for t in &triangles {
+        for i in 0..3 {
+            let (a, b) = (t[i], t[(i + 1) % 3]);
+            *count.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    let length = |a: u32, b: u32| {
+        let (p, q) = (positions[a as usize], positions[b as usize]);
+        ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+    };
+    let mut want: Vec<(u32, u32, f64)> = count
+        .iter()
+        .filter(|&(_, &c)| c == 1)
+        .map(|(&(a, b), _)| (a, b, length(a, b)))
+        .collect();
+    let mut got: Vec<(u32, u32, f64)> = Vec::new();
+    for (p, poly) in polygons.iter().enumerate() {
+        for i in 0..poly.0.len() {
+            if !matched[offset[p] + i] {
+                let (a, b) = (label(p, i), label(p, i + 1));
+                got.push((a.min(b), a.max(b), side_length(p, i)));
+            }
+        }
+    }
+    want.sort_by(|x, y| x.partial_cmp(y).unwrap());
+    got.sort_by(|x, y| x.partial_cmp(y).unwrap());
+    assert_eq!(want.len(), got.len(), "{name}: boundary sides");
+    for (w, g) in want.iter().zip(&got) {
+        assert_eq!((w.0, w.1), (g.0, g.1), "{name}: boundary side");
+        assert!((w.2 - g.2).abs() <= 1e-12 * w.2, "{name}: boundary length");
+    }
+    // Euler characteristic.
+    let vertices = polygons
+        .iter()
+        .flat_map(|p| p.1.iter())
+        .collect::<std::collections::HashSet<_>>();
+    let chi_cells =
+        vertices.len() as i64 - (doc.matching.len() + got.len()) as i64 + polygons.len() as i64;
+    let chi = positions.len() as i64 - count.len() as i64 + triangles.len() as i64;
+    assert_eq!(chi_cells, chi, "{name}: Euler characteristic");
+    let mut cycles: Vec<Vec<u32>> = polygons.iter().map(|p| least_rotation(&p.1)).collect();
+    cycles.sort();
+    Cells {
+        sizes: polygons.iter().map(|p| p.0.len()).collect(),
+        reversed,
+        cycles,
+    }
+}
+
+/// The least rotation of a cycle or of its reverse.
+fn least_rotation(cycle: &[u32]) -> Vec<u32> {
+    let n = cycle.len();
+    let mut reverse = cycle.to_vec();
+    reverse.reverse();
+    (0..n)
+        .flat_map(|r| {
+            [cycle, reverse.as_slice()].map(|c| (0..n).map(|i| c[(i + r) % n]).collect::<Vec<_>>())
+        })
+        .min()
+        .unwrap()
+}
+
+#[test]
+fn the_tessellation_of_every_surface_is_inscribed_strictly_delaunay_and_keeps_the_boundary() {
+    let mut reversed = 0;
+    for (name, s) in surfaces() {
+        let mut tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+        tri.flip_to_delaunay(&DelaunayOptions::default()).unwrap();
+        let cells = check_tessellation(name, &s, &tri);
+        reversed += cells.reversed;
+    }
+    assert!(
+        reversed > 0,
+        "non-orientable surfaces have reversed gluings"
+    );
+}
+
+/// An `m x n` grid of squares on the vertices `id(i, j)`, the squares of the first `free`
+/// columns split along a diagonal chosen by `seed` (the others from `(i, j)`), each triangle
+/// listed in either orientation as `seed` says (the orientation of a triangle in a file is
+/// arbitrary on a non-orientable surface).
+fn grid_soup(m: u32, n: u32, free: u32, id: impl Fn(u32, u32) -> u32, seed: u64) -> Vec<[u32; 3]> {
+    let mut state = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+    let mut bit = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state & 1 == 1
+    };
+    let mut triangles = Vec::new();
+    for i in 0..m {
+        for j in 0..n {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            let pair = if bit() || i >= free {
+                [[a, b, c], [a, c, d]]
+            } else {
+                [[a, b, d], [b, c, d]]
+            };
+            for [x, y, z] in pair {
+                triangles.push(if bit() { [x, y, z] } else { [x, z, y] });
+            }
+        }
+    }
+    triangles
+}
+
+/// The tessellation of `triangles` on `positions`, checked (see [`check_tessellation`]).
+fn tessellate_soup(name: &str, positions: Vec<[f64; 3]>, triangles: &[[u32; 3]]) -> Cells {
+    let (s, _) = CoveredSurface::from_triangles(positions, triangles).unwrap();
+    let mut tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+    tri.flip_to_delaunay(&DelaunayOptions::default()).unwrap();
+    check_tessellation(name, &s, &tri)
+}
+
+#[test]
+fn regular_grids_tessellate_into_their_squares_whatever_the_diagonals() {
+    // A square of 6 x 6 unit squares: 36 squares, whichever diagonals and orientations.
+    let (m, n) = (6u32, 6u32);
+    let positions: Vec<[f64; 3]> = (0..=m)
+        .flat_map(|i| (0..=n).map(move |j| [f64::from(i), f64::from(j), 0.0]))
+        .collect();
+    let mut first = None;
+    for seed in 1..5 {
+        let triangles = grid_soup(m, n, m, |i, j| i * (n + 1) + j, seed);
+        let cells = tessellate_soup("square grid", positions.clone(), &triangles);
+        assert_eq!(cells.sizes, vec![4; (m * n) as usize]);
+        // The same cells from every starting triangulation (uniqueness).
+        assert_eq!(*first.get_or_insert(cells.cycles.clone()), cells.cycles);
+    }
+    // A flat Möbius band: the strip of 12 x 3 unit squares with its ends glued with a half
+    // twist, (12, j) to (0, 3 - j); in space the strip lies flat, so the squares away from the
+    // seam are unit squares and the seam's are long (their diagonals fixed: another diagonal
+    // there is another surface). Triangles in random orientations: the
+    // cover's first sheet then changes between neighbouring triangles, and cells merge across
+    // gluings that reverse orientation.
+    let (m, n) = (12u32, 3u32);
+    let id = |i: u32, j: u32| if i == m { n - j } else { i * (n + 1) + j };
+    let positions: Vec<[f64; 3]> = (0..m)
+        .flat_map(|i| (0..=n).map(move |j| [f64::from(i), f64::from(j), 0.0]))
+        .collect();
+    let mut first = None;
+    for seed in 1..5 {
+        let triangles = grid_soup(m, n, m - 1, id, seed);
+        let cells = tessellate_soup("flat mobius band", positions.clone(), &triangles);
+        let squares = cells.sizes.iter().filter(|&&k| k == 4).count();
+        assert!(squares >= ((m - 3) * n) as usize, "{squares} squares");
+        assert!(cells.reversed > 0);
+        assert_eq!(*first.get_or_insert(cells.cycles.clone()), cells.cycles);
+    }
+}
+
+/// Holes cut in the three smallest shared meshes and in a mid-sized one, flipped and
+/// tessellated, checked.
+fn tessellations_of_shared_meshes_with_holes() {
+    let meshes = surftopo_testkit::shared_meshes();
+    let mid = meshes.iter().find(|m| m.faces >= 4000);
+    for m in meshes.iter().take(3).chain(mid) {
+        let s: CoveredSurface = surftopo_testkit::load(m).into();
+        let (s, cut) = cut_holes(&s, 4, 3);
+        assert!(cut > 0, "{}", m.file);
+        let mut tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+        tri.flip_to_delaunay(&DelaunayOptions::default()).unwrap();
+        check_tessellation(&m.file, &s, &tri);
+    }
+}
+
+surftopo_testkit::shared_mesh_tests!(tessellations_of_shared_meshes_with_holes);

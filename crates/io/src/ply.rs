@@ -97,11 +97,31 @@ pub(crate) fn read(buf: &[u8], ctx: Ctx<'_>) -> Result<PolygonSoup, IoError> {
             });
         }
     }
+    let body = Body {
+        buf,
+        hdr: &hdr,
+        roles: &roles,
+        columns: &columns,
+        nv,
+    };
     match hdr.encoding {
-        Encoding::Ascii => read_ascii(buf, &hdr, &roles, &columns, nv, soup, ctx),
-        Encoding::LittleEndian => read_binary::<false>(buf, &hdr, &roles, &columns, nv, soup, ctx),
-        Encoding::BigEndian => read_binary::<true>(buf, &hdr, &roles, &columns, nv, soup, ctx),
+        Encoding::Ascii => read_ascii(&body, soup, ctx),
+        Encoding::LittleEndian => read_binary::<false>(&body, soup, ctx),
+        Encoding::BigEndian => read_binary::<true>(&body, soup, ctx),
     }
+}
+
+/// What the body readers need to know besides the soup they fill.
+struct Body<'a> {
+    /// The whole file.
+    buf: &'a [u8],
+    hdr: &'a Header,
+    /// Each element's role, in header order.
+    roles: &'a [Role],
+    /// Each vertex property's attribute column, or [`NO_COLUMN`].
+    columns: &'a [usize],
+    /// Number of vertices (records of the vertex element).
+    nv: u64,
 }
 
 /// Not a column: see [`vertex_columns`].
@@ -416,34 +436,61 @@ macro_rules! decode {
     }};
 }
 
+/// What a decoded scalar is read as: integers are at most 32 bits, so both
+/// conversions from an integer are exact.
+trait FromScalar {
+    fn from_int(i: i64) -> Self;
+    fn from_float(x: f64) -> Self;
+}
+
+impl FromScalar for f64 {
+    #[inline(always)]
+    fn from_int(i: i64) -> f64 {
+        i as f64
+    }
+    #[inline(always)]
+    fn from_float(x: f64) -> f64 {
+        x
+    }
+}
+
+/// Floats read where an integer is wanted are truncated.
+impl FromScalar for i64 {
+    #[inline(always)]
+    fn from_int(i: i64) -> i64 {
+        i
+    }
+    #[inline(always)]
+    fn from_float(x: f64) -> i64 {
+        x as i64
+    }
+}
+
 /// Decodes a scalar at the start of `b` (which holds at least its size).
 #[inline(always)]
-fn load_f64<const BE: bool>(t: Scalar, b: &[u8]) -> f64 {
+fn load<const BE: bool, T: FromScalar>(t: Scalar, b: &[u8]) -> T {
     match t {
-        Scalar::I8 => f64::from(decode!(b, BE, i8, 1)),
-        Scalar::U8 => f64::from(decode!(b, BE, u8, 1)),
-        Scalar::I16 => f64::from(decode!(b, BE, i16, 2)),
-        Scalar::U16 => f64::from(decode!(b, BE, u16, 2)),
-        Scalar::I32 => f64::from(decode!(b, BE, i32, 4)),
-        Scalar::U32 => f64::from(decode!(b, BE, u32, 4)),
-        Scalar::F32 => f64::from(decode!(b, BE, f32, 4)),
-        Scalar::F64 => decode!(b, BE, f64, 8),
+        Scalar::I8 => T::from_int(decode!(b, BE, i8, 1).into()),
+        Scalar::U8 => T::from_int(decode!(b, BE, u8, 1).into()),
+        Scalar::I16 => T::from_int(decode!(b, BE, i16, 2).into()),
+        Scalar::U16 => T::from_int(decode!(b, BE, u16, 2).into()),
+        Scalar::I32 => T::from_int(decode!(b, BE, i32, 4).into()),
+        Scalar::U32 => T::from_int(decode!(b, BE, u32, 4).into()),
+        Scalar::F32 => T::from_float(decode!(b, BE, f32, 4).into()),
+        Scalar::F64 => T::from_float(decode!(b, BE, f64, 8)),
     }
+}
+
+/// Decodes a scalar at the start of `b` as a double.
+#[inline(always)]
+fn load_f64<const BE: bool>(t: Scalar, b: &[u8]) -> f64 {
+    load::<BE, f64>(t, b)
 }
 
 /// Decodes an integer scalar at the start of `b`; floats are truncated.
 #[inline(always)]
 fn load_i64<const BE: bool>(t: Scalar, b: &[u8]) -> i64 {
-    match t {
-        Scalar::I8 => i64::from(decode!(b, BE, i8, 1)),
-        Scalar::U8 => i64::from(decode!(b, BE, u8, 1)),
-        Scalar::I16 => i64::from(decode!(b, BE, i16, 2)),
-        Scalar::U16 => i64::from(decode!(b, BE, u16, 2)),
-        Scalar::I32 => i64::from(decode!(b, BE, i32, 4)),
-        Scalar::U32 => i64::from(decode!(b, BE, u32, 4)),
-        Scalar::F32 => decode!(b, BE, f32, 4) as i64,
-        Scalar::F64 => decode!(b, BE, f64, 8) as i64,
-    }
+    load::<BE, i64>(t, b)
 }
 
 fn off(pos: usize) -> Location {
@@ -459,18 +506,16 @@ fn record_name(el: &Element, r: u64) -> String {
     )
 }
 
+/// Reads the body of a binary PLY file, element by element.
 fn read_binary<const BE: bool>(
-    buf: &[u8],
-    hdr: &Header,
-    roles: &[Role],
-    columns: &[usize],
-    nv: u64,
+    body: &Body<'_>,
     mut soup: PolygonSoup,
     ctx: Ctx<'_>,
 ) -> Result<PolygonSoup, IoError> {
+    let Body { buf, hdr, .. } = *body;
     let mut pos = hdr.body;
     let mut strip: Vec<i64> = Vec::new();
-    for (el, &role) in hdr.elements.iter().zip(roles) {
+    for (el, &role) in hdr.elements.iter().zip(body.roles) {
         if el.props.is_empty() || el.count == 0 {
             continue;
         }
@@ -488,22 +533,12 @@ fn read_binary<const BE: bool>(
                 return Err(ctx.eof(off(buf.len()), record_name(el, have as u64)));
             };
             if let Role::Vertex(xyz) = role {
-                read_vertices_fixed::<BE>(
-                    &buf[pos..pos + need],
-                    pos,
-                    el,
-                    xyz,
-                    stride,
-                    &mut soup,
-                    ctx,
-                )?;
-                read_columns_fixed::<BE>(&buf[pos..pos + need], el, columns, stride, &mut soup);
+                let records = &buf[pos..pos + need];
+                read_vertices_fixed::<BE>(records, pos, el, xyz, stride, &mut soup, ctx)?;
+                read_columns_fixed::<BE>(records, el, body.columns, stride, &mut soup);
             }
             pos += need;
-            continue;
-        }
-        // Variable-size records.
-        if let (Role::Faces(0), [prop]) = (role, &el.props[..])
+        } else if let (Role::Faces(0), [prop]) = (role, &el.props[..])
             && let Kind::List { count, item } = prop.kind
         {
             // A valid face holds at least 3 indices.
@@ -512,103 +547,119 @@ fn read_binary<const BE: bool>(
                 .min(remaining / (count.size() + 3 * item.size()));
             let _ = soup.face_offsets.try_reserve(cap);
             let _ = soup.face_indices.try_reserve(cap.saturating_mul(3));
-            pos = faces_single_list::<BE>(buf, pos, el, count, item, nv, &mut soup, ctx)?;
-            continue;
-        }
-        let mut min_size: usize = el.props.iter().map(|p| prop_min_size(p.kind)).sum();
-        if let Role::Faces(k) = role
-            && let Kind::List { item, .. } = el.props[k].kind
-        {
-            min_size += 3 * item.size(); // a valid face holds at least 3 indices
-        }
-        let cap = usize::try_from(el.count)
-            .unwrap_or(usize::MAX)
-            .min(remaining / min_size);
-        match role {
-            Role::Vertex(_) => {
-                let _ = soup.positions.try_reserve(cap);
-            }
-            Role::Faces(_) => {
-                let _ = soup.face_offsets.try_reserve(cap);
-                let _ = soup.face_indices.try_reserve(cap.saturating_mul(3));
-            }
-            _ => {}
-        }
-        for r in 0..el.count {
-            let rec = pos;
-            let face_start = soup.face_indices.len();
-            let mut p3 = [0.0f64; 3];
-            for (pi, p) in el.props.iter().enumerate() {
-                match p.kind {
-                    Kind::Scalar(t) => {
-                        let Some(b) = buf.get(pos..pos + t.size()) else {
-                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
-                        };
-                        if let Role::Vertex(xyz) = role
-                            && let Some(axis) = xyz.iter().position(|&k| k == pi)
-                        {
-                            let v = load_f64::<BE>(t, b);
-                            p3[axis] = ctx.coordinate(off(pos), soup.positions.len(), v)?;
-                        } else if let Role::Vertex(_) = role
-                            && let Some(column) = soup.attributes.vertex.get_mut(columns[pi])
-                        {
-                            column.values.push(load_f64::<BE>(t, b));
-                        }
-                        pos += t.size();
-                    }
-                    Kind::List { count, item } => {
-                        let Some(b) = buf.get(pos..pos + count.size()) else {
-                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
-                        };
-                        let n = load_i64::<BE>(count, b);
-                        if n < 0 {
-                            return Err(ctx.parse(off(pos), format!("negative list length {n}")));
-                        }
-                        pos += count.size();
-                        let isz = item.size();
-                        let end = (n as u64)
-                            .checked_mul(isz as u64)
-                            .and_then(|bytes| (pos as u64).checked_add(bytes))
-                            .filter(|&end| end <= buf.len() as u64);
-                        let Some(end) = end else {
-                            return Err(ctx.eof(off(buf.len()), record_name(el, r)));
-                        };
-                        let end = end as usize;
-                        let items = &buf[pos..end];
-                        match role {
-                            Role::Faces(k) if k == pi => {
-                                for (j, b) in items.chunks_exact(isz).enumerate() {
-                                    let v = load_i64::<BE>(item, b);
-                                    let i = check_index(v, nv, || off(pos + j * isz), ctx)?;
-                                    soup.face_indices.push(i);
-                                }
-                            }
-                            Role::Strips(k) if k == pi => {
-                                strip.clear();
-                                let _ = strip.try_reserve(n as usize);
-                                for (j, b) in items.chunks_exact(isz).enumerate() {
-                                    let v = load_i64::<BE>(item, b);
-                                    if v != -1 {
-                                        check_index(v, nv, || off(pos + j * isz), ctx)?;
-                                    }
-                                    strip.push(v);
-                                }
-                                push_strips(&mut soup, &strip, off(rec), None, ctx)?;
-                            }
-                            _ => {}
-                        }
-                        pos = end;
-                    }
-                }
-            }
-            match role {
-                Role::Vertex(_) => soup.positions.push(p3),
-                Role::Faces(_) => close_face(&mut soup, face_start, off(rec), None, ctx)?,
-                _ => {}
-            }
+            pos = faces_single_list::<BE>(buf, pos, el, count, item, body.nv, &mut soup, ctx)?;
+        } else {
+            pos = read_records::<BE>(body, el, role, pos, &mut soup, &mut strip, ctx)?;
         }
     }
     Ok(soup)
+}
+
+/// Reads one binary element of variable-size records (lists beside other properties) from
+/// `pos`, property by property; returns the position after it.
+fn read_records<const BE: bool>(
+    body: &Body<'_>,
+    el: &Element,
+    role: Role,
+    mut pos: usize,
+    soup: &mut PolygonSoup,
+    strip: &mut Vec<i64>,
+    ctx: Ctx<'_>,
+) -> Result<usize, IoError> {
+    let Body { buf, nv, .. } = *body;
+    let mut min_size: usize = el.props.iter().map(|p| prop_min_size(p.kind)).sum();
+    if let Role::Faces(k) = role
+        && let Kind::List { item, .. } = el.props[k].kind
+    {
+        min_size += 3 * item.size(); // a valid face holds at least 3 indices
+    }
+    let cap = usize::try_from(el.count)
+        .unwrap_or(usize::MAX)
+        .min((buf.len() - pos) / min_size);
+    match role {
+        Role::Vertex(_) => {
+            let _ = soup.positions.try_reserve(cap);
+        }
+        Role::Faces(_) => {
+            let _ = soup.face_offsets.try_reserve(cap);
+            let _ = soup.face_indices.try_reserve(cap.saturating_mul(3));
+        }
+        _ => {}
+    }
+    for r in 0..el.count {
+        let rec = pos;
+        let face_start = soup.face_indices.len();
+        let mut p3 = [0.0f64; 3];
+        for (pi, p) in el.props.iter().enumerate() {
+            match p.kind {
+                Kind::Scalar(t) => {
+                    let Some(b) = buf.get(pos..pos + t.size()) else {
+                        return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                    };
+                    if let Role::Vertex(xyz) = role
+                        && let Some(axis) = xyz.iter().position(|&k| k == pi)
+                    {
+                        let v = load_f64::<BE>(t, b);
+                        p3[axis] = ctx.coordinate(off(pos), soup.positions.len(), v)?;
+                    } else if let Role::Vertex(_) = role
+                        && let Some(column) = soup.attributes.vertex.get_mut(body.columns[pi])
+                    {
+                        column.values.push(load_f64::<BE>(t, b));
+                    }
+                    pos += t.size();
+                }
+                Kind::List { count, item } => {
+                    let Some(b) = buf.get(pos..pos + count.size()) else {
+                        return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                    };
+                    let n = load_i64::<BE>(count, b);
+                    if n < 0 {
+                        return Err(ctx.parse(off(pos), format!("negative list length {n}")));
+                    }
+                    pos += count.size();
+                    let isz = item.size();
+                    let end = (n as u64)
+                        .checked_mul(isz as u64)
+                        .and_then(|bytes| (pos as u64).checked_add(bytes))
+                        .filter(|&end| end <= buf.len() as u64);
+                    let Some(end) = end else {
+                        return Err(ctx.eof(off(buf.len()), record_name(el, r)));
+                    };
+                    let end = end as usize;
+                    let items = &buf[pos..end];
+                    match role {
+                        Role::Faces(k) if k == pi => {
+                            for (j, b) in items.chunks_exact(isz).enumerate() {
+                                let v = load_i64::<BE>(item, b);
+                                let i = check_index(v, nv, || off(pos + j * isz), ctx)?;
+                                soup.face_indices.push(i);
+                            }
+                        }
+                        Role::Strips(k) if k == pi => {
+                            strip.clear();
+                            let _ = strip.try_reserve(n as usize);
+                            for (j, b) in items.chunks_exact(isz).enumerate() {
+                                let v = load_i64::<BE>(item, b);
+                                if v != -1 {
+                                    check_index(v, nv, || off(pos + j * isz), ctx)?;
+                                }
+                                strip.push(v);
+                            }
+                            push_strips(soup, strip, off(rec), None, ctx)?;
+                        }
+                        _ => {}
+                    }
+                    pos = end;
+                }
+            }
+        }
+        match role {
+            Role::Vertex(_) => soup.positions.push(p3),
+            Role::Faces(_) => close_face(soup, face_start, off(rec), None, ctx)?,
+            _ => {}
+        }
+    }
+    Ok(pos)
 }
 
 /// Size of a scalar, or of a list's count (its minimum size).
@@ -812,15 +863,19 @@ fn face_loop(
     Ok(pos)
 }
 
+/// Reads the body of an ASCII PLY file, record by record.
 fn read_ascii(
-    buf: &[u8],
-    hdr: &Header,
-    roles: &[Role],
-    columns: &[usize],
-    nv: u64,
+    body: &Body<'_>,
     mut soup: PolygonSoup,
     ctx: Ctx<'_>,
 ) -> Result<PolygonSoup, IoError> {
+    let Body {
+        buf,
+        hdr,
+        roles,
+        columns,
+        nv,
+    } = *body;
     let mut lx = Lexer::new(buf);
     lx.pos = hdr.body;
     lx.line = hdr.body_line;

@@ -108,6 +108,14 @@ fn off_token_stream() {
     assert_eq!(faces(&s), vec![vec![0, 1, 2]]);
 }
 
+/// The four corners every PLY case below encodes.
+const UNIT_SQUARE: [[f64; 3]; 4] = [
+    [0.0, 0.0, 0.0],
+    [1.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0],
+    [1.0, 1.0, 0.0],
+];
+
 const PLY_HEAD: &str = "ply\nformat {fmt} 1.0\ncomment hi\nobj_info x\nelement vertex 4\nproperty uchar red\nproperty {xt} x\nproperty {xt} y\nproperty {xt} z\nproperty list uchar float extra\nelement edge 1\nproperty int a\nproperty int b\nelement face 2\nproperty uchar flags\nproperty list {ct} {it} vertex_index\nproperty list uchar float texcoord\nend_header\n";
 
 fn ply_header(fmt: &str, xt: &str, ct: &str, it: &str) -> Vec<u8> {
@@ -124,15 +132,7 @@ fn ply_ascii_with_skipped_properties_and_elements() {
     let mut f = ply_header("ascii", "float", "uchar", "int");
     f.extend_from_slice(b"7 0 0 0 2 0.5 0.5\n7 1 0 0 0\n7\n0 1 0 1 9\n7 1 1 0 0\n1 2\n0 3 0 1 2 0\n0 3 1 3 2 2 0.1 0.2\n");
     let s = read(&f, Format::Ply);
-    assert_eq!(
-        s.positions,
-        vec![
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [1.0, 1.0, 0.0]
-        ]
-    );
+    assert_eq!(s.positions, UNIT_SQUARE);
     assert_eq!(faces(&s), vec![vec![0, 1, 2], vec![1, 3, 2]]);
     assert_eq!(s.face_lines, vec![25, 26]);
 }
@@ -193,16 +193,7 @@ fn ply_binary_both_endians_and_types() {
                 f.push(0); // empty texcoord list
             }
             let s = read(&f, Format::Ply);
-            assert_eq!(
-                s.positions,
-                vec![
-                    [0.0, 0.0, 0.0],
-                    [1.0, 0.0, 0.0],
-                    [0.0, 1.0, 0.0],
-                    [1.0, 1.0, 0.0]
-                ],
-                "{xt} {be}"
-            );
+            assert_eq!(s.positions, UNIT_SQUARE, "{xt} {be}");
             assert_eq!(
                 faces(&s),
                 vec![vec![0, 1, 2], vec![1, 3, 2]],

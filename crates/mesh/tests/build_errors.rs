@@ -4,6 +4,7 @@
 
 use std::collections::HashMap;
 use surftopo_mesh::Surface;
+use surftopo_mesh::generators::PROJECTIVE_PLANE_6 as RP2_6;
 use surftopo_mesh::geometry::{Point3, weld_exact};
 use surftopo_mesh::{BuildError, FaceId, VertexId, build, build_topology, inspect};
 
@@ -318,20 +319,6 @@ fn fixable_orientation_is_fixed_and_reported() {
     assert_eq!(inspect(4, &t).reoriented_faces, 1);
 }
 
-/// The 6-vertex real projective plane (10 triangles).
-const RP2: [[u32; 3]; 10] = [
-    [0, 1, 2],
-    [0, 1, 3],
-    [0, 2, 4],
-    [0, 3, 5],
-    [0, 4, 5],
-    [1, 2, 5],
-    [1, 3, 4],
-    [1, 4, 5],
-    [2, 3, 4],
-    [2, 3, 5],
-];
-
 /// A Klein bottle: an `m x n` grid, columns glued straight, rows glued with a flip.
 fn klein_bottle(m: u32, n: u32) -> Vec<[u32; 3]> {
     let id = |i: u32, j: u32| {
@@ -371,8 +358,8 @@ fn assert_non_orientable(vertex_count: usize, t: &[[u32; 3]]) {
 
 #[test]
 fn non_orientable_projective_plane() {
-    assert_non_orientable(6, &RP2);
-    assert_eq!(inspect(6, &RP2).euler_characteristic(), 1);
+    assert_non_orientable(6, &RP2_6);
+    assert_eq!(inspect(6, &RP2_6).euler_characteristic(), 1);
 }
 
 #[test]

@@ -5,20 +5,20 @@
 //! unreferenced vertex gets an empty row and column), the dense vertex order for a portalgon.
 
 use crate::arrays::{self, VertexArray, index_array, vector};
+use crate::covered::Covered;
 use crate::errors::{Failure, invalid};
 use crate::surface::{choose, input_index, json_to_python};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
-use surftopo_intrinsic::CoveredTriangulation;
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DEFAULT_MOLLIFY_FACTOR, DelaunayInput,
-    DelaunayMethod, DelaunayOutputs, DelaunayRequest, DelaunayStats, IntrinsicTriangulation,
-    IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle, TuftedOptions, cotan_laplacian,
-    delaunay_tessellation, lumped_mass,
+    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DEFAULT_MOLLIFY_FACTOR,
+    DEFAULT_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs, DelaunayRequest,
+    DelaunayStats, FlipReport, IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix,
+    TriangleStyle, TuftedOptions, cotan_laplacian, delaunay_tessellation, lumped_mass,
 };
-use surftopo_mesh::{BuildError, CoveredSurface};
+use surftopo_mesh::BuildError;
 
 /// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
 fn methods() -> [(&'static str, DelaunayMethod); 4] {
@@ -308,10 +308,15 @@ impl Portalgon {
         self.doc.matching.len()
     }
 
-    /// Total area.
+    /// Total area (of the polygons: the gluing, orientation-reversing or not, plays no part).
     #[getter]
     fn area(&self, py: Python<'_>) -> PyResult<f64> {
-        self.doc
+        let polygons = PortalgonDoc {
+            matching: Vec::new(),
+            reversed: Vec::new(),
+            ..self.doc.clone()
+        };
+        polygons
             .to_portalgon(DEFAULT_LENGTH_TOLERANCE)
             .map(|p| p.area())
             .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
@@ -338,95 +343,176 @@ impl Portalgon {
 /// An intrinsic Delaunay triangulation: its topology, edge lengths and the matrices.
 #[pyclass(frozen, module = "surftopo", name = "IntrinsicTriangulation")]
 pub struct Intrinsic {
-    located: Located,
+    held: Held,
     stats: DelaunayStats,
+}
+
+/// The triangulation an [`Intrinsic`] holds.
+enum Held {
+    /// A closed orientable surface (every method).
+    Closed(Located),
+    /// A surface with boundary, non-orientable or in pieces, on its closed cover (flipping).
+    Covered(Covered),
+    /// Any triangle soup through its tufted cover (Sharp & Crane 2020): the cover flipped, its
+    /// vertices' rows the input vertices they cover, and the folded matrices.
+    Tufted {
+        located: Located,
+        laplacian: SparseMatrix,
+        mass: SparseMatrix,
+    },
+}
+
+impl Held {
+    /// The intrinsic triangulation of a closed oriented surface held: the surface's, or the
+    /// tufted cover's.
+    fn located(&self) -> Option<&Located> {
+        match self {
+            Held::Closed(located) | Held::Tufted { located, .. } => Some(located),
+            Held::Covered(_) => None,
+        }
+    }
+
+    /// The refusal of what the tufted cover does not give (as `delaunay --tufted` refuses `-o`
+    /// and `--tessellation`).
+    fn refuse_tufted(&self, what: &str) -> Result<(), Failure> {
+        match self {
+            Held::Tufted { .. } => Err(invalid(format!(
+                "{what}: the tufted cover gives the Laplacian, the mass matrix and the cover's \
+                 triangulation (faces, edges, lengths), not a triangulation or tessellation of \
+                 the mesh"
+            ))),
+            _ => Ok(()),
+        }
+    }
 }
 
 #[pymethods]
 impl Intrinsic {
     /// The cotan Laplacian (positive semidefinite), `scipy.sparse.csr_matrix`.
     fn laplacian<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let located = &self.located;
-        let m = py.detach(|| {
-            Csr::new(
+        let m = py.detach(|| match &self.held {
+            Held::Closed(located) => Csr::new(
                 cotan_laplacian(&located.tri),
                 &located.dense_rows(),
                 located.rows,
-            )
+            ),
+            Held::Covered(covered) => covered.csr(covered.tri.laplacian()),
+            Held::Tufted {
+                located, laplacian, ..
+            } => input_rows(laplacian, located.rows),
         });
         m.into_scipy(py)
     }
 
     /// The lumped (barycentric) mass matrix, diagonal, `scipy.sparse.csr_matrix`.
     fn mass<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let located = &self.located;
-        Csr::new(
-            lumped_mass(&located.tri),
-            &located.dense_rows(),
-            located.rows,
-        )
+        match &self.held {
+            Held::Closed(located) => Csr::new(
+                lumped_mass(&located.tri),
+                &located.dense_rows(),
+                located.rows,
+            ),
+            Held::Covered(covered) => covered.csr(covered.tri.mass()),
+            Held::Tufted { located, mass, .. } => input_rows(mass, located.rows),
+        }
         .into_scipy(py)
     }
 
     /// The Delaunay tessellation (co-circular triangles merged) as a [`Portalgon`];
-    /// `cocircular_tolerance` `None` is the library's default.
+    /// `cocircular_tolerance` `None` is the library's default. On a surface with boundary its
+    /// boundary sides are unmatched; on a non-orientable one its orientation-reversing gluings
+    /// are flagged (format version 2).
     #[pyo3(signature = (cocircular_tolerance = None))]
-    fn tessellation(&self, py: Python<'_>, cocircular_tolerance: Option<f64>) -> Portalgon {
+    fn tessellation(
+        &self,
+        py: Python<'_>,
+        cocircular_tolerance: Option<f64>,
+    ) -> PyResult<Portalgon> {
         let tolerance = cocircular_tolerance.unwrap_or(DEFAULT_COCIRCULAR_TOLERANCE);
-        let doc = py.detach(|| {
-            let t = delaunay_tessellation(&self.located.tri, tolerance);
-            PortalgonDoc::from_portalgon(&t.portalgon)
+        self.held
+            .refuse_tufted("tessellation()")
+            .map_err(|f| f.into_pyerr(py))?;
+        let doc = py.detach(|| match &self.held {
+            Held::Covered(covered) => covered.tri.tessellation(tolerance).portalgon,
+            held => {
+                let located = held.located().expect("a closed surface");
+                let t = delaunay_tessellation(&located.tri, tolerance);
+                PortalgonDoc::from_portalgon(&t.portalgon)
+            }
         });
-        Portalgon { doc }
+        Ok(Portalgon { doc })
     }
 
     /// The triangulation as portalgon JSON (triangles by their side lengths), as
     /// `surftopo delaunay -o OUT.json` writes it.
     fn to_json(&self, py: Python<'_>) -> PyResult<String> {
-        PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths)
-            .to_json()
-            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))
+        self.doc()
+            .and_then(|doc| doc.to_json().map_err(Failure::Portalgon))
+            .map_err(|f| f.into_pyerr(py))
     }
 
     /// The triangulation as a [`Portalgon`].
-    fn to_portalgon(&self) -> Portalgon {
-        Portalgon {
-            doc: PortalgonDoc::from_triangulation(&self.located.tri, TriangleStyle::Lengths),
-        }
+    fn to_portalgon(&self, py: Python<'_>) -> PyResult<Portalgon> {
+        let doc = self.doc().map_err(|f| f.into_pyerr(py))?;
+        Ok(Portalgon { doc })
     }
 
     /// The faces `(m, 3)` as output vertex indices, corner `i` to corner `i + 1` being side `i`.
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
-        let mesh = self.located.tri.mesh();
-        self.vertex_rows(py, mesh.faces().map(|f| mesh.face_vertices(f)))
+        match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => index_array(py, &covered.face_rows()).into_any(),
+            (_, Some(located)) => {
+                let mesh = located.tri.mesh();
+                located.vertex_rows(py, mesh.faces().map(|f| mesh.face_vertices(f)))
+            }
+            _ => unreachable!("every other surface is closed"),
+        }
     }
 
     /// The edges `(E, 2)` as output vertex indices (a loop has both ends equal).
     #[getter]
     fn edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
-        let mesh = self.located.tri.mesh();
-        self.vertex_rows(py, mesh.edges().map(|e| mesh.edge_vertices(e)))
+        match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => index_array(py, &covered.edge_rows()).into_any(),
+            (_, Some(located)) => {
+                let mesh = located.tri.mesh();
+                located.vertex_rows(py, mesh.edges().map(|e| mesh.edge_vertices(e)))
+            }
+            _ => unreachable!("every other surface is closed"),
+        }
     }
 
     /// The edge of each face side `(m, 3)`: side `i` of face `f` is edge `face_edges[f, i]`.
     #[getter]
     fn face_edges<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
-        let mesh = self.located.tri.mesh();
-        let (_, dense_edge) = edge_ranks(&self.located.tri);
-        let rows: Vec<[u32; 3]> = mesh
-            .faces()
-            .map(|f| mesh.face_halfedges(f).map(|h| dense_edge[h.edge().idx()]))
-            .collect();
+        let rows: Vec<[u32; 3]> = match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => covered.face_edges(),
+            (_, Some(located)) => {
+                let mesh = located.tri.mesh();
+                let (_, dense_edge) = edge_ranks(&located.tri);
+                mesh.faces()
+                    .map(|f| mesh.face_halfedges(f).map(|h| dense_edge[h.edge().idx()]))
+                    .collect()
+            }
+            _ => unreachable!("every other surface is closed"),
+        };
         index_array(py, &rows).into_any()
     }
 
     /// The intrinsic length of each edge `(E,)`, in the order of `edges`.
     #[getter]
     fn edge_lengths<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
-        let (live, _) = edge_ranks(&self.located.tri);
-        let lengths = self.located.tri.lengths();
-        vector(py, live.iter().map(|&e| lengths[e]).collect::<Vec<f64>>()).into_any()
+        let lengths = match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => covered.edge_lengths(),
+            (_, Some(located)) => {
+                let (live, _) = edge_ranks(&located.tri);
+                let lengths = located.tri.lengths();
+                live.iter().map(|&e| lengths[e]).collect::<Vec<f64>>()
+            }
+            _ => unreachable!("every other surface is closed"),
+        };
+        vector(py, lengths).into_any()
     }
 
     /// The number of flips made.
@@ -446,7 +532,11 @@ impl Intrinsic {
     /// Number of rows of the matrices (input vertices, or the portalgon's vertices).
     #[getter]
     fn vertex_count(&self) -> usize {
-        self.located.rows
+        match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => covered.count,
+            (_, Some(located)) => located.rows,
+            _ => unreachable!("every other surface is closed"),
+        }
     }
 
     fn __repr__(&self) -> String {
@@ -458,15 +548,34 @@ impl Intrinsic {
 }
 
 impl Intrinsic {
+    /// The triangulation's portalgon document (triangles by lengths): what `surftopo delaunay
+    /// -o` writes.
+    fn doc(&self) -> Result<PortalgonDoc, Failure> {
+        self.held.refuse_tufted("the triangulation")?;
+        Ok(match (&self.held, self.held.located()) {
+            (Held::Covered(covered), _) => covered.tri.to_doc(),
+            (_, Some(located)) => {
+                PortalgonDoc::from_triangulation(&located.tri, TriangleStyle::Lengths)
+            }
+            _ => unreachable!("every other surface is closed"),
+        })
+    }
+}
+
+/// A matrix with one row per input vertex as CSR.
+fn input_rows(m: &SparseMatrix, rows: usize) -> Csr {
+    let identity: Vec<u32> = (0..rows as u32).collect();
+    Csr::new(m.clone(), &identity, rows)
+}
+
+impl Located {
     /// Rows of vertex ids as an int64 array of output vertex indices.
     fn vertex_rows<'py, const K: usize>(
         &self,
         py: Python<'py>,
         rows: impl Iterator<Item = [surftopo_mesh::VertexId; K]>,
     ) -> Bound<'py, PyAny> {
-        let rows: Vec<[u32; K]> = rows
-            .map(|r| r.map(|v| self.located.row_of[v.idx()]))
-            .collect();
+        let rows: Vec<[u32; K]> = rows.map(|r| r.map(|v| self.row_of[v.idx()])).collect();
         index_array(py, &rows).into_any()
     }
 }
@@ -504,12 +613,18 @@ fn located_surface(
         return Ok(Located::dense(tri));
     }
     if let Ok(t) = surface.cast::<Intrinsic>() {
-        let t = t.get();
-        return Ok(Located {
-            tri: t.located.tri.clone(),
-            row_of: t.located.row_of.clone(),
-            rows: t.located.rows,
-        });
+        return match &t.get().held {
+            Held::Closed(located) => Ok(Located {
+                tri: located.tri.clone(),
+                row_of: located.row_of.clone(),
+                rows: located.rows,
+            }),
+            Held::Covered(_) | Held::Tufted { .. } => Err(invalid(
+                "this IntrinsicTriangulation has boundary, is non-orientable, in pieces or a \
+                 tufted cover: a closed orientable surface is needed here",
+            )
+            .into_pyerr(py)),
+        };
     }
     if let Ok(pair) = surface.cast::<PyTuple>()
         && pair.len() == 2
@@ -522,11 +637,119 @@ fn located_surface(
     )
 }
 
-/// The intrinsic Delaunay triangulation of a closed polyhedral surface by `method` (`"flip"`,
+/// Whether a build failure says the mesh is a surface that is not closed, not orientable or in
+/// pieces: what the closed cover takes ([`Covered`]).
+fn needs_cover(failure: &Failure) -> bool {
+    matches!(
+        failure,
+        Failure::Build(
+            BuildError::BoundaryEdge { .. }
+                | BuildError::NonOrientable { .. }
+                | BuildError::Disconnected { .. }
+        )
+    )
+}
+
+/// What `intrinsic_delaunay` starts from: a surface to run the request on, or the tufted cover
+/// already flipped (with its figures, and whether it was taken because the soup is not a
+/// manifold).
+enum Start {
+    Run(Held),
+    Tufted(Held, DelaunayStats, bool),
+}
+
+/// The surface argument of `intrinsic_delaunay`: a closed orientable one as [`Located`], a
+/// mesh with boundary, non-orientable or in pieces (or such an [`Intrinsic`]) on its cover, a
+/// soup through its tufted cover as `tufted` says (as `laplacian` takes them), when `method`
+/// flips.
+fn delaunay_surface(
+    py: Python<'_>,
+    surface: &Bound<'_, PyAny>,
+    faces: Option<&Bound<'_, PyAny>>,
+    tufted: &Tufted,
+    method: DelaunayMethod,
+) -> PyResult<Start> {
+    if let Some(faces) = faces {
+        let vertices = VertexArray::extract(surface)?;
+        let faces = arrays::any_faces(faces, vertices.len())?;
+        let positions = vertices.positions();
+        let cut = py.detach(|| faces.triangulated(&positions));
+        let triangles = &cut.triangles;
+        let run_tufted = |automatic| {
+            let start = Instant::now();
+            let t = crate::tufted::tufted(&positions, triangles, &tufted.options)?;
+            let report = FlipReport {
+                flips: t.report.flips,
+                mollify_delta: Some(t.report.mollify_delta),
+                non_delaunay_edges: t.cover.non_delaunay_edges(DEFAULT_TOLERANCE),
+            };
+            let stats = DelaunayStats::new(&t.cover, &report, start.elapsed().as_secs_f64());
+            let mut row_of = t.cover_input_vertex;
+            row_of.resize(t.cover.mesh().vertex_slots(), u32::MAX);
+            let located = Located {
+                tri: t.cover,
+                row_of,
+                rows: positions.len(),
+            };
+            let held = Held::Tufted {
+                located,
+                laplacian: t.laplacian,
+                mass: t.mass,
+            };
+            Ok::<_, Failure>(Start::Tufted(held, stats, automatic))
+        };
+        return py
+            .detach(|| {
+                if tufted.asked == Some(true) {
+                    return run_tufted(false);
+                }
+                match Located::from_arrays(&positions, triangles) {
+                    Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, triangles)
+                        .map(|c| Start::Run(Held::Covered(c)))
+                        .map_err(|f| cut.on_faces(f)),
+                    Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
+                        match method {
+                            DelaunayMethod::Auto | DelaunayMethod::Flip => run_tufted(true),
+                            _ => Err(invalid(format!(
+                                "method={:?}: the mesh is not a manifold ({f}); its tufted cover \
+                                 is flipped: method='flip' only",
+                                method.name()
+                            ))),
+                        }
+                    }
+                    located => located
+                        .map(|l| Start::Run(Held::Closed(l)))
+                        .map_err(|f| cut.on_faces(f)),
+                }
+            })
+            .map_err(|f| f.into_pyerr(py));
+    }
+    if let Ok(t) = surface.cast::<Intrinsic>()
+        && let Held::Covered(covered) = &t.get().held
+    {
+        return Ok(Start::Run(Held::Covered(Covered {
+            tri: covered.tri.clone(),
+            rows: covered.rows.clone(),
+            count: covered.count,
+        })));
+    }
+    if let Ok(pair) = surface.cast::<PyTuple>()
+        && pair.len() == 2
+    {
+        let (vertices, faces) = (pair.get_item(0)?, pair.get_item(1)?);
+        return delaunay_surface(py, &vertices, Some(&faces), tufted, method);
+    }
+    located_surface(py, surface, None).map(|l| Start::Run(Held::Closed(l)))
+}
+
+/// The intrinsic Delaunay triangulation of a polyhedral surface by `method` (`"flip"`,
 /// `"voronoi"`, `"dubois"` or `"auto"`, as `surftopo delaunay --method`); `exact=True` computes
-/// exactly (voronoi, dubois, auto) on a [`Portalgon`] given by exact corners.
+/// exactly (voronoi, dubois, auto) on a [`Portalgon`] given by exact corners. A mesh with
+/// boundary, non-orientable or in pieces is flipped on its closed cover (the wave and Theorem 1
+/// refused, naming flip, as the CLI does); `tufted=` and `mollify_factor=` as in [`laplacian`].
 #[pyfunction]
-#[pyo3(signature = (vertices, faces = None, method = "flip", exact = false, mollify = None, max_flips = None))]
+#[pyo3(signature = (vertices, faces = None, method = "flip", exact = false, mollify = None, max_flips = None, tufted = None, mollify_factor = None))]
+#[allow(clippy::too_many_arguments)] // the Python keyword arguments
 pub fn intrinsic_delaunay(
     py: Python<'_>,
     vertices: &Bound<'_, PyAny>,
@@ -535,23 +758,91 @@ pub fn intrinsic_delaunay(
     exact: bool,
     mollify: Option<f64>,
     max_flips: Option<u64>,
+    tufted: Option<bool>,
+    mollify_factor: Option<f64>,
 ) -> PyResult<Intrinsic> {
     let outputs = DelaunayOutputs {
         triangulation: true,
         figures: true,
         ..DelaunayOutputs::default()
     };
-    let request = request(method, mollify, max_flips, outputs).map_err(|f| f.into_pyerr(py))?;
-    let (located, out) = if exact {
+    let tufted = tufted_arguments(method, mollify, mollify_factor, tufted, max_flips)
+        .map_err(|f| f.into_pyerr(py))?;
+    let request = request(method, mollify.or(mollify_factor), max_flips, outputs)
+        .map_err(|f| f.into_pyerr(py))?;
+    let (held, out) = if exact {
+        if tufted.asked == Some(true) {
+            return Err(not_exact().into_pyerr(py));
+        }
         let p = exact_portalgon(vertices, faces).map_err(|f| f.into_pyerr(py))?;
         py.detach(|| Located::exact_delaunay(p, &request))
+            .map(|(located, out)| (Held::Closed(located), out))
     } else {
-        let located = located_surface(py, vertices, faces)?;
-        py.detach(|| located.delaunay(&request))
+        match delaunay_surface(py, vertices, faces, &tufted, request.method)? {
+            Start::Tufted(held, stats, automatic) => {
+                if automatic {
+                    warn_tufted(py)?;
+                }
+                return Ok(Intrinsic { held, stats });
+            }
+            Start::Run(Held::Covered(covered)) => py
+                .detach(|| covered.delaunay(&request))
+                .map(|(covered, out)| (Held::Covered(covered), out)),
+            Start::Run(held) => {
+                let located = match held {
+                    Held::Closed(located) => located,
+                    _ => unreachable!("a surface to run is closed or covered"),
+                };
+                py.detach(|| located.delaunay(&request))
+                    .map(|(located, out)| (Held::Closed(located), out))
+            }
+        }
     }
     .map_err(|f| f.into_pyerr(py))?;
     let stats = out.stats.expect("the figures are asked for");
-    Ok(Intrinsic { located, stats })
+    Ok(Intrinsic { held, stats })
+}
+
+/// The warning of a soup taken through the tufted cover because it is not a manifold.
+fn warn_tufted(py: Python<'_>) -> PyResult<()> {
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    PyErr::warn(
+        py,
+        &category,
+        c"the mesh is not a manifold: its Laplacian and mass matrix are the tufted cover's (Sharp & Crane 2020); pass tufted=True to ask for them, tufted=False to refuse such input",
+        1,
+    )
+}
+
+/// `tufted=` and `mollify_factor=` of [`laplacian`] and [`intrinsic_delaunay`], checked
+/// against the other arguments.
+fn tufted_arguments(
+    method: &str,
+    mollify: Option<f64>,
+    mollify_factor: Option<f64>,
+    tufted: Option<bool>,
+    max_flips: Option<u64>,
+) -> Result<Tufted, Failure> {
+    if mollify.is_some() && mollify_factor.is_some() {
+        return Err(invalid("give mollify or mollify_factor, not both"));
+    }
+    if tufted == Some(true) && (method != "flip" || mollify.is_some()) {
+        return Err(invalid(
+            "tufted=True flips the tufted cover: method='flip' only, its mollification is mollify_factor",
+        ));
+    }
+    if tufted == Some(false) && mollify_factor.is_some() {
+        return Err(invalid(
+            "mollify_factor applies to the tufted Laplacian (tufted=True or None)",
+        ));
+    }
+    Ok(Tufted {
+        asked: tufted,
+        options: TuftedOptions {
+            mollify_factor: mollify_factor.unwrap_or(DEFAULT_MOLLIFY_FACTOR),
+            max_flips,
+        },
+    })
 }
 
 /// Which Laplacian `laplacian` computes: `tufted=` as given (`None`: the tufted one when the
@@ -584,11 +875,7 @@ fn laplacian_and_seconds<'py>(
             return Ok((matrices, start.elapsed().as_secs_f64(), false));
         }
         let located = match Located::from_arrays(&positions, triangles) {
-            Err(Failure::Build(
-                BuildError::BoundaryEdge { .. }
-                | BuildError::NonOrientable { .. }
-                | BuildError::Disconnected { .. },
-            )) => {
+            Err(f) if needs_cover(&f) => {
                 let (matrices, seconds) = covered_matrices(&positions, triangles, request, start)
                     .map_err(|f| cut.on_faces(f))?;
                 return Ok((matrices, seconds, false));
@@ -613,13 +900,7 @@ fn laplacian_and_seconds<'py>(
     });
     let ((l, m), seconds, automatic) = computed.map_err(|f| f.into_pyerr(py))?;
     if automatic {
-        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
-        PyErr::warn(
-            py,
-            &category,
-            c"the mesh is not a manifold: its Laplacian and mass matrix are the tufted cover's (Sharp & Crane 2020); pass tufted=True to ask for them, tufted=False to refuse such input",
-            1,
-        )?;
+        warn_tufted(py)?;
     }
     Ok((
         l.into_format(py, format)?,
@@ -637,9 +918,7 @@ fn covered_matrices(
     request: &DelaunayRequest,
     start: Instant,
 ) -> Result<((Csr, Csr), f64), Failure> {
-    let (surface, report) = CoveredSurface::from_triangles(positions.to_vec(), triangles)?;
-    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions)
-        .map_err(Failure::Geometry)?;
+    let covered = Covered::from_arrays(positions, triangles)?;
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
             triangulation: false,
@@ -647,16 +926,16 @@ fn covered_matrices(
         },
         ..*request
     };
-    let out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Covered(tri), &request)
+    let out = surftopo_intrinsic::intrinsic_delaunay(DelaunayInput::Covered(covered.tri), &request)
         .map_err(Failure::Intrinsic)?;
     let seconds = start.elapsed().as_secs_f64();
-    let rows = input_index(&report);
+    let rows = covered.rows;
     let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
     let (l, m) = (matrix(out.laplacian), matrix(out.mass));
     check_matrices(&l, &m)?;
     let matrices = (
-        Csr::new(l, &rows, positions.len()),
-        Csr::new(m, &rows, positions.len()),
+        Csr::new(l, &rows, covered.count),
+        Csr::new(m, &rows, covered.count),
     );
     Ok((matrices, seconds))
 }
@@ -698,25 +977,8 @@ pub fn laplacian<'py>(
     tufted: Option<bool>,
     mollify_factor: Option<f64>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let fail = |m: &str| Err(invalid(m.to_string()).into_pyerr(py));
-    if mollify.is_some() && mollify_factor.is_some() {
-        return fail("give mollify or mollify_factor, not both");
-    }
-    if tufted == Some(true) && (method != "flip" || mollify.is_some()) {
-        return fail(
-            "tufted=True flips the tufted cover: method='flip' only, its mollification is mollify_factor",
-        );
-    }
-    if tufted == Some(false) && mollify_factor.is_some() {
-        return fail("mollify_factor applies to the tufted Laplacian (tufted=True or None)");
-    }
-    let tufted = Tufted {
-        asked: tufted,
-        options: TuftedOptions {
-            mollify_factor: mollify_factor.unwrap_or(DEFAULT_MOLLIFY_FACTOR),
-            max_flips,
-        },
-    };
+    let tufted = tufted_arguments(method, mollify, mollify_factor, tufted, max_flips)
+        .map_err(|f| f.into_pyerr(py))?;
     let request = laplacian_request(method, mollify.or(mollify_factor), max_flips)
         .map_err(|f| f.into_pyerr(py))?;
     if exact {

@@ -7,6 +7,7 @@
 
 mod arrays;
 mod census;
+mod covered;
 mod errors;
 mod intrinsic;
 mod surface;

@@ -31,6 +31,15 @@ fn failure(e: TuftedError) -> Failure {
     }
 }
 
+/// `surftopo_intrinsic::tufted_laplacian` with its errors as failures (call without the GIL).
+pub fn tufted(
+    positions: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    options: &TuftedOptions,
+) -> Result<TuftedLaplacian, Failure> {
+    tufted_laplacian(positions, triangles, options).map_err(failure)
+}
+
 /// The tufted Laplacian and mass matrix of `(positions, triangles)` as CSR matrices with one row
 /// per input vertex (call without the GIL).
 pub fn tufted_csr(
@@ -40,7 +49,7 @@ pub fn tufted_csr(
 ) -> Result<(Csr, Csr), Failure> {
     let TuftedLaplacian {
         laplacian, mass, ..
-    } = tufted_laplacian(positions, triangles, options).map_err(failure)?;
+    } = tufted(positions, triangles, options)?;
     let rows: Vec<u32> = (0..positions.len() as u32).collect();
     Ok((
         Csr::new(laplacian, &rows, positions.len()),

@@ -14,7 +14,8 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
     V, F = surftopo.icosphere(1)
     removed = F[7]
     with pytest.raises(surftopo.InvalidMeshError) as caught:
-        surftopo.intrinsic_delaunay(V, np.delete(F, 7, axis=0))
+        opened = (V, np.delete(F, 7, axis=0))
+        surftopo.isometric(opened, opened)
     e = caught.value
     assert isinstance(e, ValueError) and isinstance(e, surftopo.SurftopoError)
     assert e.kind == "BoundaryEdge"
@@ -34,7 +35,7 @@ def test_boundary_raises_invalid_mesh_error_naming_the_edge():
 @pytest.mark.parametrize(
     "call",
     [
-        lambda V, F: surftopo.intrinsic_delaunay(V, F),
+        lambda V, F: surftopo.isometric((V, F), (V, F)),
     ],
 )
 def test_every_function_names_the_boundary(call):
@@ -73,9 +74,11 @@ def test_non_manifold_edge_and_disconnected_and_non_finite():
         surftopo.laplacian(fin, np.vstack([F, [[0, 1, 4]]]))
     two = np.vstack([V, V + 5.0])
     with pytest.raises(surftopo.InvalidMeshError, match="connected components") as caught:
-        surftopo.intrinsic_delaunay(two, np.vstack([F, F + 4]))
+        pair = (two, np.vstack([F, F + 4]))
+        surftopo.isometric(pair, pair)
     assert caught.value.face == 4
-    # laplacian takes the two pieces: one block each.
+    # laplacian and intrinsic_delaunay take the two pieces: one block each.
+    assert surftopo.intrinsic_delaunay(two, np.vstack([F, F + 4])).faces.shape == (8, 3)
     L, _ = surftopo.laplacian(two, np.vstack([F, F + 4]))
     assert L[:4, 4:].nnz == 0 and (L[:4, :4] != surftopo.laplacian(V, F)[0]).nnz == 0
     W = V.copy()

@@ -120,12 +120,18 @@ def test_non_orientable_symmetric_psd_and_delaunay(name):
         assert off.max() <= 1e-14 * abs(L).max()
 
 
-def test_pieces_are_independent_blocks():
+def three_pieces():
+    """A Möbius band, a disk and a sphere in one file, and each piece's own arrays."""
     V1, F1 = jitter(surftopo.mobius_band(10, 2)[0], 0.05, 8), surftopo.mobius_band(10, 2)[1]
     V2, F2 = jitter(surftopo.disk(5)[0], 0.05, 9), surftopo.disk(5)[1]
     V3, F3 = surftopo.icosphere(1)
     V = np.vstack([V1, V2 + 3, V3 - 3])
     F = np.vstack([F1, F2 + len(V1), F3 + len(V1) + len(V2)])
+    return V, F, [(V1, F1), (V2, F2), (V3, F3)]
+
+
+def test_pieces_are_independent_blocks():
+    V, F, [(V1, F1), (V2, F2), (V3, F3)] = three_pieces()
     L, M = surftopo.laplacian(V, F)
     check_structure(L, M, V, F, 3)
     blocks = [(0, len(V1), V1, F1), (len(V1), len(V1) + len(V2), V2, F2)]

@@ -636,20 +636,25 @@ impl Enumerator {
     /// the subtree below one of them ([`Self::enter_part`]). Empty when the start has no open
     /// vertex.
     pub fn root_choices(&mut self) -> Vec<usize> {
-        let Some((v, p)) = self.next_edge() else {
-            return Vec::new();
-        };
-        let mut choices = Vec::new();
+        match self.next_edge() {
+            Some((v, p)) => self.accepted_apexes(v, p),
+            None => Vec::new(),
+        }
+    }
+
+    /// The apexes the edge `(v, p)` accepts now, each tried and undone.
+    fn accepted_apexes(&mut self, v: usize, p: usize) -> Vec<usize> {
+        let mut accepted = Vec::new();
         let mut candidates = self.candidates(v, p);
         while candidates != 0 {
             let q = candidates.trailing_zeros() as usize;
             candidates &= candidates - 1;
             if self.try_apex(v, p, q) {
                 self.undo();
-                choices.push(q);
+                accepted.push(q);
             }
         }
-        choices
+        accepted
     }
 
     /// Takes the first branching's apex `q` (one of [`Self::root_choices`]): the search then
@@ -669,16 +674,7 @@ impl Enumerator {
         let mut product = 1.0;
         let depth = self.history.len();
         while let Some((v, p)) = self.next_edge() {
-            let mut children = Vec::new();
-            let mut candidates = self.candidates(v, p);
-            while candidates != 0 {
-                let q = candidates.trailing_zeros() as usize;
-                candidates &= candidates - 1;
-                if self.try_apex(v, p, q) {
-                    self.undo();
-                    children.push(q);
-                }
-            }
+            let children = self.accepted_apexes(v, p);
             if children.is_empty() {
                 break;
             }

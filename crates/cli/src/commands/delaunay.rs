@@ -28,7 +28,9 @@ pub struct Args {
     /// (this, --tessellation, --reduced, --laplacian, --mass) or --json is needed.
     #[arg(short, long)]
     pub output: Option<PathBuf>,
-    /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON (.json).
+    /// The Delaunay tessellation (co-circular triangles merged), as portalgon JSON (.json): on
+    /// a surface with boundary its boundary sides are unmatched, on a non-orientable one the
+    /// gluings that reverse orientation are flagged (format version 2).
     #[arg(long)]
     pub tessellation: Option<PathBuf>,
     /// The cotan Laplacian (positive semidefinite: positive diagonal): Matrix Market (.mtx,
@@ -507,6 +509,10 @@ fn write_outputs(
         if let (Some(path), Some(p)) = (path, portalgon) {
             outputs.file(path, |w| Ok(p.to_doc().write(w, false)?))?;
         }
+    }
+    if let (Some(path), Some(t)) = (&options.tessellation, &out.covered_tessellation) {
+        // Boundary sides unmatched, orientation-reversing gluings flagged (version 2).
+        outputs.file(path, |w| Ok(t.portalgon.write(w, false)?))?;
     }
     if let (Some(path), Some(laplacian)) = (&options.laplacian, &out.laplacian) {
         let comment = "cotan Laplacian of the intrinsic Delaunay triangulation (positive semidefinite: positive diagonal, off-diagonal -w_ij)";

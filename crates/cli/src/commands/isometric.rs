@@ -1,22 +1,25 @@
-//! `surftopo isometric`: whether two closed polyhedral surfaces are isometric (Corollary 2 of the
+//! `surftopo isometric`: whether two polyhedral surfaces are isometric (Corollary 2 of the
 //! intrinsic-Delaunay paper: their canonical Delaunay tessellations are equal), or that double
 //! precision cannot decide. The canonical tessellations come from flipping (`--method flip`),
 //! from the Voronoi wave from the singular vertices (`--method voronoi`), or from Dubois'
 //! Theorem 1 on flat surfaces (`--method dubois`: the reduction, then the wave); exactly with
 //! `--exact`. `--method auto` (the default) takes dubois when both surfaces are flat needles
 //! (`surftopo_intrinsic::choose_method` on each), otherwise flip (the exact wave with `--exact`).
+//! A mesh with boundary loops, non-orientable pieces or several pieces (on either side) is
+//! compared by `surftopo_intrinsic::decide_isometry_on_cover` (flipping on its closed cover);
+//! the wave and Theorem 1 are refused there.
 
 use crate::args::{JsonArg, WeldArg};
-use crate::commands::delaunay::{Method, MethodOptions, load_exact, load_intrinsic};
+use crate::commands::delaunay::{Method, MethodOptions, is_json_input, load_exact, load_intrinsic};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{FlatDelaunayError, first_cone_point};
 use surftopo_intrinsic::voronoi::Sources;
 use surftopo_intrinsic::{
-    DEFAULT_ANGLE_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs, DelaunayRequest,
-    ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision, IsometryOptions,
-    Portalgon, choose_method, choose_method_for_triangulation, compare_tessellations,
-    decide_isometry, intrinsic_delaunay_reporting,
+    CoveredTriangulation, DEFAULT_ANGLE_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs,
+    DelaunayRequest, ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision,
+    IsometryOptions, Portalgon, choose_method, choose_method_for_triangulation,
+    compare_tessellations, decide_isometry, decide_isometry_on_cover, intrinsic_delaunay_reporting,
 };
 
 /// The arguments of `isometric`.
@@ -36,7 +39,7 @@ pub struct Args {
     /// 100 times larger and smaller).
     #[arg(long, value_name = "T", default_value_t = ISOMETRY_LENGTH_TOLERANCE)]
     pub tolerance: f64,
-    /// Print `isometric` (true, false, or null when undecidable), `verdict`, `reason`, `method`
+    /// Print `isometric` (true, false, or null when undecided), `verdict`, `reason`, `method`
     /// and `tolerance` as JSON instead of the verdict line and the reason on stderr.
     #[command(flatten)]
     pub json: JsonArg,
@@ -45,9 +48,10 @@ pub struct Args {
 /// What `--json` prints.
 #[derive(serde::Serialize)]
 struct Report<'a> {
-    /// true, false, or null when double precision cannot decide.
+    /// true, false, or null when double precision or the method cannot decide.
     isometric: Option<bool>,
-    /// `isometric`, `not isometric` or `undecidable in double precision`.
+    /// `isometric`, `not isometric`, `undecidable in double precision` or `undecided` (a flat
+    /// vertex on a surface with boundary or without orientation).
     verdict: &'static str,
     /// Why, in words.
     reason: &'a str,
@@ -58,7 +62,7 @@ struct Report<'a> {
 }
 
 /// The verdict, as an exit code: 0 isometric, 1 not isometric, 3 undecidable in double precision
-/// (2 is invalid input, [`crate::failure::ISOMETRIC_INTERNAL_FAILURE`] an internal failure).
+/// or undecided (2 is invalid input, [`crate::failure::ISOMETRIC_INTERNAL_FAILURE`] an internal failure).
 pub struct Verdict(IsometryDecision);
 
 impl Verdict {
@@ -67,7 +71,7 @@ impl Verdict {
         match self.0 {
             IsometryDecision::Isometric(_) => 0,
             IsometryDecision::NotIsometric(_) => 1,
-            IsometryDecision::Undecidable(_) => 3,
+            IsometryDecision::Undecidable(_) | IsometryDecision::Undecided(_) => 3,
         }
     }
 }
@@ -148,13 +152,6 @@ fn decide_by_tessellations(
     method: MethodOptions,
     options: &IsometryOptions,
 ) -> anyhow::Result<IsometryDecision> {
-    let what = |method: Method| {
-        if method == Method::Dubois {
-            "Theorem 1 (Dubois) tessellation"
-        } else {
-            "Voronoi wave"
-        }
-    };
     let isometric = |method: Method, outcome: surftopo_intrinsic::Outcome| {
         IsometryDecision::Isometric(format!("by the {}, {}", what(method), outcome.reason()))
     };
@@ -190,6 +187,26 @@ fn decide_by_tessellations(
         });
     }
     let (first, second) = (load_valid(a, weld)?, load_valid(b, weld)?);
+    decide_closed(a, b, first, second, method, options)
+}
+
+/// The verdict on two closed orientable surfaces read in double precision: the flip route's
+/// three-way decision ([`decide`]) for `--method flip`, otherwise the tessellations of the
+/// method asked for (see [`decide_by_tessellations`]).
+fn decide_closed(
+    a: &Path,
+    b: &Path,
+    first: IntrinsicTriangulation,
+    second: IntrinsicTriangulation,
+    method: MethodOptions,
+    options: &IsometryOptions,
+) -> anyhow::Result<IsometryDecision> {
+    let isometric = |method: Method, outcome: surftopo_intrinsic::Outcome| {
+        IsometryDecision::Isometric(format!("by the {}, {}", what(method), outcome.reason()))
+    };
+    if method.method == Method::Flip {
+        return decide(a, b, &first, &second, options);
+    }
     let resolved = match method.method {
         Method::Auto
             if choose_method_for_triangulation(&first) == DelaunayMethod::Dubois
@@ -219,6 +236,82 @@ fn decide_by_tessellations(
     decide(a, b, &first, &second, options)
 }
 
+/// What a method's canonical tessellation is called in a reason.
+fn what(method: Method) -> &'static str {
+    if method == Method::Dubois {
+        "Theorem 1 (Dubois) tessellation"
+    } else {
+        "Voronoi wave"
+    }
+}
+
+/// An input of `isometric` read in double precision.
+enum Input {
+    /// One closed orientable piece (a mesh, or a portalgon file): every method.
+    Closed(IntrinsicTriangulation),
+    /// Any other surface (boundary loops, non-orientable pieces, several pieces): flipping.
+    Any(CoveredTriangulation),
+}
+
+impl Input {
+    fn into_covered(self) -> CoveredTriangulation {
+        match self {
+            Input::Closed(tri) => CoveredTriangulation::from_closed(tri),
+            Input::Any(tri) => tri,
+        }
+    }
+}
+
+/// Reads an input: a portalgon file as a closed orientable triangulation ([`load_valid`]), a
+/// mesh file of any kind on its closed cover unless it is one closed orientable piece.
+fn load_input(path: &Path, weld: bool) -> anyhow::Result<Input> {
+    if is_json_input(path)? {
+        return load_valid(path, weld).map(Input::Closed);
+    }
+    let name = crate::input::name(path);
+    let loaded = crate::input::read_covered(path, weld)?;
+    let fail = |e: surftopo_intrinsic::GeometryError| invalid(format!("{name}: {e}"));
+    let surface = loaded.surface;
+    if surface.cover.is_plain() && loaded.report.surfaces.len() <= 1 {
+        let s = surface
+            .into_plain()
+            .expect("a plain cover is a closed orientable surface");
+        let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).map_err(fail)?;
+        crate::commands::delaunay::validated(path, &tri)?;
+        return Ok(Input::Closed(tri));
+    }
+    let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions).map_err(fail)?;
+    crate::commands::delaunay::validated(path, tri.cover())?;
+    Ok(Input::Any(tri))
+}
+
+/// The verdict on two inputs of which one at least is not one closed orientable piece
+/// ([`decide_isometry_on_cover`]); the wave and Theorem 1 are refused (Dubois' paper treats
+/// closed surfaces).
+fn decide_any(
+    a: &Path,
+    b: &Path,
+    first: Input,
+    second: Input,
+    method: MethodOptions,
+    options: &IsometryOptions,
+) -> anyhow::Result<IsometryDecision> {
+    if matches!(method.method, Method::Voronoi | Method::Dubois) {
+        let path = if matches!(first, Input::Any(_)) { a } else { b };
+        return Err(invalid(format!(
+            "{}: --method {} takes closed orientable surfaces of one piece; this one has \
+             boundary loops, no orientation or several pieces: use --method flip (auto takes it)",
+            shown(path),
+            crate::args::value_name(&method.method)
+        )));
+    }
+    let (first, second) = (first.into_covered(), second.into_covered());
+    crate::progress::step("comparing Delaunay tessellations", || {
+        decide_isometry_on_cover(&first, &second, options)
+    })
+    .map_err(|e| invalid(format!("{} / {}: {e}", shown(a), shown(b))))
+}
+
 /// The flip route's three-way decision.
 fn decide(
     a: &Path,
@@ -241,6 +334,7 @@ pub fn run(args: &Args) -> anyhow::Result<Verdict> {
         IsometryDecision::Isometric(reason) => (Some(true), "isometric", reason),
         IsometryDecision::NotIsometric(reason) => (Some(false), "not isometric", reason),
         IsometryDecision::Undecidable(reason) => (None, "undecidable in double precision", reason),
+        IsometryDecision::Undecided(reason) => (None, "undecided", reason),
     };
     if args.json.json {
         crate::output::print_json(&Report {
@@ -274,12 +368,17 @@ pub fn decide_args(args: &Args) -> anyhow::Result<IsometryDecision> {
         length_tolerance: args.tolerance,
         ..IsometryOptions::default()
     };
-    let decision = if method.method == Method::Flip {
-        load_valid(a, weld)
-            .and_then(|first| Ok((first, load_valid(b, weld)?)))
-            .and_then(|(first, second)| decide(a, b, &first, &second, &options))
-    } else {
+    let decision = if method.exact {
         decide_by_tessellations(a, b, weld, *method, &options)
+    } else {
+        load_input(a, weld)
+            .and_then(|first| Ok((first, load_input(b, weld)?)))
+            .and_then(|inputs| match inputs {
+                (Input::Closed(first), Input::Closed(second)) => {
+                    decide_closed(a, b, first, second, *method, &options)
+                }
+                (first, second) => decide_any(a, b, first, second, *method, &options),
+            })
     };
     match decision {
         Err(e) if crate::failure::exit_code(&e) == crate::failure::NUMERICAL_FAILURE => {

@@ -27,8 +27,11 @@
 //! per gluing, would give `flip`, rotation and every test new cases on the closed orientable hot
 //! path; this module leaves that path's machine code as it was ([`crate::flip`]'s `Closed`).
 
+pub(crate) mod isometry;
+
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
+use crate::flip::tessellation::{CellSurface, Tessellation, tessellate};
 use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
 use crate::formats::portalgon_json::{
     FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
@@ -63,6 +66,22 @@ impl CoveredTriangulation {
     /// # Errors
     /// [`GeometryError::NonFiniteLength`] (huge coordinates).
     pub fn from_cover(cover: &ClosedCover, positions: &[Point3]) -> Result<Self, GeometryError> {
+        Self::from_cover_lengths(cover, |a, b| {
+            let [p, q] = [a, b].map(|v| positions[v as usize]);
+            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        })
+    }
+
+    /// The intrinsic triangulation of K with each edge as long as `length(a, b)` says for its
+    /// ends' vertices of K (an abstract metric: a flat strip glued into an annulus or a Möbius
+    /// band, say); apex edges as [`Self::from_cover`] makes them.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFiniteLength`] when a length is not finite.
+    pub fn from_cover_lengths(
+        cover: &ClosedCover,
+        length: impl Fn(u32, u32) -> f64,
+    ) -> Result<Self, GeometryError> {
         let mesh = &cover.mesh;
         let sheets = &cover.sheets;
         let surface_vertices = sheets
@@ -83,9 +102,7 @@ impl CoveredTriangulation {
         for e in mesh.edges() {
             let [a, b] = mesh.edge_vertices(e);
             if !is_apex(a) && !is_apex(b) {
-                let [p, q] = [a, b].map(|v| positions[class[v.idx()] as usize]);
-                lengths[e.idx()] =
-                    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt();
+                lengths[e.idx()] = length(class[a.idx()], class[b.idx()]);
             }
         }
         // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
@@ -132,6 +149,29 @@ impl CoveredTriangulation {
             mirror,
             frozen,
         })
+    }
+
+    /// A closed orientable surface as its own cover (no apex, no mirror, vertex ids as the
+    /// vertices of K), so that it can be compared with a surface of any kind.
+    pub fn from_closed(tri: IntrinsicTriangulation) -> Self {
+        let mesh = tri.mesh();
+        let class = (0..mesh.vertex_slots())
+            .map(|v| {
+                if mesh.is_vertex_live(VertexId::new(v)) {
+                    v as u32
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        let (surface_vertices, frozen) = (mesh.vertex_slots(), vec![false; mesh.edge_slots()]);
+        Self {
+            tri,
+            class,
+            surface_vertices,
+            mirror: Vec::new(),
+            frozen,
+        }
     }
 
     /// The cover D with its lengths (virtual triangles included).
@@ -189,6 +229,11 @@ impl CoveredTriangulation {
         self.is_real_face(mesh.face(h)) != self.is_real_face(mesh.face(h.twin()))
     }
 
+    /// The edge of K an edge of D stands for: itself, or the first of its mirror pair.
+    pub fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        self.mirror(e.halfedge()).map_or(e, |m| e.min(m.edge()))
+    }
+
     /// The edges of K (see [`Self::is_surface_edge`]).
     pub fn surface_edges(&self) -> impl Iterator<Item = EdgeId> + '_ {
         self.tri.mesh().edges().filter(|&e| self.is_surface_edge(e))
@@ -233,6 +278,42 @@ impl CoveredTriangulation {
                 .count();
         }
         Ok(report)
+    }
+
+    /// Re-triangulates K isometrically by up to `count` random intrinsic flips, as
+    /// [`crate::generators::random_flips`] does on a closed surface: edges of D drawn uniformly
+    /// (seeded), an interior edge of K flipped when its quad is convex with margin and keeps its
+    /// area, its mirror edge with it (the same new length). Boundary edges never flip. At most
+    /// `20 · count` draws. Returns the number of flips of K made. Same seed, same result.
+    pub fn random_flips(&mut self, count: u64, seed: u64) -> u64 {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let slots = self.tri.mesh().edge_slots();
+        let mut flips = 0;
+        for _ in 0..count.saturating_mul(20) {
+            if flips == count || slots == 0 {
+                break;
+            }
+            let e = EdgeId::new(rng.random_range(0..slots));
+            if !self.tri.mesh().is_edge_live(e) || !self.may_flip(e) {
+                continue;
+            }
+            let h = e.halfedge();
+            let partner = self.mirror(h).map(HalfedgeId::twin);
+            if !self.tri.flip_if_convex_with_margin(e, 0.9) {
+                continue;
+            }
+            if let Some(p) = partner {
+                self.tri.apply_flip(p.edge(), self.tri.length(e));
+                let mut gluing = CoverGluing {
+                    frozen: &self.frozen,
+                    mirror: &mut self.mirror,
+                };
+                gluing.flipped(self.tri.mesh(), h, p);
+            }
+            flips += 1;
+        }
+        flips
     }
 
     /// The cotan weight `w_e` of every edge of D (by edge id): half the cotangent of each
@@ -343,17 +424,111 @@ impl CoveredTriangulation {
                 }
             }
         }
-        if !reversed.contains(&true) {
-            reversed.clear();
+        glued_doc(polygons, matching, reversed)
+    }
+}
+
+/// The document of polygons glued by `matching`, `reversed` per pair (kept only when some pair
+/// reverses orientation).
+fn glued_doc(
+    polygons: Vec<PolygonDoc>,
+    matching: Vec<[[usize; 2]; 2]>,
+    mut reversed: Vec<bool>,
+) -> PortalgonDoc {
+    if !reversed.contains(&true) {
+        reversed.clear();
+    }
+    PortalgonDoc {
+        format: FORMAT_NAME.to_string(),
+        version: ORIENTED_VERSION,
+        comment: None,
+        polygons,
+        matching,
+        reversed,
+    }
+}
+
+impl CoveredTriangulation {
+    /// The Delaunay tessellation of K (run [`Self::flip_to_delaunay`] first): the triangles of
+    /// K merged across every interior edge whose two triangles are co-circular, decided as
+    /// [`crate::delaunay_tessellation`] decides it on a closed surface (`|√(tan²(γ/2)
+    /// tan²(δ/2)) - 1| <= tolerance`, a spanning forest over K's triangles), once per edge of K;
+    /// never across a boundary edge. Each polygon is laid out on one lift in D, so its corners
+    /// run counter-clockwise in that lift's orientation.
+    ///
+    /// The document (portalgon JSON, version 2 when some gluing reverses orientation): polygons
+    /// by `corners` with `vertices` (the surface's vertices), a pair per interior side, flagged
+    /// `true` where its two sides run the same way (the neighbour was laid out on the other
+    /// sheet: on a non-orientable piece, no choice of lifts avoids it), boundary sides
+    /// unmatched. The faces are K's triangles (the first lift's face ids), the merged edges K's
+    /// edges (first lifts), the side half-edges those of the lifts laid out.
+    ///
+    /// Uniqueness: on a closed surface the Delaunay tessellation is unique (Bobenko and
+    /// Springborn, Proposition 4). With boundary, every triangulation of K with these vertices
+    /// has the boundary edges (the boundary is the union of the segments between consecutive
+    /// boundary vertices), so the tessellation is the constrained one: each cell is the set of
+    /// triangles whose circumdisks, developed across interior edges only, coincide; flipping
+    /// reaches a triangulation whose interior edges are all Delaunay, in which the developed
+    /// circumdisk of a triangle is empty of vertices it sees (the planar argument of Lee and
+    /// Lin's constrained Delaunay triangulation, local across interior edges), and these disks
+    /// depend on the metric and the vertices alone, so the cells do not depend on the flips
+    /// that led there (see README, "The Delaunay tessellation on every surface").
+    pub fn tessellation(&self, tolerance: f64) -> Tessellation<PortalgonDoc> {
+        tessellate(&self.tri, tolerance, self).with_polygons(|cells| {
+            let polygon_of = |s: u32| {
+                let k = cells.side_start.partition_point(|&start| start <= s) - 1;
+                [k, (s - cells.side_start[k]) as usize]
+            };
+            let polygons = (0..cells.side_start.len() - 1)
+                .map(|k| {
+                    let sides = cells.sides(k);
+                    PolygonDoc {
+                        corners: Some(
+                            cells.corners[sides.clone()]
+                                .iter()
+                                .map(|c| c.map(Number::Double))
+                                .collect(),
+                        ),
+                        lengths: None,
+                        vertices: Some(cells.labels[sides].to_vec()),
+                    }
+                })
+                .collect();
+            let matching = cells
+                .gluings
+                .iter()
+                .map(|&(s, t, _)| [polygon_of(s), polygon_of(t)])
+                .collect();
+            let reversed = cells.gluings.iter().map(|g| g.2).collect();
+            glued_doc(polygons, matching, reversed)
+        })
+    }
+}
+
+/// K as [`tessellate`] sees it: K's triangles and edges are the first lifts, cone faces are
+/// not on it, labels are the vertex classes.
+impl CellSurface for CoveredTriangulation {
+    fn surface_face(&self, f: FaceId) -> Option<FaceId> {
+        if !self.is_real_face(f) {
+            return None;
         }
-        PortalgonDoc {
-            format: FORMAT_NAME.to_string(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons,
-            matching,
-            reversed,
-        }
+        let mesh = self.tri.mesh();
+        Some(
+            self.mirror(mesh.face_halfedge(f))
+                .map_or(f, |m| f.min(mesh.face(m))),
+        )
+    }
+
+    fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        CoveredTriangulation::surface_edge(self, e)
+    }
+
+    fn label(&self, v: VertexId) -> u32 {
+        self.class(v)
+    }
+
+    fn mirror(&self, h: HalfedgeId) -> Option<HalfedgeId> {
+        CoveredTriangulation::mirror(self, h)
     }
 }
 

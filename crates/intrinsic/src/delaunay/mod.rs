@@ -28,7 +28,9 @@ use crate::covered::CoveredTriangulation;
 use crate::dubois::{CapsError, DuboisReport, FlatDelaunayOptions, ReduceOptions};
 use crate::error::{DelaunayError, GeometryError, PortalgonError};
 use crate::flip::stats::DelaunayStats;
-use crate::flip::tessellation::{DEFAULT_COCIRCULAR_TOLERANCE, delaunay_tessellation};
+use crate::flip::tessellation::{
+    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation,
+};
 use crate::flip::{DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, flip_unless};
 use crate::formats::portalgon_json::PortalgonDoc;
 use crate::geometry::{Rational, Scalar};
@@ -77,8 +79,9 @@ pub enum DelaunayInput {
     /// A closed triangular portalgon given by exact corners: the wave and Theorem 1, exactly.
     Exact(Portalgon<Rational>),
     /// Any compact surface (boundary loops, non-orientable pieces) on its closed cover, `f64`
-    /// lengths: flipping ([`CoveredTriangulation::flip_to_delaunay`]); the wave and Theorem 1
-    /// are refused ([`IntrinsicDelaunayError::NotClosedOrientable`]).
+    /// lengths: flipping ([`CoveredTriangulation::flip_to_delaunay`]) and its tessellation
+    /// ([`CoveredTriangulation::tessellation`]); the wave and Theorem 1 are refused
+    /// ([`IntrinsicDelaunayError::NotClosedOrientable`]).
     Covered(CoveredTriangulation),
 }
 
@@ -173,15 +176,14 @@ pub enum IntrinsicDelaunayError {
     /// The tessellation could not be cut into triangles.
     #[error(transparent)]
     Portalgon(#[from] PortalgonError),
-    /// The method or output asked for is defined on closed orientable surfaces only (the wave and
-    /// Theorem 1: Dubois treats closed surfaces), and the input has boundary or is
-    /// non-orientable.
+    /// The method asked for is defined on closed orientable surfaces only (the wave and Theorem
+    /// 1: Dubois treats closed surfaces), and the input has boundary or is non-orientable.
     #[error(
         "{what} takes closed orientable surfaces only, and this surface has boundary or is \
          non-orientable: {instead}"
     )]
     NotClosedOrientable {
-        /// What was asked: "the voronoi method", "the Delaunay tessellation", ...
+        /// What was asked: "the voronoi method (Dubois, Appendix D)", ...
         what: &'static str,
         /// What works instead.
         instead: &'static str,
@@ -256,8 +258,12 @@ pub struct DelaunayOutput {
     pub covered: Option<CoveredTriangulation>,
     /// Exact mode: the tessellation cut along shortcuts, by exact corners.
     pub exact_triangulation: Option<Portalgon<Rational>>,
-    /// The Delaunay tessellation.
+    /// The Delaunay tessellation (of a closed orientable surface).
     pub tessellation: Option<AnyPortalgon>,
+    /// The Delaunay tessellation of a [`DelaunayInput::Covered`] surface
+    /// ([`CoveredTriangulation::tessellation`]: boundary sides unmatched, orientation-reversing
+    /// gluings flagged).
+    pub covered_tessellation: Option<Tessellation<PortalgonDoc>>,
     /// `dubois`: Corollary 1's low-happiness triangulation the wave ran on.
     pub reduced: Option<AnyPortalgon>,
     /// The cotan Laplacian of the triangulation (positive semidefinite).
@@ -417,6 +423,7 @@ fn flipped_output(
         covered: None,
         exact_triangulation: None,
         tessellation,
+        covered_tessellation: None,
         reduced: None,
         laplacian,
         mass,
@@ -426,8 +433,8 @@ fn flipped_output(
     }
 }
 
-/// Flipping on a surface of any kind ([`DelaunayInput::Covered`]): `auto` is `flip`; the wave,
-/// Theorem 1 and the tessellation are refused.
+/// Flipping on a surface of any kind ([`DelaunayInput::Covered`]): `auto` is `flip`; the wave
+/// and Theorem 1 are refused; the tessellation is [`CoveredTriangulation::tessellation`].
 fn covered(
     mut tri: CoveredTriangulation,
     request: &DelaunayRequest,
@@ -443,17 +450,15 @@ fn covered(
     }
     request.check_resolved(DelaunayMethod::Flip)?;
     let wanted = request.outputs;
-    if wanted.tessellation {
-        return refuse(
-            "the Delaunay tessellation",
-            "the triangulation's Laplacian and mass matrix are computed (drop the tessellation)",
-        );
-    }
     progress("flipping to Delaunay");
     let start = Instant::now();
     let report = tri.flip_to_delaunay(&request.flip_options())?;
     let seconds = start.elapsed().as_secs_f64();
     let stats = wanted.figures.then(|| tri.stats(&report, seconds));
+    let covered_tessellation = wanted.tessellation.then(|| {
+        progress("merging co-circular triangles");
+        tri.tessellation(DEFAULT_COCIRCULAR_TOLERANCE)
+    });
     let laplacian = wanted.laplacian.then(|| {
         progress("building the Laplacian");
         tri.laplacian()
@@ -469,6 +474,7 @@ fn covered(
         covered: wanted.triangulation.then_some(tri),
         exact_triangulation: None,
         tessellation: None,
+        covered_tessellation,
         reduced: None,
         laplacian,
         mass,
@@ -590,6 +596,7 @@ where
         tessellation: wanted
             .tessellation
             .then(|| AnyPortalgon::from(v.tessellation)),
+        covered_tessellation: None,
         reduced: reduced.filter(|_| wanted.reduced).map(AnyPortalgon::from),
         laplacian,
         mass,

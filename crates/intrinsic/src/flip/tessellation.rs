@@ -20,6 +20,13 @@
 //! (breadth-first from its smallest face id), and listed counter-clockwise starting from its
 //! smallest side half-edge. Vertex labels are the dense vertex indices. O(n α(n)).
 //!
+//! The same code tessellates a surface with boundary, non-orientable or in pieces on its closed
+//! cover ([`crate::CoveredTriangulation::tessellation`], through [`CellSurface`]): only interior
+//! edges merge, each edge of the surface is decided once (on the first of its mirror pair), the
+//! union-find runs over the surface's triangles, and each polygon is laid out on one lift (the
+//! lift of a tree of triangles is a tree on one sheet), its sides glued to the lift its
+//! neighbour was laid out on: reversed where that is the mirror copy.
+//!
 //! This is the Delaunay tessellation of (S, V) for V the triangulation's vertices; the paper's
 //! canonical tessellation has V = the singular vertices (see [`crate::canonical_tessellation`],
 //! which removes the flat ones first).
@@ -28,16 +35,19 @@ use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::dense_vertex_index;
 use crate::triangulation::trig;
-use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind};
+use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind, VertexId};
 
 /// Default tolerance for co-circularity: `|tan(γ/2) tan(δ/2) - 1| <= 1e-9`.
 pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = 1e-9;
 
-/// A Delaunay tessellation as a portalgon, with its relation to the triangulation it came from.
+/// A Delaunay tessellation with its relation to the triangulation it came from; `P` holds the
+/// polygons and their gluing: a [`Portalgon`] on a closed oriented surface, a
+/// [`crate::PortalgonDoc`] (boundary sides unmatched, orientation-reversing gluings flagged) on
+/// any surface ([`crate::CoveredTriangulation::tessellation`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Tessellation {
+pub struct Tessellation<P = Portalgon> {
     /// The polygons (dense ids) and their side matching; corners labelled with vertex indices.
-    pub portalgon: Portalgon,
+    pub portalgon: P,
     /// The triangulation faces merged into polygon `k` are
     /// `faces[face_start[k] as usize..face_start[k + 1] as usize]`, increasing ids.
     pub faces: Vec<FaceId>,
@@ -52,10 +62,82 @@ pub struct Tessellation {
     pub cycle_edges: usize,
 }
 
-impl Tessellation {
+impl<P> Tessellation<P> {
     /// The triangulation faces merged into polygon `k`.
     pub fn faces_of(&self, k: usize) -> &[FaceId] {
         &self.faces[self.face_start[k] as usize..self.face_start[k + 1] as usize]
+    }
+
+    /// The same tessellation with its polygons in another form.
+    pub(crate) fn with_polygons<Q>(self, make: impl FnOnce(P) -> Q) -> Tessellation<Q> {
+        Tessellation {
+            portalgon: make(self.portalgon),
+            faces: self.faces,
+            face_start: self.face_start,
+            side_halfedge: self.side_halfedge,
+            merged_edges: self.merged_edges,
+            cycle_edges: self.cycle_edges,
+        }
+    }
+}
+
+/// The polygons of a tessellation before they become a portalgon: sides numbered polygon after
+/// polygon, each polygon's corners (counter-clockwise) and vertex labels by side.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Cells {
+    /// The corner at the start of each side.
+    pub corners: Vec<[f64; 2]>,
+    /// The vertex label of each corner.
+    pub labels: Vec<u32>,
+    /// The first side of each polygon, and the side count at the end.
+    pub side_start: Vec<u32>,
+    /// Glued sides `(s, t, reversed)`, `s < t`, in increasing `s`: `reversed` when the two run
+    /// the same way on the surface (an orientation-reversing gluing). Sides in no pair are
+    /// boundary.
+    pub gluings: Vec<(u32, u32, bool)>,
+}
+
+impl Cells {
+    /// The sides of polygon `k`.
+    pub(crate) fn sides(&self, k: usize) -> std::ops::Range<usize> {
+        self.side_start[k] as usize..self.side_start[k + 1] as usize
+    }
+}
+
+/// What the tessellation asks of the surface beyond the triangulation: a closed oriented surface
+/// is the mesh itself ([`Closed`]); a surface with boundary or non-orientable is held on its
+/// closed cover ([`crate::CoveredTriangulation`]).
+pub(crate) trait CellSurface {
+    /// The triangle of the surface a face of the mesh stands for (the first of its lifts);
+    /// `None` for a face that is not on the surface (a virtual cone face).
+    fn surface_face(&self, f: FaceId) -> Option<FaceId>;
+    /// The edge of the surface an edge of the mesh stands for (the first of its lifts).
+    fn surface_edge(&self, e: EdgeId) -> EdgeId;
+    /// The label of a vertex in the output.
+    fn label(&self, v: VertexId) -> u32;
+    /// The other lift of a half-edge, running the other way on the other sheet.
+    fn mirror(&self, h: HalfedgeId) -> Option<HalfedgeId>;
+}
+
+/// A closed oriented surface: the mesh itself, labels the dense vertex indices.
+struct Closed(Vec<u32>);
+
+impl CellSurface for Closed {
+    #[inline(always)]
+    fn surface_face(&self, f: FaceId) -> Option<FaceId> {
+        Some(f)
+    }
+    #[inline(always)]
+    fn surface_edge(&self, e: EdgeId) -> EdgeId {
+        e
+    }
+    #[inline(always)]
+    fn label(&self, v: VertexId) -> u32 {
+        self.0[v.idx()]
+    }
+    #[inline(always)]
+    fn mirror(&self, _: HalfedgeId) -> Option<HalfedgeId> {
+        None
     }
 }
 
@@ -77,6 +159,32 @@ fn cocircular_product(product: f64, tolerance: f64) -> bool {
 /// checked to be Delaunay: run [`crate::flip_to_delaunay`] first; an edge that is not Delaunay
 /// simply stays a side.
 pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Tessellation {
+    let (dense, _) = dense_vertex_index(tri);
+    tessellate(tri, tolerance, &Closed(dense)).with_polygons(|cells| {
+        let mut portalgon = Portalgon::new();
+        let mut side_ids: Vec<SideId> = Vec::with_capacity(cells.corners.len());
+        for k in 0..cells.side_start.len() - 1 {
+            let sides = cells.sides(k);
+            let count = sides.len();
+            let p =
+                portalgon.push_polygon(&cells.corners[sides.clone()], Some(&cells.labels[sides]));
+            side_ids.extend((0..count).map(|i| portalgon.side(p, i)));
+        }
+        for &(s, t, _) in &cells.gluings {
+            portalgon.set_mates(side_ids[s as usize], side_ids[t as usize]);
+        }
+        portalgon
+    })
+}
+
+/// The tessellation of the surface `surface` says `tri` is (see the module doc): co-circular
+/// interior edges of the surface merged along a spanning forest over its triangles, each polygon
+/// laid out on one lift.
+pub(crate) fn tessellate<C: CellSurface>(
+    tri: &IntrinsicTriangulation,
+    tolerance: f64,
+    surface: &C,
+) -> Tessellation<Cells> {
     let mesh = tri.mesh();
     let nf = mesh.face_slots();
     let mut regions = UnionFind::new(nf);
@@ -85,8 +193,14 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
     let mut cycle_edges = 0usize;
     let t2 = tri.halfedge_tan_half_sq();
     for e in mesh.edges() {
+        if surface.surface_edge(e) != e {
+            continue;
+        }
         let h = e.halfedge();
-        let (f, g) = (mesh.face(h), mesh.face(h.twin()));
+        let faces = [h, h.twin()].map(|g| surface.surface_face(mesh.face(g)));
+        let [Some(f), Some(g)] = faces else {
+            continue; // a boundary or apex edge
+        };
         if f == g || !cocircular_product(t2[h.idx()] * t2[h.twin().idx()], tolerance) {
             continue;
         }
@@ -99,15 +213,25 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
         merged[e.idx()] = true;
         merged_edges.push(e);
     }
+    // The other lift of a merged edge is merged too.
+    for e in mesh.edges() {
+        let first = surface.surface_edge(e);
+        if first != e {
+            merged[e.idx()] = merged[first.idx()];
+        }
+    }
 
-    // Lay out each region: position of origin(h) in the placement of face(h), per half-edge.
+    // Lay out each region on one lift: position of origin(h) in the placement of face(h), per
+    // half-edge; `placed` by surface triangle, the lift's faces in `lifts`.
     let mut pos = vec![[f64::NAN; 2]; mesh.halfedge_slots()];
     let mut placed = vec![false; nf];
     let mut faces: Vec<FaceId> = Vec::with_capacity(mesh.face_count());
     let mut face_start: Vec<u32> = vec![0];
+    let mut lifts: Vec<FaceId> = Vec::with_capacity(mesh.face_count());
+    let mut lift_start: Vec<usize> = vec![0];
     let mut queue: Vec<FaceId> = Vec::new();
     for f0 in mesh.faces() {
-        if placed[f0.idx()] {
+        if surface.surface_face(f0) != Some(f0) || placed[f0.idx()] {
             continue;
         }
         placed[f0.idx()] = true;
@@ -124,10 +248,14 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
             for h in mesh.face_halfedges(f) {
                 let t = h.twin();
                 let g = mesh.face(t);
-                if !merged[h.edge().idx()] || placed[g.idx()] {
+                if !merged[h.edge().idx()] {
                     continue;
                 }
-                placed[g.idx()] = true;
+                let first = surface.surface_face(g).expect("a merged edge is interior");
+                if placed[first.idx()] {
+                    continue;
+                }
+                placed[first.idx()] = true;
                 // t runs from dest(h) to origin(h).
                 let p = pos[mesh.next(h).idx()];
                 let q = pos[h.idx()];
@@ -145,29 +273,40 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
                 queue.push(g);
             }
         }
-        queue.sort_unstable();
-        faces.extend_from_slice(&queue);
+        lifts.extend_from_slice(&queue);
+        lift_start.push(lifts.len());
+        let region = faces.len();
+        faces.extend(
+            queue
+                .iter()
+                .map(|&f| surface.surface_face(f).expect("real")),
+        );
+        faces[region..].sort_unstable();
         face_start.push(faces.len() as u32);
     }
 
-    // Boundary walks.
-    let (dense, _) = dense_vertex_index(tri);
-    let mut portalgon = Portalgon::new();
-    let mut side_of = vec![SideId::INVALID; mesh.halfedge_slots()];
+    // Boundary walks on the lifts.
+    let mut side_of = vec![u32::MAX; mesh.halfedge_slots()];
     let mut side_halfedge = Vec::with_capacity(mesh.halfedge_slots());
-    let (mut walk, mut corners, mut labels) = (Vec::new(), Vec::new(), Vec::new());
-    for region in face_start.windows(2) {
-        let region = &faces[region[0] as usize..region[1] as usize];
+    let mut cells = Cells {
+        side_start: vec![0],
+        ..Cells::default()
+    };
+    for region in lift_start.windows(2) {
+        let region = &lifts[region[0]..region[1]];
         let start = region
             .iter()
             .flat_map(|&f| mesh.face_halfedges(f))
             .filter(|h| !merged[h.edge().idx()])
             .min()
             .expect("a region has a side");
-        walk.clear();
-        walk.push(start);
+        let first_side = side_halfedge.len();
         let mut h = start;
         loop {
+            side_of[h.idx()] = side_halfedge.len() as u32;
+            side_halfedge.push(h);
+            cells.corners.push(pos[h.idx()]);
+            cells.labels.push(surface.label(mesh.origin(h)));
             let mut g = mesh.next(h);
             while merged[g.edge().idx()] {
                 g = mesh.next(g.twin());
@@ -175,29 +314,32 @@ pub fn delaunay_tessellation(tri: &IntrinsicTriangulation, tolerance: f64) -> Te
             if g == start {
                 break;
             }
-            walk.push(g);
             h = g;
         }
-        debug_assert_eq!(walk.len(), region.len() + 2);
-        corners.clear();
-        corners.extend(walk.iter().map(|h| pos[h.idx()]));
-        labels.clear();
-        labels.extend(walk.iter().map(|&h| dense[mesh.origin(h).idx()]));
-        let p = portalgon.push_polygon(&corners, Some(&labels));
-        for (i, &h) in walk.iter().enumerate() {
-            let s = portalgon.side(p, i);
-            side_of[h.idx()] = s;
-            side_halfedge.push(h);
-        }
+        debug_assert_eq!(side_halfedge.len() - first_side, region.len() + 2);
+        cells.side_start.push(side_halfedge.len() as u32);
     }
-    for e in mesh.edges() {
-        if !merged[e.idx()] {
-            let h = e.halfedge();
-            portalgon.set_mates(side_of[h.idx()], side_of[h.twin().idx()]);
+    // Each side is glued to the side across its edge on the lift that was laid out: its twin,
+    // or (on the other sheet) its twin's mirror, which runs the same way.
+    for (s, &h) in side_halfedge.iter().enumerate() {
+        let t = h.twin();
+        if surface.surface_face(mesh.face(t)).is_none() {
+            continue; // a boundary side
+        }
+        let (other, reversed) = match side_of[t.idx()] {
+            u32::MAX => {
+                let m = surface.mirror(t).expect("the other lift was laid out");
+                (side_of[m.idx()], true)
+            }
+            other => (other, false),
+        };
+        debug_assert_ne!(other, u32::MAX);
+        if (s as u32) < other {
+            cells.gluings.push((s as u32, other, reversed));
         }
     }
     Tessellation {
-        portalgon,
+        portalgon: cells,
         faces,
         face_start,
         side_halfedge,

@@ -51,6 +51,10 @@ pub enum IsometryDecision {
     NotIsometric(String),
     /// Double precision cannot decide (the reason says which threshold was too close).
     Undecidable(String),
+    /// The method cannot decide: a surface with boundary or without orientation has a flat
+    /// vertex, which is kept, so its Delaunay tessellation is not canonical and a difference
+    /// proves nothing ([`crate::decide_isometry_on_cover`]).
+    Undecided(String),
 }
 
 impl IsometryDecision {
@@ -70,6 +74,7 @@ impl fmt::Display for IsometryDecision {
                 "undecidable in double precision: {reason} (exact arithmetic on exact input would \
                  settle it)"
             ),
+            IsometryDecision::Undecided(reason) => write!(f, "undecided: {reason}"),
         }
     }
 }

@@ -25,6 +25,7 @@
 pub(crate) mod decision;
 pub(crate) mod flat_torus_lattice;
 pub(crate) mod flat_vertices;
+pub(crate) mod twisted;
 
 use crate::error::{IsometryError, PortalgonError};
 use crate::flip::tessellation::delaunay_tessellation;
@@ -196,7 +197,7 @@ pub enum MismatchKind {
 }
 
 /// "1st", "2nd", "3rd", "4th", ..., "11th", "12th", "13th", "21st", ...
-fn ordinal(n: usize) -> String {
+pub(crate) fn ordinal(n: usize) -> String {
     let suffix = match (n % 10, n % 100) {
         (_, 11..=13) => "th",
         (1, _) => "st",
@@ -208,7 +209,7 @@ fn ordinal(n: usize) -> String {
 }
 
 /// "triangle", "quadrilateral", or "k-gon".
-fn polygon_name(sides: usize) -> String {
+pub(crate) fn polygon_name(sides: usize) -> String {
     match sides {
         3 => "triangle".into(),
         4 => "quadrilateral".into(),

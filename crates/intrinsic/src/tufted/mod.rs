@@ -98,6 +98,11 @@ pub struct TuftedLaplacian {
     pub mass: SparseMatrix,
     /// The figures.
     pub report: TuftedReport,
+    /// The tufted cover, flipped to intrinsic Delaunay (a closed oriented surface: each input
+    /// face twice, once per side).
+    pub cover: IntrinsicTriangulation,
+    /// The input vertex of each vertex of [`Self::cover`] (by vertex id).
+    pub cover_input_vertex: Vec<u32>,
 }
 
 /// The tufted-cover Laplacian and mass matrix of any triangle soup (module doc): non-manifold
@@ -170,6 +175,8 @@ pub fn tufted_laplacian(
         laplacian,
         mass: SparseMatrix::diagonal(mass),
         report,
+        cover: tri,
+        cover_input_vertex: cover.input_vertex,
     })
 }
 

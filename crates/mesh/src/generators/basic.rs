@@ -16,11 +16,11 @@ pub fn tetrahedron() -> Surface {
         .expect("tetrahedron is valid")
 }
 
-/// An icosahedron refined `subdivisions` times by 1-to-4 splits, projected to the unit sphere:
-/// `10 * 4^s + 2` vertices, `20 * 4^s` triangles.
-pub fn icosphere(subdivisions: u32) -> Surface {
+/// The twelve vertices of an icosahedron: the cyclic shifts of `(±1, ±t, 0)`, `t` the golden
+/// ratio, in the order [`icosphere`]'s triangles use.
+pub(crate) fn icosahedron_vertices() -> [Point3; 12] {
     let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let mut positions: Vec<Point3> = vec![
+    [
         [-1.0, t, 0.0],
         [1.0, t, 0.0],
         [-1.0, -t, 0.0],
@@ -33,7 +33,13 @@ pub fn icosphere(subdivisions: u32) -> Surface {
         [t, 0.0, 1.0],
         [-t, 0.0, -1.0],
         [-t, 0.0, 1.0],
-    ];
+    ]
+}
+
+/// An icosahedron refined `subdivisions` times by 1-to-4 splits, projected to the unit sphere:
+/// `10 * 4^s + 2` vertices, `20 * 4^s` triangles.
+pub fn icosphere(subdivisions: u32) -> Surface {
+    let mut positions: Vec<Point3> = icosahedron_vertices().to_vec();
     let mut triangles: Vec<[u32; 3]> = vec![
         [0, 11, 5],
         [0, 5, 1],

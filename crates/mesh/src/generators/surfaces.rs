@@ -82,15 +82,7 @@ pub fn mobius_band(m: u32, n: u32) -> CoveredSurface {
 /// The 6-vertex projective plane (the hemi-icosahedron: 10 triangles, every two vertices
 /// adjacent), its vertices placed at six vertices of an icosahedron.
 pub fn projective_plane() -> CoveredSurface {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    let positions = vec![
-        [-1.0, t, 0.0],
-        [1.0, t, 0.0],
-        [-1.0, -t, 0.0],
-        [1.0, -t, 0.0],
-        [0.0, -1.0, t],
-        [0.0, 1.0, t],
-    ];
+    let positions = super::basic::icosahedron_vertices()[..6].to_vec();
     surface(positions, &PROJECTIVE_PLANE_6)
 }
 

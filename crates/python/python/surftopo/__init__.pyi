@@ -363,25 +363,45 @@ def intrinsic_delaunay(
     exact: bool = False,
     mollify: float | None = None,
     max_flips: int | None = None,
+    tufted: bool | None = None,
+    mollify_factor: float | None = None,
 ) -> IntrinsicTriangulation:
-    """The intrinsic Delaunay triangulation of a closed polyhedral surface.
+    """The intrinsic Delaunay triangulation of a polyhedral surface.
 
-    The surface is ``(V, F)``, or a triangular :class:`Portalgon` (``faces`` omitted).
-    ``method``, as ``surftopo delaunay --method``: ``"flip"`` (Bobenko–Springborn edge flipping
-    with robust half-angle formulas; loops and multi-edges may appear), ``"voronoi"`` (Dubois'
-    multi-source Voronoi wave and its dual: the tessellation cut into triangles), ``"dubois"``
-    (Dubois' Theorem 1: the reduction, then the wave; for needles), or ``"auto"`` (flipping unless
-    a triangle's aspect ratio exceeds 1e5, then ``"dubois"`` on a flat surface). ``exact=True``
-    computes in exact rational arithmetic (``"voronoi"``, ``"dubois"``, ``"auto"``) on a
-    :class:`Portalgon` given by exact corners; anything else raises :class:`InvalidInputError`.
-    Where double precision cannot finish the wave, :class:`NumericalBreakdownError`.
-    ``mollify`` and ``max_flips`` (flipping only) as in :func:`laplacian`.
+    The surface is ``(V, F)``, or a triangular :class:`Portalgon` (``faces`` omitted), or an
+    :class:`IntrinsicTriangulation`. ``method``, as ``surftopo delaunay --method``: ``"flip"``
+    (Bobenko–Springborn edge flipping with robust half-angle formulas; loops and multi-edges may
+    appear), ``"voronoi"`` (Dubois' multi-source Voronoi wave and its dual: the tessellation cut
+    into triangles), ``"dubois"`` (Dubois' Theorem 1: the reduction, then the wave; for
+    needles), or ``"auto"`` (flipping unless a triangle's aspect ratio exceeds 1e5, then
+    ``"dubois"`` on a flat surface). ``exact=True`` computes in exact rational arithmetic
+    (``"voronoi"``, ``"dubois"``, ``"auto"``) on a :class:`Portalgon` given by exact corners;
+    anything else raises :class:`InvalidInputError`. Where double precision cannot finish the
+    wave, :class:`NumericalBreakdownError`. ``mollify`` and ``max_flips`` (flipping only) as in
+    :func:`laplacian`.
+
+    Takes what :func:`laplacian` takes. A mesh with boundary loops, non-orientable pieces or
+    several pieces is flipped on its closed cover (boundary edges never flipped, a
+    non-orientable piece on its double cover, each piece on its own); ``"auto"`` takes
+    ``"flip"`` there and ``"voronoi"`` and ``"dubois"`` raise :class:`SurftopoError` naming flip
+    (Dubois treats closed surfaces). The triangulation's faces, edges and lengths are the
+    surface's (one face per input triangle's place, boundary edges in one face); its Laplacian
+    has the natural boundary condition; :meth:`IntrinsicTriangulation.tessellation` keeps the
+    boundary edges as unmatched sides and flags the gluings that reverse orientation. A soup
+    that is not a manifold goes through the tufted cover as in :func:`laplacian` (``tufted``,
+    ``mollify_factor``; a :class:`UserWarning` when ``tufted=None`` takes it): the result is the
+    cover flipped (``faces``: every input face twice, as input vertex indices), its
+    ``laplacian()`` and ``mass()`` folded with 1/2; ``tessellation()``, ``to_json()`` and
+    ``to_portalgon()`` raise :class:`InvalidInputError` (as ``delaunay --tufted`` refuses ``-o``
+    and ``--tessellation``).
 
     >>> t = surftopo.intrinsic_delaunay(surftopo.flat_torus(10.0))
     >>> t.flips  # Section 9 of the paper: T_x needs x - 1 flips
     9
     >>> t.tessellation()
     Portalgon(1 polygons, 4 sides)
+    >>> surftopo.intrinsic_delaunay(*surftopo.disk(3)).tessellation()  # nine unit squares
+    Portalgon(9 polygons, 36 sides)
     """
 
 def isometric(a: _Surface, b: _Surface, allow_reflection: bool = True) -> bool:
@@ -417,7 +437,11 @@ class IntrinsicTriangulation:
         """The Delaunay tessellation: co-circular triangles merged into polygons (unique).
 
         Two triangles are co-circular when ``|tan(γ/2) tan(δ/2) - 1|`` is at most
-        ``cocircular_tolerance`` (``None``: the library's default, 1e-9).
+        ``cocircular_tolerance`` (``None``: the library's default, 1e-9). Never merged across a
+        boundary edge: boundary edges are unmatched sides. On a non-orientable surface each
+        polygon is laid out on one sheet of the double cover and a gluing whose two sides run
+        the same way is flagged ``true`` (portalgon JSON version 2; :meth:`Portalgon.from_json`,
+        which reads oriented portalgons, refuses it, ``json.loads`` reads it).
         """
     def to_json(self) -> str:
         """Portalgon JSON, triangles by side lengths: what ``surftopo delaunay -o`` writes."""
