@@ -7,11 +7,14 @@
 //! SIGHUP remove the temporary file of a write in progress before the process exits.
 
 /// `eprintln!` that never panics: when stderr is closed or full (`2>/dev/full`) the text is
-/// lost and the command goes on (its exit code still tells the outcome).
+/// lost and the command goes on (its exit code still tells the outcome). Nothing is written
+/// while notes are muted ([`output::mute_notes`]: the demo, whose lines say it).
 macro_rules! stderr_println {
     ($($arg:tt)*) => {{
         use std::io::Write as _;
-        let _ = writeln!(std::io::stderr(), $($arg)*);
+        if !crate::output::notes_muted() {
+            let _ = writeln!(std::io::stderr(), $($arg)*);
+        }
     }};
 }
 

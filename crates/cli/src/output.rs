@@ -520,6 +520,31 @@ pub fn format_seconds(seconds: f64) -> String {
     format!("{value:.decimals$} {unit}")
 }
 
+/// Whether `stderr_println!` writes nothing ([`mute_notes`]).
+static NOTES_MUTED: AtomicBool = AtomicBool::new(false);
+
+/// Whether notes and warnings on stderr are muted.
+pub fn notes_muted() -> bool {
+    NOTES_MUTED.load(Ordering::Relaxed)
+}
+
+/// Mutes `stderr_println!` until the guard is dropped: the demo calls the commands' code, whose
+/// notes (polygons cut, vertices in no face) would break its lines; each line says what they
+/// would. Error messages are printed after the command returns, the guard dropped.
+pub fn mute_notes() -> MutedNotes {
+    NOTES_MUTED.store(true, Ordering::Relaxed);
+    MutedNotes
+}
+
+/// The guard of [`mute_notes`].
+pub struct MutedNotes;
+
+impl Drop for MutedNotes {
+    fn drop(&mut self) {
+        NOTES_MUTED.store(false, Ordering::Relaxed);
+    }
+}
+
 /// Writes results to stdout, or to stderr when stdout carries an output (`-`, see
 /// [`check_outputs`]). A failure (a closed pipe, a full disk) names stdout, exit code 2; on
 /// stderr the text is dropped when stderr cannot take it.

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{json_of, surftopo, write};
+use common::{json_of, read_mtx, surftopo, write};
 use serde_json::Value;
 
 const TETRA: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
@@ -362,9 +362,17 @@ fn demo_shows_every_capability() {
         .assert()
         .success();
     let stdout = String::from_utf8_lossy(&assert.get_output().stdout).to_string();
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).to_string();
     assert!(stdout.contains("surftopo demo"), "{stdout}");
+    // The commands' notes would break the lines: every line says what they would.
+    assert!(stderr.is_empty(), "stderr: {stderr}");
     for step in [
         "generate genus",
+        "klein-bottle + irreducible",
+        "torus --cut-holes 2 + irreducible",
+        "delaunay (torus with 2 holes)",
+        "quad (torus with 2 holes)",
+        "delaunay --method dubois --exact (needles)",
         "generate flat-torus",
         "info ",
         "info (a broken mesh)",
@@ -413,9 +421,16 @@ fn demo_shows_every_capability() {
         "T_x, T_{x+1/3}: not isometric",
         "non finite coordinates",
         "zero area faces",
+        "7 polygons cut into 16 triangles; --laplacian: 11 rows, row 0 empty",
+        "Klein bottle, 272 vertices",
+        "genus 1 with 2 boundary loops",
+        "natural boundary condition",
+        "a pillowcase sheared by s = 1000, 4 cone points",
+        "21 irreducible triangulations",
     ] {
         assert!(stdout.contains(words), "'{words}' missing in:\n{stdout}");
     }
+    demo_outputs_check_out(&out);
     let v = info_json(&out.join("input.obj"), &["--strict"]);
     assert_eq!(v["genus"], 2);
     // The verdicts, again by the command itself.
@@ -456,6 +471,116 @@ fn demo_shows_every_capability() {
         assert_eq!(v["genus"], 2, "{quads}");
         assert_eq!(v["simplicial"], false, "{quads}: not quads");
     }
+}
+
+/// The outputs of the demo's steps beyond closed orientable surfaces, checked by `info` and by
+/// computations written here: the irreducible Klein bottle and open torus, the open torus's
+/// Laplacian and mass (symmetric, rows summing to zero, the mass its area), its quads, the
+/// needle's Delaunay tessellation (two unit squares), the census file (21 triangulations).
+fn demo_outputs_check_out(out: &std::path::Path) {
+    let v = info_json(&out.join("klein-bottle-irreducible.obj"), &["--strict"]);
+    assert_eq!(v["surfaces"][0]["name"], "Klein bottle");
+    let v = info_json(&out.join("open-torus-irreducible.obj"), &["--strict"]);
+    assert_eq!(v["surfaces"][0]["name"], "genus 1 with 2 boundary loops");
+    let open = info_json(&out.join("open-torus.obj"), &["--strict"]);
+    let n = open["vertices"].as_u64().unwrap() as usize;
+    let laplacian = read_mtx(&out.join("open-laplacian.mtx"));
+    assert_eq!(laplacian.len(), n);
+    for (i, row) in laplacian.iter().enumerate() {
+        let sum: f64 = row.iter().sum();
+        assert!(
+            sum.abs() <= 1e-9 * row[i].abs().max(1.0),
+            "row {i} sums to {sum}"
+        );
+    }
+    let mass = read_mtx(&out.join("open-mass.mtx"));
+    let soup = surftopo_io::read_path(&out.join("open-torus.obj")).unwrap();
+    let area: f64 = soup
+        .faces()
+        .map(|f| {
+            let [a, b, c] = [f[0], f[1], f[2]].map(|v| soup.positions[v as usize]);
+            let (u, w) = (sub(b, a), sub(c, a));
+            let cross = [
+                u[1] * w[2] - u[2] * w[1],
+                u[2] * w[0] - u[0] * w[2],
+                u[0] * w[1] - u[1] * w[0],
+            ];
+            0.5 * cross.iter().map(|x| x * x).sum::<f64>().sqrt()
+        })
+        .sum();
+    let total: f64 = mass.iter().flatten().sum();
+    assert!((total - area).abs() <= 1e-9 * area, "{total} vs {area}");
+    let quads = info_json(&out.join("open-quads.obj"), &["--strict"]);
+    assert_eq!(quads["simplicial"], false);
+    assert_eq!(
+        quads["surfaces"][0]["name"],
+        "genus 1 with 2 boundary loops"
+    );
+    assert_eq!(quads["vertices"], open["vertices"]);
+    // The needle's Delaunay tessellation: two unit squares (corners exact in the file, checked
+    // here in double precision).
+    let text = std::fs::read_to_string(out.join("needle-tessellation.json")).unwrap();
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    let polygons = doc["polygons"].as_array().unwrap();
+    assert_eq!(polygons.len(), 2, "{text}");
+    for polygon in polygons {
+        let corners = corners(polygon);
+        assert_eq!(corners.len(), 4, "{text}");
+        for k in 0..4 {
+            let [p, q, r] = [0, 1, 2].map(|j| corners[(k + j) % 4]);
+            let (a, b) = ([q[0] - p[0], q[1] - p[1]], [r[0] - q[0], r[1] - q[1]]);
+            assert!(
+                ((a[0] * a[0] + a[1] * a[1]).sqrt() - 1.0).abs() < 1e-9,
+                "{text}"
+            );
+            assert!(
+                (a[0] * b[0] + a[1] * b[1]).abs() < 1e-9,
+                "not a right angle: {text}"
+            );
+        }
+    }
+    // The census: 21 triangulations, each a torus (χ = 0), in Lutz's format.
+    let census = std::fs::read_to_string(out.join("census-torus.txt")).unwrap();
+    let lines: Vec<&str> = census.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 21);
+    for line in lines {
+        let triangles: Vec<[u32; 3]> = serde_json::from_str(line).unwrap();
+        let mut edges = std::collections::BTreeSet::new();
+        let mut vertices = std::collections::BTreeSet::new();
+        for t in &triangles {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                edges.insert((a.min(b), a.max(b)));
+                vertices.insert(a);
+            }
+        }
+        let chi = vertices.len() as i64 - edges.len() as i64 + triangles.len() as i64;
+        assert_eq!(chi, 0, "{line}");
+        assert!(triangles.len() == 2 * edges.len() / 3, "{line}: not closed");
+    }
+}
+
+/// `a - b`.
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// The corners of a portalgon JSON polygon in double precision (a coordinate is a number, or
+/// a string `p/q` or `p`).
+fn corners(polygon: &Value) -> Vec<[f64; 2]> {
+    let number = |v: &Value| -> f64 {
+        let text = v.as_str().map_or_else(|| v.to_string(), str::to_string);
+        match text.split_once('/') {
+            Some((p, q)) => p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap(),
+            None => text.parse().unwrap(),
+        }
+    };
+    polygon["corners"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| [number(&c[0]), number(&c[1])])
+        .collect()
 }
 
 #[test]
@@ -1269,21 +1394,9 @@ fn delaunay_writes_the_reduced_triangulation() {
         v["triangles_after_reduction"].as_u64().unwrap()
     );
     // Exact corners: every polygon a triangle, the areas summing to the input's, 2.
-    let num = |x: &Value| -> f64 {
-        let t = x.as_str().map_or_else(|| x.to_string(), str::to_string);
-        match t.split_once('/') {
-            Some((p, q)) => p.parse::<f64>().unwrap() / q.parse::<f64>().unwrap(),
-            None => t.parse().unwrap(),
-        }
-    };
     let mut area = 0.0;
     for p in polygons {
-        let c: Vec<[f64; 2]> = p["corners"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|xy| [num(&xy[0]), num(&xy[1])])
-            .collect();
+        let c = corners(p);
         assert_eq!(c.len(), 3, "{p}");
         area += ((c[1][0] - c[0][0]) * (c[2][1] - c[0][1])
             - (c[1][1] - c[0][1]) * (c[2][0] - c[0][0]))

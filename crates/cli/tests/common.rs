@@ -47,6 +47,30 @@ pub fn generated_genus_surface(dir: &Path, name: &str, genus: u32) -> PathBuf {
     path
 }
 
+/// A Matrix Market coordinate file (symmetric or general) as a dense matrix, parsed here.
+pub fn read_mtx(path: &std::path::Path) -> Vec<Vec<f64>> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let symmetric = text.lines().next().unwrap().contains("symmetric");
+    let mut rows = text.lines().filter(|l| !l.starts_with('%'));
+    let size: Vec<usize> = rows
+        .next()
+        .unwrap()
+        .split_whitespace()
+        .map(|w| w.parse().unwrap())
+        .collect();
+    let mut m = vec![vec![0.0; size[1]]; size[0]];
+    for line in rows {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        let (i, j): (usize, usize) = (w[0].parse().unwrap(), w[1].parse().unwrap());
+        let v: f64 = w[2].parse().unwrap();
+        m[i - 1][j - 1] = v;
+        if symmetric {
+            m[j - 1][i - 1] = v;
+        }
+    }
+    m
+}
+
 /// `surftopo generate ARGS -o DIR/NAME`, which must succeed; returns the path.
 pub fn generate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
     let path = dir.join(name);

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{read_mtx, surftopo, write};
 use serde_json::Value;
 use surftopo_testkit::obj_text::statements as lines;
 
@@ -34,30 +34,6 @@ fn tetra_with_loose_vertices() -> String {
         text += &format!("f {} {} {}\n", f[0], f[1], f[2]);
     }
     text
-}
-
-/// A Matrix Market coordinate file (symmetric or general) as a dense matrix, parsed here.
-fn read_mtx(path: &std::path::Path) -> Vec<Vec<f64>> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let symmetric = text.lines().next().unwrap().contains("symmetric");
-    let mut rows = text.lines().filter(|l| !l.starts_with('%'));
-    let size: Vec<usize> = rows
-        .next()
-        .unwrap()
-        .split_whitespace()
-        .map(|w| w.parse().unwrap())
-        .collect();
-    let mut m = vec![vec![0.0; size[1]]; size[0]];
-    for line in rows {
-        let w: Vec<&str> = line.split_whitespace().collect();
-        let (i, j): (usize, usize) = (w[0].parse().unwrap(), w[1].parse().unwrap());
-        let v: f64 = w[2].parse().unwrap();
-        m[i - 1][j - 1] = v;
-        if symmetric {
-            m[j - 1][i - 1] = v;
-        }
-    }
-    m
 }
 
 #[test]

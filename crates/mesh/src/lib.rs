@@ -12,7 +12,8 @@
 //!   positions.
 //! - [`generators`]: deterministic test and benchmark surfaces.
 //! - [`triangulate_polygons`]: polygon faces cut into triangles by ear clipping in their plane
-//!   (exact predicates; no degenerate triangle for a polygon simple in its plane).
+//!   (exact predicates; no degenerate triangle for a polygon simple in its plane);
+//!   [`inspect_polygons`]: a polygon soup inspected through those triangles.
 //!
 
 mod build;
@@ -47,8 +48,8 @@ pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;
 pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
 pub use polygons::{
-    PolygonTriangulation, triangulate_polygon, triangulate_polygons,
-    triangulate_polygons_as_surface,
+    PolygonInspection, PolygonTriangulation, inspect_polygons, triangulate_polygon,
+    triangulate_polygons, triangulate_polygons_as_surface,
 };
 pub use printable::printable;
 pub use surface::Surface;

@@ -177,6 +177,67 @@ pub fn triangulate_polygons_as_surface<'a>(
     (fans, problem)
 }
 
+/// A polygon soup inspected through the triangles the commands cut it into
+/// ([`triangulate_polygons_as_surface`]): they have the same Euler characteristic, closedness,
+/// orientability and vertex fans as the polygons, so the inspection of the triangles is that of
+/// the polygons once the counts are corrected for the diagonals.
+#[derive(Clone, Debug)]
+pub struct PolygonInspection {
+    /// The inspection, counted on the polygons: `faces` the polygons, `edges` without the
+    /// diagonals, each piece's `faces` and `edges` likewise; problems name the polygon (the
+    /// soup's face), geometric ones first ([`crate::geometry::problems`] on the polygons). A
+    /// diagonal that coincides with a side of another face shows as a non-manifold edge.
+    pub inspection: crate::Inspection,
+    /// The triangles the polygons were cut into, with the polygon of each.
+    pub cut: PolygonTriangulation,
+    /// When ear clipping's triangles were no surface and the fans of corner 0 were taken, the
+    /// first problem of ear clipping's triangles (naming the polygon).
+    pub fans_because: Option<crate::BuildError>,
+}
+
+impl PolygonInspection {
+    /// Whether every face is a triangle.
+    pub fn all_triangles(&self) -> bool {
+        self.cut.is_identity()
+    }
+}
+
+/// Inspects a polygon soup (any mix of triangles and polygons) as [`PolygonInspection`] says.
+pub fn inspect_polygons<'a>(
+    positions: &[Point3],
+    faces: impl IntoIterator<Item = &'a [u32]>,
+) -> PolygonInspection {
+    let faces: Vec<&[u32]> = faces.into_iter().collect();
+    let (cut, fans_because) = triangulate_polygons_as_surface(positions, faces.iter().copied());
+    let mut inspection = crate::inspect(positions.len(), &cut.triangles);
+    if !cut.is_identity() {
+        let diagonals = cut.triangles.len().saturating_sub(faces.len());
+        inspection.faces = faces.len();
+        inspection.edges -= diagonals.min(inspection.edges);
+        inspection.problems = std::mem::take(&mut inspection.problems)
+            .into_iter()
+            .map(|p| p.on_faces(&cut.face_of))
+            .collect();
+        if let Some(component) = crate::face_components(positions.len(), &cut.triangles) {
+            // Per piece: one face per polygon, one edge fewer per diagonal (a polygon of k
+            // sides has k − 3 diagonals, cut into k − 2 triangles).
+            for (t, &c) in component.iter().enumerate() {
+                let piece = &mut inspection.surfaces[c as usize];
+                if t > 0 && cut.face_of[t] == cut.face_of[t - 1] {
+                    piece.faces -= 1;
+                    piece.edges -= 1;
+                }
+            }
+        }
+    }
+    inspection.add_problems_first(crate::geometry::problems(positions, faces));
+    PolygonInspection {
+        inspection,
+        cut,
+        fans_because,
+    }
+}
+
 /// The triangles of one polygon (corners in the polygon's order), by the module's rule.
 pub fn triangulate_polygon(positions: &[Point3], face: &[u32]) -> Vec<[u32; 3]> {
     triangulate_polygons(positions, [face]).triangles

@@ -213,34 +213,6 @@ pub fn faces<const K: usize>(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyRes
     }?)
 }
 
-/// Takes `x` as polygons `(m, k)`, `k >= 3`, into `vertex_count` vertices: the row-major
-/// indices and `k`.
-pub fn polygons(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<(Vec<u32>, usize)> {
-    let (array, shape) = extract_indices(x)?;
-    if shape[1] < 3 {
-        return Err(wrong_shape("(m, k) with k >= 3", shape));
-    }
-    let k = shape[1];
-    let check = |(i, value): (usize, i64)| checked(value, i / k, vertex_count);
-    let indices: Result<Vec<u32>, Failure> = match &array {
-        IndexArray::I32(a) => a
-            .as_array()
-            .iter()
-            .map(|&v| i64::from(v))
-            .enumerate()
-            .map(check)
-            .collect(),
-        IndexArray::I64(a) => a
-            .as_array()
-            .iter()
-            .copied()
-            .enumerate()
-            .map(check)
-            .collect(),
-    };
-    Ok((indices?, k))
-}
-
 /// A `(rows, k)` array owning `flat` (row-major).
 pub fn matrix<'py, T: numpy::Element>(
     py: Python<'py>,
@@ -273,4 +245,203 @@ pub fn index_array<'py, const K: usize>(
 /// A vector as a 1-D array.
 pub fn vector<'py, T: numpy::Element>(py: Python<'py>, values: Vec<T>) -> Bound<'py, PyArray1<T>> {
     Array1::from_vec(values).into_pyarray(py)
+}
+
+/// Faces of any number of sides (at least three each), as flat indices and offsets.
+#[derive(Clone, Debug, Default)]
+pub struct Polygons {
+    /// The faces' vertex indices, one after the other.
+    pub indices: Vec<u32>,
+    /// Where each face starts in `indices`, then `indices.len()`.
+    pub offsets: Vec<usize>,
+}
+
+impl Polygons {
+    /// The faces in order.
+    pub fn faces(&self) -> impl Iterator<Item = &[u32]> {
+        self.offsets.windows(2).map(|w| &self.indices[w[0]..w[1]])
+    }
+
+    /// Appends a face.
+    fn push(&mut self, face: &[u32]) {
+        if self.offsets.is_empty() {
+            self.offsets.push(0);
+        }
+        self.indices.extend_from_slice(face);
+        self.offsets.push(self.indices.len());
+    }
+}
+
+/// The faces a function that needs triangles takes: triangles, or polygons that it cuts.
+pub enum FaceArg {
+    /// An `(m, 3)` array: triangles as given.
+    Triangles(Vec<[u32; 3]>),
+    /// Anything else: faces of three sides or more.
+    Polygons(Polygons),
+}
+
+/// The triangles of a [`FaceArg`], with the face each comes from when polygons were cut.
+pub struct Triangulated {
+    /// The triangles: as given, or the polygons cut by
+    /// `surftopo_mesh::triangulate_polygons_as_surface` (the CLI's rule).
+    pub triangles: Vec<[u32; 3]>,
+    /// The input face of each triangle, when polygons were cut.
+    pub polygon_of: Option<Vec<u32>>,
+    /// The input's faces, when they were not all triangles given as an `(m, 3)` array.
+    pub polygons: Option<Polygons>,
+}
+
+impl FaceArg {
+    /// The faces as slices.
+    pub fn faces(&self) -> Box<dyn Iterator<Item = &[u32]> + '_> {
+        match self {
+            FaceArg::Triangles(t) => Box::new(t.iter().map(|t| &t[..])),
+            FaceArg::Polygons(p) => Box::new(p.faces()),
+        }
+    }
+
+    /// Renumbers every vertex index through `map`.
+    pub fn renumber(&mut self, map: &[u32]) {
+        let indices = match self {
+            FaceArg::Triangles(t) => t.as_flattened_mut(),
+            FaceArg::Polygons(p) => &mut p.indices[..],
+        };
+        indices.iter_mut().for_each(|i| *i = map[*i as usize]);
+    }
+
+    /// The triangles (polygons cut by the CLI's rule, with `positions`; call without the GIL).
+    pub fn triangulated(self, positions: &[[f64; 3]]) -> Triangulated {
+        match self {
+            FaceArg::Triangles(triangles) => Triangulated {
+                triangles,
+                polygon_of: None,
+                polygons: None,
+            },
+            FaceArg::Polygons(polygons) => {
+                let (cut, _) =
+                    surftopo_mesh::triangulate_polygons_as_surface(positions, polygons.faces());
+                let identity = cut.is_identity();
+                Triangulated {
+                    triangles: cut.triangles,
+                    polygon_of: (!identity).then_some(cut.face_of),
+                    polygons: Some(polygons),
+                }
+            }
+        }
+    }
+}
+
+impl Triangulated {
+    /// A failure naming a triangle, naming the input face (the polygon) instead.
+    pub fn on_faces(&self, failure: Failure) -> Failure {
+        match (failure, &self.polygon_of) {
+            (Failure::Build(e), Some(map)) => Failure::Build(e.on_faces(map)),
+            (failure, _) => failure,
+        }
+    }
+}
+
+/// Takes `x` as faces into `vertex_count` vertices, in any form `read_mesh` returns them: an
+/// `(m, k)` integer array (`k >= 3`), the same padded with trailing -1 (`polygons="padded"`:
+/// each row's face ends before its first -1), or a list of 1-D sequences (`polygons="list"`).
+/// An `(m, 3)` array is read as triangles without a copy of its rows' structure.
+pub fn any_faces(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<FaceArg> {
+    let is_sequence =
+        x.is_instance_of::<pyo3::types::PyList>() || x.is_instance_of::<pyo3::types::PyTuple>();
+    let ragged = if is_sequence {
+        // A list of rows of one length is an array; rows of several lengths are polygons.
+        match asarray(x, None) {
+            Ok(a) => {
+                let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+                let dimensions: usize = a.getattr("ndim")?.extract()?;
+                !(dimensions == 2 && "iu".contains(kind.as_str())) && dimensions != 0
+            }
+            Err(_) => true,
+        }
+    } else {
+        // A 1-D object array: one face per element.
+        x.getattr("dtype").is_ok_and(|d| {
+            d.getattr("kind")
+                .and_then(|k| k.extract::<String>())
+                .is_ok_and(|k| k == "O")
+        }) && x.getattr("ndim").and_then(|n| n.extract::<usize>()).ok() == Some(1)
+    };
+    if ragged {
+        return face_list(x, vertex_count).map(FaceArg::Polygons);
+    }
+    let (array, shape) = extract_indices(x)?;
+    if shape[1] == 3 {
+        return Ok(FaceArg::Triangles(match &array {
+            IndexArray::I32(a) => read_rows::<i32, 3>(a, vertex_count),
+            IndexArray::I64(a) => read_rows::<i64, 3>(a, vertex_count),
+        }?));
+    }
+    if shape[1] < 3 {
+        return Err(wrong_shape("(m, k) with k >= 3", shape));
+    }
+    let rows: Vec<Vec<i64>> = match &array {
+        IndexArray::I32(a) => a
+            .as_array()
+            .rows()
+            .into_iter()
+            .map(|r| r.iter().map(|&v| i64::from(v)).collect())
+            .collect(),
+        IndexArray::I64(a) => a
+            .as_array()
+            .rows()
+            .into_iter()
+            .map(|r| r.to_vec())
+            .collect(),
+    };
+    let mut polygons = Polygons::default();
+    for (face, row) in rows.iter().enumerate() {
+        // Trailing -1 entries are padding.
+        let sides = row
+            .iter()
+            .rposition(|&v| v != -1)
+            .map_or(0, |last| last + 1);
+        polygons.push(&polygon(face, &row[..sides], vertex_count)?);
+    }
+    Ok(FaceArg::Polygons(polygons))
+}
+
+/// A list of faces, each a 1-D sequence of integers.
+fn face_list(x: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Polygons> {
+    let mut polygons = Polygons::default();
+    for (face, item) in x.try_iter()?.enumerate() {
+        let a = asarray(&item?, None)?;
+        let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+        let dimensions: usize = a.getattr("ndim")?.extract()?;
+        if !"iu".contains(kind.as_str()) || dimensions != 1 {
+            return Err(PyTypeError::new_err(format!(
+                "faces: face {face}: expected a sequence of vertex indices (integers), got an \
+                 array of dtype {} and shape {}",
+                a.getattr("dtype")?.str()?,
+                a.getattr("shape")?.str()?
+            )));
+        }
+        let values: Vec<i64> = a
+            .call_method1("astype", ("int64",))?
+            .call_method0("tolist")?
+            .extract()?;
+        polygons.push(&polygon(face, &values, vertex_count)?);
+    }
+    if polygons.offsets.is_empty() {
+        polygons.offsets.push(0);
+    }
+    Ok(polygons)
+}
+
+/// One face's indices, checked: at least three, each in `0..vertex_count`.
+fn polygon(face: usize, values: &[i64], vertex_count: usize) -> Result<Vec<u32>, Failure> {
+    if values.len() < 3 {
+        return Err(invalid(format!(
+            "faces: face {face} has {} vertices; a face needs at least 3",
+            values.len()
+        )));
+    }
+    values
+        .iter()
+        .map(|&v| checked(v, face, vertex_count))
+        .collect()
 }

@@ -601,10 +601,13 @@ fn located_surface(
 ) -> PyResult<Located> {
     if let Some(faces) = faces {
         let vertices = VertexArray::extract(surface)?;
-        let triangles = arrays::faces::<3>(faces, vertices.len())?;
+        let faces = arrays::any_faces(faces, vertices.len())?;
         let positions = vertices.positions();
         return py
-            .detach(|| Located::from_arrays(&positions, &triangles))
+            .detach(|| {
+                let cut = faces.triangulated(&positions);
+                Located::from_arrays(&positions, &cut.triangles).map_err(|f| cut.on_faces(f))
+            })
             .map_err(|f| f.into_pyerr(py));
     }
     if let Ok(p) = surface.cast::<Portalgon>() {
@@ -670,13 +673,15 @@ fn delaunay_surface(
 ) -> PyResult<Start> {
     if let Some(faces) = faces {
         let vertices = VertexArray::extract(surface)?;
-        let triangles = arrays::faces::<3>(faces, vertices.len())?;
+        let faces = arrays::any_faces(faces, vertices.len())?;
         let positions = vertices.positions().into_owned();
         let tufted = *tufted;
         return interruptible(py, move |_| {
+            let cut = faces.triangulated(&positions);
+            let triangles = &cut.triangles;
             let run_tufted = |automatic| {
                 let start = Instant::now();
-                let t = crate::tufted::tufted(&positions, &triangles, &tufted.options)?;
+                let t = crate::tufted::tufted(&positions, triangles, &tufted.options)?;
                 let report = FlipReport {
                     flips: t.report.flips,
                     mollify_delta: Some(t.report.mollify_delta),
@@ -700,9 +705,10 @@ fn delaunay_surface(
             if tufted.asked == Some(true) {
                 return run_tufted(false);
             }
-            match Located::from_arrays(&positions, &triangles) {
-                Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, &triangles)
-                    .map(|c| Start::Run(Held::Covered(c))),
+            match Located::from_arrays(&positions, triangles) {
+                Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, triangles)
+                    .map(|c| Start::Run(Held::Covered(c)))
+                    .map_err(|f| cut.on_faces(f)),
                 Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
                     match method {
                         DelaunayMethod::Auto | DelaunayMethod::Flip => run_tufted(true),
@@ -713,7 +719,9 @@ fn delaunay_surface(
                         ))),
                     }
                 }
-                located => located.map(|l| Start::Run(Held::Closed(l))),
+                located => located
+                    .map(|l| Start::Run(Held::Closed(l)))
+                    .map_err(|f| cut.on_faces(f)),
             }
         })?
         .map_err(|f| f.into_pyerr(py));
@@ -860,12 +868,14 @@ fn laplacian_and_seconds<'py>(
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, f64)> {
     let format = sparse_format(format).map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let faces = arrays::any_faces(faces, vertices.len())?;
     let positions = vertices.positions().into_owned();
     let request = *request;
     let computed = interruptible(py, move |_| {
         let start = Instant::now();
-        let matrices = library_matrices(&positions, &triangles, &request, tufted)?;
+        let cut = faces.triangulated(&positions);
+        let matrices = library_matrices(&positions, &cut.triangles, &request, tufted)
+            .map_err(|f| cut.on_faces(f))?;
         let seconds = start.elapsed().as_secs_f64();
         if !matrices.tufted {
             check_matrices(&matrices.laplacian, &matrices.mass)?;

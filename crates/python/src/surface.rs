@@ -15,10 +15,7 @@ use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox};
 use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, SurfaceKind, geometry};
 use surftopo_quad::quality::QualityObjective;
-use surftopo_quad::{
-    QuadAlgorithm, SurfaceOptions, positions_with_added, quadrangulate_surface_by_quality,
-    quadrangulate_surface_with_quality,
-};
+use surftopo_quad::{OwnQuads, QuadAlgorithm, positions_with_added, quadrangulate_polygons};
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
 pub fn input_index(report: &BuildReport) -> Vec<u32> {
@@ -171,7 +168,8 @@ fn attribute_dict<'py>(py: Python<'py>, soup: &PolygonSoup) -> PyResult<Bound<'p
 }
 
 /// Writes `(V, F)` to a mesh file (format from the extension: `.obj`, `.off`, `.ply`, optionally
-/// `.gz`), atomically: F may hold triangles `(m, 3)`, quads `(m, 4)` or any polygons `(m, k)`.
+/// `.gz`), atomically: F may hold triangles `(m, 3)`, quads `(m, 4)` or any polygons, in any
+/// form `read_mesh` returns them (`(m, k)`, padded with -1, or a list).
 #[pyfunction]
 pub fn write_mesh(
     py: Python<'_>,
@@ -180,10 +178,10 @@ pub fn write_mesh(
     faces: &Bound<'_, PyAny>,
 ) -> PyResult<()> {
     let vertices = VertexArray::extract(vertices)?;
-    let (indices, sides) = arrays::polygons(faces, vertices.len())?;
+    let faces = arrays::any_faces(faces, vertices.len())?;
     let mut soup = PolygonSoup::new();
     soup.positions = vertices.positions().into_owned();
-    for face in indices.chunks_exact(sides) {
+    for face in faces.faces() {
         soup.push_face(face);
     }
     py.detach(|| surftopo_io::write_path(&path, &soup, &WriteOptions::default()))
@@ -200,30 +198,35 @@ pub fn info<'py>(
     weld: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let vertices = VertexArray::extract(vertices)?;
-    let mut triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let mut faces = arrays::any_faces(faces, vertices.len())?;
     let mut positions = vertices.positions();
     let mut welded = 0;
     if weld {
         let (merged, map) = geometry::weld_exact(&positions);
         welded = positions.len() - merged.len();
-        triangles
-            .iter_mut()
-            .flatten()
-            .for_each(|i| *i = map[*i as usize]);
+        faces.renumber(&map);
         positions = merged.into();
     }
     let (inspection, near, weld_hint) = py.detach(|| {
-        let mut inspection = surftopo_mesh::inspect(positions.len(), &triangles);
+        // Polygons are inspected through the triangles the other functions cut them into.
+        let polygons = surftopo_mesh::inspect_polygons(&positions, faces.faces());
         let weld_hint = (!weld)
-            .then(|| geometry::weld_effect(&positions, &triangles, &inspection))
+            .then(|| {
+                geometry::weld_effect(&positions, &polygons.cut.triangles, &polygons.inspection)
+            })
             .flatten()
             .map(|effect| format!("`weld=True` {}", effect.describe()));
-        let faces = triangles.iter().map(|t| &t[..]);
-        inspection.add_problems_first(geometry::problems(&positions, faces));
-        let cut = surftopo_mesh::triangulate_polygons(&positions, triangles.iter().map(|t| &t[..]));
-        let near = geometry::near_degenerate_faces(&positions, &cut);
-        (inspection, near, weld_hint)
+        let near = geometry::near_degenerate_faces(&positions, &polygons.cut);
+        (polygons, near, weld_hint)
     });
+    let cut_warning = inspection.fans_because.as_ref().map(|problem| {
+        format!(
+            "{problem} (in the polygons cut by ear clipping; the fans of their corner 0, \
+             inspected here and used by the other functions, make a surface)"
+        )
+    });
+    let simplicial = inspection.all_triangles() && !inspection.inspection.has_degenerate_faces();
+    let inspection = inspection.inspection;
     let d = PyDict::new(py);
     d.set_item("vertices", inspection.vertices)?;
     d.set_item("edges", inspection.edges)?;
@@ -237,7 +240,7 @@ pub fn info<'py>(
     d.set_item("orientable", inspection.orientable)?;
     d.set_item("boundary_loops", inspection.boundary_loops)?;
     d.set_item("boundary_edges", inspection.boundary_edges)?;
-    d.set_item("simplicial", !inspection.has_degenerate_faces())?;
+    d.set_item("simplicial", simplicial)?;
     d.set_item("valid", inspection.is_valid())?;
     d.set_item("reoriented_faces", inspection.reoriented_faces)?;
     d.set_item("unreferenced_vertices", inspection.dropped_vertices)?;
@@ -254,16 +257,19 @@ pub fn info<'py>(
         .collect();
     d.set_item("problems", problems)?;
     d.set_item("near_degenerate_faces", near.len())?;
-    let warnings: Vec<String> = near
-        .iter()
-        .take(surftopo_mesh::MAX_LISTED_PROBLEMS)
-        .map(|&(face, height)| {
-            format!(
-                "face {face}: {}; `laplacian` may refuse it as a zero-area triangle \
+    let warnings: Vec<String> = cut_warning
+        .into_iter()
+        .chain(
+            near.iter()
+                .take(surftopo_mesh::MAX_LISTED_PROBLEMS)
+                .map(|&(face, height)| {
+                    format!(
+                        "face {face}: {}; `laplacian` may refuse it as a zero-area triangle \
                  (`mollify=EPS` mollifies it)",
-                geometry::describe_near_degenerate(height)
-            )
-        })
+                        geometry::describe_near_degenerate(height)
+                    )
+                }),
+        )
         .collect();
     d.set_item("warnings", warnings)?;
     d.set_item("weld_hint", weld_hint)?;
@@ -326,7 +332,7 @@ pub fn irreducible<'py>(
     )
     .map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let faces = arrays::any_faces(faces, vertices.len())?;
     let positions = vertices.positions().into_owned();
     let input_positions = (!compact).then(|| positions.clone());
     let count = |t: &[[u32; 3]]| {
@@ -334,7 +340,9 @@ pub fn irreducible<'py>(
         surftopo_mesh::inspect(n, t)
     };
     let reduced = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
-        let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
+        let cut = faces.triangulated(&positions);
+        let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
+            .map_err(|e| cut.on_faces(e.into()))?;
         let input_index = input_index(&report);
         let input = count(&surface.cover.surface_triangles());
         let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
@@ -439,40 +447,50 @@ pub fn quadrangulate<'py>(
     )
     .map_err(|f| f.into_pyerr(py))?;
     let vertices = VertexArray::extract(vertices)?;
-    let triangles = arrays::faces::<3>(faces, vertices.len())?;
+    let faces = arrays::any_faces(faces, vertices.len())?;
     let positions = vertices.positions().into_owned();
     let input_vertices = vertices.len() as u32;
     let done = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
-        let (surface, report) = CoveredSurface::from_triangles(positions, &triangles)?;
-        let pieces = &report.surfaces;
-        let q = match quality {
-            None => {
-                let options = SurfaceOptions {
-                    all_quads,
-                    ..SurfaceOptions::default()
-                };
-                quadrangulate_surface_with_quality(&surface, pieces, algorithm, &options)
-            }
-            Some(quality) => quadrangulate_surface_by_quality(&surface, pieces, quality, all_quads),
-        }
+        let cut = faces.triangulated(&positions);
+        let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
+            .map_err(|e| cut.on_faces(e.into()))?;
+        let input_index = input_index(&report);
+        let polygons: Box<dyn Iterator<Item = &[u32]>> = match &cut.polygons {
+            Some(p) => Box::new(p.faces()),
+            None => Box::new(cut.triangles.iter().map(|t| &t[..])),
+        };
+        let paired = quadrangulate_polygons(
+            &surface,
+            &report.surfaces,
+            polygons,
+            &input_index,
+            algorithm,
+            quality,
+            all_quads,
+        )
         .map_err(Failure::Quad)?;
-        let added =
-            positions_with_added(&surface.positions, &q.result)[q.result.vertex_count..].to_vec();
-        Ok((q, input_index(&report), added))
+        let added = positions_with_added(&surface.positions, &paired.quads.result)
+            [paired.quads.result.vertex_count..]
+            .to_vec();
+        Ok((paired, input_index, added))
     })?
     .map_err(|f| f.into_pyerr(py))?;
-    let (q, input_index, added_positions) = done;
+    let (paired, input_index, added_positions) = done;
+    let q = &paired.quads;
     let result = &q.result;
     // Surface vertex ids to the input's indices; added vertices after the input's.
     let to_input = |v: u32| match input_index.get(v as usize) {
         Some(&i) if (v as usize) < result.vertex_count => i,
         _ => input_vertices + (v - result.vertex_count as u32),
     };
-    let quads: Vec<[u32; 4]> = result.quads.iter().map(|q| q.map(to_input)).collect();
+    let quads: Vec<[u32; 4]> = match &paired.own {
+        OwnQuads::Kept(own) => own.clone(),
+        _ => result.quads.iter().map(|q| q.map(to_input)).collect(),
+    };
     let left: Vec<[u32; 3]> = result.triangles.iter().map(|t| t.map(to_input)).collect();
     let edges: Vec<[u32; 2]> = result.added.iter().map(|e| e.map(to_input)).collect();
     // The CLI's `quad --json` keys, in its order.
-    let json = serde_json::to_string(&q.figures(objective));
+    let json = serde_json::to_string(&q.figures(paired.objective_name(objective)));
     let text = json
         .map_err(|e| Failure::Quad(surftopo_quad::QuadError::Internal(e.to_string())))
         .map_err(|f| f.into_pyerr(py))?;

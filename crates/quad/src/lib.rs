@@ -9,6 +9,8 @@
 //! - [`quadrangulate`] / [`quadrangulate_with`]: the pipeline for every algorithm ([`QuadAlgorithm`]:
 //!   SG, PS, LRS, DS): initial pairing, augmenting paths until the pairing is perfect, one quad per
 //!   pair, with the figures of Table 4.3 ([`QuadStats`]).
+//! - [`quadrangulate_polygons`]: the same on a surface read as polygons, a quad-only input
+//!   giving back its own quads (as `surftopo quad` and the Python package run it).
 //! - [`expand`]: the expansion step of LRS (Algorithms 3.1–3.4), which pairs the triangles of a
 //!   triangulation K obtained from the input by edge flips.
 //!
@@ -35,9 +37,10 @@ pub use quality::{
     quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
 };
 pub use surface::{
-    AllQuads, ComponentQuads, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads, all_quads,
-    positions_with_added, quadrangulate_surface, quadrangulate_surface_by_quality,
-    quadrangulate_surface_with_quality, surface_pair_costs, surface_vertex_count,
+    AllQuads, ComponentQuads, OwnQuads, PolygonQuads, SurfaceOptions, SurfaceQuads,
+    SurfaceQualityQuads, all_quads, positions_with_added, quadrangulate_polygons,
+    quadrangulate_surface, quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
+    surface_pair_costs, surface_vertex_count,
 };
 pub use surftopo_matching::{
     AugmentStats, AugmentStrategy, KarpSipserOptions, KarpSipserStats, PerfectPairing,

@@ -2,12 +2,15 @@
 //!
 //! The examples are generated: a genus-2 brick with irregular connectivity (816
 //! triangles, small enough for the brute force and the exact quality pairing to stay quick), a
-//! Klein bottle and a torus with two holes,
-//! a small broken mesh for `info`'s problem classes, and Dubois' flat tori T_x, T_{x+1} and
-//! T_{x+1/3} (x = 10^9, exact corners). Each step calls the command's own code (its `run`, or the
-//! library functions it calls) and prints one line: what was run, the result and its time.
+//! Klein bottle and a torus with two holes (irreducible; the open torus also by `delaunay` and
+//! `quad`), a pentagonal prism of polygons with a vertex in no face,
+//! a small broken mesh for `info`'s problem classes, Dubois' flat tori T_x, T_{x+1} and
+//! T_{x+1/3} (x = 10^9, exact corners), and a pillowcase sheared into needles (exact corners).
+//! Each step calls the command's own code (its `run`, or the library functions it calls) and
+//! prints one line: what was run, the result and its time.
 
-use crate::commands::{delaunay, generate, info, irreducible, isometric};
+use crate::args::{FormatArg, JsonArg, MeshJobArgs, SeedArg, WeldArg};
+use crate::commands::{delaunay, generate, info, irreducible, isometric, quad};
 use crate::output::{emit, format_seconds};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -30,6 +33,9 @@ const FLAT_TORUS_X: &str = "1000000000";
 const FLAT_TORUS_X_PLUS_1: &str = "1000000001";
 /// x + 1/3.
 const FLAT_TORUS_X_PLUS_THIRD: &str = "3000000001/3";
+/// The shear s of the needle pillowcase (the lattice `⟨(1, 0), (s, 1)⟩`): triangles of aspect
+/// ratio about s².
+const NEEDLE_SHEAR: &str = "1000";
 
 /// Runs every capability on the built-in examples, writing the results into `--out` (or a new
 /// temporary folder) and printing one line per step. A failing step (a full disk, an unwritable
@@ -48,7 +54,12 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
         dir,
         written: std::cell::RefCell::default(),
     };
-    let result = demo.steps();
+    let result = {
+        // The commands' notes on stderr (polygons cut, vertices in no face) would break the
+        // lines; each line says what they would.
+        let _muted = crate::output::mute_notes();
+        demo.steps()
+    };
     if result.is_err() {
         demo.remove_written(created);
     }
@@ -75,10 +86,12 @@ impl Demo {
         self.convert(&input)?;
         self.irreducible(&input)?;
         self.other_surfaces()?;
+        self.open_surface()?;
         self.quad(&input)?;
         self.exported()?;
         let tori = self.flat_tori()?;
         self.delaunay(&input, &tori)?;
+        self.needle()?;
         self.isometric(&input, &tori)?;
         self.census()?;
         emit(&format!(
@@ -480,22 +493,12 @@ impl Demo {
             Self::label(label)?;
             emit(&format!("[{}] ", written.join(" ")))?;
             delaunay::run(&delaunay::Args {
-                input: source.to_path_buf(),
                 output: file(out),
                 tessellation: file(tessellation),
                 laplacian: file(laplacian),
                 mass: file(mass),
-                max_flips: None,
-                mollify: None,
-                tufted: false,
-                weld: crate::args::WeldArg { weld: false },
-                json: crate::args::JsonArg { json: false },
                 reduced: file(reduced),
-                method: delaunay::MethodOptions {
-                    method,
-                    exact,
-                    faithful: false,
-                },
+                ..delaunay_args(source, method, exact)
             })?;
         }
         Ok(())
@@ -519,25 +522,74 @@ impl Demo {
             text += &format!("f {a} {b} {} {}\n", b + 5, a + 5);
         }
         std::fs::write(&path, text).map_err(|e| crate::failure::unwritable(&path, &e))?;
+        let (soup, _) = crate::input::read_soup(&path, false)?;
+        let (cut, _) = crate::input::cut_polygons(&soup);
         Self::label("delaunay (polygons, a loose vertex)")?;
-        emit("[--laplacian: 11 rows, row 0 empty] ")?;
+        emit(&format!(
+            "[{} polygons cut into {} triangles; --laplacian: {} rows, row 0 empty] ",
+            cut.polygons,
+            cut.triangles.len(),
+            soup.vertex_count()
+        ))?;
         delaunay::run(&delaunay::Args {
-            input: path,
-            output: None,
-            tessellation: None,
             laplacian: Some(self.path("prism-laplacian.mtx")),
-            mass: None,
-            max_flips: None,
-            mollify: None,
-            tufted: false,
-            weld: crate::args::WeldArg { weld: false },
-            json: crate::args::JsonArg { json: false },
-            reduced: None,
-            method: delaunay::MethodOptions {
-                method: delaunay::Method::Flip,
-                exact: false,
-                faithful: false,
+            ..delaunay_args(&path, delaunay::Method::Flip, false)
+        })
+    }
+
+    /// A surface with boundary (the torus with two holes of [`Self::other_surfaces`]):
+    /// `delaunay`'s Laplacian and mass matrix (the natural boundary condition), and `quad`'s
+    /// maximum pairing (the fewest triangles left, proven by its certificate).
+    fn open_surface(&self) -> anyhow::Result<()> {
+        let input = self.path("open-torus.obj");
+        Self::label("delaunay (torus with 2 holes)")?;
+        emit("[--laplacian --mass, natural boundary condition] ")?;
+        delaunay::run(&delaunay::Args {
+            laplacian: Some(self.path("open-laplacian.mtx")),
+            mass: Some(self.path("open-mass.mtx")),
+            ..delaunay_args(&input, delaunay::Method::Flip, false)
+        })?;
+        Self::label("quad (torus with 2 holes)")?;
+        quad::run(&quad::Args {
+            job: MeshJobArgs {
+                mesh: input,
+                output: self.path("open-quads.obj"),
+                format: FormatArg { format: None },
+                seed: SeedArg { seed: 1 },
+                json: JsonArg { json: false },
+                weld: WeldArg { weld: false },
             },
+            algorithm: surftopo_quad::QuadAlgorithm::KarpSipser.name().to_string(),
+            objective: "count".to_string(),
+            all_quads: false,
+        })
+    }
+
+    /// Dubois' Theorem 1 on needles: the pillowcase of the lattice `⟨(1, 0), (s, 1)⟩`
+    /// (`surftopo_intrinsic::generators::pillowcase`: a sphere with four cone points of angle π,
+    /// its four triangles needles of aspect ratio about s²), by exact corners; its Delaunay
+    /// tessellation is two unit squares by construction. At s = 1000, flipping in double
+    /// precision ends with lengths off by about 1e-7 (`results/dubois_bench.md`), so the exact
+    /// answer takes Theorem 1.
+    fn needle(&self) -> anyhow::Result<()> {
+        use surftopo_intrinsic::geometry::Rational;
+        let path = self.path("needle.json");
+        let number = |text: &str| text.parse::<Rational>();
+        let (zero, one, shear) = (number("0")?, number("1")?, number(NEEDLE_SHEAR)?);
+        let pillow =
+            surftopo_intrinsic::generators::pillowcase(&[one.clone(), zero], &[shear, one])?;
+        crate::output::write_file(&path, |w| {
+            Ok(surftopo_intrinsic::PortalgonDoc::from_portalgon(&pillow).write(w, false)?)
+        })?;
+        Self::label("delaunay --method dubois --exact (needles)")?;
+        emit(&format!(
+            "[{}: a pillowcase sheared by s = {NEEDLE_SHEAR}, 4 cone points, aspect ratio \
+             about s^2; --tessellation] ",
+            crate::failure::shown(&path)
+        ))?;
+        delaunay::run(&delaunay::Args {
+            tessellation: Some(self.path("needle-tessellation.json")),
+            ..delaunay_args(&path, delaunay::Method::Dubois, true)
         })
     }
 
@@ -653,6 +705,28 @@ fn new_temporary_folder() -> anyhow::Result<PathBuf> {
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists && k < 1000 => k += 1,
             Err(e) => return Err(crate::failure::unwritable(&dir, &e)),
         }
+    }
+}
+
+/// The arguments of `delaunay` on `input` by `method` (exactly when `exact`), writing nothing.
+fn delaunay_args(input: &Path, method: delaunay::Method, exact: bool) -> delaunay::Args {
+    delaunay::Args {
+        input: input.to_path_buf(),
+        output: None,
+        tessellation: None,
+        laplacian: None,
+        mass: None,
+        max_flips: None,
+        mollify: None,
+        tufted: false,
+        weld: WeldArg { weld: false },
+        json: JsonArg { json: false },
+        reduced: None,
+        method: delaunay::MethodOptions {
+            method,
+            exact,
+            faithful: false,
+        },
     }
 }
 

@@ -9,7 +9,7 @@
 
 use crate::args::{JsonArg, WeldArg};
 use crate::failure::invalid;
-use crate::input::{Read, cut_polygons, locate, read_mesh_or_points, renumber_face};
+use crate::input::{Read, locate, read_mesh_or_points};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use surftopo_mesh::{ProblemCounts, SurfaceKind};
@@ -208,10 +208,9 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         Read::PointCloud(points) => return Ok(point_cloud(path, &points)),
     };
     // Polygon meshes are inspected through the triangles the commands cut them into.
-    let (cut, fans_because) = cut_polygons(&soup);
-    let (triangles, polygon_of) = (&cut.triangles, &cut.face_of);
-    let mut inspection = surftopo_mesh::inspect(soup.positions.len(), triangles);
-    let cut_warning = fans_because.map(|problem| {
+    let polygons = surftopo_mesh::inspect_polygons(&soup.positions, soup.faces());
+    let (inspection, cut) = (polygons.inspection, polygons.cut);
+    let cut_warning = polygons.fans_because.map(|problem| {
         format!(
             "{} (in the polygons cut by ear clipping; the fans of their corner 0, inspected \
              here and used by the commands, make a surface)",
@@ -219,24 +218,11 @@ pub fn inspect_path(path: &Path, weld: bool) -> anyhow::Result<Info> {
         )
     });
     let weld_hint = (!weld)
-        .then(|| surftopo_mesh::geometry::weld_effect(&soup.positions, triangles, &inspection))
+        .then(|| surftopo_mesh::geometry::weld_effect(&soup.positions, &cut.triangles, &inspection))
         .flatten()
         .map(|effect| format!("`--weld` {}", effect.describe()));
-    let diagonals = triangles.len() - soup.face_count();
-    let all_triangles = diagonals == 0;
-    inspection.faces = soup.face_count();
-    inspection.edges -= diagonals.min(inspection.edges);
-    inspection.problems = inspection
-        .problems
-        .into_iter()
-        .map(|p| renumber_face(p, polygon_of))
-        .collect();
-    let faces = (0..soup.face_count()).map(|k| soup.face(k));
-    inspection.add_problems_first(surftopo_mesh::geometry::problems(&soup.positions, faces));
-    let mut surfaces: Vec<SurfaceJson> = inspection.surfaces.iter().map(Into::into).collect();
-    if !all_triangles {
-        polygon_counts(soup.positions.len(), triangles, polygon_of, &mut surfaces);
-    }
+    let all_triangles = cut.is_identity();
+    let surfaces: Vec<SurfaceJson> = inspection.surfaces.iter().map(Into::into).collect();
     let near = surftopo_mesh::geometry::near_degenerate_faces(&soup.positions, &cut);
     let warnings = cut_warning
         .into_iter()
@@ -347,26 +333,6 @@ fn point_cloud(path: &Path, points: &surftopo_io::PolygonSoup) -> Info {
         warnings: Vec::new(),
         weld_hint: None,
         surfaces: Vec::new(),
-    }
-}
-
-/// The faces of each piece counted as polygons, not as the triangles of their fans.
-fn polygon_counts(
-    vertex_count: usize,
-    triangles: &[[u32; 3]],
-    polygon_of: &[u32],
-    surfaces: &mut [SurfaceJson],
-) {
-    let Some(component) = surftopo_mesh::face_components(vertex_count, triangles) else {
-        return;
-    };
-    for s in surfaces.iter_mut() {
-        s.faces = 0;
-    }
-    for (t, &c) in component.iter().enumerate() {
-        if t == 0 || polygon_of[t] != polygon_of[t - 1] {
-            surfaces[c as usize].faces += 1;
-        }
     }
 }
 

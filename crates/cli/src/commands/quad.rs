@@ -3,13 +3,10 @@
 
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
-use crate::input::LoadedCovered;
 use surftopo_io::PolygonSoup;
-use surftopo_mesh::{CoveredSurface, FaceId, SurfaceKind};
 use surftopo_quad::quality::QualityObjective;
 use surftopo_quad::{
-    QuadAlgorithm, QuadError, QuadResult, SurfaceOptions, SurfaceQuads, SurfaceQualityQuads,
-    quadrangulate_surface_by_quality, quadrangulate_surface_with_quality,
+    OwnQuads, QuadAlgorithm, QuadError, QuadResult, SurfaceQuads, quadrangulate_polygons,
 };
 
 /// The arguments of `quad`.
@@ -138,63 +135,6 @@ pub fn surface_quad_soup(
     soup
 }
 
-/// The input's own quads when every face of it is a quad, each as listed or reversed as the
-/// surface's cover orients it (building reorients faces against the majority of their piece):
-/// the quad mesh of a quad mesh is itself.
-fn own_quads(loaded: &LoadedCovered) -> Option<Vec<[u32; 4]>> {
-    let soup = &loaded.soup;
-    if soup.face_count() == 0 || soup.faces().any(|f| f.len() != 4) {
-        return None;
-    }
-    let input_vertices = loaded.report.input_vertices();
-    let cover = &loaded.surface.cover;
-    let quads = soup.faces().enumerate().map(|(k, f)| {
-        let quad = [f[0], f[1], f[2], f[3]];
-        // The first of the quad's two triangles (surface face ids are the cut triangles'
-        // indices), as the cover orients it: its corners run forward around the quad or
-        // backward.
-        let corners = cover.mesh.face_vertices(FaceId(2 * k as u32)).map(|v| {
-            quad.iter()
-                .position(|&q| q == input_vertices[cover.class(v) as usize])
-                .unwrap_or(0)
-        });
-        let steps: usize = (0..3)
-            .map(|i| (corners[(i + 1) % 3] + 4 - corners[i]) % 4)
-            .sum();
-        if steps == 4 {
-            quad
-        } else {
-            [quad[0], quad[3], quad[2], quad[1]]
-        }
-    });
-    Some(quads.collect())
-}
-
-/// The quads of `objective` on any compact surface, with their total cost, optimality gap (when
-/// known) and quality.
-fn pair(
-    surface: &CoveredSurface,
-    pieces: &[SurfaceKind],
-    algorithm: QuadAlgorithm,
-    objective: Option<QualityObjective>,
-    all_quads: bool,
-) -> anyhow::Result<SurfaceQualityQuads> {
-    let done = match objective {
-        None => {
-            let options = SurfaceOptions {
-                all_quads,
-                ..SurfaceOptions::default()
-            };
-            quadrangulate_surface_with_quality(surface, pieces, algorithm, &options)
-        }
-        Some(quality) => quadrangulate_surface_by_quality(surface, pieces, quality, all_quads),
-    };
-    done.map_err(|e| match e {
-        QuadError::Internal(_) => anyhow::Error::new(e),
-        other => invalid(other.to_string()),
-    })
-}
-
 /// Runs `quad`.
 pub fn run(args: &Args) -> anyhow::Result<()> {
     let (input, output) = (args.job.mesh.as_path(), args.job.output.as_path());
@@ -202,33 +142,31 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
     let algorithm = algorithm_named(&args.algorithm, args.job.seed.seed)?;
     let objective = objective_named(&args.objective)?;
     let loaded = args.job.read_covered()?;
-    let own = own_quads(&loaded);
-    let objective_name = if own.is_some() {
-        COUNT
-    } else {
-        &args.objective
-    };
-    let (algorithm, objective) = if own.is_some() {
-        (QuadAlgorithm::KarpSipser, None)
-    } else {
-        (algorithm, objective)
-    };
-    let pieces = &loaded.report.surfaces;
+    let input_vertices = loaded.report.input_vertices();
     let paired = crate::progress::step("pairing triangles", || {
-        pair(
+        quadrangulate_polygons(
             &loaded.surface,
-            pieces,
+            &loaded.report.surfaces,
+            loaded.soup.faces(),
+            &input_vertices,
             algorithm,
             objective,
             args.all_quads,
         )
     })
+    .map_err(|e| match e {
+        QuadError::Internal(_) => anyhow::Error::new(e),
+        other => invalid(other.to_string()),
+    })
     .map_err(|e| e.context(crate::input::name(input)))?;
-    let (result, report, cost) = (&paired.result, &paired.report, paired.cost);
-    // KS pairs the triangles cut from each quad back first (its file-order step); should it
-    // not, its own pairing is written, and said so.
-    let own = match own {
-        Some(quads) if result.stats.file_order => {
+    let objective_name = paired.objective_name(&args.objective);
+    let (result, report, cost) = (
+        &paired.quads.result,
+        &paired.quads.report,
+        paired.quads.cost,
+    );
+    let own = match &paired.own {
+        OwnQuads::Kept(quads) => {
             stderr_println!(
                 "note: {}: every face is a quad: its own quads are written (the two triangles \
                  cut from each paired back by `ks`; --algorithm and --objective do not apply)",
@@ -236,7 +174,7 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             );
             Some(quads)
         }
-        Some(_) => {
+        OwnQuads::NotPairedBack => {
             stderr_println!(
                 "note: {}: every face is a quad, but the triangles cut from them do not pair \
                  back in file order: `ks`'s quads are written",
@@ -244,20 +182,20 @@ pub fn run(args: &Args) -> anyhow::Result<()> {
             );
             None
         }
-        None => None,
+        OwnQuads::NotQuadOnly => None,
     };
-    let mut soup = surface_quad_soup(&loaded.soup, &loaded.report.input_vertices(), result);
+    let mut soup = surface_quad_soup(&loaded.soup, &input_vertices, result);
     if let Some(quads) = own {
         soup.face_indices.clear();
         soup.face_offsets.truncate(1);
-        for quad in &quads {
+        for quad in quads {
             soup.push_face(quad);
         }
     }
     args.job.write("quad", &soup, &loaded.soup.attributes)?;
     let stats = &result.stats;
     if args.job.json.json {
-        crate::output::print_json(&paired.figures(objective_name))?;
+        crate::output::print_json(&paired.quads.figures(objective_name))?;
     } else {
         // KS's shortcuts, said in words (the JSON has them as keys).
         let how = if stats.file_order {

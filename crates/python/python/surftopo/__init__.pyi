@@ -2,10 +2,16 @@
 
 Surfaces come as ``(V, F)``: float64 vertex positions of shape ``(n, 3)`` and integer triangles of
 shape ``(m, 3)`` (int32 or int64, C or Fortran order; other integer dtypes and nested lists are
-converted first). The surface must be closed, connected and orientable; faces are reoriented to a
-consistent orientation, unreferenced vertices are ignored (and get empty rows in matrices). Every
-vertex index returned is an index into ``V`` (the input's vertex numbering is kept everywhere, as
-in the CLI). The GIL is released while the libraries compute, and Ctrl-C raises
+converted first). Faces may also be polygons, in any form :func:`read_mesh` returns them: an
+``(m, k)`` array, an ``(m, k_max)`` array padded with trailing -1 (``polygons="padded"``; the
+counts are not needed), or a list of 1-D sequences (``polygons="list"``); the functions that need
+triangles (:func:`info`, :func:`irreducible`, :func:`quadrangulate`, :func:`laplacian`,
+:func:`intrinsic_delaunay`, :func:`isometric`) cut them as the CLI does (ear clipping in each
+polygon's plane, ``surftopo_mesh::triangulate_polygons``; errors name the polygon), and
+:func:`quadrangulate` returns a quad-only input's own quads. Faces are reoriented to a consistent
+orientation, unreferenced vertices are ignored (and get empty rows in matrices). Every vertex
+index returned is an index into ``V`` (the input's vertex numbering is kept everywhere, as in the
+CLI). The GIL is released while the libraries compute, and Ctrl-C raises
 :class:`KeyboardInterrupt` within about 20 ms in every long call (the interrupted work, which
 only the census can stop, ends in the background, its result dropped).
 
@@ -79,7 +85,8 @@ __version__: str
 _Vertices = Union[npt.NDArray[np.float64], Sequence[Sequence[float]]]
 """Vertex positions, ``(n, 3)``; float64 arrays are read in place when C-contiguous."""
 _Faces = Union[npt.NDArray[np.int32], npt.NDArray[np.int64], Sequence[Sequence[int]]]
-"""Vertex indices, ``(m, 3)`` triangles (``(m, k)`` polygons for :func:`write_mesh`)."""
+"""Vertex indices: ``(m, 3)`` triangles, ``(m, k)`` polygons, the same padded with -1, or a list
+of polygons (cut into triangles where triangles are needed)."""
 _Surface = Union[Tuple[_Vertices, _Faces], "Portalgon", "IntrinsicTriangulation"]
 """A closed polyhedral surface: ``(V, F)``, a :class:`Portalgon` or an intrinsic triangulation."""
 
@@ -140,8 +147,9 @@ def write_mesh(path: Union[str, os.PathLike[str]], vertices: _Vertices, faces: _
 
     The format follows the extension: ``.obj``, ``.off``, ``.ply`` (binary little-endian),
     optionally ``.gz``. ``faces`` may be triangles ``(m, 3)``, quads ``(m, 4)`` (the ``Q`` of
-    :func:`quadrangulate`) or any polygons ``(m, k)``. Floats are written so that reading them
-    back gives the same bits.
+    :func:`quadrangulate`) or any polygons (``(m, k)``, padded with -1, or a list, as
+    :func:`read_mesh` returns them). Floats are written so that reading them back gives the same
+    bits.
     """
 
 def info(vertices: _Vertices, faces: _Faces, weld: bool = False) -> dict[str, Any]:
@@ -267,7 +275,10 @@ def quadrangulate(
     ``"quality"`` (the maximum pairing of least total cost 1 − η, η being Remacle et al.'s quad
     quality, exact, its certificate verified; ``algorithm`` unused) or ``"quality-fast"`` (a
     cheaper approximation). ``all_quads``: turn each triangle left into a quad by one vertex added
-    at the midpoint of a boundary edge (the fewest such vertices).
+    at the midpoint of a boundary edge (the fewest such vertices). Polygons are cut into triangles
+    as the CLI cuts them; when every face is a quad, its own quads are returned (each as given or
+    reversed to the piece's orientation; ``stats["objective"]`` is then ``"count"`` and
+    ``algorithm`` and ``objective`` do not apply), as ``surftopo quad`` does.
 
     Returns ``(Q, stats)``: ``Q`` an int64 ``(k, 4)`` array of vertex indices, and the keys of
     ``surftopo quad --json`` (with ``cost``, ``optimality_gap``, ``quality``,

@@ -40,6 +40,7 @@
 
 mod all_quads;
 mod coned;
+mod polygon_input;
 mod quality;
 
 use std::time::Instant;
@@ -55,6 +56,7 @@ use crate::lrs::ExpansionCases;
 use crate::{QuadAlgorithm, QuadError, QuadOptions, QuadStats};
 
 pub use all_quads::{AllQuads, all_quads};
+pub use polygon_input::{OwnQuads, PolygonQuads, quadrangulate_polygons};
 pub use quality::{
     SurfaceQualityQuads, positions_with_added, quadrangulate_surface_by_quality,
     quadrangulate_surface_with_quality, surface_pair_costs,
