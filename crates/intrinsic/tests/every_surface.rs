@@ -4,6 +4,9 @@
 //! the final triangles (each lift's share divided by the vertex's number of lifts), areas from
 //! the input positions, and a dense LDLᵀ for positive semidefiniteness.
 
+mod common;
+
+use common::jitter;
 use std::collections::HashMap;
 use surftopo_intrinsic::{
     CoveredTriangulation, DEFAULT_COCIRCULAR_TOLERANCE, DelaunayOptions, PortalgonDoc, SparseMatrix,
@@ -14,60 +17,45 @@ use surftopo_mesh::generators::{
 };
 use surftopo_mesh::{CoveredSurface, FaceId, HalfedgeId};
 
-/// Moves every vertex by a deterministic pseudo-random offset of relative size `amount`, so
-/// the input is not Delaunay.
-fn jitter(mut s: CoveredSurface, amount: f64) -> CoveredSurface {
-    let mut state = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    for p in &mut s.positions {
-        for x in p.iter_mut() {
-            *x += amount * next();
-        }
-    }
-    s
-}
-
 /// Every kind `generate` makes, small, most of them jittered or randomly flipped.
 fn surfaces() -> Vec<(&'static str, CoveredSurface)> {
     let sphere: CoveredSurface = icosphere(2).into();
     let torus: CoveredSurface = torus(8, 5).into();
     vec![
-        ("disk", jitter(disk(6), 0.05)),
+        ("disk", jitter(disk(6), 0.05, 0)),
         (
             "disk flipped",
-            random_flips_covered(&jitter(disk(6), 0.02), 40, 3),
+            random_flips_covered(&jitter(disk(6), 0.02, 0), 40, 3),
         ),
-        ("annulus", jitter(annulus(9, 3), 0.1)),
-        ("mobius band", jitter(mobius_band(9, 3), 0.1)),
+        ("annulus", jitter(annulus(9, 3), 0.1, 0)),
+        ("mobius band", jitter(mobius_band(9, 3), 0.1, 0)),
         (
             "mobius band flipped",
             random_flips_covered(&mobius_band(9, 3), 30, 5),
         ),
         (
             "projective plane",
-            jitter(subdivide_midpoint_covered(&projective_plane(), 1), 0.05),
+            jitter(subdivide_midpoint_covered(&projective_plane(), 1), 0.05, 0),
         ),
-        ("klein bottle", jitter(klein_bottle(8, 6), 0.1)),
+        ("klein bottle", jitter(klein_bottle(8, 6), 0.1, 0)),
         (
             "klein bottle flipped",
             random_flips_covered(&klein_bottle(8, 6), 60, 7),
         ),
-        ("N3", jitter(crosscaps(3), 0.05)),
+        ("N3", jitter(crosscaps(3), 0.05, 0)),
         (
             "sphere with holes",
-            jitter(cut_holes(&sphere, 3, 11).0, 0.02),
+            jitter(cut_holes(&sphere, 3, 11).0, 0.02, 0),
         ),
         (
             "torus with holes, flipped",
             random_flips_covered(&cut_holes(&torus, 2, 1).0, 30, 2),
         ),
-        ("three pieces", copies(&jitter(mobius_band(7, 2), 0.1), 3)),
-        ("closed pieces", copies(&jitter(sphere.clone(), 0.03), 2)),
+        (
+            "three pieces",
+            copies(&jitter(mobius_band(7, 2), 0.1, 0), 3),
+        ),
+        ("closed pieces", copies(&jitter(sphere.clone(), 0.03, 0), 2)),
     ]
 }
 

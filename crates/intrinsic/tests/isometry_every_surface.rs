@@ -5,6 +5,9 @@
 //! image with the same distances between all pairs of corners (so a rigid motion lays one on
 //! the other).
 
+mod common;
+
+use common::jitter;
 use surftopo_intrinsic::{
     CoveredTriangulation, IsometryDecision, IsometryOptions, TwistedMap, compare_twisted,
     decide_isometry, decide_isometry_on_cover, piece_tessellations,
@@ -15,24 +18,6 @@ use surftopo_mesh::generators::{
     projective_plane, subdivide_midpoint_covered, torus,
 };
 use surftopo_mesh::geometry::Point3;
-
-/// Moves every vertex by a deterministic pseudo-random offset of size up to `amount`, so that
-/// no vertex is flat.
-fn jitter(mut s: CoveredSurface, amount: f64, seed: u64) -> CoveredSurface {
-    let mut state = 0x9e37_79b9_7f4a_7c15u64 ^ seed;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    for p in &mut s.positions {
-        for x in p.iter_mut() {
-            *x += amount * next();
-        }
-    }
-    s
-}
 
 /// The surface with positions mapped by `f`.
 fn moved(s: &CoveredSurface, f: impl Fn(Point3) -> Point3) -> CoveredSurface {

@@ -87,3 +87,25 @@ pub fn assert_same_angle_sums(tri: &IntrinsicTriangulation, before: &[f64], tol:
         );
     }
 }
+
+/// Moves every vertex of `s` by a deterministic pseudo-random offset (xorshift from `seed`) of
+/// size up to `amount` per coordinate: no vertex stays flat, and the input is not Delaunay.
+pub fn jitter(
+    mut s: surftopo_mesh::CoveredSurface,
+    amount: f64,
+    seed: u64,
+) -> surftopo_mesh::CoveredSurface {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64 ^ seed;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    for p in &mut s.positions {
+        for x in p.iter_mut() {
+            *x += amount * next();
+        }
+    }
+    s
+}
