@@ -173,13 +173,7 @@ pub fn augment_to_perfect<G: DualGraph + ?Sized>(
     strategy: AugmentStrategy,
 ) -> Result<AugmentStats, AugmentError> {
     let nodes = graph.node_count();
-    if pairing.mate.len() != graph.node_slots() {
-        return Err(AugmentError::BadPairing(format!(
-            "{} mates for {} node slots",
-            pairing.mate.len(),
-            graph.node_slots()
-        )));
-    }
+    check_fits(graph, pairing)?;
     let unmatched = pairing.unmatched_nodes(graph);
     if unmatched.is_empty() {
         // Still check the pairing: a perfect one is returned as is.
@@ -221,13 +215,7 @@ pub fn augment_to_maximum<G: DualGraph + ?Sized>(
     pairing: &mut Pairing,
     strategy: AugmentStrategy,
 ) -> Result<(AugmentStats, Vec<u32>), AugmentError> {
-    if pairing.mate.len() != graph.node_slots() {
-        return Err(AugmentError::BadPairing(format!(
-            "{} mates for {} node slots",
-            pairing.mate.len(),
-            graph.node_slots()
-        )));
-    }
+    check_fits(graph, pairing)?;
     let unmatched = pairing.unmatched_nodes(graph);
     if unmatched.is_empty() {
         mates_of(graph, pairing)?;
@@ -242,6 +230,18 @@ pub fn augment_to_maximum<G: DualGraph + ?Sized>(
         *m = *e;
     }
     Ok((stats, barrier))
+}
+
+/// [`AugmentError::BadPairing`] unless `pairing` has one mate slot per node slot of `graph`.
+fn check_fits<G: DualGraph + ?Sized>(graph: &G, pairing: &Pairing) -> Result<(), AugmentError> {
+    if pairing.mate.len() != graph.node_slots() {
+        return Err(AugmentError::BadPairing(format!(
+            "{} mates for {} node slots",
+            pairing.mate.len(),
+            graph.node_slots()
+        )));
+    }
+    Ok(())
 }
 
 /// [`augment_on`] to a maximum, then the barrier: with every node matched, none; after the
@@ -283,13 +283,7 @@ pub fn shift_unmatched<G: DualGraph + ?Sized>(
     pairing: &mut Pairing,
     prefer: impl Fn(u32) -> bool,
 ) -> Result<Vec<u32>, AugmentError> {
-    if pairing.mate.len() != graph.node_slots() {
-        return Err(AugmentError::BadPairing(format!(
-            "{} mates for {} node slots",
-            pairing.mate.len(),
-            graph.node_slots()
-        )));
-    }
+    check_fits(graph, pairing)?;
     let mut mates = mates_of(graph, pairing)?;
     let mut search = Search::new(graph.node_slots());
     let mut stats = AugmentStats::default();
