@@ -13,7 +13,7 @@
 //! triangulation `T″` (same vertex set: the wave's sources keep their vertices), `T″` has
 //! happiness `O(1)`, below Proposition 2's bound, and the remaining outer iterations are not
 //! needed. The test costs `O(n′ + budget)` exact operations (`n′` triangles of `T′`, the budget
-//! is `n′` flips), no more than an outer iteration, so Theorem 1's time bound is unchanged; when
+//! is `n′/2` flips), less than an outer iteration, so Theorem 1's time bound is unchanged; when
 //! it never succeeds, ALGORITHM runs its `N` iterations as the paper says. The flips are
 //! Lawson's (a non-Delaunay edge of a triangulation is always flippable: its two triangles form
 //! a strictly convex quadrilateral), decided by the exact in-circle test.
