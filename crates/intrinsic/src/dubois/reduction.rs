@@ -45,6 +45,9 @@
 //!   repetitions would change nothing either (docs/dubois.md §3.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
+//! - [`reduce_with_boundary_until`] also stops when its caller's test succeeds, before the
+//!   first outer iteration or after any (exact mode, not faithful): Proposition 2's Delaunay
+//!   exit (docs/dubois.md §3.8, [`super::delaunay_exit`]).
 //! - Steps that provably find nothing are skipped (not in faithful mode; debug builds check each
 //!   skip). Right after GARDENING no component of `S(R_A)` is a tube (each became an inactive
 //!   biface; the other components are untouched), so SIMPLIFYTUBES' step 2 with `J` empty, and
