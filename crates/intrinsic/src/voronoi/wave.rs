@@ -256,7 +256,9 @@ pub fn run_wave<S: Scalar>(
             wave.update_sides(p, q, site, &mut heap);
         }
     }
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     while let Some(Reverse(event)) = heap.pop() {
+        ticker.tick();
         let side = SideId(event.side);
         if !wave.alive[event.stamp as usize] {
             wave.stale_events += 1;
