@@ -178,3 +178,37 @@ fn the_exact_wave_on_a_thin_right_pillowcase_is_exactly_delaunay() {
         assert_eq!(out.stats.unwrap().non_delaunay_edges, 0, "h = {h}");
     }
 }
+
+/// The wave's work on T_x grows as x² (the constellations grow as x, the events as x): past its
+/// work budget it stops with a typed error that names the method that finishes (Theorem 1).
+#[test]
+fn the_wave_stops_at_its_work_budget_and_names_dubois() {
+    use surftopo_intrinsic::generators::flat_torus_portalgon;
+    use surftopo_intrinsic::voronoi::{
+        VoronoiError, VoronoiOptions, WaveError, WaveOptions, voronoi_delaunay,
+    };
+    let work = |x: i64, max_work: Option<u64>| {
+        let t = flat_torus_portalgon(&Rational::from_i64(x), 1).unwrap();
+        let options = VoronoiOptions {
+            wave: WaveOptions {
+                max_work,
+                ..WaveOptions::default()
+            },
+            ..VoronoiOptions::default()
+        };
+        voronoi_delaunay(&t, &options)
+    };
+    // Within the budget: the same tessellation as without one.
+    let free = work(200, None).unwrap();
+    assert_eq!(
+        work(200, Some(1_000_000)).unwrap().tessellation,
+        free.tessellation
+    );
+    match work(200, Some(1_000)) {
+        Err(e @ VoronoiError::Wave(WaveError::Work(1_000))) => {
+            assert!(!e.is_numerical());
+            assert!(e.to_string().contains("--method dubois"), "{e}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
