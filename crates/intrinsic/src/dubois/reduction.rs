@@ -1004,6 +1004,7 @@ fn reduce_checked<S: Scalar>(
         r.insert_edges()?;
         let mut passes = 0;
         for _ in 0..INNER_REPETITIONS {
+            surftopo_mesh::stop::check();
             #[cfg(debug_assertions)]
             let before = (r.portalgon.clone(), r.regions.clone());
             let edits_before = r.report.edits();

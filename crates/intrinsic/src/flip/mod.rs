@@ -218,6 +218,7 @@ pub(crate) fn flip_glued<G: Gluing>(
     let slots = tri.mesh().edge_slots();
     let mut queued = vec![false; slots];
     let mut stack: Vec<EdgeId> = Vec::new();
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for sweep in 0..slots {
         let first = EdgeId::new(sweep);
         if !tri.mesh().is_edge_live(first) {
@@ -225,6 +226,7 @@ pub(crate) fn flip_glued<G: Gluing>(
         }
         let mut next = Some(first);
         while let Some(e) = next {
+            ticker.tick();
             let h = e.halfedge();
             let t = h.twin();
             let mesh = tri.mesh();

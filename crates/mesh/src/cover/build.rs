@@ -31,10 +31,12 @@ impl ClosedCover {
         if let Some(e) = p.inspection.problems.first() {
             return Err(e.clone());
         }
+        crate::stop::check();
         let nv = p.new_to_old.len();
         let ins = &p.inspection;
         if ins.boundary_edges == 0 && ins.orientable {
             let surfaces = classify::classify(&p);
+            crate::stop::check();
             let mut report = BuildReport {
                 reoriented_faces: ins.reoriented_faces.min(triangles.len()),
                 dropped_vertices: std::mem::take(&mut p.dropped),
