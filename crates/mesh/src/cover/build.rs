@@ -67,8 +67,21 @@ impl ClosedCover {
                 t.swap(1, 2);
             }
         }
+        // The boundary corners of `closed`, in corner order: a reversed face (b, a, c) has its
+        // sides i = 0, 1, 2 on the sides 2, 1, 0 of the face as given, (a, b, c).
+        let boundary: Vec<u32> = (0..3 * closed.len() as u32)
+            .filter(|&c| {
+                let (f, i) = (c / 3, c % 3);
+                let given = if p.flip[f as usize] && orientable(f as usize) {
+                    3 * f + 2 - i
+                } else {
+                    c
+                };
+                p.edges.across(given).is_none()
+            })
+            .collect();
         let mut component = face_component;
-        let apexes = close_boundary_loops(nv, &mut closed, &mut component);
+        let apexes = close_boundary_loops(nv, &mut closed, &boundary, &mut component);
         let doubled: Vec<bool> = kinds.iter().map(|k| !k.orientable).collect();
         let cover = double(nv, apexes, &closed, &component, &doubled)?;
         Ok((cover, report))
@@ -76,23 +89,26 @@ impl ClosedCover {
 }
 
 /// Cones each boundary loop of `faces` (vertices `0..nv`, consistently oriented on orientable
-/// components) over a new apex vertex `nv + k`: appends a triangle `(b, a, apex)` for each face's
-/// boundary edge `a -> b`, which orients the cone as the face beside it. Returns the number of
-/// apexes; `component` gets the component of each new face.
-fn close_boundary_loops(nv: usize, faces: &mut Vec<[u32; 3]>, component: &mut Vec<u32>) -> usize {
-    let p = CornerPairing::run(nv, faces);
-    let boundary: Vec<u32> = (0..3 * faces.len() as u32)
-        .filter(|&c| p.edges.across(c).is_none())
-        .collect();
+/// components; `boundary` their corners on a boundary edge, increasing) over a new apex vertex
+/// `nv + k`: appends a triangle `(b, a, apex)` for each face's boundary edge `a -> b`, which
+/// orients the cone as the face beside it. Returns the number of apexes; `component` gets the
+/// component of each new face.
+fn close_boundary_loops(
+    nv: usize,
+    faces: &mut Vec<[u32; 3]>,
+    boundary: &[u32],
+    component: &mut Vec<u32>,
+) -> usize {
+    let corner_vertex = |c: u32| faces[(c / 3) as usize][(c % 3) as usize];
     let mut loops = UnionFind::new(nv);
-    for &c in &boundary {
-        loops.union(p.corner_vertex(c), p.corner_vertex(next_corner(c)));
+    for &c in boundary {
+        loops.union(corner_vertex(c), corner_vertex(next_corner(c)));
     }
     let mut apex_of_root = vec![u32::MAX; nv];
     let mut apexes = 0;
     let mut cones = Vec::with_capacity(boundary.len());
-    for &c in &boundary {
-        let (a, b) = (p.corner_vertex(c), p.corner_vertex(next_corner(c)));
+    for &c in boundary {
+        let (a, b) = (corner_vertex(c), corner_vertex(next_corner(c)));
         let root = loops.find(a) as usize;
         if apex_of_root[root] == u32::MAX {
             apex_of_root[root] = (nv + apexes) as u32;
