@@ -32,7 +32,9 @@ pub(crate) mod isometry;
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
 use crate::flip::tessellation::{CellSurface, Tessellation, tessellate};
-use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
+use crate::flip::{
+    DelaunayOptions, FlipReport, Gluing, flip_glued, left_non_delaunay, product_bound,
+};
 use crate::formats::portalgon_json::{
     FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
 };
@@ -280,12 +282,12 @@ impl CoveredTriangulation {
             .expect("flipping without the needle test always finishes");
         if !self.mirror.is_empty() {
             // Each non-Delaunay edge of a doubled piece was counted on both lifts.
-            report.non_delaunay_edges = self
-                .tri
-                .mesh()
+            let bound = product_bound(options.tolerance);
+            let mesh = self.tri.mesh();
+            report.non_delaunay_edges = mesh
                 .edges()
                 .filter(|&e| self.is_surface_edge(e) && self.may_flip(e))
-                .filter(|&e| !self.tri.is_delaunay_edge(e, options.tolerance))
+                .filter(|&e| left_non_delaunay(mesh, &t2, bound, e))
                 .count();
         }
         Ok((report, t2))

@@ -2,7 +2,7 @@
 
 use super::{ClosedCover, Sheets};
 use crate::build::pairing::{CornerPairing, next_corner, prev_corner};
-use crate::build::{BuildReport, build_topology_closed, classify};
+use crate::build::{BuildReport, build_topology_closed, classify, closed_topology_of_trusted};
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::union_find::UnionFind;
@@ -145,7 +145,7 @@ fn double(
     let mut second = vec![u32::MAX; n];
     let mut next_id = n as u32;
     if doubled.iter().any(|&d| d) {
-        let p = CornerPairing::run(n, faces);
+        let p = CornerPairing::pair_only(n, faces);
         debug_assert!(p.inspection.problems.is_empty() && p.inspection.boundary_edges == 0);
         let mut start = vec![u32::MAX; n];
         for (f, t) in faces.iter().enumerate() {
@@ -186,7 +186,7 @@ fn double(
         mirror_of.push((f, lifted.len()));
         lifted.push([0, 2, 1].map(|i| lift(3 * f + i, true)));
     }
-    let mesh = build_topology_closed(next_id as usize, &lifted, true)?;
+    let mesh = closed_topology_of_trusted(next_id as usize, &lifted);
     let mut class: Vec<u32> = (0..next_id).collect();
     for (v, &s) in second.iter().enumerate() {
         if s != u32::MAX {
