@@ -132,26 +132,16 @@ impl<'a> CornerPairing<'a> {
         let indexed = check_indices(vertex_count, triangles, &mut ins);
         let sorted = sort_corners(&indexed);
         let mut edges = pair_edges(&indexed, sorted, &mut ins, &mut refusals);
-        if !inspect {
-            return CornerPairing {
-                inspection: ins,
-                remapped: indexed.remapped,
-                valid: indexed.valid,
-                old_to_new: indexed.old_to_new,
-                new_to_old: indexed.new_to_old,
-                dropped: indexed.dropped,
-                edges,
-                flip: Vec::new(),
-                refusals,
-            };
+        let mut flip = Vec::new();
+        if inspect {
+            let all_valid = indexed.valid.iter().all(|&ok| ok);
+            let consistent = !edges.same_direction.iter().any(|&same| same);
+            if all_valid {
+                check_fans(&indexed, &edges, consistent, &mut ins);
+            }
+            count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
+            flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
         }
-        let all_valid = indexed.valid.iter().all(|&ok| ok);
-        let consistent = !edges.same_direction.iter().any(|&same| same);
-        if all_valid {
-            check_fans(&indexed, &edges, consistent, &mut ins);
-        }
-        count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
-        let flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
         CornerPairing {
             inspection: ins,
             remapped: indexed.remapped,
