@@ -453,7 +453,7 @@ fn covered(
     let wanted = request.outputs;
     progress("flipping to Delaunay");
     let start = Instant::now();
-    let report = tri.flip_to_delaunay(&request.flip_options())?;
+    let (report, tan_half_sq) = tri.flip_keeping_tan_half_sq(&request.flip_options())?;
     let seconds = start.elapsed().as_secs_f64();
     let stats = wanted.figures.then(|| tri.stats(&report, seconds));
     let covered_tessellation = wanted.tessellation.then(|| {
@@ -462,7 +462,7 @@ fn covered(
     });
     let laplacian = wanted.laplacian.then(|| {
         progress("building the Laplacian");
-        tri.laplacian()
+        tri.laplacian_from_tan_half_sq(&tan_half_sq)
     });
     let mass = wanted.mass.then(|| {
         progress("building the mass matrix");
