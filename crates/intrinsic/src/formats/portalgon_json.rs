@@ -564,8 +564,19 @@ impl PortalgonDoc {
             .collect()
     }
 
-    /// Checks the matching's side references and that no side is matched twice.
+    /// Checks the matching's side references, that no side is matched twice and that no
+    /// gluing reverses orientation (an oriented portalgon).
     fn checked_pairs(&self, counts: &[usize]) -> Result<Vec<[[usize; 2]; 2]>, PortalgonError> {
+        self.checked_sides(counts)?;
+        if let Some(k) = self.reversed.iter().position(|&r| r) {
+            let [polygon, side] = self.matching[k][0];
+            return Err(PortalgonError::ReversedGluing { polygon, side });
+        }
+        Ok(self.matching.clone())
+    }
+
+    /// Checks the matching's side references and that no side is matched twice (or to itself).
+    fn checked_sides(&self, counts: &[usize]) -> Result<(), PortalgonError> {
         let mut offset = vec![0usize; counts.len() + 1];
         for (p, &k) in counts.iter().enumerate() {
             offset[p + 1] = offset[p] + k;
@@ -583,11 +594,7 @@ impl PortalgonDoc {
                 *u = true;
             }
         }
-        if let Some(k) = self.reversed.iter().position(|&r| r) {
-            let [polygon, side] = self.matching[k][0];
-            return Err(PortalgonError::ReversedGluing { polygon, side });
-        }
-        Ok(self.matching.clone())
+        Ok(())
     }
 
     /// Whether every side of every polygon is glued, checked on the file's structure alone
@@ -727,6 +734,35 @@ impl PortalgonDoc {
         }
         let pairs = self.checked_pairs(&counts)?;
         let labelled = self.labels_present()?;
+        let sides = self.triangle_sides()?;
+        let glue: Vec<(Side, Side)> = pairs
+            .iter()
+            .map(|&pair| pair.map(as_side))
+            .map(|[a, b]| (a, b))
+            .collect();
+        let labels: Vec<[u32; 3]> = if labelled {
+            self.triangle_labels()
+        } else {
+            Vec::new()
+        };
+        let polygon_index: Vec<usize> = (0..self.polygons.len()).collect();
+        triangulation_from_gluing(&TriangleGluing {
+            sides: &sides,
+            pairs: &glue,
+            labels: labelled.then_some(&labels[..]),
+            polygon_index: &polygon_index,
+            tolerance,
+        })
+    }
+
+    /// The side lengths of every polygon of a file of triangles: given (`lengths`) or measured
+    /// (`corners`, which must not run clockwise; exact corners measured exactly, then rounded
+    /// once). Triangle inequalities are not checked (degenerate input may be mollified).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NotCounterClockwise`], [`PortalgonError::NonFinite`],
+    /// [`PortalgonError::NegativeLength`].
+    pub(crate) fn triangle_sides(&self) -> Result<Vec<[f64; 3]>, PortalgonError> {
         let mut sides = Vec::with_capacity(self.polygons.len());
         for (polygon, p) in self.polygons.iter().enumerate() {
             let l = match (&p.corners, &p.lengths) {
@@ -775,40 +811,84 @@ impl PortalgonDoc {
             }
             sides.push(l);
         }
-        let glue: Vec<(Side, Side)> = pairs
+        Ok(sides)
+    }
+
+    /// Whether every polygon is a triangle, and the surface is not one closed oriented piece:
+    /// some gluing reverses orientation, some side is free or the gluing has several pieces
+    /// ([`crate::CoveredTriangulation::from_doc`] reads it). Structural only (no number read).
+    pub fn needs_cover(&self) -> bool {
+        let counts: Vec<usize> = self
+            .polygons
             .iter()
-            .map(|&[[p, i], [q, j]]| {
-                (
-                    Side {
-                        face: p as u32,
-                        side: i as u8,
-                    },
-                    Side {
-                        face: q as u32,
-                        side: j as u8,
-                    },
-                )
+            .map(|p| match (&p.corners, &p.lengths) {
+                (Some(c), None) => c.len(),
+                (None, Some(l)) => l.len(),
+                _ => 0,
             })
             .collect();
-        let labels: Vec<[u32; 3]> = if labelled {
-            self.polygons
-                .iter()
-                .map(|p| {
-                    let v = p.vertices.as_deref().unwrap_or_default();
-                    [v[0], v[1], v[2]]
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
-        let polygon_index: Vec<usize> = (0..self.polygons.len()).collect();
-        triangulation_from_gluing(&TriangleGluing {
-            sides: &sides,
-            pairs: &glue,
-            labels: labelled.then_some(&labels[..]),
-            polygon_index: &polygon_index,
-            tolerance,
+        if counts.iter().any(|&k| k != 3) {
+            return false;
+        }
+        if self.reversed.contains(&true) || 2 * self.matching.len() != 3 * counts.len() {
+            return true;
+        }
+        let mut pieces = surftopo_mesh::UnionFind::new(counts.len());
+        for &[[p, _], [q, _]] in &self.matching {
+            if p < counts.len() && q < counts.len() {
+                pieces.union(p as u32, q as u32);
+            }
+        }
+        (0..counts.len() as u32).any(|p| pieces.find(p) != 0)
+    }
+
+    /// The checked pieces of a file of triangles glued in any way, for
+    /// [`crate::CoveredTriangulation::from_doc`]: the side lengths
+    /// ([`Self::triangle_sides`]), the pairs as sides, per pair whether it reverses
+    /// orientation, and each corner's label if the file gives them.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NotTriangle`], the matching's structural errors
+    /// ([`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`]), the lengths' errors,
+    /// [`PortalgonError::VertexLabels`] (labels on some polygons only).
+    pub(crate) fn twisted_parts(&self) -> Result<TwistedParts, PortalgonError> {
+        let counts = self.side_counts()?;
+        if let Some(polygon) = counts.iter().position(|&k| k != 3) {
+            return Err(PortalgonError::NotTriangle {
+                polygon,
+                sides: counts[polygon],
+            });
+        }
+        self.checked_sides(&counts)?;
+        let labelled = self.labels_present()?;
+        let sides = self.triangle_sides()?;
+        let pairs = self
+            .matching
+            .iter()
+            .map(|&pair| pair.map(as_side))
+            .map(|[a, b]| (a, b))
+            .collect();
+        let reversed = (0..self.matching.len())
+            .map(|k| self.reversed.get(k).copied().unwrap_or(false))
+            .collect();
+        let labels = labelled.then(|| self.triangle_labels());
+        Ok(TwistedParts {
+            sides,
+            pairs,
+            reversed,
+            labels,
         })
+    }
+
+    /// The labels of a file of labelled triangles.
+    fn triangle_labels(&self) -> Vec<[u32; 3]> {
+        self.polygons
+            .iter()
+            .map(|p| {
+                let v = p.vertices.as_deref().unwrap_or_default();
+                [v[0], v[1], v[2]]
+            })
+            .collect()
     }
 
     /// The document of a portalgon: live polygons in id order (renumbered densely) with their
@@ -900,6 +980,26 @@ impl PortalgonDoc {
             matching,
             reversed: Vec::new(),
         }
+    }
+}
+
+/// A file of triangles glued in any way, checked ([`PortalgonDoc::twisted_parts`]).
+pub(crate) struct TwistedParts {
+    /// The side lengths of each triangle.
+    pub sides: Vec<[f64; 3]>,
+    /// The matching's pairs.
+    pub pairs: Vec<(Side, Side)>,
+    /// Per pair, whether it reverses orientation.
+    pub reversed: Vec<bool>,
+    /// Each corner's label, if the file gives them.
+    pub labels: Option<Vec<[u32; 3]>>,
+}
+
+/// A `[polygon, side]` of a file of triangles as a [`Side`].
+fn as_side([p, i]: [usize; 2]) -> Side {
+    Side {
+        face: p as u32,
+        side: i as u8,
     }
 }
 
