@@ -99,12 +99,17 @@ fn opposite(tris: &[([f64; 3], [usize; 3])], side: &Value) -> f64 {
 }
 
 fn assert_close(a: &[Vec<f64>], b: &[Vec<f64>], what: &str) {
+    assert_within(a, b, 1e-12, what);
+}
+
+/// Equal entries within `relative` times the largest.
+fn assert_within(a: &[Vec<f64>], b: &[Vec<f64>], relative: f64, what: &str) {
     assert_eq!(a.len(), b.len(), "{what}: sizes");
     let scale = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     for (i, (ra, rb)) in a.iter().zip(b).enumerate() {
         for (j, (x, y)) in ra.iter().zip(rb).enumerate() {
             assert!(
-                (x - y).abs() <= 1e-12 * scale,
+                (x - y).abs() <= relative * scale,
                 "{what}: entry ({i}, {j}) {x} against {y}"
             );
         }
@@ -180,9 +185,35 @@ fn round_trip(dir: &Path, name: &str, mesh: &Path, weld: bool) {
         &format!("{name}: file Laplacian"),
     );
     assert_close(&read_mtx(&m1), &read_mtx(&m2), &format!("{name}: mass"));
-    // The tessellation is a version-2 file too, read like any other.
+    // The tessellation is an input too: its cells cut into triangles, flipped to Delaunay, the
+    // same Laplacian (it does not depend on how co-circular cells are cut).
     let tess: Value = serde_json::from_slice(&std::fs::read(&t).unwrap()).unwrap();
     assert!(tess["polygons"].as_array().unwrap().len() <= tris.len());
+    let l3 = p("l3.mtx");
+    let figures = delaunay(&[
+        t.as_os_str(),
+        "--laplacian".as_ref(),
+        l3.as_os_str(),
+        "--json".as_ref(),
+    ]);
+    assert_eq!(figures["non_delaunay_edges"], 0, "{name}: {figures}");
+    assert_within(
+        &read_mtx(&l3),
+        &reference,
+        1e-9,
+        &format!("{name}: tessellation Laplacian"),
+    );
+    let out = surftopo()
+        .arg("isometric")
+        .arg(&t)
+        .arg(&a)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{name}: tessellation against triangulation"
+    );
     let mut isometric = surftopo();
     isometric.arg("isometric").arg(mesh).arg(&a);
     if weld {

@@ -645,6 +645,31 @@ fn the_format_documents_mobius_band_is_read() {
         .map(|v| tri.mass().triplets().nth(v).unwrap().2)
         .sum();
     assert!((area - 1.0).abs() < 1e-12);
+    // The square as one polygon, its right side glued to its left with the half twist: cut
+    // into two triangles, the same surface (the same Laplacian: both diagonals are Delaunay).
+    let square = r#"{"version": 2,
+      "polygons": [ { "corners": [[0, 0], [1, 0], [1, 1], [0, 1]] } ],
+      "matching": [ [[0, 1], [0, 3], true] ] }"#;
+    let mut one =
+        CoveredTriangulation::from_doc(&PortalgonDoc::from_json(square).unwrap(), 1e-9).unwrap();
+    assert_eq!(one.surface_faces().count(), 2);
+    one.flip_to_delaunay(&DelaunayOptions::default()).unwrap();
+    let mut m = [[0.0; 2]; 2];
+    for (i, j, v) in one.laplacian().triplets() {
+        m[i as usize][j as usize] += v;
+    }
+    for i in 0..2 {
+        for j in 0..2 {
+            assert!((m[i][j] - l[i][j]).abs() < 1e-12, "{m:?} {l:?}");
+        }
+    }
+    // A side of the square glued to a side of another length is named by the file's polygon.
+    let unequal = square
+        .replace("[[0, 1], [0, 3], true]", "[[0, 0], [0, 3], true]")
+        .replace("[1, 0], [1, 1], [0, 1]", "[2, 0], [2, 1], [0, 1]");
+    let e = CoveredTriangulation::from_doc(&PortalgonDoc::from_json(&unequal).unwrap(), 1e-9)
+        .unwrap_err();
+    assert!(e.to_string().contains("(0, 0) and (0, 3)"), "{e}");
     // The same file as version 1 is refused where the reversed gluing is.
     let v1 = text.replace("\"version\": 2", "\"version\": 1");
     assert!(PortalgonDoc::from_json(&v1).is_err());

@@ -174,8 +174,10 @@ impl CoveredTriangulation {
         })
     }
 
-    /// The surface a portalgon file of triangles describes, glued in any way (format version
-    /// 2: orientation-reversing gluings, free sides as boundary, several pieces): its cover
+    /// The surface a portalgon file describes, glued in any way (format version 2:
+    /// orientation-reversing gluings, free sides as boundary, several pieces; polygons of more
+    /// than three sides cut into triangles first, `PortalgonDoc::cut_into_triangles`, errors
+    /// naming the file's polygon): its cover
     /// built from the gluing itself ([`ClosedCover::from_twisted_gluing`]: loops, multi-edges
     /// and triangles glued to themselves are allowed, as no vertex numbering describes them).
     /// Triangle `p` of K is polygon `p`; K's vertices are the labels when the file gives them
@@ -191,13 +193,20 @@ impl CoveredTriangulation {
     /// [`PortalgonError::VertexLabels`] (labels that disagree with the gluing), the lengths'
     /// errors ([`PortalgonError::NonFinite`], ...), each naming the polygon and side.
     pub fn from_doc(doc: &PortalgonDoc, tolerance: f64) -> Result<Self, PortalgonError> {
+        let cut;
+        let (doc, polygon_index) = if doc.polygons.iter().all(PolygonDoc::is_triangle) {
+            (doc, (0..doc.polygons.len()).collect())
+        } else {
+            let (triangles, polygon_of) = doc.cut_into_triangles(tolerance)?;
+            cut = triangles;
+            (&cut, polygon_of)
+        };
         let TwistedParts {
             sides,
             pairs,
             reversed,
             labels,
         } = doc.twisted_parts()?;
-        let polygon_index: Vec<usize> = (0..sides.len()).collect();
         let g = TriangleGluing {
             sides: &sides,
             pairs: &pairs,

@@ -411,6 +411,17 @@ pub struct PolygonDoc {
     pub vertices: Option<Vec<u32>>,
 }
 
+impl PolygonDoc {
+    /// Whether the polygon has three sides (by corners or lengths).
+    pub fn is_triangle(&self) -> bool {
+        match (&self.corners, &self.lengths) {
+            (Some(c), _) => c.len() == 3,
+            (None, Some(l)) => l.len() == 3,
+            (None, None) => false,
+        }
+    }
+}
+
 /// How [`PortalgonDoc::from_triangulation`] writes triangles.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TriangleStyle {
@@ -814,8 +825,8 @@ impl PortalgonDoc {
         Ok(sides)
     }
 
-    /// Whether every polygon is a triangle, and the surface is not one closed oriented piece:
-    /// some gluing reverses orientation, some side is free or the gluing has several pieces
+    /// Whether the surface is not one closed oriented piece: some gluing reverses orientation,
+    /// some side is free or the gluing has several pieces
     /// ([`crate::CoveredTriangulation::from_doc`] reads it). Structural only (no number read).
     pub fn needs_cover(&self) -> bool {
         let counts: Vec<usize> = self
@@ -827,10 +838,8 @@ impl PortalgonDoc {
                 _ => 0,
             })
             .collect();
-        if counts.iter().any(|&k| k != 3) {
-            return false;
-        }
-        if self.reversed.contains(&true) || 2 * self.matching.len() != 3 * counts.len() {
+        let sides: usize = counts.iter().sum();
+        if self.reversed.contains(&true) || 2 * self.matching.len() != sides {
             return true;
         }
         let mut pieces = surftopo_mesh::UnionFind::new(counts.len());
@@ -878,6 +887,124 @@ impl PortalgonDoc {
             reversed,
             labels,
         })
+    }
+
+    /// The file with every polygon of more than three sides cut into triangles (each polygon
+    /// in its own plane, [`crate::geometry::triangulate_polygon`]: O(k log k) exact predicates,
+    /// no flat triangle), for [`crate::CoveredTriangulation::from_doc`]: the polygon's sides
+    /// keep their gluings (reversed or not) or stay free, the diagonals are glued plainly,
+    /// labels are kept. Returns it with the file's polygon of each triangle. Checked first on
+    /// the file itself, so that errors name its polygons and sides: the matching's structure,
+    /// every polygon simple and counter-clockwise (corners needed beyond three sides), glued
+    /// sides of equal lengths within `tolerance`.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`],
+    /// [`PortalgonError::LengthsNotTriangle`], [`PortalgonError::NotSimple`] and the other
+    /// shape errors of [`check_polygon`], [`PortalgonError::UnequalSides`].
+    pub(crate) fn cut_into_triangles(
+        &self,
+        tolerance: f64,
+    ) -> Result<(PortalgonDoc, Vec<usize>), PortalgonError> {
+        let counts = self.side_counts()?;
+        self.checked_sides(&counts)?;
+        self.labels_present()?;
+        let mut offset = vec![0usize; counts.len() + 1];
+        for (p, &k) in counts.iter().enumerate() {
+            offset[p + 1] = offset[p] + k;
+        }
+        let mut length = vec![0.0f64; offset[counts.len()]];
+        // Per side of the file: the triangle side it becomes.
+        let mut new_side = vec![[0usize; 2]; offset[counts.len()]];
+        let (mut polygons, mut matching, mut reversed) = (Vec::new(), Vec::new(), Vec::new());
+        let mut polygon_of = Vec::new();
+        for (polygon, p) in self.polygons.iter().enumerate() {
+            let k = counts[polygon];
+            let corners = match &p.corners {
+                Some(c) => {
+                    let points: Vec<Point<f64>> = scalar_corners(polygon, c)?;
+                    check_polygon(polygon, &points)?;
+                    for i in 0..k {
+                        let (a, b) = (points[i], points[(i + 1) % k]);
+                        length[offset[polygon] + i] = (a[0] - b[0]).hypot(a[1] - b[1]);
+                    }
+                    points
+                }
+                None => {
+                    let l = p.lengths.as_deref().unwrap_or_default();
+                    for (i, x) in l.iter().enumerate() {
+                        length[offset[polygon] + i] = x.to_f64();
+                    }
+                    Vec::new()
+                }
+            };
+            if k == 3 {
+                for i in 0..3 {
+                    new_side[offset[polygon] + i] = [polygons.len(), i];
+                }
+                polygons.push(p.clone());
+                polygon_of.push(polygon);
+                continue;
+            }
+            let triangles =
+                crate::geometry::triangulate_polygon(&corners).ok_or(PortalgonError::NotAnArc {
+                    polygon,
+                    i: 0,
+                    j: 0,
+                })?;
+            let mut diagonal = std::collections::HashMap::new();
+            let given = p.corners.as_deref().unwrap_or_default();
+            for t in triangles {
+                let q = polygons.len();
+                for (s, (a, b)) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
+                    .into_iter()
+                    .enumerate()
+                {
+                    if b == (a + 1) % k {
+                        new_side[offset[polygon] + a] = [q, s];
+                    } else if let Some(other) = diagonal.remove(&(b, a)) {
+                        matching.push([other, [q, s]]);
+                        reversed.push(false);
+                    } else {
+                        diagonal.insert((a, b), [q, s]);
+                    }
+                }
+                polygons.push(PolygonDoc {
+                    corners: Some(t.iter().map(|&c| given[c].clone()).collect()),
+                    lengths: None,
+                    vertices: p
+                        .vertices
+                        .as_ref()
+                        .map(|v| t.iter().map(|&c| v[c]).collect()),
+                });
+                polygon_of.push(polygon);
+            }
+        }
+        for (k, &[[p, i], [q, j]]) in self.matching.iter().enumerate() {
+            let (a, b) = (length[offset[p] + i], length[offset[q] + j]);
+            if (a - b).abs() > tolerance * a.max(b) {
+                return Err(PortalgonError::UnequalSides {
+                    polygon_a: p,
+                    side_a: i,
+                    polygon_b: q,
+                    side_b: j,
+                    length_a: a,
+                    length_b: b,
+                    tolerance,
+                });
+            }
+            matching.push([new_side[offset[p] + i], new_side[offset[q] + j]]);
+            reversed.push(self.reversed.get(k).copied().unwrap_or(false));
+        }
+        let doc = PortalgonDoc {
+            format: self.format.clone(),
+            version: self.version,
+            comment: None,
+            polygons,
+            matching,
+            reversed,
+        };
+        Ok((doc, polygon_of))
     }
 
     /// The labels of a file of labelled triangles.
