@@ -13,20 +13,18 @@ import numpy as np
 import pytest
 
 import surftopo
-from test_every_surface import NON_ORIENTABLE, jitter, open_meshes, three_pieces
+from test_delaunay_every_surface import surfaces
+from test_every_surface import NON_ORIENTABLE
 
 
-def surfaces():
-    kinds = dict(open_meshes())
-    for name, make in NON_ORIENTABLE.items():
-        V, F = make()
-        kinds[name] = (jitter(V, 0.05, 7), F)
-    kinds["three pieces"] = three_pieces()[:2]
+def all_kinds():
+    """The kinds of test_delaunay_every_surface, and a closed torus."""
+    kinds = surfaces()
     kinds["closed torus"] = surftopo.torus(12, 6)
     return kinds
 
 
-SURFACES = surfaces()
+SURFACES = all_kinds()
 
 
 def cli_verdict(cli, tmp_path, a, b):
