@@ -341,35 +341,3 @@ fn flat_vertices_on_open_surfaces_are_undecided_and_the_wave_is_refused() {
         );
     }
 }
-
-#[test]
-fn portalgon_files_of_open_or_non_orientable_surfaces_are_refused_with_their_location() {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    for (kind, expected) in [
-        ("mobius-band", "its gluing reverses orientation"),
-        ("annulus", "is unmatched"),
-    ] {
-        let mesh = generate(d, &format!("{kind}.obj"), &[kind]);
-        let doc = d.join(format!("{kind}.json"));
-        surftopo()
-            .arg("delaunay")
-            .arg(&mesh)
-            .arg("-o")
-            .arg(&doc)
-            .assert()
-            .success();
-        let out = surftopo()
-            .arg("isometric")
-            .arg(&doc)
-            .arg(&mesh)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{stderr}");
-        assert!(
-            stderr.contains(&format!("{kind}.json: ")) && stderr.contains(expected),
-            "{stderr}"
-        );
-    }
-}

@@ -35,6 +35,12 @@ fn a_missing_gluing_of_a_big_polygon_is_named_before_any_cut() {
         }
         let out = command.output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
+        if !exact {
+            // Free sides are a boundary: one polygon without gluing is a disk, cut into
+            // triangles in O(k log k) and flipped on its cover.
+            assert!(out.status.success(), "{err}");
+            continue;
+        }
         assert_eq!(out.status.code(), Some(2), "{err}");
         assert!(err.contains("open.json"), "{err}");
         assert!(

@@ -42,8 +42,8 @@ pub use build::{
 pub use compact::Renumbering;
 pub use contract::{Contraction, LinkScratch};
 pub use cover::{
-    ClosedCover, CoveredSurface, Lifting, Plain, Sheets, contract_lifts, flip_lifts,
-    satisfies_link_condition, split_lifts,
+    ClosedCover, CoveredSurface, Lifting, Plain, Sheets, TwistedCover, TwistedGluing,
+    contract_lifts, flip_lifts, satisfies_link_condition, split_lifts,
 };
 pub use error::{BuildError, EditError, InvariantError};
 pub use gluing::Side;

@@ -38,6 +38,19 @@ impl Covered {
         })
     }
 
+    /// The surface of a portalgon file of triangles with free sides, orientation-reversing
+    /// gluings or several pieces ([`CoveredTriangulation::from_doc`]); rows are its labels.
+    pub fn from_doc(doc: &surftopo_intrinsic::PortalgonDoc) -> Result<Self, Failure> {
+        let tri = CoveredTriangulation::from_doc(doc, surftopo_intrinsic::DEFAULT_LENGTH_TOLERANCE)
+            .map_err(Failure::Portalgon)?;
+        let count = tri.surface_vertex_count();
+        Ok(Self {
+            tri,
+            rows: (0..count as u32).collect(),
+            count,
+        })
+    }
+
     /// Runs `surftopo_intrinsic::intrinsic_delaunay` with `request` (which asks for the
     /// triangulation): the flipped surface and the output.
     pub fn delaunay(self, request: &DelaunayRequest) -> Result<(Self, DelaunayOutput), Failure> {

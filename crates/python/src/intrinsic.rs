@@ -14,10 +14,11 @@ use pyo3::types::{PyDict, PyTuple};
 use std::time::Instant;
 use surftopo_intrinsic::geometry::Rational;
 use surftopo_intrinsic::{
-    DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE, DEFAULT_MOLLIFY_FACTOR,
-    DEFAULT_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs, DelaunayRequest,
-    DelaunayStats, FlipReport, IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix,
-    TriangleStyle, TuftedOptions, cotan_laplacian, delaunay_tessellation, lumped_mass,
+    CoveredTriangulation, DEFAULT_COCIRCULAR_TOLERANCE, DEFAULT_LENGTH_TOLERANCE,
+    DEFAULT_MOLLIFY_FACTOR, DEFAULT_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs,
+    DelaunayRequest, DelaunayStats, FlipReport, IntrinsicTriangulation, IsometryDecision,
+    IsometryOptions, PortalgonDoc, SparseMatrix, TriangleStyle, TuftedOptions, cotan_laplacian,
+    delaunay_tessellation, lumped_mass,
 };
 use surftopo_mesh::{BuildReport, CoveredSurface};
 
@@ -273,9 +274,15 @@ impl Portalgon {
     /// Parses and validates a portalgon JSON text.
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
-        let doc = PortalgonDoc::from_json(text)
-            .and_then(|doc| doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map(|_| doc))
-            .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+        let doc =
+            PortalgonDoc::from_json(text).map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+        if doc.needs_cover() {
+            // Triangles with free sides, reversed gluings (version 2) or several pieces.
+            Covered::from_doc(&doc).map_err(|f| f.into_pyerr(py))?;
+        } else {
+            doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE)
+                .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+        }
         Ok(Self { doc })
     }
 
@@ -658,6 +665,61 @@ fn located_surface(
     )
 }
 
+/// A surface argument that is not one closed orientable piece and is held on its cover: a
+/// [`Portalgon`] of triangles with free sides, reversed gluings or several pieces, or such an
+/// [`Intrinsic`]; `None` for anything else.
+fn covered_surface(py: Python<'_>, surface: &Bound<'_, PyAny>) -> PyResult<Option<Covered>> {
+    if let Ok(p) = surface.cast::<Portalgon>()
+        && p.get().doc.needs_cover()
+    {
+        return Covered::from_doc(&p.get().doc)
+            .map(Some)
+            .map_err(|f| f.into_pyerr(py));
+    }
+    if let Ok(t) = surface.cast::<Intrinsic>()
+        && let Held::Covered(covered) = &t.get().held
+    {
+        return Ok(Some(Covered {
+            tri: covered.tri.clone(),
+            rows: covered.rows.clone(),
+            count: covered.count,
+        }));
+    }
+    Ok(None)
+}
+
+/// A surface argument of any kind: one closed orientable piece as [`Located`], any other on
+/// its cover (arrays of a mesh with boundary, non-orientable or in pieces too).
+fn any_surface(py: Python<'_>, surface: &Bound<'_, PyAny>) -> PyResult<Result<Located, Covered>> {
+    if let Some(covered) = covered_surface(py, surface)? {
+        return Ok(Err(covered));
+    }
+    let arrays = if let Ok(pair) = surface.cast::<PyTuple>()
+        && pair.len() == 2
+        && surface.cast::<Portalgon>().is_err()
+    {
+        Some((pair.get_item(0)?, pair.get_item(1)?))
+    } else {
+        None
+    };
+    let Some((vertices, faces)) = arrays else {
+        return located_surface(py, surface, None).map(Ok);
+    };
+    let vertices = VertexArray::extract(&vertices)?;
+    let faces = arrays::any_faces(&faces, vertices.len())?;
+    let positions = vertices.positions().into_owned();
+    py.detach(|| {
+        let cut = faces.triangulated(&positions);
+        match Held::from_arrays(&positions, &cut.triangles) {
+            Ok(Held::Closed(located)) => Ok(Ok(located)),
+            Ok(Held::Covered(covered)) => Ok(Err(covered)),
+            Ok(Held::Tufted { .. }) => unreachable!("from_arrays never takes the tufted cover"),
+            Err(f) => Err(cut.on_faces(f)),
+        }
+    })
+    .map_err(|f| f.into_pyerr(py))
+}
+
 /// What `intrinsic_delaunay` starts from: a surface to run the request on, or the tufted cover
 /// already flipped (with its figures, and whether it was taken because the soup is not a
 /// manifold).
@@ -727,14 +789,8 @@ fn delaunay_surface(
         })?
         .map_err(|f| f.into_pyerr(py));
     }
-    if let Ok(t) = surface.cast::<Intrinsic>()
-        && let Held::Covered(covered) = &t.get().held
-    {
-        return Ok(Start::Run(Held::Covered(Covered {
-            tri: covered.tri.clone(),
-            rows: covered.rows.clone(),
-            count: covered.count,
-        })));
+    if let Some(covered) = covered_surface(py, surface)? {
+        return Ok(Start::Run(Held::Covered(covered)));
     }
     if let Ok(pair) = surface.cast::<PyTuple>()
         && pair.len() == 2
@@ -1043,8 +1099,10 @@ pub fn _laplacian_timed<'py>(
     laplacian_and_seconds(py, vertices, faces, &request, "csr", tufted)
 }
 
-/// Whether two closed polyhedral surfaces are isometric (Corollary 2 of the intrinsic-Delaunay
-/// paper: equal canonical Delaunay tessellations).
+/// Whether two compact polyhedral surfaces are isometric: closed orientable ones by Corollary 2
+/// of the intrinsic-Delaunay paper (equal canonical Delaunay tessellations), any other kind
+/// (boundary loops, non-orientable, several pieces) on their covers as `surftopo isometric`
+/// decides it (`docs/isometry_every_surface.md`). True only for the verdict "isometric".
 #[pyfunction]
 #[pyo3(signature = (a, b, allow_reflection = true))]
 pub fn isometric(
@@ -1053,16 +1111,69 @@ pub fn isometric(
     b: &Bound<'_, PyAny>,
     allow_reflection: bool,
 ) -> PyResult<bool> {
-    let first = located_surface(py, a, None)?.tri;
-    let second = located_surface(py, b, None)?.tri;
     let options = IsometryOptions {
         allow_reflection,
         ..IsometryOptions::default()
     };
+    match (any_surface(py, a)?, any_surface(py, b)?) {
+        (Ok(first), Ok(second)) => {
+            let (first, second) = (first.tri, second.tri);
+            interruptible(py, move |_| {
+                surftopo_intrinsic::isometric(first, second, &options)
+            })?
+            .map(|outcome| outcome.is_isometric())
+            .map_err(|e| Failure::Isometry(e).into_pyerr(py))
+        }
+        (first, second) => {
+            decide_on_cover(py, first, second, options).map(|decision| decision.is_isometric())
+        }
+    }
+}
+
+/// The verdict of `surftopo isometric` (its default method) on two surfaces of any kind, and
+/// its reason: `"isometric"`, `"not isometric"` (a proof), `"undecidable in double precision"`
+/// or `"undecided"` (a flat vertex on a surface with boundary or without orientation).
+#[pyfunction]
+pub fn isometry_verdict(
+    py: Python<'_>,
+    a: &Bound<'_, PyAny>,
+    b: &Bound<'_, PyAny>,
+) -> PyResult<(&'static str, String)> {
+    let options = IsometryOptions::default();
+    let decision = match (any_surface(py, a)?, any_surface(py, b)?) {
+        (Ok(first), Ok(second)) => {
+            let (first, second) = (first.tri, second.tri);
+            interruptible(py, move |_| {
+                surftopo_intrinsic::decide_isometry(&first, &second, &options)
+            })?
+            .map_err(|e| Failure::Isometry(e).into_pyerr(py))?
+        }
+        (first, second) => decide_on_cover(py, first, second, options)?,
+    };
+    let verdict = match &decision {
+        IsometryDecision::Isometric(_) => "isometric",
+        IsometryDecision::NotIsometric(_) => "not isometric",
+        IsometryDecision::Undecidable(_) => "undecidable in double precision",
+        IsometryDecision::Undecided(_) => "undecided",
+    };
+    Ok((verdict, decision.to_string()))
+}
+
+/// `decide_isometry_on_cover` on two surfaces, a closed orientable one as its own cover.
+fn decide_on_cover(
+    py: Python<'_>,
+    first: Result<Located, Covered>,
+    second: Result<Located, Covered>,
+    options: IsometryOptions,
+) -> PyResult<IsometryDecision> {
+    let cover = |s: Result<Located, Covered>| match s {
+        Ok(located) => CoveredTriangulation::from_closed(located.tri),
+        Err(covered) => covered.tri,
+    };
+    let (first, second) = (cover(first), cover(second));
     interruptible(py, move |_| {
-        surftopo_intrinsic::isometric(first, second, &options)
+        surftopo_intrinsic::decide_isometry_on_cover(&first, &second, &options)
     })?
-    .map(|outcome| outcome.is_isometric())
     .map_err(|e| Failure::Isometry(e).into_pyerr(py))
 }
 

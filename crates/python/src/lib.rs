@@ -40,6 +40,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(intrinsic::laplacian, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::_laplacian_timed, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::isometric, m)?)?;
+    m.add_function(wrap_pyfunction!(intrinsic::isometry_verdict, m)?)?;
     m.add_function(wrap_pyfunction!(intrinsic::flat_torus, m)?)?;
     m.add_function(wrap_pyfunction!(census::census, m)?)?;
     m.add_function(wrap_pyfunction!(census::canonical_form, m)?)?;

@@ -204,9 +204,18 @@ def test_a_non_orientable_tessellation_is_a_version_2_document():
     doc = json.loads(p.to_json())
     assert doc["version"] == 2
     assert p.area == pytest.approx(surftopo.laplacian(V, F)[1].sum(), rel=1e-12)
-    # The oriented reader refuses it by place; an orientable one reads back.
-    with pytest.raises(surftopo.PortalgonError, match="polygon"):
-        surftopo.Portalgon.from_json(p.to_json())
+    # Read back as a version-2 surface (cells of more sides are cut into triangles): the unit
+    # square glued to itself with a half twist is a Möbius band of area 1.
+    assert surftopo.Portalgon.from_json(p.to_json()).polygon_count == p.polygon_count
+    square = {"format": "surftopo-portalgon", "version": 2,
+              "polygons": [{"corners": [[0, 0], [1, 0], [1, 1], [0, 1]]}],
+              "matching": [[[0, 1], [0, 3], True]]}
+    band = surftopo.intrinsic_delaunay(surftopo.Portalgon.from_json(json.dumps(square)))
+    assert band.mass().sum() == pytest.approx(1.0, rel=1e-12)
+    assert abs(band.laplacian().sum(axis=1)).max() < 1e-12
+    square["polygons"][0]["corners"][2] = [1, 2]
+    with pytest.raises(surftopo.PortalgonError, match=r"\(0, 1\) and \(0, 3\)"):
+        surftopo.Portalgon.from_json(json.dumps(square))
     q = surftopo.intrinsic_delaunay(*surftopo.annulus(12, 3)).tessellation()
     assert surftopo.Portalgon.from_json(q.to_json()).polygon_count == q.polygon_count
 

@@ -237,24 +237,7 @@ pub fn load_numbered(
 ) -> anyhow::Result<(IntrinsicTriangulation, Option<InputNumbering>)> {
     let name = crate::input::name(path);
     if is_json_input(path)? {
-        let bytes = crate::input::input_bytes(path)?;
-        let doc = PortalgonDoc::from_slice(&bytes).map_err(|e| invalid(format!("{name}: {e}")))?;
-        drop(bytes);
-        crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
-        let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
-        let tri = match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
-            // A tessellation (`delaunay --tessellation`): its polygons cut into triangles.
-            Err(PortalgonError::NotTriangle { .. }) => {
-                // Every side glued before any polygon is checked or cut: a missing gluing is
-                // named at once.
-                doc.check_closed().map_err(fail)?;
-                let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
-                let triangles = p.triangulated().map_err(fail)?;
-                IntrinsicTriangulation::from_portalgon(&triangles, DEFAULT_LENGTH_TOLERANCE)
-                    .map_err(fail)
-            }
-            other => other.map_err(fail),
-        }?;
+        let tri = closed_from_doc(&name, &read_doc(path)?)?;
         return Ok((tri, None));
     }
     let loaded = crate::input::read_surface(path, weld)?;
@@ -267,6 +250,50 @@ pub fn load_numbered(
         IntrinsicTriangulation::from_positions(loaded.surface.mesh, &loaded.surface.positions)
             .map_err(|e| invalid(format!("{name}: {e}")))?;
     Ok((tri, Some(numbering)))
+}
+
+/// Reads a portalgon JSON file within the limits (`--max-input-bytes` for the text,
+/// `--max-elements` for the polygons).
+fn read_doc(path: &Path) -> anyhow::Result<PortalgonDoc> {
+    let name = crate::input::name(path);
+    let bytes = crate::input::input_bytes(path)?;
+    let doc = PortalgonDoc::from_slice(&bytes).map_err(|e| invalid(format!("{name}: {e}")))?;
+    drop(bytes);
+    crate::limits::check_elements(&name, doc.polygons.len() as u64, "polygons")?;
+    Ok(doc)
+}
+
+/// The intrinsic triangulation of a portalgon file of one closed oriented piece: a
+/// triangulation, or a tessellation (`delaunay --tessellation`) whose polygons are cut into
+/// triangles.
+fn closed_from_doc(name: &str, doc: &PortalgonDoc) -> anyhow::Result<IntrinsicTriangulation> {
+    let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
+    match doc.to_triangulation(DEFAULT_LENGTH_TOLERANCE) {
+        Err(PortalgonError::NotTriangle { .. }) => {
+            // Every side glued before any polygon is checked or cut: a missing gluing is
+            // named at once.
+            doc.check_closed().map_err(fail)?;
+            let p = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).map_err(fail)?;
+            let triangles = p.triangulated().map_err(fail)?;
+            IntrinsicTriangulation::from_portalgon(&triangles, DEFAULT_LENGTH_TOLERANCE)
+                .map_err(fail)
+        }
+        other => other.map_err(fail),
+    }
+}
+
+/// Reads a portalgon JSON file of any surface kind: one closed oriented piece as an intrinsic
+/// triangulation ([`load_intrinsic`]: every method), triangles glued with boundary sides,
+/// orientation-reversing gluings (format version 2) or in several pieces on their closed cover
+/// ([`CoveredTriangulation::from_doc`]: flipping). Its vertices are its labels.
+pub fn load_json(path: &Path) -> anyhow::Result<DelaunayInput> {
+    let (name, doc) = (crate::input::name(path), read_doc(path)?);
+    if doc.needs_cover() {
+        let tri = CoveredTriangulation::from_doc(&doc, DEFAULT_LENGTH_TOLERANCE)
+            .map_err(|e| invalid(format!("{name}: {e}")))?;
+        return Ok(DelaunayInput::Covered(tri));
+    }
+    closed_from_doc(&name, &doc).map(DelaunayInput::Lengths)
 }
 
 /// Reads a mesh file of any surface kind, with the input's vertex numbering: a closed
@@ -347,10 +374,8 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         let p = crate::progress::step("reading", || load_exact(&options.input))?;
         (DelaunayInput::Exact(p), None)
     } else if is_json_input(&options.input)? {
-        let (tri, numbering) = crate::progress::step("reading", || {
-            load_numbered(&options.input, options.weld.weld)
-        })?;
-        (DelaunayInput::Lengths(tri), numbering)
+        let input = crate::progress::step("reading", || load_json(&options.input))?;
+        (input, None)
     } else {
         match load_mesh(&options.input, options.weld.weld) {
             Ok((input, numbering)) => (input, Some(numbering)),

@@ -10,7 +10,9 @@
 //! the wave and Theorem 1 are refused there.
 
 use crate::args::{JsonArg, WeldArg};
-use crate::commands::delaunay::{Method, MethodOptions, is_json_input, load_exact, load_intrinsic};
+use crate::commands::delaunay::{
+    Method, MethodOptions, is_json_input, load_exact, load_intrinsic, load_json,
+};
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{FlatDelaunayError, first_cone_point};
@@ -262,11 +264,26 @@ impl Input {
     }
 }
 
-/// Reads an input: a portalgon file as a closed orientable triangulation ([`load_valid`]), a
-/// mesh file of any kind on its closed cover unless it is one closed orientable piece.
+/// Reads an input: a portalgon file of one closed oriented piece as its triangulation, of any
+/// other kind (format version 2, boundary sides, several pieces) on its closed cover
+/// ([`load_json`]); a mesh file of any kind on its closed cover unless it is one closed
+/// orientable piece.
 fn load_input(path: &Path, weld: bool) -> anyhow::Result<Input> {
     if is_json_input(path)? {
-        return load_valid(path, weld).map(Input::Closed);
+        return match load_json(path)? {
+            DelaunayInput::Covered(tri) => {
+                crate::commands::delaunay::validated(path, tri.cover())?;
+                Ok(Input::Any(tri))
+            }
+            DelaunayInput::Lengths(tri) => {
+                crate::commands::delaunay::validated(path, &tri)?;
+                Ok(Input::Closed(tri))
+            }
+            DelaunayInput::Exact(_) => Err(anyhow::anyhow!(
+                "{}: read in double precision, but given as exact",
+                shown(path)
+            )),
+        };
     }
     let name = crate::input::name(path);
     let loaded = crate::input::read_covered(path, weld)?;

@@ -29,20 +29,25 @@
 
 pub(crate) mod isometry;
 
-use crate::error::{DelaunayError, GeometryError};
+use crate::error::{DelaunayError, GeometryError, PortalgonError};
 use crate::flip::stats::DelaunayStats;
 use crate::flip::tessellation::{CellSurface, Tessellation, tessellate};
 use crate::flip::{
     DelaunayOptions, FlipReport, Gluing, flip_glued, left_non_delaunay, product_bound,
 };
 use crate::formats::portalgon_json::{
-    FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
+    FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc, TwistedParts,
 };
 use crate::laplacian::assemble_laplacian;
 use crate::sparse::SparseMatrix;
+use crate::triangulation::convert::{
+    TriangleGluing, check_glued_lengths, glued_length, gluing_error, label_vertices,
+};
 use crate::triangulation::{IntrinsicTriangulation, trig};
 use surftopo_mesh::geometry::Point3;
-use surftopo_mesh::{ClosedCover, EdgeId, FaceId, HalfedgeId, Lifting, SurfaceMesh, VertexId};
+use surftopo_mesh::{
+    ClosedCover, EdgeId, FaceId, HalfedgeId, Lifting, SurfaceMesh, TwistedGluing, VertexId,
+};
 
 /// An intrinsic triangulation of a compact surface on its closed cover (see the module doc).
 #[derive(Clone, Debug, PartialEq)]
@@ -84,6 +89,24 @@ impl CoveredTriangulation {
         cover: &ClosedCover,
         length: impl Fn(u32, u32) -> f64,
     ) -> Result<Self, GeometryError> {
+        let sheets = &cover.sheets;
+        let mesh = &cover.mesh;
+        Self::from_cover_edge_lengths(cover, |e| {
+            let [a, b] = mesh.edge_vertices(e);
+            length(sheets.class(a), sheets.class(b))
+        })
+    }
+
+    /// The intrinsic triangulation of K with each edge of D without an apex end as long as
+    /// `length(e)` says (edges of K given by a gluing, loops and multi-edges included: the
+    /// same length for an edge and its mirror); apex edges as [`Self::from_cover`] makes them.
+    ///
+    /// # Errors
+    /// [`GeometryError::NonFiniteLength`] when a length is not finite.
+    pub fn from_cover_edge_lengths(
+        cover: &ClosedCover,
+        length: impl Fn(EdgeId) -> f64,
+    ) -> Result<Self, GeometryError> {
         let mesh = &cover.mesh;
         let sheets = &cover.sheets;
         let surface_vertices = sheets
@@ -104,7 +127,7 @@ impl CoveredTriangulation {
         for e in mesh.edges() {
             let [a, b] = mesh.edge_vertices(e);
             if !is_apex(a) && !is_apex(b) {
-                lengths[e.idx()] = length(class[a.idx()], class[b.idx()]);
+                lengths[e.idx()] = length(e);
             }
         }
         // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
@@ -151,6 +174,82 @@ impl CoveredTriangulation {
             mirror,
             frozen,
         })
+    }
+
+    /// The surface a portalgon file describes, glued in any way (format version 2:
+    /// orientation-reversing gluings, free sides as boundary, several pieces; polygons of more
+    /// than three sides cut into triangles first, `PortalgonDoc::cut_into_triangles`, errors
+    /// naming the file's polygon): its cover
+    /// built from the gluing itself ([`ClosedCover::from_twisted_gluing`]: loops, multi-edges
+    /// and triangles glued to themselves are allowed, as no vertex numbering describes them).
+    /// Triangle `p` of K is polygon `p`; K's vertices are the labels when the file gives them
+    /// (else numbered in order of first corner), so [`Self::to_doc`]'s file reads back with the
+    /// same vertices (the rows of the matrices). Each edge is as long as its glued sides (their
+    /// mean; they must agree within `tolerance`, relative), a boundary edge as its side.
+    /// Triangle inequalities are checked later ([`IntrinsicTriangulation::validate`] on
+    /// [`Self::cover`]).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NotTriangle`], [`PortalgonError::NoSuchSide`],
+    /// [`PortalgonError::MatchedTwice`], [`PortalgonError::UnequalSides`],
+    /// [`PortalgonError::VertexLabels`] (labels that disagree with the gluing), the lengths'
+    /// errors ([`PortalgonError::NonFinite`], ...), each naming the polygon and side.
+    pub fn from_doc(doc: &PortalgonDoc, tolerance: f64) -> Result<Self, PortalgonError> {
+        let cut;
+        let (doc, polygon_index) = if doc.polygons.iter().all(PolygonDoc::is_triangle) {
+            (doc, (0..doc.polygons.len()).collect())
+        } else {
+            let (triangles, polygon_of) = doc.cut_into_triangles(tolerance)?;
+            cut = triangles;
+            (&cut, polygon_of)
+        };
+        let TwistedParts {
+            sides,
+            pairs,
+            reversed,
+            labels,
+        } = doc.twisted_parts()?;
+        let g = TriangleGluing {
+            sides: &sides,
+            pairs: &pairs,
+            labels: labels.as_deref(),
+            polygon_index: &polygon_index,
+            tolerance,
+        };
+        check_glued_lengths(&g)?;
+        let gluing = TwistedGluing {
+            face_count: sides.len(),
+            pairs: &pairs,
+            reversed: &reversed,
+        };
+        let fail = |e| gluing_error(&g, e);
+        let (classes, vertex_count) = gluing.corner_vertices().map_err(fail)?;
+        let corner_labels: Vec<u32> = match &labels {
+            Some(labels) => {
+                let label_of = label_vertices(&g, labels, |c| classes[c] as usize, vertex_count)?;
+                classes.iter().map(|&v| label_of[v as usize]).collect()
+            }
+            None => classes,
+        };
+        let twisted = ClosedCover::from_twisted_gluing(&gluing, &corner_labels, vertex_count)
+            .map_err(fail)?;
+        // The length of each side of K: a glued pair's common length, a free side's own.
+        let mut side_length: Vec<f64> = sides.iter().flatten().copied().collect();
+        for &(s, t) in &pairs {
+            let l = glued_length(g.side_length(s), g.side_length(t));
+            side_length[3 * s.face as usize + s.side as usize] = l;
+            side_length[3 * t.face as usize + t.side as usize] = l;
+        }
+        let n = sides.len();
+        let on_k = |h: HalfedgeId| {
+            let s = twisted.side_of_halfedge[h.idx()];
+            ((s.face as usize) < n).then(|| side_length[3 * s.face as usize + s.side as usize])
+        };
+        let tri = Self::from_cover_edge_lengths(&twisted.cover, |e| {
+            let h = e.halfedge();
+            on_k(h).or_else(|| on_k(h.twin())).unwrap_or(0.0)
+        })?;
+        Ok(tri)
     }
 
     /// A closed orientable surface as its own cover (no apex, no mirror, vertex ids as the

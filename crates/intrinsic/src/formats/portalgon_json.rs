@@ -411,6 +411,17 @@ pub struct PolygonDoc {
     pub vertices: Option<Vec<u32>>,
 }
 
+impl PolygonDoc {
+    /// Whether the polygon has three sides (by corners or lengths).
+    pub fn is_triangle(&self) -> bool {
+        match (&self.corners, &self.lengths) {
+            (Some(c), _) => c.len() == 3,
+            (None, Some(l)) => l.len() == 3,
+            (None, None) => false,
+        }
+    }
+}
+
 /// How [`PortalgonDoc::from_triangulation`] writes triangles.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TriangleStyle {
@@ -564,8 +575,19 @@ impl PortalgonDoc {
             .collect()
     }
 
-    /// Checks the matching's side references and that no side is matched twice.
+    /// Checks the matching's side references, that no side is matched twice and that no
+    /// gluing reverses orientation (an oriented portalgon).
     fn checked_pairs(&self, counts: &[usize]) -> Result<Vec<[[usize; 2]; 2]>, PortalgonError> {
+        self.checked_sides(counts)?;
+        if let Some(k) = self.reversed.iter().position(|&r| r) {
+            let [polygon, side] = self.matching[k][0];
+            return Err(PortalgonError::ReversedGluing { polygon, side });
+        }
+        Ok(self.matching.clone())
+    }
+
+    /// Checks the matching's side references and that no side is matched twice (or to itself).
+    fn checked_sides(&self, counts: &[usize]) -> Result<(), PortalgonError> {
         let mut offset = vec![0usize; counts.len() + 1];
         for (p, &k) in counts.iter().enumerate() {
             offset[p + 1] = offset[p] + k;
@@ -583,11 +605,7 @@ impl PortalgonDoc {
                 *u = true;
             }
         }
-        if let Some(k) = self.reversed.iter().position(|&r| r) {
-            let [polygon, side] = self.matching[k][0];
-            return Err(PortalgonError::ReversedGluing { polygon, side });
-        }
-        Ok(self.matching.clone())
+        Ok(())
     }
 
     /// Whether every side of every polygon is glued, checked on the file's structure alone
@@ -727,6 +745,35 @@ impl PortalgonDoc {
         }
         let pairs = self.checked_pairs(&counts)?;
         let labelled = self.labels_present()?;
+        let sides = self.triangle_sides()?;
+        let glue: Vec<(Side, Side)> = pairs
+            .iter()
+            .map(|&pair| pair.map(as_side))
+            .map(|[a, b]| (a, b))
+            .collect();
+        let labels: Vec<[u32; 3]> = if labelled {
+            self.triangle_labels()
+        } else {
+            Vec::new()
+        };
+        let polygon_index: Vec<usize> = (0..self.polygons.len()).collect();
+        triangulation_from_gluing(&TriangleGluing {
+            sides: &sides,
+            pairs: &glue,
+            labels: labelled.then_some(&labels[..]),
+            polygon_index: &polygon_index,
+            tolerance,
+        })
+    }
+
+    /// The side lengths of every polygon of a file of triangles: given (`lengths`) or measured
+    /// (`corners`, which must not run clockwise; exact corners measured exactly, then rounded
+    /// once). Triangle inequalities are not checked (degenerate input may be mollified).
+    ///
+    /// # Errors
+    /// [`PortalgonError::NotCounterClockwise`], [`PortalgonError::NonFinite`],
+    /// [`PortalgonError::NegativeLength`].
+    pub(crate) fn triangle_sides(&self) -> Result<Vec<[f64; 3]>, PortalgonError> {
         let mut sides = Vec::with_capacity(self.polygons.len());
         for (polygon, p) in self.polygons.iter().enumerate() {
             let l = match (&p.corners, &p.lengths) {
@@ -775,40 +822,200 @@ impl PortalgonDoc {
             }
             sides.push(l);
         }
-        let glue: Vec<(Side, Side)> = pairs
+        Ok(sides)
+    }
+
+    /// Whether the surface is not one closed oriented piece: some gluing reverses orientation,
+    /// some side is free or the gluing has several pieces
+    /// ([`crate::CoveredTriangulation::from_doc`] reads it). Structural only (no number read).
+    pub fn needs_cover(&self) -> bool {
+        let counts: Vec<usize> = self
+            .polygons
             .iter()
-            .map(|&[[p, i], [q, j]]| {
-                (
-                    Side {
-                        face: p as u32,
-                        side: i as u8,
-                    },
-                    Side {
-                        face: q as u32,
-                        side: j as u8,
-                    },
-                )
+            .map(|p| match (&p.corners, &p.lengths) {
+                (Some(c), None) => c.len(),
+                (None, Some(l)) => l.len(),
+                _ => 0,
             })
             .collect();
-        let labels: Vec<[u32; 3]> = if labelled {
-            self.polygons
-                .iter()
-                .map(|p| {
-                    let v = p.vertices.as_deref().unwrap_or_default();
-                    [v[0], v[1], v[2]]
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
-        let polygon_index: Vec<usize> = (0..self.polygons.len()).collect();
-        triangulation_from_gluing(&TriangleGluing {
-            sides: &sides,
-            pairs: &glue,
-            labels: labelled.then_some(&labels[..]),
-            polygon_index: &polygon_index,
-            tolerance,
+        let sides: usize = counts.iter().sum();
+        if self.reversed.contains(&true) || 2 * self.matching.len() != sides {
+            return true;
+        }
+        let mut pieces = surftopo_mesh::UnionFind::new(counts.len());
+        for &[[p, _], [q, _]] in &self.matching {
+            if p < counts.len() && q < counts.len() {
+                pieces.union(p as u32, q as u32);
+            }
+        }
+        (0..counts.len() as u32).any(|p| pieces.find(p) != 0)
+    }
+
+    /// The checked pieces of a file of triangles glued in any way, for
+    /// [`crate::CoveredTriangulation::from_doc`]: the side lengths
+    /// ([`Self::triangle_sides`]), the pairs as sides, per pair whether it reverses
+    /// orientation, and each corner's label if the file gives them.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NotTriangle`], the matching's structural errors
+    /// ([`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`]), the lengths' errors,
+    /// [`PortalgonError::VertexLabels`] (labels on some polygons only).
+    pub(crate) fn twisted_parts(&self) -> Result<TwistedParts, PortalgonError> {
+        let counts = self.side_counts()?;
+        if let Some(polygon) = counts.iter().position(|&k| k != 3) {
+            return Err(PortalgonError::NotTriangle {
+                polygon,
+                sides: counts[polygon],
+            });
+        }
+        self.checked_sides(&counts)?;
+        let labelled = self.labels_present()?;
+        let sides = self.triangle_sides()?;
+        let pairs = self
+            .matching
+            .iter()
+            .map(|&pair| pair.map(as_side))
+            .map(|[a, b]| (a, b))
+            .collect();
+        let reversed = (0..self.matching.len())
+            .map(|k| self.reversed.get(k).copied().unwrap_or(false))
+            .collect();
+        let labels = labelled.then(|| self.triangle_labels());
+        Ok(TwistedParts {
+            sides,
+            pairs,
+            reversed,
+            labels,
         })
+    }
+
+    /// The file with every polygon of more than three sides cut into triangles (each polygon
+    /// in its own plane, [`crate::geometry::triangulate_polygon`]: O(k log k) exact predicates,
+    /// no flat triangle), for [`crate::CoveredTriangulation::from_doc`]: the polygon's sides
+    /// keep their gluings (reversed or not) or stay free, the diagonals are glued plainly,
+    /// labels are kept. Returns it with the file's polygon of each triangle. Checked first on
+    /// the file itself, so that errors name its polygons and sides: the matching's structure,
+    /// every polygon simple and counter-clockwise (corners needed beyond three sides), glued
+    /// sides of equal lengths within `tolerance`.
+    ///
+    /// # Errors
+    /// [`PortalgonError::NoSuchSide`], [`PortalgonError::MatchedTwice`],
+    /// [`PortalgonError::LengthsNotTriangle`], [`PortalgonError::NotSimple`] and the other
+    /// shape errors of [`check_polygon`], [`PortalgonError::UnequalSides`].
+    pub(crate) fn cut_into_triangles(
+        &self,
+        tolerance: f64,
+    ) -> Result<(PortalgonDoc, Vec<usize>), PortalgonError> {
+        let counts = self.side_counts()?;
+        self.checked_sides(&counts)?;
+        self.labels_present()?;
+        let mut offset = vec![0usize; counts.len() + 1];
+        for (p, &k) in counts.iter().enumerate() {
+            offset[p + 1] = offset[p] + k;
+        }
+        let mut length = vec![0.0f64; offset[counts.len()]];
+        // Per side of the file: the triangle side it becomes.
+        let mut new_side = vec![[0usize; 2]; offset[counts.len()]];
+        let (mut polygons, mut matching, mut reversed) = (Vec::new(), Vec::new(), Vec::new());
+        let mut polygon_of = Vec::new();
+        for (polygon, p) in self.polygons.iter().enumerate() {
+            let k = counts[polygon];
+            let corners = match &p.corners {
+                Some(c) => {
+                    let points: Vec<Point<f64>> = scalar_corners(polygon, c)?;
+                    check_polygon(polygon, &points)?;
+                    for i in 0..k {
+                        let (a, b) = (points[i], points[(i + 1) % k]);
+                        length[offset[polygon] + i] = (a[0] - b[0]).hypot(a[1] - b[1]);
+                    }
+                    points
+                }
+                None => {
+                    let l = p.lengths.as_deref().unwrap_or_default();
+                    for (i, x) in l.iter().enumerate() {
+                        length[offset[polygon] + i] = x.to_f64();
+                    }
+                    Vec::new()
+                }
+            };
+            if k == 3 {
+                for i in 0..3 {
+                    new_side[offset[polygon] + i] = [polygons.len(), i];
+                }
+                polygons.push(p.clone());
+                polygon_of.push(polygon);
+                continue;
+            }
+            let triangles =
+                crate::geometry::triangulate_polygon(&corners).ok_or(PortalgonError::NotAnArc {
+                    polygon,
+                    i: 0,
+                    j: 0,
+                })?;
+            let mut diagonal = std::collections::HashMap::new();
+            let given = p.corners.as_deref().unwrap_or_default();
+            for t in triangles {
+                let q = polygons.len();
+                for (s, (a, b)) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
+                    .into_iter()
+                    .enumerate()
+                {
+                    if b == (a + 1) % k {
+                        new_side[offset[polygon] + a] = [q, s];
+                    } else if let Some(other) = diagonal.remove(&(b, a)) {
+                        matching.push([other, [q, s]]);
+                        reversed.push(false);
+                    } else {
+                        diagonal.insert((a, b), [q, s]);
+                    }
+                }
+                polygons.push(PolygonDoc {
+                    corners: Some(t.iter().map(|&c| given[c].clone()).collect()),
+                    lengths: None,
+                    vertices: p
+                        .vertices
+                        .as_ref()
+                        .map(|v| t.iter().map(|&c| v[c]).collect()),
+                });
+                polygon_of.push(polygon);
+            }
+        }
+        for (k, &[[p, i], [q, j]]) in self.matching.iter().enumerate() {
+            let (a, b) = (length[offset[p] + i], length[offset[q] + j]);
+            if (a - b).abs() > tolerance * a.max(b) {
+                return Err(PortalgonError::UnequalSides {
+                    polygon_a: p,
+                    side_a: i,
+                    polygon_b: q,
+                    side_b: j,
+                    length_a: a,
+                    length_b: b,
+                    tolerance,
+                });
+            }
+            matching.push([new_side[offset[p] + i], new_side[offset[q] + j]]);
+            reversed.push(self.reversed.get(k).copied().unwrap_or(false));
+        }
+        let doc = PortalgonDoc {
+            format: self.format.clone(),
+            version: self.version,
+            comment: None,
+            polygons,
+            matching,
+            reversed,
+        };
+        Ok((doc, polygon_of))
+    }
+
+    /// The labels of a file of labelled triangles.
+    fn triangle_labels(&self) -> Vec<[u32; 3]> {
+        self.polygons
+            .iter()
+            .map(|p| {
+                let v = p.vertices.as_deref().unwrap_or_default();
+                [v[0], v[1], v[2]]
+            })
+            .collect()
     }
 
     /// The document of a portalgon: live polygons in id order (renumbered densely) with their
@@ -900,6 +1107,26 @@ impl PortalgonDoc {
             matching,
             reversed: Vec::new(),
         }
+    }
+}
+
+/// A file of triangles glued in any way, checked ([`PortalgonDoc::twisted_parts`]).
+pub(crate) struct TwistedParts {
+    /// The side lengths of each triangle.
+    pub sides: Vec<[f64; 3]>,
+    /// The matching's pairs.
+    pub pairs: Vec<(Side, Side)>,
+    /// Per pair, whether it reverses orientation.
+    pub reversed: Vec<bool>,
+    /// Each corner's label, if the file gives them.
+    pub labels: Option<Vec<[u32; 3]>>,
+}
+
+/// A `[polygon, side]` of a file of triangles as a [`Side`].
+fn as_side([p, i]: [usize; 2]) -> Side {
+    Side {
+        face: p as u32,
+        side: i as u8,
     }
 }
 

@@ -35,13 +35,66 @@ pub(crate) struct TriangleGluing<'a> {
 pub(crate) fn triangulation_from_gluing(
     g: &TriangleGluing<'_>,
 ) -> Result<IntrinsicTriangulation, PortalgonError> {
-    let len = |s: Side| g.sides[s.face as usize][s.side as usize];
+    check_glued_lengths(g)?;
+    let (mut mesh, corner_vertex) =
+        SurfaceMesh::from_gluing(g.sides.len(), g.pairs).map_err(|e| match e {
+            surftopo_mesh::BuildError::SideUnglued { face, side } => PortalgonError::Unmatched {
+                polygon: g.polygon_index[face],
+                side,
+            },
+            other => gluing_error(g, other),
+        })?;
+    let lengths: Vec<f64> = g
+        .pairs
+        .iter()
+        .map(|&(s, t)| glued_length(g.side_length(s), g.side_length(t)))
+        .collect();
+    if let Some(labels) = g.labels {
+        let label_of = label_vertices(g, labels, |c| corner_vertex[c].idx(), mesh.vertex_count())?;
+        let map = Renumbering {
+            vertices: label_of.into_iter().map(VertexId).collect(),
+            edges: (0..mesh.edge_slots()).map(EdgeId::new).collect(),
+            faces: (0..mesh.face_slots()).map(FaceId::new).collect(),
+        };
+        mesh.renumber(&map);
+    }
+    Ok(IntrinsicTriangulation::from_parts(mesh, lengths)?)
+}
+
+impl TriangleGluing<'_> {
+    /// The length of a side.
+    pub(crate) fn side_length(&self, s: Side) -> f64 {
+        self.sides[s.face as usize][s.side as usize]
+    }
+}
+
+/// The length of the edge two glued sides make: their common value, or their mean.
+pub(crate) fn glued_length(a: f64, b: f64) -> f64 {
+    if a == b { a } else { 0.5 * (a + b) }
+}
+
+/// A gluing's structural error in the file's terms.
+pub(crate) fn gluing_error(g: &TriangleGluing<'_>, e: surftopo_mesh::BuildError) -> PortalgonError {
+    match e {
+        surftopo_mesh::BuildError::SideGluedTwice { face, side } => PortalgonError::MatchedTwice {
+            polygon: g.polygon_index.get(face).copied().unwrap_or(face),
+            side,
+        },
+        other => PortalgonError::Gluing(other),
+    }
+}
+
+/// Checks that glued sides have equal lengths within the tolerance (relative).
+///
+/// # Errors
+/// [`PortalgonError::UnequalSides`], naming both sides.
+pub(crate) fn check_glued_lengths(g: &TriangleGluing<'_>) -> Result<(), PortalgonError> {
     for &(s, t) in g.pairs {
         let bad = |x: Side| x.face as usize >= g.sides.len() || x.side > 2;
         if bad(s) || bad(t) {
-            continue; // from_gluing names it below
+            continue; // the gluing names it
         }
-        let (la, lb) = (len(s), len(t));
+        let (la, lb) = (g.side_length(s), g.side_length(t));
         if (la - lb).abs() > g.tolerance * la.max(lb) {
             return Err(PortalgonError::UnequalSides {
                 polygon_a: g.polygon_index[s.face as usize],
@@ -54,71 +107,53 @@ pub(crate) fn triangulation_from_gluing(
             });
         }
     }
-    let (mut mesh, corner_vertex) =
-        SurfaceMesh::from_gluing(g.sides.len(), g.pairs).map_err(|e| match e {
-            surftopo_mesh::BuildError::SideUnglued { face, side } => PortalgonError::Unmatched {
-                polygon: g.polygon_index[face],
-                side,
-            },
-            surftopo_mesh::BuildError::SideGluedTwice { face, side } => {
-                PortalgonError::MatchedTwice {
-                    polygon: g.polygon_index.get(face).copied().unwrap_or(face),
-                    side,
-                }
-            }
-            other => PortalgonError::Gluing(other),
-        })?;
-    let lengths: Vec<f64> = g
-        .pairs
-        .iter()
-        .map(|&(s, t)| {
-            let (a, b) = (len(s), len(t));
-            if a == b { a } else { 0.5 * (a + b) }
-        })
-        .collect();
-    if let Some(labels) = g.labels {
-        let vertex_count = mesh.vertex_count();
-        let mut label_of = vec![u32::MAX; vertex_count];
-        let mut vertex_of = vec![u32::MAX; vertex_count];
-        for (c, v) in corner_vertex.iter().enumerate() {
-            let (f, i) = (c / 3, c % 3);
-            let l = labels[f][i];
-            let polygon = g.polygon_index[f];
-            if l as usize >= vertex_count {
-                return Err(PortalgonError::VertexLabels {
-                    polygon,
-                    detail: format!(
-                        "label {l} out of range: the gluing has {vertex_count} vertices"
-                    ),
-                });
-            }
-            if label_of[v.idx()] == u32::MAX {
-                if vertex_of[l as usize] != u32::MAX {
-                    return Err(PortalgonError::VertexLabels {
-                        polygon,
-                        detail: format!("label {l} names two different vertices of the gluing"),
-                    });
-                }
-                label_of[v.idx()] = l;
-                vertex_of[l as usize] = v.0;
-            } else if label_of[v.idx()] != l {
-                return Err(PortalgonError::VertexLabels {
-                    polygon,
-                    detail: format!(
-                        "corner {i} is labelled {l} but the gluing makes it vertex {}",
-                        label_of[v.idx()]
-                    ),
-                });
-            }
+    Ok(())
+}
+
+/// Checks that the corners' labels name the gluing's vertices (`vertex_of(c)` for corner
+/// `3f + i`, `0..vertex_count`) one to one, and returns the label of each vertex.
+///
+/// # Errors
+/// [`PortalgonError::VertexLabels`], naming the polygon: a label out of range, two vertices
+/// under one label, or one vertex under two.
+pub(crate) fn label_vertices(
+    g: &TriangleGluing<'_>,
+    labels: &[[u32; 3]],
+    vertex_of: impl Fn(usize) -> usize,
+    vertex_count: usize,
+) -> Result<Vec<u32>, PortalgonError> {
+    let mut label_of = vec![u32::MAX; vertex_count];
+    let mut vertex_of_label = vec![u32::MAX; vertex_count];
+    for c in 0..3 * labels.len() {
+        let (f, i, v) = (c / 3, c % 3, vertex_of(c));
+        let l = labels[f][i];
+        let polygon = g.polygon_index[f];
+        if l as usize >= vertex_count {
+            return Err(PortalgonError::VertexLabels {
+                polygon,
+                detail: format!("label {l} out of range: the gluing has {vertex_count} vertices"),
+            });
         }
-        let map = Renumbering {
-            vertices: label_of.into_iter().map(VertexId).collect(),
-            edges: (0..mesh.edge_slots()).map(EdgeId::new).collect(),
-            faces: (0..mesh.face_slots()).map(FaceId::new).collect(),
-        };
-        mesh.renumber(&map);
+        if label_of[v] == u32::MAX {
+            if vertex_of_label[l as usize] != u32::MAX {
+                return Err(PortalgonError::VertexLabels {
+                    polygon,
+                    detail: format!("label {l} names two different vertices of the gluing"),
+                });
+            }
+            label_of[v] = l;
+            vertex_of_label[l as usize] = v as u32;
+        } else if label_of[v] != l {
+            return Err(PortalgonError::VertexLabels {
+                polygon,
+                detail: format!(
+                    "corner {i} is labelled {l} but the gluing makes it vertex {}",
+                    label_of[v]
+                ),
+            });
+        }
     }
-    Ok(IntrinsicTriangulation::from_parts(mesh, lengths)?)
+    Ok(label_of)
 }
 
 impl IntrinsicTriangulation {

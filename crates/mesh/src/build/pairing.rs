@@ -87,19 +87,7 @@ pub(crate) struct EdgePairs {
 }
 
 impl<'a> CornerPairing<'a> {
-    /// Steps 1 to 6.
     pub(crate) fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
-        Self::run_steps(vertex_count, triangles, true)
-    }
-
-    /// Steps 1 to 3 only, for a soup known to be a closed surface (made by this crate): the
-    /// corners paired, without the fans, the components and the orientation (`flip` empty,
-    /// `inspection` without their findings).
-    pub(crate) fn pair_only(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
-        Self::run_steps(vertex_count, triangles, false)
-    }
-
-    fn run_steps(vertex_count: usize, triangles: &'a [[u32; 3]], inspect: bool) -> Self {
         let mut ins = Inspection {
             faces: triangles.len(),
             orientable: true,
@@ -132,16 +120,13 @@ impl<'a> CornerPairing<'a> {
         let indexed = check_indices(vertex_count, triangles, &mut ins);
         let sorted = sort_corners(&indexed);
         let mut edges = pair_edges(&indexed, sorted, &mut ins, &mut refusals);
-        let mut flip = Vec::new();
-        if inspect {
-            let all_valid = indexed.valid.iter().all(|&ok| ok);
-            let consistent = !edges.same_direction.iter().any(|&same| same);
-            if all_valid {
-                check_fans(&indexed, &edges, consistent, &mut ins);
-            }
-            count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
-            flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
+        let all_valid = indexed.valid.iter().all(|&ok| ok);
+        let consistent = !edges.same_direction.iter().any(|&same| same);
+        if all_valid {
+            check_fans(&indexed, &edges, consistent, &mut ins);
         }
+        count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
+        let flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
         CornerPairing {
             inspection: ins,
             remapped: indexed.remapped,

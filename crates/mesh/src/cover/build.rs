@@ -1,11 +1,12 @@
 //! Building the [`ClosedCover`] of a triangle soup.
 
+use super::twisted::TwistedGluing;
 use super::{ClosedCover, Sheets};
-use crate::build::pairing::{CornerPairing, next_corner, prev_corner};
-use crate::build::{BuildReport, build_topology_closed, classify, closed_topology_of_trusted};
+use crate::build::pairing::CornerPairing;
+use crate::build::{BuildReport, build_topology_closed, classify};
 use crate::error::BuildError;
-use crate::ids::{FaceId, HalfedgeId, VertexId};
-use crate::union_find::UnionFind;
+use crate::gluing::Side;
+use crate::ids::{FaceId, HalfedgeId};
 
 impl ClosedCover {
     /// The cover of the surface a triangle soup forms: a compact 2-manifold whose components
@@ -31,12 +32,10 @@ impl ClosedCover {
         if let Some(e) = p.inspection.problems.first() {
             return Err(e.clone());
         }
-        crate::stop::check();
         let nv = p.new_to_old.len();
         let ins = &p.inspection;
         if ins.boundary_edges == 0 && ins.orientable {
             let surfaces = classify::classify(&p);
-            crate::stop::check();
             let mut report = BuildReport {
                 reoriented_faces: ins.reoriented_faces.min(triangles.len()),
                 dropped_vertices: std::mem::take(&mut p.dropped),
@@ -52,192 +51,36 @@ impl ClosedCover {
             return Ok((ClosedCover::plain(mesh), report));
         }
         let (face_component, kinds) = classify::components(&p);
-        let orientable = |f: usize| kinds[face_component[f] as usize].orientable;
         let reoriented_faces = (0..triangles.len())
-            .filter(|&f| p.flip[f] && orientable(f))
+            .filter(|&f| p.flip[f] && kinds[face_component[f] as usize].orientable)
             .count();
         let report = BuildReport {
             reoriented_faces,
             dropped_vertices: p.dropped.clone(),
             vertex_old_to_new: p.old_to_new.clone(),
-            surfaces: kinds.clone(),
+            surfaces: kinds,
         };
-        // Orientable components in their majority orientation; the others as given.
-        let mut closed: Vec<[u32; 3]> = p.remapped.to_vec();
-        for (f, t) in closed.iter_mut().enumerate() {
-            if p.flip[f] && orientable(f) {
-                t.swap(1, 2);
-            }
-        }
-        // The boundary corners of `closed`, in corner order: a reversed face (b, a, c) has its
-        // sides i = 0, 1, 2 on the sides 2, 1, 0 of the face as given, (a, b, c).
-        let boundary: Vec<u32> = (0..3 * closed.len() as u32)
-            .filter(|&c| {
-                let (f, i) = (c / 3, c % 3);
-                let given = if p.flip[f as usize] && orientable(f as usize) {
-                    3 * f + 2 - i
-                } else {
-                    c
-                };
-                p.edges.across(given).is_none()
+        // The soup's gluing: each edge in two faces glues their sides, reversed where the two
+        // faces run it the same way.
+        let edges = &p.edges;
+        let side = |c: u32| Side {
+            face: c / 3,
+            side: (c % 3) as u8,
+        };
+        let (pairs, reversed): (Vec<(Side, Side)>, Vec<bool>) = (0..edges.same_direction.len())
+            .map(|e| {
+                let [a, b] = [2 * e, 2 * e + 1].map(|h| edges.halfedge_corner[h]);
+                ((side(a), side(b)), edges.same_direction[e])
             })
-            .collect();
-        let mut component = face_component;
-        let apexes = close_boundary_loops(nv, &mut closed, &boundary, &mut component);
-        let doubled: Vec<bool> = kinds.iter().map(|k| !k.orientable).collect();
-        let cover = double(nv, apexes, &closed, &component, &doubled)?;
-        Ok((cover, report))
-    }
-}
-
-/// Cones each boundary loop of `faces` (vertices `0..nv`, consistently oriented on orientable
-/// components; `boundary` their corners on a boundary edge, increasing) over a new apex vertex
-/// `nv + k`: appends a triangle `(b, a, apex)` for each face's boundary edge `a -> b`, which
-/// orients the cone as the face beside it. Returns the number of apexes; `component` gets the
-/// component of each new face.
-fn close_boundary_loops(
-    nv: usize,
-    faces: &mut Vec<[u32; 3]>,
-    boundary: &[u32],
-    component: &mut Vec<u32>,
-) -> usize {
-    let corner_vertex = |c: u32| faces[(c / 3) as usize][(c % 3) as usize];
-    let mut loops = UnionFind::new(nv);
-    for &c in boundary {
-        loops.union(corner_vertex(c), corner_vertex(next_corner(c)));
-    }
-    let mut apex_of_root = vec![u32::MAX; nv];
-    let mut apexes = 0;
-    let mut cones = Vec::with_capacity(boundary.len());
-    for &c in boundary {
-        let (a, b) = (corner_vertex(c), corner_vertex(next_corner(c)));
-        let root = loops.find(a) as usize;
-        if apex_of_root[root] == u32::MAX {
-            apex_of_root[root] = (nv + apexes) as u32;
-            apexes += 1;
-        }
-        cones.push(([b, a, apex_of_root[root]], component[(c / 3) as usize]));
-    }
-    for (t, k) in cones {
-        faces.push(t);
-        component.push(k);
-    }
-    apexes
-}
-
-/// The cover of the closed surface `faces` (vertices `0..nv + apexes`, apexes last), its
-/// components flagged in `doubled` replaced by their orientable double covers.
-///
-/// The double cover's vertices are the pairs (vertex, orientation of its star). A walk around
-/// each vertex of a doubled component gives each of its corners a sign ε: whether the face's
-/// orientation agrees with the star's orientation at the walk's first face (it flips across an
-/// edge that the two faces run the same way). Face `(a, b, c)` then becomes `(a^ε, b^ε, c^ε)` as
-/// given, and its mirror `(a^-ε, c^-ε, b^-ε)` reversed, where `v^+` is v and `v^-` its second lift.
-fn double(
-    nv: usize,
-    apexes: usize,
-    faces: &[[u32; 3]],
-    component: &[u32],
-    doubled: &[bool],
-) -> Result<ClosedCover, BuildError> {
-    let n = nv + apexes;
-    let is_doubled = |f: usize| doubled[component[f] as usize];
-    // The negative sign of each corner of the doubled faces, and the second lifts.
-    let mut negative = vec![false; 3 * faces.len()];
-    let mut second = vec![u32::MAX; n];
-    let mut next_id = n as u32;
-    if doubled.iter().any(|&d| d) {
-        let p = CornerPairing::pair_only(n, faces);
-        debug_assert!(p.inspection.problems.is_empty() && p.inspection.boundary_edges == 0);
-        let mut start = vec![u32::MAX; n];
-        for (f, t) in faces.iter().enumerate() {
-            for (i, &v) in t.iter().enumerate() {
-                if is_doubled(f) && start[v as usize] == u32::MAX {
-                    start[v as usize] = (3 * f + i) as u32;
-                }
-            }
-        }
-        for v in 0..n as u32 {
-            let s = start[v as usize];
-            if s == u32::MAX {
-                continue;
-            }
-            second[v as usize] = next_id;
-            next_id += 1;
-            sign_corners_around(&p, v, s, &mut negative);
-        }
-    }
-    let lift = |c: usize, flip: bool| {
-        let v = faces[c / 3][c % 3];
-        if negative[c] ^ flip {
-            second[v as usize]
-        } else {
-            v
-        }
-    };
-    let mut lifted: Vec<[u32; 3]> = Vec::with_capacity(faces.len());
-    lifted.extend((0..faces.len()).map(|f| {
-        if is_doubled(f) {
-            [0, 1, 2].map(|i| lift(3 * f + i, false))
-        } else {
-            faces[f]
-        }
-    }));
-    let mut mirror_of = Vec::new();
-    for f in (0..faces.len()).filter(|&f| is_doubled(f)) {
-        mirror_of.push((f, lifted.len()));
-        lifted.push([0, 2, 1].map(|i| lift(3 * f + i, true)));
-    }
-    let mesh = closed_topology_of_trusted(next_id as usize, &lifted);
-    let mut class: Vec<u32> = (0..next_id).collect();
-    for (v, &s) in second.iter().enumerate() {
-        if s != u32::MAX {
-            class[s as usize] = v as u32;
-        }
-    }
-    for k in class
-        .iter_mut()
-        .filter(|k| (nv..n).contains(&(**k as usize)))
-    {
-        *k = nv as u32;
-    }
-    let lift = (0..nv as u32)
-        .chain((apexes > 0).then_some(nv as u32))
-        .map(VertexId)
-        .collect();
-    let mut sheets = Sheets {
-        class,
-        lift,
-        mirror: Vec::new(),
-        apex: (apexes > 0).then_some(nv as u32),
-    };
-    for (f, m) in mirror_of {
-        pair_mirror_faces(&mesh, &mut sheets, FaceId::new(f), FaceId::new(m));
-    }
-    Ok(ClosedCover { mesh, sheets })
-}
-
-/// Walks around vertex `v` of a closed soup from its corner `start` and marks each corner at v
-/// whose face runs against the first face's orientation of the star.
-fn sign_corners_around(p: &CornerPairing, v: u32, start: u32, negative: &mut [bool]) {
-    let (mut leave, mut sign) = (start, false);
-    loop {
-        let entered = p
-            .edges
-            .across(leave)
-            .expect("a closed surface: every edge in two faces");
-        sign ^= p.edges.same_direction_at(leave);
-        let (at_v, next_leave) = if p.corner_vertex(entered) == v {
-            (entered, prev_corner(entered))
-        } else {
-            (next_corner(entered), next_corner(entered))
+            .unzip();
+        let labels: Vec<u32> = p.remapped.iter().flatten().copied().collect();
+        let gluing = TwistedGluing {
+            face_count: triangles.len(),
+            pairs: &pairs,
+            reversed: &reversed,
         };
-        if at_v / 3 == start / 3 {
-            debug_assert!(!sign, "the star of a vertex is a disk, hence orientable");
-            return;
-        }
-        negative[at_v as usize] = sign;
-        leave = next_leave;
+        let cover = ClosedCover::from_twisted_gluing(&gluing, &labels, nv)?.cover;
+        Ok((cover, report))
     }
 }
 

@@ -31,9 +31,11 @@
 mod build;
 mod edit;
 mod surface;
+mod twisted;
 
 pub use edit::{contract_lifts, flip_lifts, satisfies_link_condition, split_lifts};
 pub use surface::CoveredSurface;
+pub use twisted::{TwistedCover, TwistedGluing};
 
 use crate::compact::Renumbering;
 use crate::ids::{EdgeId, FaceId, HalfedgeId, VertexId};

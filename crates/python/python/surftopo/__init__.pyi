@@ -67,6 +67,7 @@ __all__ = [
     "intrinsic_delaunay",
     "irreducible",
     "isometric",
+    "isometry_verdict",
     "klein_bottle",
     "laplacian",
     "mobius_band",
@@ -407,16 +408,32 @@ def intrinsic_delaunay(
     """
 
 def isometric(a: _Surface, b: _Surface, allow_reflection: bool = True) -> bool:
-    """Whether two closed polyhedral surfaces are isometric.
+    """Whether two compact polyhedral surfaces are isometric.
 
-    Compares their canonical Delaunay tessellations (Corollary 2 of the intrinsic-Delaunay paper;
-    flat vertices removed first). Mirror images count as isometric unless
+    Closed orientable surfaces: their canonical Delaunay tessellations are compared (Corollary 2
+    of the intrinsic-Delaunay paper; flat vertices removed first). Any other kind (boundary
+    loops, non-orientable, several pieces; a :class:`Portalgon` of version 2 too) as ``surftopo
+    isometric`` compares it: pieces, boundary lengths and tessellations with twisted gluings
+    (``docs/isometry_every_surface.md``). True only for the verdict ``"isometric"``
+    (:func:`isometry_verdict` tells the others apart). Mirror images count as isometric unless
     ``allow_reflection=False``. Each surface is ``(V, F)``, a :class:`Portalgon` or an
     :class:`IntrinsicTriangulation`.
 
     >>> V, F = surftopo.torus(12, 6)
     >>> surftopo.isometric((V, F), (V + 1.0, F)), surftopo.isometric((V, F), (2 * V, F))
     (True, False)
+    """
+
+def isometry_verdict(a: _Surface, b: _Surface) -> tuple[str, str]:
+    """The verdict of ``surftopo isometric`` (default method) and its reason, on any surfaces.
+
+    The verdict is ``"isometric"``, ``"not isometric"`` (a proof: an invariant or the
+    tessellations differ), ``"undecidable in double precision"`` or ``"undecided"`` (a flat
+    vertex on a surface with boundary or without orientation), as the CLI prints it.
+
+    >>> V, F = surftopo.mobius_band(9, 3)
+    >>> surftopo.isometry_verdict((V, F), (V + 1.0, F))[0], surftopo.isometry_verdict((V, F), (2 * V, F))[0]
+    ('isometric', 'not isometric')
     """
 
 @final
@@ -442,8 +459,8 @@ class IntrinsicTriangulation:
         ``cocircular_tolerance`` (``None``: the library's default, 1e-9). Never merged across a
         boundary edge: boundary edges are unmatched sides. On a non-orientable surface each
         polygon is laid out on one sheet of the double cover and a gluing whose two sides run
-        the same way is flagged ``true`` (portalgon JSON version 2; :meth:`Portalgon.from_json`,
-        which reads oriented portalgons, refuses it, ``json.loads`` reads it).
+        the same way is flagged ``true`` (portalgon JSON version 2; ``json.loads`` reads it;
+        :meth:`Portalgon.from_json` reads tessellations of closed orientable surfaces only).
         """
     def to_json(self) -> str:
         """Portalgon JSON, triangles by side lengths: what ``surftopo delaunay -o`` writes."""
@@ -488,7 +505,12 @@ class Portalgon:
 
     @staticmethod
     def from_json(text: str) -> Portalgon:
-        """Parse and validate a portalgon JSON text (:class:`PortalgonError` otherwise)."""
+        """Parse and validate a portalgon JSON text (:class:`PortalgonError` otherwise).
+
+        Version 2 is read: a file of triangles with unmatched sides (boundary), gluings flagged
+        ``true`` (orientation-reversing) or several pieces, as ``surftopo delaunay -o`` writes
+        it for such a mesh, is a surface for :func:`intrinsic_delaunay` and :func:`isometric`.
+        """
     def to_json(self) -> str:
         """The JSON text (compact)."""
     @property
