@@ -11,7 +11,9 @@
 //!   remainder, the caps put back ([`proposition_2`]);
 //! - [`flat_delaunay`]: Theorem 1 on flat surfaces ([`delaunay_tessellation_flat`]: no caps);
 //! - this file: Theorem 1 on any closed surface ([`delaunay_tessellation_dubois`], the CLI's
-//!   `delaunay --method dubois`).
+//!   `delaunay --method dubois`), and on the metric of a mesh in ℝ³, whose happiness is 1, with
+//!   the mesh as Proposition 2's output ([`delaunay_tessellation_of_mesh`], the CLI's on a mesh
+//!   file; **\[ours\]**, docs/dubois.md §8).
 //!
 //! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
 //! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
@@ -191,10 +193,9 @@ fn wave_options<S: Scalar>(options: &FlatDelaunayOptions, sources: Sources) -> V
 /// meets each face in one segment, docs/dubois.md §8), within Proposition 2's bound, so `T′ = t`
 /// and Proposition 3's wave runs on `t` from `options.sources` (the wave's options of
 /// [`delaunay_tessellation_dubois`]). The report has no outer iteration
-/// ([`DuboisReport::mesh_metric`] set); `reduced` is `t`. In `f64`, when the wave's dual refuses
-/// `t` for rounding ([`crate::voronoi::VoronoiError::is_numerical`]: near-co-circular sites on
-/// a regular grid), it is [`delaunay_tessellation_dubois`] (Proposition 2 with caps, whose `T′`
-/// the wave resolves). The tessellation is the one
+/// ([`DuboisReport::mesh_metric`] set); `reduced` is `t`. In `f64`, when the wave fails on `t`
+/// (its dual refusing rounding, as on near-co-circular sites of a regular grid), it is
+/// [`delaunay_tessellation_dubois`] (Proposition 2 with caps, whose `T′` the wave resolves). The tessellation is the one
 /// [`delaunay_tessellation_dubois`] computes, up to the choice of diagonals in co-circular
 /// polygons and rounding in `f64`; that `t` is a mesh's metric is the caller's word (nothing here
 /// can check it).
@@ -215,8 +216,9 @@ pub fn delaunay_tessellation_of_mesh<S: Scalar>(
     let mut delaunay = match voronoi_delaunay(t, &wave_options) {
         Ok(delaunay) => delaunay,
         // In `f64` the wave's dual can refuse a mesh whose rounding makes the traced Voronoi
-        // edges inconsistent (near-co-circular grids); `T′` with caps does not have them.
-        Err(e) if !S::EXACT && e.is_numerical() => {
+        // edges inconsistent (near-co-circular grids), or the wave run out of its budget; `T′`
+        // with caps resolves the former (and bad input is refused there again).
+        Err(_) if !S::EXACT => {
             return delaunay_tessellation_dubois(t, options);
         }
         Err(e) => return Err(e.into()),
