@@ -16,12 +16,17 @@
 //! 4. The shared meshes of 90 000 to 110 000 faces (`SURFTOPO_MESHES`): `flip` against `auto`
 //!    (the needle test on the half-angle cache of flipping's first pass): the median over 101
 //!    adjacent pairs of runs of the ratio within a pair.
-//! 5. The shared meshes of at most 10 000 faces: Theorem 1 in `f64` (`--method dubois`) beside
-//!    flipping, the cost of Dubois where flipping is cheap.
+//! 5. The shared meshes of at most 10 000 faces and three generated inputs: Theorem 1 in `f64`
+//!    beside flipping, with caps (the paper's Proposition 2) and on the mesh's own metric (what
+//!    `--method dubois` runs on a mesh file), paired ratios of thread CPU time and the work
+//!    (flips, wave events).
+//! 6. The ~100k-face shared meshes: Theorem 1 on the mesh's metric beside flipping.
 //!
 //! ```text
-//! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR]
+//! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench -- [--out-dir DIR] [--only-meshes]
 //! ```
+//!
+//! `--only-meshes` runs sections 5 and 6 alone and prints them (no file written).
 //!
 //! Results under `--out-dir` (default: the workspace root): `results/dubois_bench.md`,
 //! `results/dubois_bench.jsonl` and the plot `results/dubois_bench.svg` (milliseconds against
@@ -32,6 +37,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use serde_json::json;
+use surftopo_bench::papers::measure::thread_cpu_seconds;
 use surftopo_bench::papers::plot::{self, Axis, Plot, Series};
 use surftopo_intrinsic::generators::{flat_torus, pillowcase};
 use surftopo_intrinsic::geometry::Rational;
@@ -260,100 +266,288 @@ fn flip_and_check(
     }
 }
 
-/// Section 5 of the report: Theorem 1 in `f64` (a cap at every vertex, V = every vertex, as
-/// `surftopo delaunay --method dubois` runs it) side by side with flipping on the shared meshes
-/// of at most [`SMALL_MESH_FACES`] faces, where flipping is cheap: what Dubois costs there.
-fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
-    let meshes: Vec<_> = surftopo_testkit::shared_meshes()
-        .into_iter()
-        .filter(|m| m.faces <= SMALL_MESH_FACES)
-        .collect();
-    if meshes.is_empty() {
-        eprintln!("no shared meshes (set SURFTOPO_MESHES): the Dubois-on-meshes table is skipped");
-        return;
+/// Paired rounds of the Dubois-on-meshes tables: flipping and Theorem 1 on the mesh's metric,
+/// adjacent in time, once per round; the figure is the median over the rounds of the ratio within
+/// a round.
+const MESH_ROUNDS: usize = 3;
+
+/// The least wall-clock seconds of the runs a CPU time is averaged over (flipping takes a fraction
+/// of a millisecond at 1k–10k faces, below the scheduler tick the thread CPU clock advances by).
+const MIN_BATCH_SECONDS: f64 = 0.3;
+
+/// One input of the Dubois-on-meshes tables: its name, faces, lengths, and whether its triangles
+/// are faces of a mesh in ℝ³ (`DelaunayRequest::mesh_metric`; not after intrinsic flips).
+struct MeshInput {
+    name: String,
+    faces: usize,
+    tri: IntrinsicTriangulation,
+    mesh_metric: bool,
+}
+
+/// The mean thread CPU seconds of runs of `request` on `tri`, as many as take `min_seconds` of wall
+/// clock (at least one), each on a copy made before its clock starts, with the last result.
+/// Each run's CPU time is read from a clock that advances by scheduler ticks; the runs start at
+/// times unrelated to the ticks, so the sum over many runs estimates their CPU time without bias.
+fn cpu_mean(
+    tri: &IntrinsicTriangulation,
+    request: &DelaunayRequest,
+    min_seconds: f64,
+) -> (Result<DelaunayOutput, IntrinsicDelaunayError>, f64) {
+    let (mut cpu, mut wall, mut runs) = (0.0, 0.0, 0u32);
+    loop {
+        let input = DelaunayInput::Lengths(tri.clone());
+        let (start, cpu_start) = (Instant::now(), thread_cpu_seconds());
+        let r = intrinsic_delaunay(input, request);
+        cpu += thread_cpu_seconds() - cpu_start;
+        wall += start.elapsed().as_secs_f64();
+        runs += 1;
+        if wall >= min_seconds {
+            return (r, cpu / f64::from(runs));
+        }
     }
-    write!(
-        md,
-        "\n## Dubois where flipping is cheap: the shared meshes of at most {SMALL_MESH_FACES} faces\n\n\
-         Theorem 1 in `f64` as `surftopo delaunay --method dubois` runs it (a cap at every vertex, \
-         Proposition 2 in double-double, the wave from every vertex; one run) beside flipping \
-         (best of 5), in one run. `T′ / F`: the triangles Proposition 2's \
-         reduction hands to the wave, per input face.\n\n\
-         | mesh | F | flip ms | Dubois ms | Dubois / flip | N | inner passes | T′ / F | wave events |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
-    )
-    .expect("write to a string");
-    let flip = request(
-        DelaunayMethod::Flip,
-        Sources::All,
-        DelaunayOutputs::default(),
-    );
-    let dubois = request(
+}
+
+/// Flipping's mean thread CPU seconds ([`cpu_mean`] over [`MIN_BATCH_SECONDS`]) and its flips.
+fn flip_cpu(tri: &IntrinsicTriangulation, request: &DelaunayRequest) -> (u64, f64) {
+    let (out, cpu) = cpu_mean(tri, request, MIN_BATCH_SECONDS);
+    let flips = out
+        .expect("flipping a mesh")
+        .stats
+        .expect("figures asked for")
+        .flips;
+    (flips, cpu)
+}
+
+/// The requests of the Dubois-on-meshes tables: flipping, Theorem 1 with caps (Proposition 2 as
+/// the paper builds it), Theorem 1 on the mesh's metric.
+fn mesh_requests() -> [DelaunayRequest; 3] {
+    let figures = DelaunayOutputs {
+        figures: true,
+        ..DelaunayOutputs::default()
+    };
+    let flip = request(DelaunayMethod::Flip, Sources::All, figures);
+    let caps = request(
         DelaunayMethod::Dubois,
         Sources::All,
         DelaunayOutputs::default(),
     );
+    let mesh = DelaunayRequest {
+        mesh_metric: true,
+        ..caps
+    };
+    [flip, caps, mesh]
+}
+
+/// The inputs of section 5: the shared meshes of at most [`SMALL_MESH_FACES`] faces and surfaces
+/// generated here (not tuned on): a genus-9 brick, a torus of thin triangles (needles of aspect about 10), and an icosphere
+/// re-triangulated by random intrinsic flips (no longer a mesh's faces).
+fn small_mesh_inputs() -> Vec<MeshInput> {
+    use surftopo_mesh::generators::{genus_surface, icosphere, torus};
+    let mesh = |name: &str, s: surftopo_mesh::Surface| MeshInput {
+        name: name.into(),
+        faces: s.mesh.face_count(),
+        tri: IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh"),
+        mesh_metric: true,
+    };
+    let mut inputs: Vec<MeshInput> = surftopo_testkit::shared_meshes()
+        .into_iter()
+        .filter(|m| m.faces <= SMALL_MESH_FACES)
+        .map(|m| mesh(&m.file, surftopo_testkit::load(&m)))
+        .collect();
+    inputs.push(mesh("generated: genus 9 brick", genus_surface(9, 2)));
+    inputs.push(mesh("generated: thin torus 8 × 300", torus(8, 300)));
+    let mut flipped = mesh(
+        "generated: icosphere(4) + 6000 intrinsic flips (seed 55121)",
+        icosphere(4),
+    );
+    surftopo_intrinsic::generators::random_flips(&mut flipped.tri, 6000, 55121);
+    flipped.mesh_metric = false;
+    inputs.push(flipped);
+    inputs
+}
+
+/// Section 5 of the report: Theorem 1 in `f64` (V = every vertex, as `surftopo delaunay
+/// --method dubois` runs it) side by side with flipping, where flipping is cheap: with caps
+/// (Proposition 2 as the paper builds it, a cap at every vertex; one run) and on the mesh's own
+/// metric (happiness 1, docs/dubois.md §8; [`MESH_ROUNDS`] rounds paired with flipping).
+fn dubois_on_small_meshes(md: &mut String, jsonl: &mut String) {
+    let inputs = small_mesh_inputs();
+    write!(
+        md,
+        "\n## Dubois where flipping is cheap: meshes of at most {SMALL_MESH_FACES} faces\n\n\
+         Theorem 1 in `f64` from every vertex beside flipping, thread CPU time. **With caps**: \
+         Proposition 2 as the paper builds it (a cap at every vertex, ALGORITHM in double-double, \
+         the wave on `T′`; `--method dubois --faithful` on a mesh file, without the 350 repetitions; \
+         one run, beside the first round's flipping). **On the mesh**: `--method dubois` on a mesh \
+         file, the mesh kept as `T′` (a mesh has happiness 1, docs/dubois.md §8; the caps only \
+         when the wave refuses it, `caps` in the last column); {MESH_ROUNDS} rounds, each \
+         flipping then Dubois (each the mean over runs taking {MIN_BATCH_SECONDS} s), the ratio the \
+         median over the rounds of the ratio within a round. Work: flipping's flips and the wave's events. `T′ / F`: the \
+         triangles the caps route hands to the wave, per input face. The last three inputs are \
+         generated here with seeds used nowhere else; the flipped icosphere is no mesh's faces, \
+         so only the caps route applies.\n\n\
+         | input | F | flips | flip CPU ms | caps: CPU ms | caps / flip | N | T′ / F | caps: wave events | mesh: CPU ms | mesh / flip | mesh: wave events | route |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n"
+    )
+    .expect("write to a string");
+    let [flip, caps, mesh] = mesh_requests();
+    for m in &inputs {
+        let mut mesh_ratios = Vec::new();
+        let (mut mesh_cells, mut mesh_json) = (String::from("| | | n/a"), json!(null));
+        let mut first_flip = None;
+        for round in 0..MESH_ROUNDS {
+            let (flips, flip_cpu) = flip_cpu(&m.tri, &flip);
+            first_flip.get_or_insert((flips, flip_cpu));
+            if !m.mesh_metric {
+                break;
+            }
+            let (out, cpu) = cpu_mean(&m.tri, &mesh, MIN_BATCH_SECONDS);
+            mesh_ratios.push(cpu / flip_cpu);
+            if round == MESH_ROUNDS - 1 {
+                let ratio = median(&mut mesh_ratios);
+                (mesh_cells, mesh_json) = match out {
+                    Ok(out) => {
+                        let rep = out.reduction.as_ref().expect("a dubois run");
+                        let route = if rep.mesh_metric { "mesh" } else { "caps" };
+                        (
+                            format!(
+                                "| {:.1} | {ratio:.0} | {} | {route}",
+                                cpu * 1e3,
+                                wave_events(&out)
+                            ),
+                            json!({"cpu_seconds": cpu, "median_round_ratio": ratio,
+                                   "wave_events": wave_events(&out), "route": route}),
+                        )
+                    }
+                    Err(e) => (
+                        format!("| error: {e} | | |"),
+                        json!({"error": e.to_string()}),
+                    ),
+                };
+            }
+        }
+        let (flips, flip_cpu) = first_flip.expect("one round");
+        let (out, cpu) = cpu_mean(&m.tri, &caps, 0.0);
+        let (caps_cells, caps_json) = match out {
+            Ok(out) => {
+                let rep = out.reduction.as_ref().expect("a dubois run");
+                (
+                    format!(
+                        "{:.0} | {:.0} | {} | {:.1} | {}",
+                        cpu * 1e3,
+                        cpu / flip_cpu,
+                        rep.outer_iterations,
+                        rep.triangles_after_reduction as f64 / m.faces as f64,
+                        wave_events(&out)
+                    ),
+                    json!({"cpu_seconds": cpu, "ratio": cpu / flip_cpu,
+                           "outer_iterations": rep.outer_iterations,
+                           "inner_passes_total": rep.inner_passes_total,
+                           "triangles_after_reduction": rep.triangles_after_reduction,
+                           "wave_events": wave_events(&out)}),
+                )
+            }
+            Err(e) => (
+                format!("error: {e} | | | |"),
+                json!({"error": e.to_string()}),
+            ),
+        };
+        writeln!(
+            md,
+            "| {} | {} | {flips} | {:.3} | {caps_cells} {mesh_cells} |",
+            m.name,
+            m.faces,
+            flip_cpu * 1e3
+        )
+        .expect("write to a string");
+        let line = json!({
+            "kind": "dubois_on_mesh", "input": m.name, "faces": m.faces, "flips": flips,
+            "flip_cpu_seconds": flip_cpu, "caps": caps_json, "mesh": mesh_json,
+        });
+        writeln!(jsonl, "{line}").expect("write to a string");
+        eprintln!(
+            "{}: caps {:.0} ms, flip {:.3} ms {mesh_cells}",
+            m.name,
+            cpu * 1e3,
+            flip_cpu * 1e3
+        );
+    }
+}
+
+/// Section 6 of the report: Theorem 1 on the mesh's metric on the ~100k-face shared meshes (the
+/// caps route takes minutes there and is not run), one run beside flipping's mean.
+fn dubois_on_large_meshes(md: &mut String, jsonl: &mut String) {
+    let meshes: Vec<_> = surftopo_testkit::shared_meshes()
+        .into_iter()
+        .filter(|m| (90_000..=110_000).contains(&m.faces))
+        .collect();
+    if meshes.is_empty() {
+        return;
+    }
+    md.push_str(
+        "\n## Dubois on the ~100k-face shared meshes\n\n\
+         `--method dubois` on a mesh file (the mesh kept as `T′`), one run, thread CPU time, beside \
+         flipping (mean of its runs, just before). With caps these meshes take minutes \
+         (results/dubois-every-mesh.txt): not run.\n\n\
+         | mesh | F | flip CPU ms | Dubois CPU s | Dubois / flip | wave events | route |\n\
+         |---|---:|---:|---:|---:|---:|---|\n",
+    );
+    let [flip, _, mesh] = mesh_requests();
     for m in &meshes {
         let s = surftopo_testkit::load(m);
         let tri = IntrinsicTriangulation::from_positions(s.mesh, &s.positions).expect("a mesh");
-        let (_, flip_seconds) = timed_runs(5, &tri, &flip);
-        let (out, seconds) = timed_runs(1, &tri, &dubois);
-        let line = match out {
+        let (_, flip_cpu) = flip_cpu(&tri, &flip);
+        let (out, cpu) = cpu_mean(&tri, &mesh, 0.0);
+        let cells = match &out {
             Ok(out) => {
                 let rep = out.reduction.as_ref().expect("a dubois run");
-                writeln!(
-                    md,
-                    "| {} | {} | {:.3} | {:.0} | {:.0} | {} | {} | {:.1} | {} |",
-                    m.file,
-                    m.faces,
-                    flip_seconds * 1e3,
-                    seconds * 1e3,
-                    seconds / flip_seconds,
-                    rep.outer_iterations,
-                    rep.inner_passes_total,
-                    rep.triangles_after_reduction as f64 / m.faces as f64,
-                    wave_events(&out),
+                format!(
+                    "{:.2} | {:.0} | {} | {}",
+                    cpu,
+                    cpu / flip_cpu,
+                    wave_events(out),
+                    if rep.mesh_metric { "mesh" } else { "caps" }
                 )
-                .expect("write to a string");
-                json!({
-                    "kind": "dubois_on_mesh", "mesh": m.file, "faces": m.faces,
-                    "flip_seconds": flip_seconds, "seconds": seconds,
-                    "outer_iterations": rep.outer_iterations,
-                    "inner_passes_total": rep.inner_passes_total,
-                    "triangles_after_reduction": rep.triangles_after_reduction,
-                    "wave_events": wave_events(&out),
-                })
             }
-            Err(e) => {
-                writeln!(
-                    md,
-                    "| {} | {} | {:.3} | error: {e} | | | | | |",
-                    m.file,
-                    m.faces,
-                    flip_seconds * 1e3
-                )
-                .expect("write to a string");
-                json!({"kind": "dubois_on_mesh", "mesh": m.file, "faces": m.faces, "error": e.to_string()})
-            }
+            Err(e) => format!("error: {e} | | |"),
         };
+        writeln!(
+            md,
+            "| {} | {} | {:.2} | {cells} |",
+            m.file,
+            m.faces,
+            flip_cpu * 1e3
+        )
+        .expect("write to a string");
+        let line = json!({"kind": "dubois_on_large_mesh", "mesh": m.file, "faces": m.faces,
+            "flip_cpu_seconds": flip_cpu, "cpu_seconds": cpu,
+            "error": out.as_ref().err().map(ToString::to_string)});
         writeln!(jsonl, "{line}").expect("write to a string");
         eprintln!(
-            "{}: Dubois {:.0} ms, flip {:.2} ms",
+            "{}: Dubois {cpu:.2} s, flip {:.2} ms",
             m.file,
-            seconds * 1e3,
-            flip_seconds * 1e3
+            flip_cpu * 1e3
         );
     }
 }
 
 fn main() {
     let mut out_dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    let mut only_meshes = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out-dir" => out_dir = PathBuf::from(args.next().expect("--out-dir DIR")),
+            "--only-meshes" => only_meshes = true,
             other => panic!("unknown argument {other}"),
         }
+    }
+    if only_meshes {
+        let (mut md, mut jsonl) = (String::new(), String::new());
+        dubois_on_small_meshes(&mut md, &mut jsonl);
+        dubois_on_large_meshes(&mut md, &mut jsonl);
+        print!("{md}");
+        return;
     }
     let command = "SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-bench --example dubois_bench";
     let mut md = format!(
@@ -592,6 +786,7 @@ fn main() {
     }
 
     dubois_on_small_meshes(&mut md, &mut jsonl);
+    dubois_on_large_meshes(&mut md, &mut jsonl);
 
     let results = out_dir.join("results");
     std::fs::create_dir_all(&results).expect("results directory");

@@ -1147,22 +1147,37 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
         &d("lengths.json"),
         "lengths",
     );
-    // A mesh by the wave in f64, and by Dubois (Section 8's caps): the same Laplacian as the flip
-    // route's.
+    // A mesh by the wave in f64, and by Dubois (the mesh kept as Proposition 2's output; with
+    // --faithful, Section 8's caps and ALGORITHM): the same Laplacian as the flip route's.
     for (method, out) in [
-        ("flip", "FL.mtx"),
-        ("voronoi", "WL.mtx"),
-        ("dubois", "DL.mtx"),
+        (&["--method", "flip"][..], "FL.mtx"),
+        (&["--method", "voronoi"], "WL.mtx"),
+        (&["--method", "dubois"], "DL.mtx"),
+        (&["--method", "dubois", "--faithful"], "DFL.mtx"),
     ] {
         surftopo()
             .arg("delaunay")
             .arg(d("tet.obj"))
             .arg("-o")
             .arg(d("tet.json"))
-            .args(["--method", method, "--laplacian"])
+            .args(method)
+            .arg("--laplacian")
             .arg(d(out))
             .assert()
             .success();
+    }
+    // Which route ran: no outer iteration on the mesh's own metric, some with --faithful.
+    for (faithful, mesh_metric) in [(false, true), (true, false)] {
+        let mut cmd = surftopo();
+        cmd.arg("delaunay")
+            .arg(d("tet.obj"))
+            .args(["--method", "dubois", "--json"]);
+        if faithful {
+            cmd.arg("--faithful");
+        }
+        let v = json_of(&mut cmd, &["outer_iterations", "mesh_metric"]);
+        assert_eq!(v["mesh_metric"], mesh_metric);
+        assert_eq!(v["outer_iterations"].as_u64().unwrap() > 0, faithful);
     }
     let entries = |f: &str| -> Vec<(usize, usize, f64)> {
         std::fs::read_to_string(d(f))
@@ -1180,7 +1195,7 @@ fn delaunay_by_the_voronoi_wave_in_both_arithmetics() {
             })
             .collect()
     };
-    for other in ["WL.mtx", "DL.mtx"] {
+    for other in ["WL.mtx", "DL.mtx", "DFL.mtx"] {
         let (a, b) = (entries("FL.mtx"), entries(other));
         assert_eq!(a.len(), b.len(), "{other}");
         for (x, y) in a.iter().zip(&b) {

@@ -10,7 +10,10 @@
 //! `p = 1/3`, four triangles with squared sides `{1, 10/9, 13/9}` — known by construction, checked
 //! here on the exact output's corners with rational arithmetic.
 
-use surftopo_intrinsic::dubois::{FlatDelaunayOptions, cut_caps, delaunay_tessellation_dubois};
+use surftopo_intrinsic::dubois::{
+    CapsError, ConeDelaunay, FlatDelaunayOptions, cut_caps, delaunay_tessellation_dubois,
+    delaunay_tessellation_of_mesh,
+};
 use surftopo_intrinsic::generators::pillowcase;
 use surftopo_intrinsic::geometry::{Rational, Scalar};
 use surftopo_intrinsic::voronoi::{Sources, VoronoiOptions, voronoi_delaunay};
@@ -269,6 +272,10 @@ fn check_triangulation_against_flip(
     check_triangulation_against_flip_with(tri, name, tolerance, &options)
 }
 
+/// Theorem 1 by one route: with caps ([`delaunay_tessellation_dubois`]) or on a mesh's metric
+/// ([`delaunay_tessellation_of_mesh`]).
+type Route = fn(&Portalgon<f64>, &FlatDelaunayOptions) -> Result<ConeDelaunay<f64>, CapsError>;
+
 /// [`check_triangulation_against_flip`] with `options` (V must be every vertex).
 fn check_triangulation_against_flip_with(
     tri: &IntrinsicTriangulation,
@@ -276,8 +283,19 @@ fn check_triangulation_against_flip_with(
     tolerance: f64,
     options: &FlatDelaunayOptions,
 ) -> Result<f64, String> {
+    check_route_against_flip(tri, name, tolerance, options, delaunay_tessellation_dubois)
+}
+
+/// [`check_triangulation_against_flip_with`] by `route`.
+fn check_route_against_flip(
+    tri: &IntrinsicTriangulation,
+    name: &str,
+    tolerance: f64,
+    options: &FlatDelaunayOptions,
+    route: Route,
+) -> Result<f64, String> {
     let (p, _) = tri.to_portalgon();
-    let out = delaunay_tessellation_dubois(&p, options).map_err(|e| format!("{name}: {e}"))?;
+    let out = route(&p, options).map_err(|e| format!("{name}: {e}"))?;
     assert_eq!(
         out.delaunay.sources.len(),
         tri.mesh().vertex_count(),
@@ -328,7 +346,10 @@ fn dubois_with_caps_equals_flip_on_the_smallest_shared_meshes() {
     }
 }
 
-surftopo_testkit::shared_mesh_tests!(dubois_with_caps_equals_flip_on_the_smallest_shared_meshes);
+surftopo_testkit::shared_mesh_tests!(
+    dubois_with_caps_equals_flip_on_the_smallest_shared_meshes,
+    dubois_on_a_mesh_metric_equals_flip
+);
 
 /// Surfaces the tolerances were never tuned on, made here: a torus whose grid diagonals wind
 /// around the tube, an icosphere and a thin torus re-triangulated by random intrinsic flips
@@ -355,6 +376,47 @@ fn dubois_with_caps_equals_flip_on_generated_surfaces() {
     }
     for (name, tri) in &cases {
         check_triangulation_against_flip(tri, name, 1e-12).unwrap();
+    }
+}
+
+/// Theorem 1 on a mesh's own metric (docs/dubois.md §8: a mesh has happiness 1, so it serves as
+/// Proposition 2's output, no cap and no ALGORITHM): the flip route's Laplacian to 1e-12 on the
+/// three smallest shared meshes and on generated meshes (not re-triangulated: their triangles
+/// are faces in space), with the report saying that ALGORITHM did not run, except where the
+/// wave refuses the mesh in `f64` and the caps are built after all.
+fn dubois_on_a_mesh_metric_equals_flip() {
+    use surftopo_intrinsic::generators::sheared_torus;
+    use surftopo_mesh::generators::{icosphere, torus};
+    let from = |s: surftopo_mesh::Surface| {
+        IntrinsicTriangulation::from_positions(s.mesh, &s.positions).unwrap()
+    };
+    let mut cases = vec![
+        ("sheared torus".to_string(), from(sheared_torus(24, 8, 3))),
+        ("icosphere".to_string(), from(icosphere(2))),
+        ("thin torus".to_string(), from(torus(5, 30))),
+    ];
+    let mut meshes = shared_meshes();
+    meshes.sort_by_key(|m| m.faces);
+    for m in meshes.iter().take(3) {
+        let s = load(m);
+        cases.push((m.file.clone(), from(s)));
+    }
+    let options = FlatDelaunayOptions {
+        sources: Sources::All,
+        ..FlatDelaunayOptions::default()
+    };
+    for (name, tri) in &cases {
+        check_route_against_flip(tri, name, 1e-12, &options, delaunay_tessellation_of_mesh)
+            .unwrap();
+        let (p, _) = tri.to_portalgon();
+        let out = delaunay_tessellation_of_mesh(&p, &options).unwrap();
+        // The thin torus's grid is near-co-circular everywhere: the wave's dual refuses the
+        // mesh in f64, and the route falls back to the caps (checked against flipping above).
+        let kept = name != "thin torus";
+        assert_eq!(out.reduction.mesh_metric, kept, "{name}");
+        assert_eq!(out.reduction.outer_iterations == 0, kept, "{name}");
+        assert_eq!(out.cap_triangles == 0, kept, "{name}");
+        assert_eq!(out.reduced == p, kept, "{name}: T′ is the input");
     }
 }
 

@@ -108,7 +108,8 @@ pub struct MethodOptions {
     pub exact: bool,
     /// With --method dubois: run all 350 inner repetitions of ALGORITHM (Section 4.5) per outer
     /// iteration, as the paper does, instead of stopping at the first repetition that changes
-    /// nothing (the output is the same; slower).
+    /// nothing (the output is the same; slower). On a mesh file, also run Proposition 2 (caps
+    /// and ALGORITHM) instead of keeping the mesh, whose happiness is 1, as its output.
     #[arg(long)]
     pub faithful: bool,
 }
@@ -370,15 +371,16 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         return super::tufted::run(options);
     }
     options.method.check()?;
-    let (input, numbering) = if options.method.exact {
+    // A mesh file's lengths are those of its faces in space (`DelaunayRequest::mesh_metric`).
+    let (input, numbering, mesh_metric) = if options.method.exact {
         let p = crate::progress::step("reading", || load_exact(&options.input))?;
-        (DelaunayInput::Exact(p), None)
+        (DelaunayInput::Exact(p), None, false)
     } else if is_json_input(&options.input)? {
         let input = crate::progress::step("reading", || load_json(&options.input))?;
-        (input, None)
+        (input, None, false)
     } else {
         match load_mesh(&options.input, options.weld.weld) {
-            Ok((input, numbering)) => (input, Some(numbering)),
+            Ok((input, numbering)) => (input, Some(numbering), true),
             Err(e) => return super::tufted::run_if_not_manifold(options, e),
         }
     };
@@ -393,6 +395,7 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         },
         max_flips: options.max_flips,
         mollify: options.mollify,
+        mesh_metric,
         ..options.method.request()
     };
     let out = crate::progress::steps(|progress| {
@@ -613,6 +616,8 @@ struct ReductionJson<'a> {
     tubes_replaced: TubesJson,
     peak_active_vertices: usize,
     triangles_after_reduction: usize,
+    /// Proposition 2 kept the mesh as `T′` (happiness 1): no caps, no ALGORITHM.
+    mesh_metric: bool,
 }
 
 /// `tubes_replaced` of [`ReductionJson`].
@@ -638,6 +643,7 @@ fn report(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
             },
             peak_active_vertices: r.peak_active_vertices,
             triangles_after_reduction: r.triangles_after_reduction,
+            mesh_metric: r.mesh_metric,
         });
         crate::output::print_json(&JsonReport {
             tufted: false,

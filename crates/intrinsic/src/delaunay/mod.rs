@@ -126,6 +126,11 @@ pub struct DelaunayRequest {
     /// `dubois`: run all 350 inner repetitions of ALGORITHM (Section 4.5), not stopping at the
     /// first that changes nothing (the same output; slower).
     pub faithful: bool,
+    /// The input's lengths are those of a mesh in ℝ³ (each triangle a face in space, as a mesh
+    /// file gives them): `dubois` then keeps it as Proposition 2's `T′`, whose happiness is 1
+    /// ([`crate::dubois::delaunay_tessellation_of_mesh`], docs/dubois.md §8), unless `faithful`
+    /// asks for the paper's Proposition 2.
+    pub mesh_metric: bool,
 }
 
 /// A request that cannot be run, whatever the input.
@@ -512,11 +517,14 @@ where
             wave: wave_options,
             ..FlatDelaunayOptions::default()
         };
-        let out = crate::dubois::delaunay_tessellation_dubois(p, &options).map_err(|error| {
-            IntrinsicDelaunayError::Dubois {
-                error,
-                numerical: !S::EXACT,
-            }
+        let out = if request.mesh_metric && !request.faithful {
+            crate::dubois::delaunay_tessellation_of_mesh(p, &options)
+        } else {
+            crate::dubois::delaunay_tessellation_dubois(p, &options)
+        }
+        .map_err(|error| IntrinsicDelaunayError::Dubois {
+            error,
+            numerical: !S::EXACT,
         })?;
         (out.delaunay, Some(out.reduction), Some(out.reduced))
     } else {

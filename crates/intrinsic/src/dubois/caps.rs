@@ -234,7 +234,7 @@ fn check_triangular_closed<S: Scalar>(t: &Portalgon<S>) -> Result<(), CapsError>
 }
 
 /// Per vertex class of `t`, whether it is a cone point ([`is_flat_vertex`]).
-fn cone_points<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Vec<bool> {
+pub(super) fn cone_points<S: Scalar>(t: &Portalgon<S>, angle_tolerance: f64) -> Vec<bool> {
     let (class, count) = t.vertex_classes();
     let mut first = vec![SideId::INVALID; count];
     for s in t.sides() {

@@ -11,7 +11,9 @@
 //!   remainder, the caps put back ([`proposition_2`]);
 //! - [`flat_delaunay`]: Theorem 1 on flat surfaces ([`delaunay_tessellation_flat`]: no caps);
 //! - this file: Theorem 1 on any closed surface ([`delaunay_tessellation_dubois`], the CLI's
-//!   `delaunay --method dubois`).
+//!   `delaunay --method dubois`), and on the metric of a mesh in ℝ³, whose happiness is 1, with
+//!   the mesh as Proposition 2's output ([`delaunay_tessellation_of_mesh`], the CLI's on a mesh
+//!   file; **\[ours\]**, docs/dubois.md §8).
 //!
 //! **Theorem 1 on flat surfaces** ([`flat_delaunay`]): [`delaunay_tessellation_flat`] runs
 //! Proposition 2 (here [`reduce`]: with no cone point there are no caps) and then Proposition 3
@@ -154,19 +156,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             apexes,
         )
     };
-    let mut wave_options = VoronoiOptions {
-        sources: Sources::Singular,
-        angle_tolerance: options.angle_tolerance,
-        wave: options.wave,
-        ..VoronoiOptions::default()
-    };
-    if !S::EXACT {
-        // `T′` from the double-double reduction closes up to far below the wave's own point
-        // tolerance (module doc), which is kept.
-        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
-        // Features far below the default tolerance (module doc): the wave again, finer.
-        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
-    }
+    let wave_options = wave_options::<S>(options, Sources::Singular);
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
         Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
@@ -178,6 +168,78 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         cone_points: cut.0,
         cap_triangles: cut.1,
         reduced: t_prime,
+    })
+}
+
+/// Proposition 3's options on `T′`: the sources, `options`' angle tolerance and wave budget, and
+/// in `f64` the dual's retries (module doc).
+fn wave_options<S: Scalar>(options: &FlatDelaunayOptions, sources: Sources) -> VoronoiOptions {
+    let mut wave_options = VoronoiOptions {
+        sources,
+        angle_tolerance: options.angle_tolerance,
+        wave: options.wave,
+        ..VoronoiOptions::default()
+    };
+    if !S::EXACT {
+        // `T′` from the double-double reduction closes up to far below the wave's own point
+        // tolerance (module doc), which is kept.
+        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
+        // Features far below the default tolerance (module doc): the wave again, finer.
+        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
+    }
+    wave_options
+}
+
+/// Theorem 1 on the metric of a mesh in ℝ³ (every triangle of `t` a face with those side
+/// lengths, as `surftopo delaunay` reads a mesh file): `t` has happiness 1 (a shortest path
+/// meets each face in one segment, docs/dubois.md §8), within Proposition 2's bound, so `T′ = t`
+/// and Proposition 3's wave runs on `t` from `options.sources` (the wave's options of
+/// [`delaunay_tessellation_dubois`]). The report has no outer iteration
+/// ([`DuboisReport::mesh_metric`] set); `reduced` is `t`. In `f64`, when the wave fails on `t`
+/// (its dual refusing rounding, as on near-co-circular sites of a regular grid), it is
+/// [`delaunay_tessellation_dubois`] (Proposition 2 with caps, whose `T′` the wave resolves). The tessellation is the one
+/// [`delaunay_tessellation_dubois`] computes, up to the choice of diagonals in co-circular
+/// polygons and rounding in `f64`; that `t` is a mesh's metric is the caller's word (nothing here
+/// can check it).
+///
+/// # Errors
+/// [`CapsError`]: bad input or the wave's errors.
+pub fn delaunay_tessellation_of_mesh<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<ConeDelaunay<S>, CapsError> {
+    t.check_invariants()?;
+    t.check_closed()?;
+    let cone_points = caps::cone_points(t, options.angle_tolerance)
+        .iter()
+        .filter(|&&c| c)
+        .count();
+    let wave_options = wave_options::<S>(options, options.sources);
+    let mut delaunay = match voronoi_delaunay(t, &wave_options) {
+        Ok(delaunay) => delaunay,
+        // In `f64` the wave's dual can refuse a mesh whose rounding makes the traced Voronoi
+        // edges inconsistent (near-co-circular grids), or the wave run out of its budget; `T′`
+        // with caps resolves the former (and bad input is refused there again).
+        Err(_) if !S::EXACT => {
+            return delaunay_tessellation_dubois(t, options);
+        }
+        Err(e) => return Err(e.into()),
+    };
+    if options.sources == Sources::Singular {
+        relabel_with_input_labels(t, &mut delaunay)?;
+    }
+    let reduction = DuboisReport {
+        triangles_after_reduction: t.polygon_count(),
+        arithmetic: S::ARITHMETIC,
+        mesh_metric: true,
+        ..DuboisReport::default()
+    };
+    Ok(ConeDelaunay {
+        delaunay,
+        reduction,
+        cone_points,
+        cap_triangles: 0,
+        reduced: t.clone(),
     })
 }
 

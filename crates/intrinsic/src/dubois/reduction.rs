@@ -203,6 +203,9 @@ pub struct DuboisReport {
     pub triangles_after_reduction: usize,
     /// `"f64"` or `"exact"`.
     pub arithmetic: &'static str,
+    /// ALGORITHM did not run: the input is the metric of a mesh in ℝ³, whose happiness is 1
+    /// (docs/dubois.md §8), kept as `T′` ([`super::delaunay_tessellation_of_mesh`]).
+    pub mesh_metric: bool,
     /// Whether the caller's test stopped the outer loop early
     /// ([`reduce_with_boundary_until`]: Proposition 2's Delaunay exit).
     pub stopped_by_caller: bool,
