@@ -198,11 +198,7 @@ fn dyadic<S: Scalar>(k: u32) -> S {
 /// The least `N ≥ 1` with `((2^N − 2)·d²)² ≥ 144·L₁²·L²` (`2^N ≥ 2 + L₁/s`, `s = d²/(12L)`); in
 /// `f64` the right side enlarged by a relative 1e-9. Capped at 4096.
 fn outer_iterations_with_caps<S: Scalar>(d2: &S, l2: &S, l1_2: &S) -> u32 {
-    let margin = if S::EXACT {
-        S::one()
-    } else {
-        S::one() + S::from_f64(1e-9).expect("finite")
-    };
+    let margin = S::upward_margin(1e-9);
     let rhs = S::from_i64(144) * l1_2.clone() * l2.clone() * margin;
     let mut n = 1u32;
     let mut power = S::from_i64(2);
@@ -527,9 +523,9 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     let cut = cut_caps_at(t, &capped, &cone)?;
     let mut reduce = options.reduce;
     reduce.outer_iterations = reduce.outer_iterations.or(Some(cut.outer_iterations));
-    if !S::EXACT {
-        reduce.tolerance = reduce.tolerance.max(CAPS_F64_CLOSING_TOLERANCE);
-    }
+    reduce.tolerance = reduce
+        .tolerance
+        .max(S::slack(|| CAPS_F64_CLOSING_TOLERANCE));
     let r = reduce_with_boundary(&cut.remainder, &reduce)?;
     let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerance)?;
     let mut report = r.report;

@@ -74,8 +74,6 @@ pub use reduction::{
     OUTER_PERIOD_MAX, ReduceOptions, Reduction, outer_iterations, reduce, reduce_with_boundary,
 };
 
-use std::any::TypeId;
-
 use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon};
 use crate::voronoi::{
@@ -135,7 +133,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             reduced: flat.reduced,
         });
     }
-    let (t_prime, reduction, cut, apexes) = if TypeId::of::<S>() == TypeId::of::<f64>() {
+    let (t_prime, reduction, cut, apexes) = if S::REDUCES_IN_DOUBLE_DOUBLE {
         // The reduction in double-double, `T′` rounded back in local frames (module doc).
         let t_dd = laid_out_in_double_double(t);
         let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
@@ -152,19 +150,17 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             apexes,
         )
     };
-    let mut wave_options = VoronoiOptions {
+    // `T′` from the double-double reduction closes up to far below the wave's own point
+    // tolerance (module doc), which is kept; its features can be far below it: the rounded
+    // wave's retries (exact arithmetic has none).
+    let wave_options = VoronoiOptions {
         sources: Sources::Singular,
         angle_tolerance: options.angle_tolerance,
         wave: options.wave,
+        dual_retry_tolerance: Some(CAPS_F64_DUAL_RETRY_TOLERANCE),
+        finer_retry: Some(CAPS_F64_FINER_TOLERANCE),
         ..VoronoiOptions::default()
     };
-    if !S::EXACT {
-        // `T′` from the double-double reduction closes up to far below the wave's own point
-        // tolerance (module doc), which is kept.
-        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
-        // Features far below the default tolerance (module doc): the wave again, finer.
-        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
-    }
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
         Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,

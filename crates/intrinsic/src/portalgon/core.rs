@@ -904,16 +904,14 @@ impl<S: Scalar> Portalgon<S> {
         let into = self.prev_side(out);
         let p = self.owner(out);
         let (a, b) = (self.start(into), self.end(out));
-        let apart = if S::EXACT {
-            a != b
-        } else {
-            // gap > tolerance · longest side, squared (no square root per side).
+        // Rounded: the gap within tolerance · longest side, squared (no square root per side).
+        let apart = !S::same_point(&a, &b, || {
             let longest2 = self.polygons[p.idx()]
                 .iter()
                 .map(|&x| self.side_length2(x).to_f64())
                 .fold(0.0, f64::max);
-            dist2(&a, &b).to_f64() > tolerance * tolerance * longest2
-        };
+            tolerance * tolerance * longest2
+        });
         if apart || self.polygons[p.idx()].len() < 5 {
             return Err(PortalgonError::NotFlat {
                 polygon: p.idx(),

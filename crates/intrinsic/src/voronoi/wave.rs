@@ -333,11 +333,7 @@ impl<S: Scalar> Wave<S> {
     /// Whether two points are the same point of a constellation (exactly, or within the tolerance
     /// in `f64`).
     pub fn same_point(&self, a: &Point<S>, b: &Point<S>) -> bool {
-        if S::EXACT {
-            a == b
-        } else {
-            dist2(a, b).to_f64() <= self.eps() * self.eps()
-        }
+        S::same_point(a, b, || self.eps() * self.eps())
     }
 
     /// The index of point `x` in the constellation of triangle `q`, if present.
@@ -488,12 +484,7 @@ impl<S: Scalar> Wave<S> {
         let side_len = self.side_length[s.idx()];
         let eps = self.eps();
         let tie = |j: u32| -> S {
-            if S::EXACT {
-                S::zero()
-            } else {
-                let r = dist2(a, &pts[j as usize]).to_f64().sqrt() + side_len;
-                S::from_f64(4.0 * eps * r).unwrap_or_else(S::zero)
-            }
+            S::tie(|| 4.0 * eps * (dist2(a, &pts[j as usize]).to_f64().sqrt() + side_len))
         };
         let sgn = |x: &S, tol: &S| {
             if *x > *tol {
