@@ -498,7 +498,6 @@ where
 {
     let wave_options = WaveOptions {
         max_events: request.max_wave_events,
-        ..WaveOptions::default()
     };
     let (v, reduction, reduced) = if method == DelaunayMethod::Dubois {
         progress("reducing (Dubois, Sections 8 and 4) and running the wave");

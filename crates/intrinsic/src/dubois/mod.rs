@@ -42,9 +42,9 @@
 //!   longest side; that merged distinct sites of near-co-circular configurations, which broke
 //!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
 //!   is built again pooling the sites of Voronoi vertices taken for one, then at
-//!   [`caps::CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`crate::voronoi::VoronoiOptions::dual_retry_tolerance`]).
+//!   1e-8 ([`crate::geometry::Tolerances::dual_retry`], set by [`crate::geometry::Tolerances::with_retries`]).
 //!   When all three fail, the wave and the dual run again at tolerances
-//!   [`caps::CAPS_F64_FINER_TOLERANCE`] times finer ([`crate::voronoi::VoronoiOptions::finer_retry`]: points 1e-12,
+//!   1000 times finer ([`crate::geometry::Tolerances::finer_retry`]: points 1e-12,
 //!   the dual 1e-12 and 1e-11). The tolerance
 //!   is taken at the scale of the longest side, and a surface with features thousands of times
 //!   smaller can have whole clusters of sites within it: on `seahorse2_100K.off`'s `T′`
@@ -79,10 +79,7 @@ use crate::portalgon::{PolygonId, Portalgon};
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiOptions, voronoi_delaunay, voronoi_delaunay_from,
 };
-use caps::{
-    CAPS_F64_CLOSING_TOLERANCE, CAPS_F64_DUAL_RETRY_TOLERANCE, CAPS_F64_FINER_TOLERANCE,
-    in_local_frames, laid_out_in_double_double, proposition_2_with_apexes,
-};
+use caps::{in_local_frames, laid_out_in_double_double, proposition_2_with_apexes};
 
 /// Theorem 1's output on a closed surface: the tessellation (with the wave's data), ALGORITHM's
 /// report, and the caps.
@@ -117,7 +114,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
 ) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
-    if first_cone_point(t, options.angle_tolerance).is_none() {
+    if first_cone_point(t, options.tolerances.angle).is_none() {
         let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
             FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
             FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
@@ -137,7 +134,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         // The reduction in double-double, `T′` rounded back in local frames (module doc).
         let t_dd = laid_out_in_double_double(t);
         let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
-        let t_prime = in_local_frames(&t_prime, CAPS_F64_CLOSING_TOLERANCE)?
+        let t_prime = in_local_frames(&t_prime, options.tolerances.closing)?
             .map_coordinates(|x| S::from_f64(x.to_f64()).unwrap_or_else(S::zero));
         let cut = (cut.cone_points, cut.caps.len());
         (t_prime, reduction, cut, apexes)
@@ -155,11 +152,8 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
     // wave's retries (exact arithmetic has none).
     let wave_options = VoronoiOptions {
         sources: Sources::Singular,
-        angle_tolerance: options.angle_tolerance,
         wave: options.wave,
-        dual_retry_tolerance: Some(CAPS_F64_DUAL_RETRY_TOLERANCE),
-        finer_retry: Some(CAPS_F64_FINER_TOLERANCE),
-        ..VoronoiOptions::default()
+        tolerances: options.tolerances.with_retries(),
     };
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,

@@ -31,14 +31,16 @@
 //! canonical tessellation has V = the singular vertices (see [`crate::canonical_tessellation`],
 //! which removes the flat ones first).
 
+use crate::geometry::Tolerances;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::dense_vertex_index;
 use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind, VertexId};
 
-/// Default tolerance for co-circularity: `|tan(γ/2) tan(δ/2) - 1| <= 1e-9`.
-pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = 1e-9;
+/// [`Tolerances::cocircular`]'s default, the tolerance for co-circularity
+/// (`|tan(γ/2) tan(δ/2) - 1| <= 1e-9`), as a constant for the callers that take one.
+pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = Tolerances::DEFAULT.cocircular;
 
 /// A Delaunay tessellation with its relation to the triangulation it came from; `P` holds the
 /// polygons and their gluing: a [`Portalgon`] on a closed oriented surface, a

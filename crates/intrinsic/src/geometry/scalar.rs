@@ -91,7 +91,7 @@ pub trait Scalar:
 
     // The exact/rounded decisions: exact arithmetic decides exactly and never evaluates the
     // tolerance (a closure, often a computation); rounded arithmetic decides on doubles within
-    // it.
+    // it. Tolerances come from [`super::Tolerances`].
 
     /// Whether `a` and `b` are one value: `a == b` exactly; rounded, `|a − b| ≤ tolerance`.
     fn same_value(a: &Self, b: &Self, tolerance: impl FnOnce() -> f64) -> bool {

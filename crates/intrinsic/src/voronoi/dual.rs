@@ -58,8 +58,7 @@ use std::cmp::Ordering;
 
 use super::wave::{SideCell, Wave};
 use crate::error::PortalgonError;
-use crate::geometry::{Motion, Point, Scalar, add, cross, dist2, dot, scale, sub};
-use crate::portalgon::DEFAULT_LENGTH_TOLERANCE;
+use crate::geometry::{Motion, Point, Scalar, Tolerances, add, cross, dist2, dot, scale, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Where a Voronoi vertex lies in its triangle.
@@ -273,7 +272,7 @@ pub(crate) fn build_dual<S: Scalar>(
                     "the edge ends at side {side2} of polygon {polygon2}, already matched"
                 )));
             }
-            out.glue(s, t, S::slack(|| 1e3 * DEFAULT_LENGTH_TOLERANCE))?;
+            out.glue(s, t, S::slack(|| 1e3 * Tolerances::DEFAULT.length))?;
             diagram.edges.push(segments);
         }
     }

@@ -25,7 +25,7 @@
 //! deletions).
 //!
 //! Deviations and decisions:
-//! - In `f64`, "x ∈ X_Δ" is decided up to `point_tolerance · L` (L the longest side of the
+//! - In `f64`, "x ∈ X_Δ" is decided up to `point_tolerance · L` ([`Tolerances::point`]) (L the longest side of the
 //!   portalgon): the same surface point reached along two routes differs by rounding. In exact
 //!   mode it is equality.
 //! - In `f64`, two sites tie on a side where their squared distances differ by at most
@@ -41,7 +41,7 @@ use std::cmp::{Ordering, Reverse};
 use std::collections::{BinaryHeap, HashMap};
 
 use super::flat::FlatLists;
-use crate::geometry::{Motion, Point, Scalar, dist2, dot, sub};
+use crate::geometry::{Motion, Point, Scalar, Tolerances, dist2, dot, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Constellations up to this size are searched by a scan; larger ones through a hash grid.
@@ -147,22 +147,11 @@ impl<S: Scalar> Ord for Event<S> {
 }
 
 /// Options of [`run_wave`].
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WaveOptions {
-    /// In `f64`: points of a constellation closer than this times the longest side are the same.
-    pub point_tolerance: f64,
     /// Give up after this many events (points added); `None`: `64 n + 4·10⁶` for `n` triangles
     /// (T_x needs about `2x`; a mesh near Delaunay about one per triangle).
     pub max_events: Option<u64>,
-}
-
-impl Default for WaveOptions {
-    fn default() -> Self {
-        Self {
-            point_tolerance: 1e-9,
-            max_events: None,
-        }
-    }
 }
 
 /// Checks that `p` is a closed triangular portalgon with dense ids.
@@ -185,7 +174,8 @@ pub(crate) fn check_input<S: Scalar>(p: &Portalgon<S>) -> Result<(), WaveError> 
 }
 
 /// Runs the wave from the vertex classes `sources` (V; see [`super::wave_sources`]) on a closed
-/// triangular portalgon with dense ids; `class` gives the vertex class of each side's start.
+/// triangular portalgon with dense ids; `class` gives the vertex class of each side's start. In
+/// `f64`, points closer than [`Tolerances::point`] times the longest side are one.
 ///
 /// # Errors
 /// [`WaveError::Input`] for another portalgon, [`WaveError::Budget`].
@@ -194,6 +184,7 @@ pub fn run_wave<S: Scalar>(
     sources: &[u32],
     class: &[u32],
     options: &WaveOptions,
+    tolerances: &Tolerances,
 ) -> Result<Wave<S>, WaveError> {
     check_input(p)?;
     let n = p.polygon_slots();
@@ -223,7 +214,7 @@ pub fn run_wave<S: Scalar>(
         to_mate,
         events: 0,
         stale_events: 0,
-        point_tolerance: options.point_tolerance,
+        point_tolerance: tolerances.point,
         scale,
         side_length,
         index: HashMap::new(),
