@@ -1,7 +1,11 @@
 //! Exact Theorem 1 (`delaunay --method dubois --exact`) against the size of the input's numbers:
-//! Dubois' `T_x` (Section 9) at `x = 10^d` for `d` from 18 to 1000 digits, and pillowcases (four
-//! cone points of angle π) with the shear `v = (k, 1)` for `k` up to `10^100`, plus sheared
-//! pillowcases with a fractional shear (`k + 1/3`, an input the code was not tuned on).
+//! Dubois' `T_x` (Section 9) at `x = 10^d` for `d` from 18 to 1000 digits; pillowcases (four
+//! cone points of angle π, the double of the parallelogram of `u`, `v`) with the shear
+//! `v = (k, 1)` for `k` up to `10^100`, with a fractional shear (`k + 1/3`, an input the code
+//! was not tuned on) and thin ones (`v = (1/3, 10^-d)`); and tetrahedra with integer edge
+//! lengths (isosceles tetrahedra, whose four cone points have angle π: the pillowcase of `u`,
+//! `v` with `|u|`, `|v|`, `|u − v|` integers), acute (`u = (4m, 0)`, `v = (2m, m² − 1)`, edges
+//! `4m, m² + 1, m² + 1`) and flat (`u = (2m² − 2, 0)`, `v = (m² − 1, 2m)`).
 //!
 //! ```text
 //! cargo run --release -p surftopo-intrinsic --example exact_growth [-- --repeat N] [--only TEXT]
@@ -9,13 +13,16 @@
 //!
 //! `--only TEXT` runs the rows whose name contains `TEXT` (e.g. `pillowcase`, `10^18`). The
 //! pillowcase at `10^100` (about 1,330 outer iterations on corners of over 1,500 bits: minutes)
-//! runs only when `--only` names it (`--only "10^100, 1"`). Prints a Markdown table: seconds (median of `--repeat`, default 3), `N` (outer iterations
-//! asked for), the outer iterations run (the exact-mode periodic exit, docs/dubois.md §3.2), and
-//! the largest corner coordinate of the reduced triangulation in bits. Every answer is checked
+//! runs only when `--only` names it (`--only "10^100, 1"`). Prints a Markdown table: seconds
+//! (median of `--repeat`, default 3), `N` (outer iterations asked for), the outer iterations
+//! run and why they stopped (the periodic exit of docs/dubois.md §3.2, or the Delaunay exit of
+//! §3.8), and the largest corner coordinate of the reduced triangulation in bits. Every answer is checked
 //! here, without the algorithm's code: `T_x` at integer `x` must give `D_x`, one rectangle
 //! `1 × 2` (four sides of squared lengths 1, 4, 1, 4, right angles, area 2); a pillowcase of
 //! the lattice `⟨(1, 0), (k, 1)⟩` with integer `k` must give two unit squares (area 2); with
-//! `k + 1/3` the polygons must have total area 2. A failed check panics.
+//! `k + 1/3` the polygons must have total area 2; the thin pillowcases and the tetrahedra their
+//! input's area; every output has no non-Delaunay edge (an in-circle test across every edge
+//! written here). A failed check panics.
 
 use std::time::Instant;
 
@@ -74,15 +81,16 @@ struct Row {
     seconds: f64,
     n: u32,
     run: usize,
+    exit: &'static str,
     bits: u64,
-    check: &'static str,
+    check: String,
 }
 
 fn run(
     name: String,
     t: &Portalgon<Rational>,
     repeat: usize,
-    check: fn(&Portalgon<Rational>) -> &'static str,
+    check: &dyn Fn(&Portalgon<Rational>) -> String,
 ) -> Row {
     let options = FlatDelaunayOptions::default();
     let mut times = Vec::new();
@@ -100,13 +108,24 @@ fn run(
         seconds: times[times.len() / 2],
         n: out.reduction.outer_iterations,
         run: out.reduction.inner_passes.len(),
+        exit: if out.reduction.stopped_by_caller {
+            "Delaunay"
+        } else if (out.reduction.inner_passes.len() as u32) < out.reduction.outer_iterations {
+            "periodic"
+        } else {
+            "N reached"
+        },
         bits: out.reduced.max_coordinate_bits(),
-        check: check(&out.delaunay.tessellation),
+        check: format!(
+            "{}; {}",
+            check(&out.delaunay.tessellation),
+            delaunay_check(&out.delaunay.tessellation)
+        ),
     }
 }
 
 /// `D_x`: one 1 × 2 rectangle.
-fn is_d_x(t: &Portalgon<Rational>) -> &'static str {
+fn is_d_x(t: &Portalgon<Rational>) -> String {
     let p = polygons(t);
     assert_eq!(p.len(), 1, "D_x is one polygon");
     assert!(
@@ -114,11 +133,11 @@ fn is_d_x(t: &Portalgon<Rational>) -> &'static str {
         "D_x: {p:?}"
     );
     assert_eq!(twice_area(&p[0]), Rational::from_i64(4), "area 2");
-    "D_x (1 x 2 rectangle)"
+    "D_x (1 x 2 rectangle)".into()
 }
 
 /// Two unit squares.
-fn two_unit_squares(t: &Portalgon<Rational>) -> &'static str {
+fn two_unit_squares(t: &Portalgon<Rational>) -> String {
     let p = polygons(t);
     assert_eq!(p.len(), 2, "two squares");
     for q in &p {
@@ -127,11 +146,11 @@ fn two_unit_squares(t: &Portalgon<Rational>) -> &'static str {
             "a unit square: {q:?}"
         );
     }
-    "two unit squares"
+    "two unit squares".into()
 }
 
-/// Total area 2 (the pillowcase's), every polygon counter-clockwise.
-fn area_two(t: &Portalgon<Rational>) -> &'static str {
+/// Total area `twice / 2`, every polygon counter-clockwise.
+fn area(t: &Portalgon<Rational>, twice: &Rational) -> String {
     let p = polygons(t);
     assert!(
         p.iter()
@@ -140,8 +159,107 @@ fn area_two(t: &Portalgon<Rational>) -> &'static str {
     let total = p
         .iter()
         .fold(Rational::zero(), |acc, q| acc + twice_area(q));
-    assert_eq!(total, Rational::from_i64(4), "area 2");
-    "area 2"
+    assert_eq!(&total, twice, "the input's area");
+    "the input's area".into()
+}
+
+/// Every edge of the tessellation is locally Delaunay: each polygon is strictly convex with its
+/// corners on one circle, and the polygon across each side, laid out by the gluing (footnote 2's
+/// `z ↦ t₀ + (z − s₀)(t₁ − t₀)/(s₁ − s₀)`), has no corner strictly inside that circle.
+fn delaunay_check(t: &Portalgon<Rational>) -> String {
+    let mut edges = 0;
+    for p in t.polygons() {
+        let c = polygons_corners(t, p);
+        let m = c.len();
+        for i in 0..m {
+            assert!(
+                cross(
+                    &diff(&c[(i + 1) % m], &c[i]),
+                    &diff(&c[(i + 2) % m], &c[(i + 1) % m])
+                )
+                .sign()
+                    == std::cmp::Ordering::Greater,
+                "not strictly convex"
+            );
+            assert!(
+                in_circle(&c[0], &c[1], &c[2], &c[i]).is_zero(),
+                "corners not on one circle"
+            );
+        }
+        for &s in t.polygon_sides(p) {
+            let u = t.mate(s).expect("closed");
+            let (s0, s1) = (t.start(s), t.end(s));
+            // u runs from s1 to s0: z ↦ s1 + (z − u0)·(s0 − s1)/(u1 − u0).
+            let (u0, u1) = (t.start(u), t.end(u));
+            let w = complex_div(&diff(&s0, &s1), &diff(&u1, &u0));
+            for z in polygons_corners(t, t.owner(u)) {
+                let moved = add(&s1, &complex_mul(&diff(&z, &u0), &w));
+                assert!(
+                    in_circle(&c[0], &c[1], &c[2], &moved).sign() != std::cmp::Ordering::Greater,
+                    "a corner across side {} is inside the circle",
+                    s.idx()
+                );
+            }
+            edges += 1;
+        }
+    }
+    format!("{} edges Delaunay", edges / 2)
+}
+
+fn polygons_corners(
+    t: &Portalgon<Rational>,
+    p: surftopo_intrinsic::PolygonId,
+) -> Vec<[Rational; 2]> {
+    t.polygon_sides(p).iter().map(|&s| t.start(s)).collect()
+}
+
+fn add(a: &[Rational; 2], b: &[Rational; 2]) -> [Rational; 2] {
+    [a[0].clone() + b[0].clone(), a[1].clone() + b[1].clone()]
+}
+
+fn cross(a: &[Rational; 2], b: &[Rational; 2]) -> Rational {
+    a[0].clone() * b[1].clone() - a[1].clone() * b[0].clone()
+}
+
+fn complex_mul(a: &[Rational; 2], b: &[Rational; 2]) -> [Rational; 2] {
+    [
+        a[0].clone() * b[0].clone() - a[1].clone() * b[1].clone(),
+        a[0].clone() * b[1].clone() + a[1].clone() * b[0].clone(),
+    ]
+}
+
+fn complex_div(a: &[Rational; 2], b: &[Rational; 2]) -> [Rational; 2] {
+    let n = dot(b, b);
+    [dot(a, b) / n.clone(), cross(b, a) / n]
+}
+
+/// The in-circle determinant of `d` against the counter-clockwise `a, b, c` (positive inside).
+fn in_circle(
+    a: &[Rational; 2],
+    b: &[Rational; 2],
+    c: &[Rational; 2],
+    d: &[Rational; 2],
+) -> Rational {
+    let (ad, bd, cd) = (diff(a, d), diff(b, d), diff(c, d));
+    let (la, lb, lc) = (dot(&ad, &ad), dot(&bd, &bd), dot(&cd, &cd));
+    la * cross(&bd, &cd) - lb * cross(&ad, &cd) + lc * cross(&ad, &bd)
+}
+
+fn pillowcase_row(
+    name: String,
+    u: [Rational; 2],
+    v: [Rational; 2],
+    repeat: usize,
+    check: Option<fn(&Portalgon<Rational>) -> String>,
+) -> Row {
+    let t = pillowcase(&u, &v).expect("a pillowcase");
+    // The pillowcase's area is twice the parallelogram's.
+    let twice = Rational::from_i64(4) * cross(&u, &v);
+    let check = move |out: &Portalgon<Rational>| match check {
+        Some(known) => known(out),
+        None => area(out, &twice),
+    };
+    run(name, &t, repeat, &check)
 }
 
 fn main() {
@@ -170,22 +288,19 @@ fn main() {
         }
         let x = r(&power_of_ten(digits));
         let t = flat_torus_portalgon(&x, 1).expect("T_x");
-        rows.push(run(name, &t, repeat, is_d_x));
+        rows.push(run(name, &t, repeat, &is_d_x));
     }
+    let known: Option<fn(&Portalgon<Rational>) -> String> = Some(two_unit_squares);
     for (name, k, check) in [
-        (
-            "10^3",
-            power_of_ten(3),
-            two_unit_squares as fn(&Portalgon<Rational>) -> &'static str,
-        ),
-        ("10^6", power_of_ten(6), two_unit_squares),
-        ("10^9", power_of_ten(9), two_unit_squares),
-        ("10^18", power_of_ten(18), two_unit_squares),
-        ("10^100", power_of_ten(100), two_unit_squares),
+        ("10^3", power_of_ten(3), known),
+        ("10^6", power_of_ten(6), known),
+        ("10^9", power_of_ten(9), known),
+        ("10^18", power_of_ten(18), known),
+        ("10^100", power_of_ten(100), known),
         (
             "10^9 + 1/3",
             format!("{}/3", 3 * 1_000_000_000u64 + 1),
-            area_two,
+            None,
         ),
     ] {
         let name = format!("pillowcase, v = ({name}, 1)");
@@ -196,17 +311,55 @@ fn main() {
             [Rational::one(), Rational::zero()],
             [r(&k), Rational::one()],
         );
-        let t = pillowcase(&u, &v).expect("a pillowcase");
-        rows.push(run(name, &t, repeat, check));
+        rows.push(pillowcase_row(name, u, v, repeat, check));
+    }
+    for digits in [9usize, 18] {
+        let name = format!("thin pillowcase, v = (1/3, 10^-{digits})");
+        if !wanted(&name) {
+            continue;
+        }
+        let (u, v) = (
+            [Rational::one(), Rational::zero()],
+            [r("1/3"), r(&format!("1/{}", power_of_ten(digits)))],
+        );
+        rows.push(pillowcase_row(name, u, v, repeat, None));
+    }
+    for (shape, m) in [
+        ("acute", 100_000i64),
+        ("flat", 100_000),
+        ("flat", 1_000_000_000),
+    ] {
+        let name = format!("tetrahedron, {shape} faces, m = {m}");
+        if !wanted(&name) {
+            continue;
+        }
+        let (u, v) = if shape == "acute" {
+            // Edges 4m, m² + 1, m² + 1.
+            (
+                [Rational::from_i64(4 * m), Rational::zero()],
+                [
+                    Rational::from_i64(2 * m),
+                    r(&format!("{}", (m as i128) * (m as i128) - 1)),
+                ],
+            )
+        } else {
+            // Edges 2m² − 2, m² + 1, m² + 1.
+            let m2 = (m as i128) * (m as i128);
+            (
+                [r(&format!("{}", 2 * m2 - 2)), Rational::zero()],
+                [r(&format!("{}", m2 - 1)), Rational::from_i64(2 * m)],
+            )
+        };
+        rows.push(pillowcase_row(name, u, v, repeat, None));
     }
     println!(
-        "| input | seconds (median of {repeat}) | N | outer iterations run | largest coordinate of T' (bits) | checked |"
+        "| input | seconds (median of {repeat}) | N | outer iterations run | exit | largest coordinate of T' (bits) | checked |"
     );
-    println!("|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|");
     for row in rows {
         println!(
-            "| {} | {:.4} | {} | {} | {} | {} |",
-            row.name, row.seconds, row.n, row.run, row.bits, row.check
+            "| {} | {:.4} | {} | {} | {} | {} | {} |",
+            row.name, row.seconds, row.n, row.run, row.exit, row.bits, row.check
         );
     }
 }

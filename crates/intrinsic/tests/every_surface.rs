@@ -9,7 +9,8 @@ mod common;
 use common::jitter;
 use std::collections::HashMap;
 use surftopo_intrinsic::{
-    CoveredTriangulation, DEFAULT_COCIRCULAR_TOLERANCE, DelaunayOptions, PortalgonDoc, SparseMatrix,
+    CoveredTriangulation, DEFAULT_COCIRCULAR_TOLERANCE, DelaunayInput, DelaunayOptions,
+    DelaunayOutputs, DelaunayRequest, PortalgonDoc, SparseMatrix, intrinsic_delaunay,
 };
 use surftopo_mesh::generators::{
     annulus, copies, crosscaps, cut_holes, disk, icosphere, klein_bottle, mobius_band,
@@ -237,6 +238,28 @@ fn flipping_every_surface_gives_delaunay_triangulations_and_their_laplacians() {
                 "{name}: mass {i}"
             );
         }
+    }
+}
+
+#[test]
+fn the_laplacian_from_the_flips_cache_is_the_recomputed_one_bit_for_bit() {
+    // `intrinsic_delaunay` assembles the Laplacian from the half-angle tangents flipping kept up
+    // to date; `laplacian()` recomputes them from the final lengths.
+    let request = DelaunayRequest {
+        outputs: DelaunayOutputs {
+            triangulation: true,
+            laplacian: true,
+            mass: true,
+            ..DelaunayOutputs::default()
+        },
+        ..DelaunayRequest::default()
+    };
+    for (name, s) in surfaces() {
+        let tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+        let out = intrinsic_delaunay(DelaunayInput::Covered(tri), &request).unwrap();
+        let flipped = out.covered.expect("the triangulation is asked for");
+        assert_eq!(out.laplacian, Some(flipped.laplacian()), "{name}");
+        assert_eq!(out.mass, Some(flipped.mass()), "{name}");
     }
 }
 

@@ -56,9 +56,11 @@ pub(crate) fn run<L: Lifting>(
     let mut tally = TestTally::new(mesh.edge_slots());
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
     let mut contractions = 0;
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     loop {
         let before = contractions;
         for e in edges.drain(..) {
+            ticker.tick();
             if !mesh.is_edge_live(e) {
                 continue;
             }

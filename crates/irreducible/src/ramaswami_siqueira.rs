@@ -301,8 +301,10 @@ impl<'m, L: Lifting> Rs<'m, L> {
         }
         debug_assert!(st.lists.is_empty(List::Lte));
         // Lines 21–34 (with the exit condition of decision 4).
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         loop {
             while let Some(v) = self.st.lists.pop_front(List::Lue) {
+                ticker.tick();
                 let v = VertexId(v);
                 self.st.attr[v.idx()].t = self.st.ts;
                 if self.st.attr[v.idx()].d == 3 {

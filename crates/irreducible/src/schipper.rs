@@ -103,7 +103,9 @@ pub(crate) fn run_lifted<L: Lifting>(
     let mut history = Vec::with_capacity(mesh.vertex_count().saturating_sub(4));
     let mut contractions = 0u64;
     let mut fan: Vec<HalfedgeId> = Vec::new();
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     while let Some(&first) = by_degree.first() {
+        ticker.tick();
         let vi = first as u32;
         let v = VertexId(vi);
         fan.clear();

@@ -291,7 +291,9 @@ fn run(graph: &CubicGraph, avoid: u32) -> (PerfectPairing, DsStats) {
     let t1 = Instant::now();
     let mut f = avoid;
     let mut alive = n;
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     while alive > 2 {
+        ticker.tick();
         f = r.reduce(f);
         alive -= 2;
     }

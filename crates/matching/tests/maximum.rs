@@ -162,6 +162,21 @@ fn the_surface_dual_is_the_dual_of_the_triangles() {
         .len();
         assert_eq!(count, expected, "{name}");
         assert_eq!(component[0], 0);
+        // With as many components as pieces, one per edge's two ends, numbered by first node.
+        for e in (0..dual.edge_slots() as u32).filter(|&e| dual.is_edge(e)) {
+            let [a, b] = dual.endpoints(e);
+            assert_eq!(
+                component[a as usize], component[b as usize],
+                "{name}: edge {e}"
+            );
+        }
+        let mut next = 0;
+        for v in (0..dual.node_slots() as u32).filter(|&v| dual.is_node(v)) {
+            let c = component[v as usize];
+            assert!(c <= next, "{name}: node {v} in component {c} before {next}");
+            next += u32::from(c == next);
+        }
+        assert_eq!(next as usize, count, "{name}");
         // The coned closure's dual is cubic: no loop, three neighbours each.
         let coned = SurfaceDual::coned(&cover);
         for v in (0..coned.node_slots() as u32).filter(|&v| coned.is_node(v)) {

@@ -86,16 +86,18 @@ impl SurfaceMesh {
                 side: i % 3,
             });
         }
-        let side_of_halfedge = {
+        // The side glued to each side.
+        let glued_to = {
             let mut v = vec![0u32; sides];
-            for (i, h) in halfedge_of_side.iter().enumerate() {
-                v[h.idx()] = i as u32;
+            for &(s, t) in pairs {
+                v[s.index()] = t.index() as u32;
+                v[t.index()] = s.index() as u32;
             }
             v
         };
         // Corner c = 3f + i is the start of side c. The side glued to side c starts where c ends.
         let next_side = |c: usize| c - c % 3 + (c % 3 + 1) % 3;
-        let glued = |c: usize| side_of_halfedge[halfedge_of_side[c].twin().idx()] as usize;
+        let glued = |c: usize| glued_to[c] as usize;
         // Vertices: orbits of corners under "rotate": corner c -> the corner after the side glued
         // to the side entering c. Each orbit is one fan; orbits are the vertices.
         let prev_side = |c: usize| c - c % 3 + (c % 3 + 2) % 3;

@@ -30,6 +30,7 @@ mod ids;
 mod invariants;
 mod polygons;
 mod printable;
+pub mod stop;
 mod surface;
 mod topology;
 mod union_find;

@@ -8,7 +8,7 @@ use crate::surface::input_index;
 use surftopo_intrinsic::{
     CoveredTriangulation, DelaunayInput, DelaunayOutput, DelaunayRequest, SparseMatrix,
 };
-use surftopo_mesh::{CoveredSurface, EdgeId};
+use surftopo_mesh::{BuildReport, CoveredSurface, EdgeId};
 
 /// A surface K on its closed cover and where its vertices go in the output matrices.
 pub(crate) struct Covered {
@@ -21,16 +21,20 @@ pub(crate) struct Covered {
 }
 
 impl Covered {
-    /// The intrinsic triangulation of a mesh in space of any surface kind; rows are the input
+    /// The intrinsic triangulation of a mesh in space of any surface kind, built from `count`
+    /// input vertices ([`CoveredSurface::from_triangles`] and its report); rows are the input
     /// vertex indices.
-    pub fn from_arrays(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
-        let (surface, report) = CoveredSurface::from_triangles(positions.to_vec(), triangles)?;
+    pub fn from_surface(
+        surface: &CoveredSurface,
+        report: &BuildReport,
+        count: usize,
+    ) -> Result<Self, Failure> {
         let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions)
             .map_err(Failure::Geometry)?;
         Ok(Self {
             tri,
-            rows: input_index(&report),
-            count: positions.len(),
+            rows: input_index(report),
+            count,
         })
     }
 

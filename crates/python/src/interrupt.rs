@@ -6,10 +6,11 @@
 //! without the GIL, waits for it in slices of [`POLL`] and asks Python between slices whether a
 //! signal is pending (`Python::check_signals`): a pending signal raises its exception
 //! (`KeyboardInterrupt` for Ctrl-C) within one slice, and the call returns nothing. The work
-//! touches no Python object, so nothing Python sees is left half-done. Library work with a stop
-//! hook (the census' `stop`) reads the [`Stop`] flag the interrupt sets and ends within its own
-//! check interval; work without one (the libraries' pairings, reductions and intrinsic methods
-//! have no stop hook) runs to its end on its thread, its result dropped.
+//! touches no Python object, so nothing Python sees is left half-done. The work then stops too:
+//! it runs under [`surftopo_mesh::stop::run_stoppable`] with the [`Stop`] flag the interrupt
+//! sets, and the long loops of the libraries (flips, the wave, Dubois' reduction, Diks–Stanczyk,
+//! the irreducible reductions) read it every [`surftopo_mesh::stop::CHECK_EVERY`] steps and
+//! unwind; the census reads the same flag through its `stop` hook.
 
 use pyo3::prelude::*;
 use std::sync::Arc;
@@ -51,9 +52,14 @@ pub fn interruptible<T: Send + 'static>(
         .name("surftopo-work".into())
         .stack_size(STACK_BYTES)
         .spawn(move || {
-            let done =
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&worker_stop)));
-            let _ = sender.send(done); // the caller is gone after an interrupt: nobody to tell
+            let flag = worker_stop.0.clone();
+            let done = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                surftopo_mesh::stop::run_stoppable(flag, || work(&worker_stop))
+            }));
+            // Stopped (`Ok(None)`) or not, the caller is gone after an interrupt: nobody to tell.
+            if let Some(done) = done.transpose() {
+                let _ = sender.send(done);
+            }
         });
     if let Err(e) = spawned {
         return Err(pyo3::exceptions::PyRuntimeError::new_err(format!(

@@ -19,7 +19,7 @@ use surftopo_intrinsic::{
     DelaunayStats, FlipReport, IntrinsicTriangulation, IsometryOptions, PortalgonDoc, SparseMatrix,
     TriangleStyle, TuftedOptions, cotan_laplacian, delaunay_tessellation, lumped_mass,
 };
-use surftopo_mesh::BuildError;
+use surftopo_mesh::{BuildReport, CoveredSurface};
 
 /// The `method=` names: every method of `surftopo_intrinsic::intrinsic_delaunay`.
 fn methods() -> [(&'static str, DelaunayMethod); 4] {
@@ -43,13 +43,15 @@ impl Located {
                 surftopo_intrinsic::SoupError::Build(b) => Failure::Build(b),
                 surftopo_intrinsic::SoupError::Geometry(g) => Failure::Geometry(g),
             })?;
-        let mut row_of = input_index(&report);
+        Ok(Self::built(tri, &report, positions.len()))
+    }
+
+    /// A triangulation built from `rows` input vertices with `report`: rows are the input
+    /// vertex indices.
+    fn built(tri: IntrinsicTriangulation, report: &BuildReport, rows: usize) -> Self {
+        let mut row_of = input_index(report);
         row_of.resize(tri.mesh().vertex_slots(), u32::MAX);
-        Ok(Self {
-            tri,
-            row_of,
-            rows: positions.len(),
-        })
+        Self { tri, row_of, rows }
     }
 
     /// A triangulation without input vertices (a portalgon): rows in vertex id order.
@@ -365,6 +367,23 @@ enum Held {
 }
 
 impl Held {
+    /// A mesh in space, built once ([`CoveredSurface::from_triangles`]): a closed orientable
+    /// surface in one piece as itself (every method), any other surface (boundary,
+    /// non-orientable, in pieces) on its closed cover. The build errors are
+    /// `surftopo_mesh::build`'s (the first problem the soup has).
+    fn from_arrays(positions: &[[f64; 3]], triangles: &[[u32; 3]]) -> Result<Self, Failure> {
+        let (surface, report) = CoveredSurface::from_triangles(positions.to_vec(), triangles)?;
+        if report.surfaces.len() == 1 && surface.cover.is_plain() {
+            let plain = surface
+                .into_plain()
+                .expect("a plain cover is a closed surface");
+            let tri = IntrinsicTriangulation::from_positions(plain.mesh, &plain.positions)
+                .map_err(Failure::Geometry)?;
+            return Ok(Held::Closed(Located::built(tri, &report, positions.len())));
+        }
+        Covered::from_surface(&surface, &report, positions.len()).map(Held::Covered)
+    }
+
     /// The intrinsic triangulation of a closed oriented surface held: the surface's, or the
     /// tufted cover's.
     fn located(&self) -> Option<&Located> {
@@ -639,19 +658,6 @@ fn located_surface(
     )
 }
 
-/// Whether a build failure says the mesh is a surface that is not closed, not orientable or in
-/// pieces: what the closed cover takes ([`Covered`]).
-fn needs_cover(failure: &Failure) -> bool {
-    matches!(
-        failure,
-        Failure::Build(
-            BuildError::BoundaryEdge { .. }
-                | BuildError::NonOrientable { .. }
-                | BuildError::Disconnected { .. }
-        )
-    )
-}
-
 /// What `intrinsic_delaunay` starts from: a surface to run the request on, or the tufted cover
 /// already flipped (with its figures, and whether it was taken because the soup is not a
 /// manifold).
@@ -705,10 +711,7 @@ fn delaunay_surface(
             if tufted.asked == Some(true) {
                 return run_tufted(false);
             }
-            match Located::from_arrays(&positions, triangles) {
-                Err(f) if needs_cover(&f) => Covered::from_arrays(&positions, triangles)
-                    .map(|c| Start::Run(Held::Covered(c)))
-                    .map_err(|f| cut.on_faces(f)),
+            match Held::from_arrays(&positions, triangles) {
                 Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
                     match method {
                         DelaunayMethod::Auto | DelaunayMethod::Flip => run_tufted(true),
@@ -719,9 +722,7 @@ fn delaunay_surface(
                         ))),
                     }
                 }
-                located => located
-                    .map(|l| Start::Run(Held::Closed(l)))
-                    .map_err(|f| cut.on_faces(f)),
+                held => held.map(Start::Run).map_err(|f| cut.on_faces(f)),
             }
         })?
         .map_err(|f| f.into_pyerr(py));
@@ -934,12 +935,14 @@ fn library_matrices(
     if tufted.asked == Some(true) {
         return tufted_matrices();
     }
-    let located = match Located::from_arrays(positions, triangles) {
-        Err(f) if needs_cover(&f) => return covered_matrices(positions, triangles, request),
+    let located = match Held::from_arrays(positions, triangles) {
         Err(f) if tufted.asked.is_none() && crate::tufted::is_non_manifold(&f) => {
             return tufted_matrices();
         }
-        located => located?,
+        Ok(Held::Covered(covered)) => return covered_matrices(covered, request),
+        Ok(Held::Closed(located)) => located,
+        Ok(Held::Tufted { .. }) => unreachable!("a mesh is built closed or covered"),
+        Err(f) => return Err(f),
     };
     let (located, out) = located.delaunay(request)?;
     let matrix = |m: Option<SparseMatrix>| m.expect("the matrices are asked for");
@@ -955,12 +958,7 @@ fn library_matrices(
 /// The Laplacian and mass matrices of a surface with boundary, non-orientable or in pieces
 /// (`surftopo_intrinsic::CoveredTriangulation`: flipping; the natural boundary condition), rows
 /// the input's vertex indices.
-fn covered_matrices(
-    positions: &[[f64; 3]],
-    triangles: &[[u32; 3]],
-    request: &DelaunayRequest,
-) -> Result<Matrices, Failure> {
-    let covered = Covered::from_arrays(positions, triangles)?;
+fn covered_matrices(covered: Covered, request: &DelaunayRequest) -> Result<Matrices, Failure> {
     let request = DelaunayRequest {
         outputs: DelaunayOutputs {
             triangulation: false,

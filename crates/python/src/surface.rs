@@ -341,8 +341,10 @@ pub fn irreducible<'py>(
     };
     let reduced = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
         let cut = faces.triangulated(&positions);
+        surftopo_mesh::stop::check();
         let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
             .map_err(|e| cut.on_faces(e.into()))?;
+        surftopo_mesh::stop::check();
         let input_index = input_index(&report);
         let input = count(&surface.cover.surface_triangles());
         let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
@@ -452,8 +454,10 @@ pub fn quadrangulate<'py>(
     let input_vertices = vertices.len() as u32;
     let done = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
         let cut = faces.triangulated(&positions);
+        surftopo_mesh::stop::check();
         let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
             .map_err(|e| cut.on_faces(e.into()))?;
+        surftopo_mesh::stop::check();
         let input_index = input_index(&report);
         let polygons: Box<dyn Iterator<Item = &[u32]>> = match &cut.polygons {
             Some(p) => Box::new(p.faces()),

@@ -4,7 +4,9 @@ Each case runs in a subprocess a call that takes seconds even in a release build
 seconds in a debug one), sends it SIGINT half a second after the call starts, and asserts that
 KeyboardInterrupt arrives in under 3 seconds from the start (about 0.5 s expected: the calling
 thread checks for signals every 20 ms) without the call returning; then a small call in the same
-process must give a correct result.
+process must give a correct result. The interrupted work must stop too, not run on in the
+background: after a second to wind down, the process' CPU time grows by less than a fifth of a
+second over the next second (a worker still running would add up to a second per second).
 """
 
 from __future__ import annotations
@@ -57,11 +59,22 @@ CALLS = {
     "isometric": ("T = surftopo.flat_torus(10000.0, 100)", "surftopo.isometric(T, T)"),
     # Irreducible genus-2 triangulations up to 11 vertices: 35 s debug (its search also stops).
     "census": ("", "surftopo.census('genus-2', max_vertices=11)"),
+    # Theorem 1 in exact arithmetic on a doubled right triangle of height 1e-12: minutes.
+    "dubois": (
+        "T = surftopo.Portalgon.from_json(THIN_PILLOWCASE)",
+        "surftopo.intrinsic_delaunay(T, method='dubois', exact=True)",
+    ),
 }
+
+THIN_PILLOWCASE = """{"polygons": [
+  {"corners": [[0, 0], [1, 0], [0, "1/1000000000000"]]},
+  {"corners": [[0, 0], [0, "-1/1000000000000"], [1, 0]]}],
+ "matching": [[[0, 0], [1, 2]], [[0, 1], [1, 1]], [[0, 2], [1, 0]]]}"""
 
 SCRIPT = """
 import sys, time
 import surftopo
+THIN_PILLOWCASE = {pillowcase!r}
 {grid}
 {setup}
 print("calling", flush=True)
@@ -71,6 +84,11 @@ try:
     print("returned", time.perf_counter() - start, flush=True)
 except KeyboardInterrupt:
     print("interrupted", time.perf_counter() - start, flush=True)
+# The work stopped: no CPU time spent once it wound down.
+time.sleep(1.0)
+cpu = time.process_time()
+time.sleep(1.0)
+print("cpu", time.process_time() - cpu, flush=True)
 # Nothing is left half-done: the next call works.
 Q, stats = surftopo.quadrangulate(*surftopo.torus(6, 4))
 print("after", Q.shape[0], stats["paired_percent"], flush=True)
@@ -80,7 +98,7 @@ print("after", Q.shape[0], stats["paired_percent"], flush=True)
 @pytest.mark.parametrize("name", sorted(CALLS))
 def test_ctrl_c_stops_a_long_call_promptly(name):
     setup, call = CALLS[name]
-    script = SCRIPT.format(grid=GRID, setup=setup, call=call)
+    script = SCRIPT.format(grid=GRID, setup=setup, call=call, pillowcase=THIN_PILLOWCASE)
     child = subprocess.Popen(
         [sys.executable, "-c", textwrap.dedent(script)],
         stdout=subprocess.PIPE,
@@ -104,5 +122,7 @@ def test_ctrl_c_stops_a_long_call_promptly(name):
     elapsed = float(lines[1])
     # The signal came 0.5 s after the start; the call would run for many seconds more.
     assert 0.4 <= elapsed < 3.0, elapsed
+    assert lines[2] == "cpu", out
+    assert float(lines[3]) < 0.2, f"the interrupted work ran on: {out}"
     # 6 x 4 torus: 48 triangles, 24 quads, all paired.
-    assert lines[2:] == ["after", "24", "100.0"], out
+    assert lines[4:] == ["after", "24", "100.0"], out

@@ -21,7 +21,7 @@
 //! ```text
 //! make -C crates/quad/peer
 //! SURFTOPO_MESHES=../shared/meshes cargo run --release -p surftopo-quad --example open_peers -- \
-//!     --lemon crates/quad/peer/lemon_matching [--python PYTHON] [--rounds R] [--seed S] \
+//!     --lemon crates/quad/peer/lemon_matching [--python PYTHON] [--rounds R] [--seed S]... \
 //!     [--input SPEC]... [--out results/open_peers]
 //! ```
 //! `PYTHON`: an interpreter with the pip packages `gmsh` and (optionally) `bpy` (a venv; never
@@ -30,9 +30,13 @@
 //! `surftopo_mesh::generators::cut_holes`), `annulus:M:N:FLIPS`, `mobius:M:N:FLIPS` (a
 //! non-orientable band), `disk:N:FLIPS` (the generators' grids after FLIPS random flips),
 //! `genus:G:SIZE:FLIPS:K` (a genus-G surface, random flips, K holes cut). The random ones drawn
-//! with `--seed` (default 40961). Without `--input`: 600 holes cut from each of the eleven
+//! with `--seed` (default 40961); given more than once, every input is made with each seed, the
+//! first seed's measured in full, the further seeds' (fresh draws) by the KS comparison alone
+//! (the slow weighted one skipped) and without the peers' quality. Without `--input`: 600 holes cut from each of the eleven
 //! shared meshes of 95k–105k triangles, `annulus:250:200:60000`, `mobius:250:200:60000`,
-//! `disk:224:60000`, `genus:30:9:60000:400`. Writes `<out>.md`.
+//! `disk:224:60000`, `genus:30:9:60000:400`. Writes `<out>.md`. `--ks-only N` (no `--lemon`
+//! needed): KS alone, N calls per input, its figures on stderr and nothing written (for a
+//! profiler).
 
 mod support;
 
@@ -68,13 +72,17 @@ struct Args {
     lemon: PathBuf,
     python: Option<PathBuf>,
     rounds: usize,
-    seed: u64,
+    seeds: Vec<u64>,
     inputs: Vec<String>,
+    /// `--ks-only N`: only KS, N calls per input, its figures printed (for a profiler).
+    ks_only: Option<usize>,
 }
 
 fn parse_args() -> Result<Args, Box<dyn Error>> {
     let (results, given) = Results::from_args("open_peers")?;
-    let (mut lemon, mut python, mut rounds, mut seed, mut inputs) = (None, None, 5, 40961, vec![]);
+    let (mut lemon, mut python, mut rounds, mut seeds, mut inputs) =
+        (None, None, 5, vec![], vec![]);
+    let mut ks_only = None;
     let mut it = given.into_iter();
     while let Some(flag) = it.next() {
         let mut value = || it.next().ok_or(format!("{flag} needs a value"));
@@ -82,8 +90,9 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             "--lemon" => lemon = Some(PathBuf::from(value()?)),
             "--python" => python = Some(PathBuf::from(value()?)),
             "--rounds" => rounds = value()?.parse::<usize>()?.max(1),
-            "--seed" => seed = value()?.parse()?,
+            "--seed" => seeds.push(value()?.parse()?),
             "--input" => inputs.push(value()?),
+            "--ks-only" => ks_only = Some(value()?.parse::<usize>()?.max(1)),
             other => return Err(format!("unknown argument {other}").into()),
         }
     }
@@ -103,12 +112,19 @@ fn parse_args() -> Result<Args, Box<dyn Error>> {
             inputs.push(spec.into());
         }
     }
+    if seeds.is_empty() {
+        seeds.push(40961);
+    }
+    if ks_only.is_some() {
+        lemon.get_or_insert_with(PathBuf::new);
+    }
     Ok(Args {
         results,
+        ks_only,
         lemon: lemon.ok_or("--lemon BIN is required (make -C crates/quad/peer)")?,
         python,
         rounds,
-        seed,
+        seeds,
         inputs,
     })
 }
@@ -292,6 +308,9 @@ struct Paired {
 
 impl Paired {
     fn summary(&self) -> [String; 4] {
+        if self.ours.is_empty() {
+            return ["-".into(), "-".into(), "-".into(), "-".into()];
+        }
         [
             format!("{:.4}", median(&self.ours)),
             format!("{:.4}", median(&self.lemon)),
@@ -301,12 +320,13 @@ impl Paired {
     }
 }
 
-/// KS against LEMON's MaxMatching and the exact quality pairing against LEMON's
-/// MaxWeightedMatching, side by side; checks that LEMON's sizes and cost equal ours.
+/// KS against LEMON's MaxMatching and (with `weighted`) the exact quality pairing against
+/// LEMON's MaxWeightedMatching, side by side; checks that LEMON's sizes and cost equal ours.
 fn speed(
     surface: &CoveredSurface,
     lemon: &Path,
     rounds: usize,
+    weighted_too: bool,
 ) -> Result<(Paired, Paired, usize), Box<dyn Error>> {
     let dual = SurfaceDual::of_cover(&surface.cover);
     let costs = surface_pair_costs(surface, &dual);
@@ -362,6 +382,9 @@ fn speed(
                 }
                 ks.ours.push(best);
                 ks.ours_cpu.push(cpu);
+                if !weighted_too {
+                    continue;
+                }
                 let (mut best, mut cpu) = (f64::INFINITY, 0.0);
                 for _ in 0..CALLS {
                     let ((wall, c), m) = timed(|| min_cost_maximum_matching(&dual, &costs));
@@ -386,6 +409,9 @@ fn speed(
                     .push(v["run_seconds"].as_f64().ok_or("no run_seconds")?);
                 ks.lemon_cpu
                     .push(v["cpu_run_seconds"].as_f64().ok_or("no cpu")?);
+                if !weighted_too {
+                    continue;
+                }
                 let v = lemon_run(lemon, Some("--maximum-weighted"), &weighted, CALLS)?;
                 let lemon_size = v["matching_size"].as_i64().ok_or("no matching_size")?;
                 let weight = v["matching_weight"].as_i64().ok_or("no matching_weight")?;
@@ -411,6 +437,21 @@ fn speed(
     Ok((ks, quality, dual.node_count() - 2 * size))
 }
 
+/// `--ks-only`: KS alone, `calls` times (for a profiler), and its figures.
+fn ks_alone(surface: &CoveredSurface, calls: usize) {
+    let dual = SurfaceDual::of_cover(&surface.cover);
+    let options = KarpSipserOptions::default();
+    let (mut best, mut last) = (f64::INFINITY, None);
+    for _ in 0..calls {
+        let ((wall, _), (pairing, stats, _)) = timed(|| karp_sipser_maximum_with(&dual, &options));
+        best = best.min(wall);
+        last = Some((pairing.unmatched_count(&dual), stats));
+    }
+    if let Some((left, stats)) = last {
+        eprintln!("KS: {best:.4} s (fastest of {calls}), {left} left, {stats:?}");
+    }
+}
+
 fn main() -> Result<(), Box<dyn Error>> {
     let args = parse_args()?;
     let work = std::env::temp_dir().join(format!("surftopo_open_peers_{}", std::process::id()));
@@ -420,21 +461,39 @@ fn main() -> Result<(), Box<dyn Error>> {
         .as_ref()
         .is_some_and(|p| peer_version(p, "bpy", "bpy.app.version_string") != "?");
     let (mut quality_table, mut speed_table) = (String::new(), String::new());
+    // Per input: per seed, the median and largest KS / LEMON wall ratio of the rounds.
+    let mut over_seeds: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     let cpu_start = thread_cpu_seconds();
-    for spec in &args.inputs {
-        let (surface, pieces) = make_input(spec, args.seed)?;
+    for (spec, seed) in args
+        .seeds
+        .iter()
+        .enumerate()
+        .flat_map(|(i, &seed)| args.inputs.iter().map(move |spec| (spec, (i, seed))))
+    {
+        let (first_seed, seed) = (seed.0 == 0, seed.1);
+        let (surface, pieces) = make_input(spec, seed)?;
         let triangles = surface.cover.surface_faces().count();
         let kinds: Vec<String> = pieces.iter().map(SurfaceKind::name).collect();
         eprintln!("{spec}: {triangles} triangles, {}", kinds.join(", "));
-        let (ks, quality, left) = speed(&surface, &args.lemon, args.rounds)?;
+        if let Some(calls) = args.ks_only {
+            ks_alone(&surface, calls);
+            continue;
+        }
+        let (ks, quality, left) = speed(&surface, &args.lemon, args.rounds, first_seed)?;
         let [ko, kl, kr, kc] = ks.summary();
+        let per_round = ratios(&ks.ours, &ks.lemon);
+        let worst_round = per_round.iter().copied().fold(0.0, f64::max);
+        match over_seeds.iter_mut().find(|(s, _)| s == spec) {
+            Some((_, medians)) => medians.push((median(&per_round), worst_round)),
+            None => over_seeds.push((spec.clone(), vec![(median(&per_round), worst_round)])),
+        }
         let [qo, ql, qr, qc] = quality.summary();
         let line = format!(
-            "| {spec} | {triangles} | {left} | {ko} | {kl} | {kr} | {kc} | {qo} | {ql} | {qr} | {qc} |"
+            "| {spec} | {seed} | {triangles} | {left} | {ko} | {kl} | {kr} | {kc} | {qo} | {ql} | {qr} | {qc} |"
         );
         eprintln!("{line}");
         writeln!(speed_table, "{line}")?;
-        let Some(python) = &args.python else {
+        let Some(python) = args.python.as_ref().filter(|_| first_seed) else {
             continue;
         };
         let (mut rows, bound) = ours(&surface, &pieces)?;
@@ -481,20 +540,27 @@ fn main() -> Result<(), Box<dyn Error>> {
         }
     }
     std::fs::remove_dir_all(&work)?;
+    if args.ks_only.is_some() {
+        return Ok(());
+    }
     let mut md = String::new();
     writeln!(
         md,
         "# Open meshes: surftopo's maximum pairings against the peers\n\nGenerated by \
          `make -C crates/quad/peer && SURFTOPO_MESHES=../shared/meshes cargo run --release -p \
          surftopo-quad --example open_peers -- {}` ({}; a 2-core machine shared with other work; \
-         {:.0} s of this thread's CPU). Inputs (seed {}): `holes:MESH:K` = K holes cut around \
+         {:.0} s of this thread's CPU). Inputs (seeds {}; the first measured in full, the others (fresh draws) by the KS comparison alone): `holes:MESH:K` = K holes cut around \
          random vertices of a shared mesh; `annulus`, `mobius` (non-orientable), `disk`: the \
          generators' grids after random flips; `genus:G:SIZE:FLIPS:K` = a genus-G surface, \
          flips, K holes.\n",
         args.results.command,
         machine_note(),
         thread_cpu_seconds() - cpu_start,
-        args.seed,
+        args.seeds
+            .iter()
+            .map(u64::to_string)
+            .collect::<Vec<_>>()
+            .join(", "),
     )?;
     writeln!(
         md,
@@ -506,10 +572,30 @@ fn main() -> Result<(), Box<dyn Error>> {
          of {CALLS} calls. Seconds: medians over the rounds; ratio: ours / LEMON per round, \
          median (smallest–largest), of wall and of CPU time. left = triangles any pairing \
          leaves.\n\n\
-         | input | triangles | left | KS s | LEMON max s | KS / LEMON | (CPU) | exact s | LEMON weighted s | exact / LEMON | (CPU) |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n{speed_table}",
+         | input | seed | triangles | left | KS s | LEMON max s | KS / LEMON | (CPU) | exact s | LEMON weighted s | exact / LEMON | (CPU) |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n{speed_table}",
         args.rounds,
     )?;
+    if args.seeds.len() > 1 {
+        writeln!(
+            md,
+            "## KS / LEMON over the seeds\n\nPer input: the median KS / LEMON wall ratio of the \
+             rounds for each seed (in the order above), the largest of these medians, and the \
+             largest ratio of any round.\n\n\
+             | input | median per seed | largest median | largest round |\n|---|---|---:|---:|"
+        )?;
+        for (spec, per_seed) in &over_seeds {
+            let medians: Vec<String> = per_seed.iter().map(|(m, _)| format!("{m:.2}")).collect();
+            let worst = per_seed.iter().map(|p| p.0).fold(0.0, f64::max);
+            let worst_round = per_seed.iter().map(|p| p.1).fold(0.0, f64::max);
+            writeln!(
+                md,
+                "| {spec} | {} | {worst:.2} | {worst_round:.2} |",
+                medians.join(", ")
+            )?;
+        }
+        writeln!(md)?;
+    }
     if let Some(python) = &args.python {
         writeln!(
             md,

@@ -222,8 +222,25 @@ pub fn run(options: &Args) -> anyhow::Result<()> {
         surftopo_intrinsic::intrinsic_delaunay_reporting(input, &request, progress)
     })
     .map_err(|e| run_error(options, e, numbering.as_ref()))?;
+    refuse_non_delaunay(options, &out)?;
     write_outputs(options, &out, numbering.as_ref())?;
     report(options, &out)
+}
+
+/// Success means a Delaunay result: a run that ends with non-Delaunay edges (counted
+/// independently of the method, exactly in exact mode) is a numerical failure (exit 4), and
+/// nothing is written.
+fn refuse_non_delaunay(options: &Args, out: &DelaunayOutput) -> anyhow::Result<()> {
+    match out.stats.as_ref().map(|s| s.non_delaunay_edges) {
+        Some(n) if n > 0 => Err(crate::failure::numerical(format!(
+            "{}: the {} method ended with {n} non-Delaunay edges ({} arithmetic); nothing \
+             written (use --exact on exact input, or another --method)",
+            crate::failure::shown(&options.input),
+            out.method.name(),
+            out.arithmetic
+        ))),
+        _ => Ok(()),
+    }
 }
 
 /// A failure of the run, naming the input: a refused request as its options; a numerical

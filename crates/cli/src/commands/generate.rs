@@ -270,8 +270,19 @@ pub fn generate_any(kind: &Kind, seed: u64) -> anyhow::Result<Generated> {
         }
         Kind::IntrinsicFlips { input, count } => {
             let mut tri = crate::commands::delaunay::load_intrinsic(input, false)?;
+            let name = crate::failure::shown(input);
+            // The lengths read must make valid triangles (no zero-area face), as every reader of
+            // the written file checks: a file surftopo writes, surftopo reads.
+            tri.validate()
+                .map_err(|e| crate::failure::invalid(format!("{name}: {e}")))?;
             check_flips("intrinsic-flips --count", *count, tri.mesh().edge_count())?;
             intrinsic::generators::random_flips(&mut tri, *count, seed);
+            // The flips keep every triangle valid as rounded; checked again before writing.
+            tri.validate().map_err(|e| {
+                crate::failure::numerical(format!(
+                    "{name}: after the random flips: {e}; nothing written"
+                ))
+            })?;
             Generated::Intrinsic(tri)
         }
         other => Generated::Surface(generate(other)?),

@@ -32,7 +32,9 @@ pub(crate) mod isometry;
 use crate::error::{DelaunayError, GeometryError};
 use crate::flip::stats::DelaunayStats;
 use crate::flip::tessellation::{CellSurface, Tessellation, tessellate};
-use crate::flip::{DelaunayOptions, FlipReport, Gluing, flip_glued};
+use crate::flip::{
+    DelaunayOptions, FlipReport, Gluing, flip_glued, left_non_delaunay, product_bound,
+};
 use crate::formats::portalgon_json::{
     FORMAT_NAME, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc,
 };
@@ -261,23 +263,34 @@ impl CoveredTriangulation {
         &mut self,
         options: &DelaunayOptions,
     ) -> Result<FlipReport, DelaunayError> {
+        self.flip_keeping_tan_half_sq(options)
+            .map(|(report, _)| report)
+    }
+
+    /// [`Self::flip_to_delaunay`], also returning the half-angle cache flipping keeps: `tan²(θ/2)`
+    /// of the angle opposite every half-edge of D (by half-edge id), equal bit for bit to
+    /// [`IntrinsicTriangulation::halfedge_tan_half_sq`] of the result.
+    pub(crate) fn flip_keeping_tan_half_sq(
+        &mut self,
+        options: &DelaunayOptions,
+    ) -> Result<(FlipReport, Vec<f64>), DelaunayError> {
         let mut gluing = CoverGluing {
             frozen: &self.frozen,
             mirror: &mut self.mirror,
         };
-        let (mut report, _) = flip_glued(&mut self.tri, options, false, &mut gluing)?
+        let (mut report, t2) = flip_glued(&mut self.tri, options, false, &mut gluing)?
             .expect("flipping without the needle test always finishes");
         if !self.mirror.is_empty() {
             // Each non-Delaunay edge of a doubled piece was counted on both lifts.
-            report.non_delaunay_edges = self
-                .tri
-                .mesh()
+            let bound = product_bound(options.tolerance);
+            let mesh = self.tri.mesh();
+            report.non_delaunay_edges = mesh
                 .edges()
                 .filter(|&e| self.is_surface_edge(e) && self.may_flip(e))
-                .filter(|&e| !self.tri.is_delaunay_edge(e, options.tolerance))
+                .filter(|&e| left_non_delaunay(mesh, &t2, bound, e))
                 .count();
         }
-        Ok(report)
+        Ok((report, t2))
     }
 
     /// Re-triangulates K isometrically by up to `count` random intrinsic flips, as
@@ -320,11 +333,16 @@ impl CoveredTriangulation {
     /// opposite angle in a real triangle; 0 on apex edges. A boundary edge gets its one
     /// half-cotangent (the natural boundary condition).
     pub fn cotan_weights(&self) -> Vec<f64> {
+        self.weights_from_tan_half_sq(&self.tri.halfedge_tan_half_sq())
+    }
+
+    /// [`Self::cotan_weights`] from the half-angle tangents squared `t2` of D (by half-edge id).
+    fn weights_from_tan_half_sq(&self, t2: &[f64]) -> Vec<f64> {
         let mesh = self.tri.mesh();
         let mut w = vec![0.0; mesh.edge_slots()];
         for f in mesh.faces().filter(|&f| self.is_real_face(f)) {
             for h in mesh.face_halfedges(f) {
-                w[h.edge().idx()] += 0.5 * self.tri.cot_opposite(h);
+                w[h.edge().idx()] += 0.5 * trig::cot_from_tan_half_sq(t2[h.idx()]);
             }
         }
         w
@@ -333,7 +351,13 @@ impl CoveredTriangulation {
     /// The cotan Laplacian of K (positive semidefinite, as [`crate::cotan_laplacian`]): one row
     /// per vertex of K, each edge of K once (a mirror pair is one edge).
     pub fn laplacian(&self) -> SparseMatrix {
-        let weights = self.cotan_weights();
+        self.laplacian_from_tan_half_sq(&self.tri.halfedge_tan_half_sq())
+    }
+
+    /// [`Self::laplacian`] from the half-angle tangents squared `t2` of D (by half-edge id), as
+    /// [`Self::flip_keeping_tan_half_sq`] returns them.
+    pub(crate) fn laplacian_from_tan_half_sq(&self, t2: &[f64]) -> SparseMatrix {
+        let weights = self.weights_from_tan_half_sq(t2);
         let mesh = self.tri.mesh();
         let class = &self.class;
         let edges: Vec<EdgeId> = self.surface_edges().collect();

@@ -31,7 +31,7 @@ use crate::flip::stats::DelaunayStats;
 use crate::flip::tessellation::{Tessellation, delaunay_tessellation};
 use crate::flip::{DelaunayOptions, FlipReport, flip_unless};
 use crate::formats::portalgon_json::PortalgonDoc;
-use crate::geometry::{Rational, Scalar, Tolerances};
+use crate::geometry::{Motion, Rational, Scalar, Tolerances, incircle};
 use crate::laplacian::{cotan_laplacian, laplacian_from_tan_half_sq, lumped_mass};
 use crate::portalgon::Portalgon;
 use crate::sparse::SparseMatrix;
@@ -39,6 +39,7 @@ use crate::triangulation::IntrinsicTriangulation;
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, WaveOptions, to_f64, voronoi_delaunay,
 };
+use std::cmp::Ordering;
 
 /// The algorithm computing the Delaunay tessellation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -450,7 +451,7 @@ fn covered(
     let wanted = request.outputs;
     progress("flipping to Delaunay");
     let start = Instant::now();
-    let report = tri.flip_to_delaunay(&request.flip_options())?;
+    let (report, tan_half_sq) = tri.flip_keeping_tan_half_sq(&request.flip_options())?;
     let seconds = start.elapsed().as_secs_f64();
     let stats = wanted.figures.then(|| tri.stats(&report, seconds));
     let covered_tessellation = wanted.tessellation.then(|| {
@@ -459,7 +460,7 @@ fn covered(
     });
     let laplacian = wanted.laplacian.then(|| {
         progress("building the Laplacian");
-        tri.laplacian()
+        tri.laplacian_from_tan_half_sq(&tan_half_sq)
     });
     let mass = wanted.mass.then(|| {
         progress("building the mass matrix");
@@ -496,6 +497,7 @@ where
 {
     let wave_options = WaveOptions {
         max_events: request.max_wave_events,
+        ..WaveOptions::default()
     };
     let (v, reduction, reduced) = if method == DelaunayMethod::Dubois {
         progress("reducing (Dubois, Sections 8 and 4) and running the wave");
@@ -558,6 +560,12 @@ where
     } else {
         None
     };
+    // In exact mode the count is decided on the exact triangles (the rounded lengths of a
+    // needle can fail the f64 test on a triangulation that is exactly Delaunay).
+    let exact_count = match (wanted.figures, S::EXACT) {
+        (true, true) => Some(non_delaunay_sides(&v.triangulated()?)),
+        _ => None,
+    };
     let stats = triangulation
         .as_ref()
         .filter(|_| wanted.figures)
@@ -565,7 +573,8 @@ where
             let report = FlipReport {
                 flips: 0,
                 mollify_delta: None,
-                non_delaunay_edges: tri.non_delaunay_edges(Tolerances::DEFAULT.delaunay),
+                non_delaunay_edges: exact_count
+                    .unwrap_or_else(|| tri.non_delaunay_edges(Tolerances::DEFAULT.delaunay)),
             };
             DelaunayStats::new(tri, &report, start.elapsed().as_secs_f64())
         });
@@ -601,6 +610,29 @@ where
         reduction,
         wave,
     })
+}
+
+/// The glued sides of a portalgon of triangles whose two triangles fail the empty-circle test:
+/// the corner opposite the mate, carried into the side's plane by the gluing, lies strictly
+/// inside the circle through the side's triangle ([`incircle`]: the exact sign in exact mode,
+/// no tolerance). Each glued pair counted once; polygons of more than three sides are skipped.
+pub(crate) fn non_delaunay_sides<S: Scalar>(p: &Portalgon<S>) -> usize {
+    let is_triangle = |s| p.polygon_sides(p.owner(s)).len() == 3;
+    p.sides()
+        .filter(|&s| {
+            let Some(t) = p.mate(s) else {
+                return false;
+            };
+            if t.0 < s.0 || !is_triangle(s) || !is_triangle(t) {
+                return false;
+            }
+            // The mate runs the other way: its start goes to the side's end.
+            let motion = Motion::gluing(p.start_ref(t), p.end_ref(t), p.end_ref(s), p.start_ref(s));
+            let apex = motion.apply(p.start_ref(p.prev_side(t)));
+            let [a, b, c] = [s, p.next_side(s), p.prev_side(s)].map(|x| p.start_ref(x));
+            incircle(a, b, c, &apex) == Ordering::Greater
+        })
+        .count()
 }
 
 impl From<Portalgon> for AnyPortalgon {

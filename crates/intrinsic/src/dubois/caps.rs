@@ -77,7 +77,10 @@
 //! silent answer; `tests/caps.rs` compares the result with the flip route on the shared
 //! meshes.
 
-use super::{DuboisError, DuboisReport, FlatDelaunayOptions, Reduction, reduce_with_boundary};
+use super::delaunay_exit::flip_to_delaunay_within;
+use super::{
+    DuboisError, DuboisReport, FlatDelaunayOptions, Reduction, reduce_with_boundary_until,
+};
 
 use crate::geometry::{DoubleDouble, Scalar, Tolerances};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
@@ -477,7 +480,8 @@ fn put_caps_back_mapped<S: Scalar>(
 }
 
 /// Proposition 2 on a closed triangular portalgon: [`cut_caps_at`] (the vertices capped: see
-/// the module doc), ALGORITHM on `T₁` ([`reduce_with_boundary`] with `N` of the module doc),
+/// the module doc), ALGORITHM on `T₁` ([`super::reduce_with_boundary`] with `N` of the module doc, in exact mode
+/// with the Delaunay exit of [`super::delaunay_exit`]),
 /// [`put_caps_back`]. Returns `T′` (compacted: dense ids), ALGORITHM's report and the cut.
 ///
 /// # Errors
@@ -512,16 +516,41 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     reduce.tolerance = reduce
         .tolerance
         .max(S::slack(|| options.tolerances.closing));
-    let r = reduce_with_boundary(&cut.remainder, &reduce)?;
-    let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerance)?;
+    // Exact mode: the Delaunay exit (`delaunay_exit`), `T″` and its apex sides once found.
+    let mut flipped: Option<(Portalgon<S>, Vec<SideId>)> = None;
+    let tolerance = reduce.tolerance;
+    let mut delaunay_exit = |r: &Reduction<S>| -> Result<bool, DuboisError> {
+        let (mut t2, new_side) = put_caps_back_mapped(r, &cut, tolerance).map_err(|e| match e {
+            CapsError::Reduction(e) => e,
+            CapsError::Voronoi(e) => DuboisError::Invariant(e.to_string()),
+        })?;
+        let mut apex_sides: Vec<SideId> =
+            cut.apex_sides.iter().map(|&x| new_side[x.idx()]).collect();
+        // One flip per two triangles (an edge in three): the test costs less than an outer
+        // iteration (results/exact_growth.md measured n′ and 2n′ too: slower overall).
+        let budget = t2.polygon_count() / 2;
+        if flip_to_delaunay_within(&mut t2, budget, &mut apex_sides) {
+            flipped = Some((t2, apex_sides));
+            return Ok(true);
+        }
+        Ok(false)
+    };
+    let r = reduce_with_boundary_until(&cut.remainder, &reduce, &mut delaunay_exit)?;
+    let (t_prime, apex_sides) = match flipped {
+        Some(found) => found,
+        None => {
+            let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerance)?;
+            let apex_sides = cut.apex_sides.iter().map(|&x| new_side[x.idx()]).collect();
+            (t_prime, apex_sides)
+        }
+    };
     let mut report = r.report;
     report.triangles_after_reduction = t_prime.polygon_count();
     let (t_prime, dense) = t_prime.compacted();
     let (class, _) = t_prime.vertex_classes();
-    let mut apexes: Vec<u32> = cut
-        .apex_sides
+    let mut apexes: Vec<u32> = apex_sides
         .iter()
-        .map(|&x| class[dense[new_side[x.idx()].idx()].idx()])
+        .map(|&x| class[dense[x.idx()].idx()])
         .collect();
     apexes.sort_unstable();
     apexes.dedup();

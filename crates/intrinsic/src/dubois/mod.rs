@@ -60,6 +60,7 @@
 
 pub(crate) mod biface;
 pub mod caps;
+pub mod delaunay_exit;
 pub mod flat_delaunay;
 mod reduction;
 pub(crate) mod tube;
@@ -72,6 +73,7 @@ pub use flat_delaunay::{
 pub use reduction::{
     DELETE_MAX_DEGREE, DuboisError, DuboisReport, INNER_REPETITIONS, MAX_WORKING_BITS,
     OUTER_PERIOD_MAX, ReduceOptions, Reduction, outer_iterations, reduce, reduce_with_boundary,
+    reduce_with_boundary_until,
 };
 
 use crate::geometry::Scalar;

@@ -45,6 +45,9 @@
 //!   repetitions would change nothing either (docs/dubois.md §3.2). [`ReduceOptions::faithful`] runs
 //!   all 350; the tests check both give identical results. Likewise the outer loop stops once
 //!   `R_A` is empty (the routines then do nothing).
+//! - [`reduce_with_boundary_until`] also stops when its caller's test succeeds, before the
+//!   first outer iteration or after any (exact mode, not faithful): Proposition 2's Delaunay
+//!   exit (docs/dubois.md §3.8, [`super::delaunay_exit`]).
 //! - Steps that provably find nothing are skipped (not in faithful mode; debug builds check each
 //!   skip). Right after GARDENING no component of `S(R_A)` is a tube (each became an inactive
 //!   biface; the other components are untouched), so SIMPLIFYTUBES' step 2 with `J` empty, and
@@ -200,6 +203,9 @@ pub struct DuboisReport {
     pub triangles_after_reduction: usize,
     /// `"f64"` or `"exact"`.
     pub arithmetic: &'static str,
+    /// Whether the caller's test stopped the outer loop early
+    /// ([`reduce_with_boundary_until`]: Proposition 2's Delaunay exit).
+    pub stopped_by_caller: bool,
 }
 
 impl DuboisReport {
@@ -912,7 +918,7 @@ pub fn reduce<S: Scalar>(
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
     check_input(t, options.tolerance, false)?;
-    reduce_checked(t, options)
+    reduce_checked(t, options, &mut |_| Ok(false))
 }
 
 /// ALGORITHM (Section 4.5, Proposition 1) on a flat triangular portalgon that may have boundary
@@ -928,18 +934,44 @@ pub fn reduce_with_boundary<S: Scalar>(
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
     check_input(t, options.tolerance, true)?;
-    reduce_checked(t, options)
+    reduce_checked(t, options, &mut |_| Ok(false))
+}
+
+/// [`reduce_with_boundary`] that also stops, in exact mode and unless
+/// [`ReduceOptions::faithful`], as soon as `done` says the current structure is good enough:
+/// `done` is asked before the first outer iteration and after each one (Proposition 2's Delaunay
+/// exit, [`super::caps`]). [`DuboisReport::stopped_by_caller`] records it.
+///
+/// # Errors
+/// As [`reduce_with_boundary`], and `done`'s.
+pub fn reduce_with_boundary_until<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &ReduceOptions,
+    done: &mut dyn FnMut(&Reduction<S>) -> Result<bool, DuboisError>,
+) -> Result<Reduction<S>, DuboisError> {
+    check_input(t, options.tolerance, true)?;
+    reduce_checked(t, options, done)
 }
 
 fn reduce_checked<S: Scalar>(
     t: &Portalgon<S>,
     options: &ReduceOptions,
+    done: &mut dyn FnMut(&Reduction<S>) -> Result<bool, DuboisError>,
 ) -> Result<Reduction<S>, DuboisError> {
     let mut r = Reduction::new(t.clone(), options.route, options.tolerance);
     r.check_growth("reading the input")?;
     let n = options
         .outer_iterations
         .unwrap_or_else(|| outer_iterations(t));
+    r.report.outer_iterations = n;
+    r.report.inner_passes_bound = u64::from(INNER_REPETITIONS) * u64::from(n);
+    // Exact mode: the caller's exit, before the first outer iteration and after each one.
+    let ask = S::EXACT && !options.faithful;
+    if ask && done(&r)? {
+        r.report.stopped_by_caller = true;
+        r.report.triangles_after_reduction = r.portalgon.polygon_count();
+        return Ok(r);
+    }
     // Exact mode: the states the last outer iterations ended in (`Reduction::repeats_from_here`).
     let mut history = std::collections::VecDeque::new();
     // No component of S(R_A) is a tube: true after a GARDENING (each tube component became an
@@ -947,8 +979,6 @@ fn reduce_checked<S: Scalar>(
     // their boundary sides, and renewed by the GARDENING after every SIMPLIFYTUBES that changes
     // something.
     let mut tube_free = false;
-    r.report.outer_iterations = n;
-    r.report.inner_passes_bound = u64::from(INNER_REPETITIONS) * u64::from(n);
     // Vertices and genus of the input, for Lemma 3's and Proposition 5's bounds (debug builds).
     let m = t.vertex_info().count();
     // g + b of Proposition 5 (an upper bound: (2 − χ)/2 + b per component, b its boundaries).
@@ -974,6 +1004,7 @@ fn reduce_checked<S: Scalar>(
         r.insert_edges()?;
         let mut passes = 0;
         for _ in 0..INNER_REPETITIONS {
+            surftopo_mesh::stop::check();
             #[cfg(debug_assertions)]
             let before = (r.portalgon.clone(), r.regions.clone());
             let edits_before = r.report.edits();
@@ -1042,6 +1073,10 @@ fn reduce_checked<S: Scalar>(
             r.portalgon.translate_to_first_corners();
             r.compact();
             if !options.faithful && r.repeats_from_here(&mut history, n) {
+                break;
+            }
+            if ask && done(&r)? {
+                r.report.stopped_by_caller = true;
                 break;
             }
         }

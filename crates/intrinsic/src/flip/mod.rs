@@ -208,13 +208,14 @@ pub(crate) fn flip_glued<G: Gluing>(
     let max_flips = options
         .max_flips
         .unwrap_or_else(|| default_max_flips(tri.mesh().edge_count()));
-    let bound = (1.0 + tol) * (1.0 + tol);
+    let bound = product_bound(tol);
 
     // A sweep over the edges in id order; each flip pushes the four edges of its quad on a stack,
     // emptied before the sweep goes on. Every edge is thus tested after its last change.
     let slots = tri.mesh().edge_slots();
     let mut queued = vec![false; slots];
     let mut stack: Vec<EdgeId> = Vec::new();
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for sweep in 0..slots {
         let first = EdgeId::new(sweep);
         if !tri.mesh().is_edge_live(first) {
@@ -222,6 +223,7 @@ pub(crate) fn flip_glued<G: Gluing>(
         }
         let mut next = Some(first);
         while let Some(e) = next {
+            ticker.tick();
             let h = e.halfedge();
             let t = h.twin();
             let mesh = tri.mesh();
@@ -264,15 +266,24 @@ pub(crate) fn flip_glued<G: Gluing>(
     let mesh = tri.mesh();
     report.non_delaunay_edges = mesh
         .edges()
-        .filter(|&e| {
-            let h = e.halfedge();
-            let p = t2[h.idx()] * t2[h.twin().idx()];
-            (p.is_nan() || p > bound)
-                && mesh.face(h) != mesh.face(h.twin())
-                && gluing.may_flip(mesh, e)
-        })
+        .filter(|&e| left_non_delaunay(mesh, &t2, bound, e) && gluing.may_flip(mesh, e))
         .count();
     Ok(Some((report, t2)))
+}
+
+/// The bound on `tan²(γ/2) tan²(δ/2)` of a Delaunay edge: `(1 + tolerance)²`.
+#[inline]
+pub(crate) fn product_bound(tolerance: f64) -> f64 {
+    (1.0 + tolerance) * (1.0 + tolerance)
+}
+
+/// Whether flipping left edge `e` non-Delaunay: `tan²(γ/2) tan²(δ/2)` from the half-angle cache
+/// `t2` above `bound` ([`product_bound`]) or not a number, with two distinct faces.
+#[inline]
+pub(crate) fn left_non_delaunay(mesh: &SurfaceMesh, t2: &[f64], bound: f64, e: EdgeId) -> bool {
+    let h = e.halfedge();
+    let p = t2[h.idx()] * t2[h.twin().idx()];
+    (p.is_nan() || p > bound) && mesh.face(h) != mesh.face(h.twin())
 }
 
 /// Flips the edge of `h = a -> b` (the caller decided it), sets its new length and the half-angle

@@ -22,7 +22,10 @@
 //!    co-circularity) or 100 (lengths) each way. If every variant still finds them different, the
 //!    answer is "not isometric"; if any finds a correspondence, or gets stuck, the verdict is
 //!    [`IsometryDecision::Undecidable`]: the surfaces are equal up to rounding-level differences
-//!    that double precision cannot settle.
+//!    that double precision cannot settle. It is also undecidable when a surface's intrinsic
+//!    Delaunay triangulation has a triangle so thin (local aspect ratio r with `r · ε` above
+//!    1/100 of the length tolerance) that the flips' rounding could exceed every tolerance tried
+//!    (a vertex moved within 1e-12 of another); r is scale-free, so the verdict is too.
 //! 5. A stuck removal or a numerical breakdown (no finding either way) is retried with the angle
 //!    and co-circularity variants: a correspondence found by one (with the default length
 //!    tolerance) is the answer "isometric"; otherwise the verdict is undecidable.
@@ -33,6 +36,7 @@
 //! depends on a tolerance; it is never given when the default test and all its variants agree.
 
 use crate::error::{DelaunayError, IsometryError, RemovalError};
+use crate::flip::flip_to_delaunay;
 use crate::isometry::flat_torus_lattice::flat_torus_invariants;
 use crate::isometry::{IsometryOptions, Outcome, isometric};
 use crate::triangulation::IntrinsicTriangulation;
@@ -139,7 +143,59 @@ pub fn decide_isometry(
             }
         }
     }
+    if let Some(reason) = ill_conditioned(a, b, options)? {
+        return Ok(IsometryDecision::Undecidable(format!(
+            "the tessellations differ under every tolerance ({}), but {reason}",
+            first.reason()
+        )));
+    }
     Ok(IsometryDecision::NotIsometric(first.reason()))
+}
+
+/// How much rounding a flip may amplify, at most, for the tessellations' differences to be a
+/// proof: [`ill_conditioned`] asks `aspect ratio · f64::EPSILON <= length tolerance ·`
+/// this (the smallest length tolerance the variants of step 4 try).
+const CONDITION_MARGIN: f64 = 1e-2;
+
+/// Why a difference of the tessellations proves nothing, if it does not: the intrinsic Delaunay
+/// triangulation of a surface has a triangle of local aspect ratio r (longest side over its
+/// smallest height) with `r · f64::EPSILON` above the smallest length tolerance tried. A flip in
+/// such a triangle computes its new diagonal with a relative error up to about `r · ε`, so the
+/// two triangulations' lengths can differ by more than the tolerance although the surfaces are
+/// the same (a vertex moved within 1e-12 of another: r ≈ 1e12). The ratio does not depend on
+/// the scale, so neither does the verdict.
+fn ill_conditioned(
+    a: &IntrinsicTriangulation,
+    b: &IntrinsicTriangulation,
+    options: &IsometryOptions,
+) -> Result<Option<String>, IsometryError> {
+    let limit = options.length_tolerance * CONDITION_MARGIN / f64::EPSILON;
+    for (surface, tri) in [a, b].into_iter().enumerate() {
+        let mut flipped = tri.clone();
+        match flip_to_delaunay(&mut flipped, &options.delaunay) {
+            Ok(_) => {}
+            Err(e @ DelaunayError::NumericalBreakdown { .. }) => {
+                return Ok(Some(format!("flipping surface {surface} broke down: {e}")));
+            }
+            Err(source) => return Err(IsometryError::Delaunay { surface, source }),
+        }
+        let (ratio, face) = flipped
+            .mesh()
+            .faces()
+            .map(|f| {
+                let longest = flipped.face_sides(f).into_iter().fold(0.0, f64::max);
+                (longest * longest / (2.0 * flipped.face_area(f)), f.0)
+            })
+            .fold((0.0f64, 0), |m, x| if x.0 > m.0 { x } else { m });
+        if ratio > limit || ratio.is_nan() {
+            return Ok(Some(format!(
+                "face {face} of the Delaunay triangulation of surface {surface} has aspect \
+                 ratio {ratio:e} (longest side over height), so rounding in its flips can exceed \
+                 the length tolerance"
+            )));
+        }
+    }
+    Ok(None)
 }
 
 /// After a stuck removal or a breakdown with the default options (no finding either way): the

@@ -598,14 +598,25 @@ fn correspondence(
             let what = MismatchKind::Length { a: la, b: lb };
             return Err(fail(pa, pb, polygons_done, what));
         }
+        let (ia, ib) = (a.side_index(sa), b.side_index(sb));
+        // The motion is taken from the polygon's longest side (with its image), not from the side
+        // the propagation arrived by: a side much shorter than its polygon fixes the rotation only
+        // up to (rounding of its ends) / (its length), which can move the far corners by more
+        // than the tolerance (a vertex 1e-12 from another makes such a side).
+        let m = (0..k)
+            .max_by(|&x, &y| {
+                let length = |m: usize| a.side_length(sides_a[(ia + m) % k]);
+                length(x).total_cmp(&length(y))
+            })
+            .expect("a polygon has sides");
+        let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);
         let motion = Motion::gluing(
-            a.start_ref(sa),
-            a.end_ref(sa),
-            b.start_ref(sb),
-            b.end_ref(sb),
+            a.start_ref(xa),
+            a.end_ref(xa),
+            b.start_ref(xb),
+            b.end_ref(xb),
         );
         let moved = |x: Point2| motion.apply(&x);
-        let (ia, ib) = (a.side_index(sa), b.side_index(sb));
         for m in 0..k {
             let (xa, xb) = (sides_a[(ia + m) % k], sides_b[(ib + m) % k]);
             if phi[xa.idx()].is_valid() || inverse[xb.idx()].is_valid() {

@@ -116,7 +116,20 @@ pub enum WaveError {
     /// The number of events exceeded the budget (an `f64` run that does not settle).
     #[error("the wave exceeded its budget of {0} events")]
     Budget(u64),
+    /// The work (the sizes of the constellations the events land in, summed) exceeded
+    /// [`MAX_WAVE_WORK`]: the wave's time grows with it, as x² on Dubois' T_x.
+    #[error(
+        "the wave exceeded its work budget of {0} (the sizes of the constellations its events \
+         land in, summed; about x² on the flat torus T_x): on a flat needle, --method dubois \
+         (Theorem 1) finishes in time polynomial in the input's size"
+    )]
+    Work(u64),
 }
+
+/// The most work the wave does: the sizes of the constellations its events land in, summed (a
+/// mesh near Delaunay needs a few per triangle; T_x about x², so x up to about 30,000; about
+/// 20 s in a release build on one core at the limit).
+pub const MAX_WAVE_WORK: u64 = 1_000_000_000;
 
 #[derive(Clone, Debug)]
 struct Event<S> {
@@ -152,6 +165,8 @@ pub struct WaveOptions {
     /// Give up after this many events (points added); `None`: `64 n + 4·10⁶` for `n` triangles
     /// (T_x needs about `2x`; a mesh near Delaunay about one per triangle).
     pub max_events: Option<u64>,
+    /// Give up once the work exceeds this; `None`: [`MAX_WAVE_WORK`].
+    pub max_work: Option<u64>,
 }
 
 /// Checks that `p` is a closed triangular portalgon with dense ids.
@@ -247,7 +262,10 @@ pub fn run_wave<S: Scalar>(
             wave.update_sides(p, q, site, &mut heap);
         }
     }
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
+    let (mut work, max_work) = (0u64, options.max_work.unwrap_or(MAX_WAVE_WORK));
     while let Some(Reverse(event)) = heap.pop() {
+        ticker.tick();
         let side = SideId(event.side);
         if !wave.alive[event.stamp as usize] {
             wave.stale_events += 1;
@@ -262,6 +280,10 @@ pub fn run_wave<S: Scalar>(
         }
         if wave.events >= max_events {
             return Err(WaveError::Budget(max_events));
+        }
+        work += wave.points(target).len() as u64;
+        if work > max_work {
+            return Err(WaveError::Work(max_work));
         }
         wave.events += 1;
         let source = wave.sources(from)[event.site as usize];

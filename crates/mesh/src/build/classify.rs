@@ -102,15 +102,44 @@ pub(crate) fn classify(p: &CornerPairing) -> Vec<SurfaceKind> {
 /// The component of each face (numbered in order of their first face) and the classification
 /// of each component, as [`classify`].
 pub(crate) fn components(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
+    if p.inspection.components == 1 {
+        one_piece(p)
+    } else {
+        search(p)
+    }
+}
+
+/// [`components`] of a surface in one piece (as the pairing counted them): its counts are the
+/// whole's, its orientability the pairing's, its boundary loops those of all the boundary
+/// edges; no search over the faces.
+fn one_piece(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
+    let (nf, nv, ins) = (p.remapped.len(), p.new_to_old.len(), &p.inspection);
+    let mut loops = Loops {
+        sets: UnionFind::new(nv),
+        on_boundary: vec![false; nv],
+    };
+    let mut boundary_vertices = Vec::new();
+    for c in (0..3 * nf as u32).filter(|&c| p.edges.across(c).is_none()) {
+        loops.add_edge(p, c, &mut boundary_vertices);
+    }
+    let boundary_loops = loops.count(&boundary_vertices);
+    let kind = SurfaceKind::new(nf, ins.edges, nv, ins.orientable, boundary_loops);
+    (vec![0; nf], vec![kind])
+}
+
+/// [`components`] by a breadth-first search over the faces (see [`classify`]).
+fn search(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
     let nf = p.remapped.len();
     let nv = p.new_to_old.len();
     let edges = &p.edges;
+    let mut loops = Loops {
+        sets: UnionFind::new(nv),
+        on_boundary: vec![false; nv],
+    };
     const NONE: u32 = u32::MAX;
     let mut component = vec![NONE; nf];
     let mut sign = vec![false; nf];
     let mut vertex_component = vec![NONE; nv];
-    let mut loops = UnionFind::new(nv);
-    let mut on_boundary = vec![false; nv];
     let mut kinds = Vec::new();
     let mut queue = Vec::new();
     for start in 0..nf {
@@ -135,14 +164,7 @@ pub(crate) fn components(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
                 let Some(other) = edges.across(c) else {
                     // A boundary edge (the soup is a surface: no edge in three faces).
                     edge_count += 1;
-                    let w = p.corner_vertex(super::pairing::next_corner(c)) as usize;
-                    loops.union(v as u32, w as u32);
-                    for x in [v, w] {
-                        if !on_boundary[x] {
-                            on_boundary[x] = true;
-                            boundary_vertices.push(x as u32);
-                        }
-                    }
+                    loops.add_edge(p, c, &mut boundary_vertices);
                     continue;
                 };
                 if c < other {
@@ -159,10 +181,7 @@ pub(crate) fn components(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
                 }
             }
         }
-        let boundary_loops = boundary_vertices
-            .iter()
-            .filter(|&&x| loops.find(x) == x)
-            .count();
+        let boundary_loops = loops.count(&boundary_vertices);
         kinds.push(SurfaceKind::new(
             faces,
             edge_count,
@@ -172,4 +191,66 @@ pub(crate) fn components(p: &CornerPairing) -> (Vec<u32>, Vec<SurfaceKind>) {
         ));
     }
     (component, kinds)
+}
+
+/// The boundary loops of a surface: its boundary vertices joined along boundary edges.
+struct Loops {
+    sets: UnionFind,
+    on_boundary: Vec<bool>,
+}
+
+impl Loops {
+    /// The boundary edge at corner `c`: its ends join one loop; each end not seen yet is added
+    /// to `listed`.
+    fn add_edge(&mut self, p: &CornerPairing, c: u32, listed: &mut Vec<u32>) {
+        let v = p.corner_vertex(c);
+        let w = p.corner_vertex(super::pairing::next_corner(c));
+        self.sets.union(v, w);
+        for x in [v, w] {
+            if !self.on_boundary[x as usize] {
+                self.on_boundary[x as usize] = true;
+                listed.push(x);
+            }
+        }
+    }
+
+    /// The number of loops through the vertices `listed`.
+    fn count(&mut self, listed: &[u32]) -> usize {
+        listed.iter().filter(|&&x| self.sets.find(x) == x).count()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generators::{
+        annulus, cut_holes, disk, icosphere, klein_bottle, mobius_band, torus,
+    };
+    use crate::{CoveredSurface, Lifting};
+
+    /// The triangles of K as a soup (classes as vertex ids).
+    fn soup(s: &CoveredSurface) -> (usize, Vec<[u32; 3]>) {
+        (s.cover.sheets.class_count(), s.cover.surface_triangles())
+    }
+
+    #[test]
+    fn one_piece_counts_what_the_search_finds() {
+        let sphere: CoveredSurface = icosphere(2).into();
+        let surfaces = [
+            disk(5),
+            annulus(7, 3),
+            mobius_band(9, 3),
+            klein_bottle(6, 4),
+            cut_holes(&sphere, 3, 5).0,
+            cut_holes(&torus(8, 5).into(), 2, 1).0,
+            sphere,
+        ];
+        for s in &surfaces {
+            let (nv, triangles) = soup(s);
+            let p = CornerPairing::run(nv, &triangles);
+            assert!(p.is_surface() && p.inspection.components == 1);
+            let (fast, searched) = (one_piece(&p), search(&p));
+            assert_eq!(fast, searched, "{}", searched.1[0].name());
+        }
+    }
 }

@@ -319,6 +319,25 @@ pub fn build_topology(
     build_topology_closed(vertex_count, triangles, false)
 }
 
+/// The topology of a soup this crate made as a closed oriented surface (every edge in two
+/// faces that run it opposite ways, every vertex one fan, every vertex `0..vertex_count` used),
+/// with the soup's vertex and face ids: [`build_topology_closed`]'s mesh (components allowed)
+/// without the checks that the soup is one (debug builds run them and compare).
+pub(crate) fn closed_topology_of_trusted(
+    vertex_count: usize,
+    triangles: &[[u32; 3]],
+) -> SurfaceMesh {
+    let p = CornerPairing::pair_only(vertex_count, triangles);
+    debug_assert!(p.inspection.problems.is_empty() && p.dropped.is_empty());
+    debug_assert!(p.edges.same_direction.iter().all(|&same| !same));
+    let mesh = p.into_mesh();
+    debug_assert_eq!(
+        Ok(&mesh),
+        build_topology_closed(vertex_count, triangles, true).as_ref()
+    );
+    mesh
+}
+
 /// [`build_topology`], allowing several connected components when `components` is set.
 pub(crate) fn build_topology_closed(
     vertex_count: usize,

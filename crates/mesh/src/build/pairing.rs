@@ -87,7 +87,19 @@ pub(crate) struct EdgePairs {
 }
 
 impl<'a> CornerPairing<'a> {
+    /// Steps 1 to 6.
     pub(crate) fn run(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
+        Self::run_steps(vertex_count, triangles, true)
+    }
+
+    /// Steps 1 to 3 only, for a soup known to be a closed surface (made by this crate): the
+    /// corners paired, without the fans, the components and the orientation (`flip` empty,
+    /// `inspection` without their findings).
+    pub(crate) fn pair_only(vertex_count: usize, triangles: &'a [[u32; 3]]) -> Self {
+        Self::run_steps(vertex_count, triangles, false)
+    }
+
+    fn run_steps(vertex_count: usize, triangles: &'a [[u32; 3]], inspect: bool) -> Self {
         let mut ins = Inspection {
             faces: triangles.len(),
             orientable: true,
@@ -120,13 +132,16 @@ impl<'a> CornerPairing<'a> {
         let indexed = check_indices(vertex_count, triangles, &mut ins);
         let sorted = sort_corners(&indexed);
         let mut edges = pair_edges(&indexed, sorted, &mut ins, &mut refusals);
-        let all_valid = indexed.valid.iter().all(|&ok| ok);
-        let consistent = !edges.same_direction.iter().any(|&same| same);
-        if all_valid {
-            check_fans(&indexed, &edges, consistent, &mut ins);
+        let mut flip = Vec::new();
+        if inspect {
+            let all_valid = indexed.valid.iter().all(|&ok| ok);
+            let consistent = !edges.same_direction.iter().any(|&same| same);
+            if all_valid {
+                check_fans(&indexed, &edges, consistent, &mut ins);
+            }
+            count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
+            flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
         }
-        count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
-        let flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
         CornerPairing {
             inspection: ins,
             remapped: indexed.remapped,
@@ -488,10 +503,15 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
     // `None` at an edge not in two faces. The two edges of a face at v are those of its corner
     // at v (leaving v) and of the previous corner (entering v): the walk enters a face through
     // one and leaves through the other, whatever the faces' orientations; with a consistent
-    // orientation that is `around`.
-    let step = |leave: u32, v: u32| -> Option<u32> {
+    // orientation, `forward` (leaving by a corner at v) that is `around` (`u32::MAX` at an edge
+    // not in two faces).
+    let step = |leave: u32, v: u32, forward: bool| -> Option<u32> {
         if consistent && closed {
             return Some(edges.around[leave as usize]);
+        }
+        if consistent && forward {
+            let c = edges.around[leave as usize];
+            return (c != u32::MAX).then_some(c);
         }
         let entered = edges.across(leave)?;
         // `entered` is one of the two corners at v in the next face; leave by the other.
@@ -510,7 +530,7 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
         let start = start_corner[v];
         let (mut leave, mut steps, mut open) = (start, 1u32, false);
         loop {
-            match step(leave, v as u32) {
+            match step(leave, v as u32, true) {
                 None => {
                     open = true;
                     break;
@@ -527,7 +547,7 @@ fn check_fans(indexed: &Indexed, edges: &EdgePairs, consistent: bool, ins: &mut 
             // The other way from the start face, through its edge entering v.
             leave = prev_corner(start);
             while steps <= corners[v] {
-                match step(leave, v as u32) {
+                match step(leave, v as u32, false) {
                     Some(c) if c / 3 != start / 3 => leave = c,
                     _ => break,
                 }

@@ -2,7 +2,7 @@
 
 use super::{ClosedCover, Sheets};
 use crate::build::pairing::{CornerPairing, next_corner, prev_corner};
-use crate::build::{BuildReport, build_topology_closed, classify};
+use crate::build::{BuildReport, build_topology_closed, classify, closed_topology_of_trusted};
 use crate::error::BuildError;
 use crate::ids::{FaceId, HalfedgeId, VertexId};
 use crate::union_find::UnionFind;
@@ -31,10 +31,12 @@ impl ClosedCover {
         if let Some(e) = p.inspection.problems.first() {
             return Err(e.clone());
         }
+        crate::stop::check();
         let nv = p.new_to_old.len();
         let ins = &p.inspection;
         if ins.boundary_edges == 0 && ins.orientable {
             let surfaces = classify::classify(&p);
+            crate::stop::check();
             let mut report = BuildReport {
                 reoriented_faces: ins.reoriented_faces.min(triangles.len()),
                 dropped_vertices: std::mem::take(&mut p.dropped),
@@ -67,8 +69,21 @@ impl ClosedCover {
                 t.swap(1, 2);
             }
         }
+        // The boundary corners of `closed`, in corner order: a reversed face (b, a, c) has its
+        // sides i = 0, 1, 2 on the sides 2, 1, 0 of the face as given, (a, b, c).
+        let boundary: Vec<u32> = (0..3 * closed.len() as u32)
+            .filter(|&c| {
+                let (f, i) = (c / 3, c % 3);
+                let given = if p.flip[f as usize] && orientable(f as usize) {
+                    3 * f + 2 - i
+                } else {
+                    c
+                };
+                p.edges.across(given).is_none()
+            })
+            .collect();
         let mut component = face_component;
-        let apexes = close_boundary_loops(nv, &mut closed, &mut component);
+        let apexes = close_boundary_loops(nv, &mut closed, &boundary, &mut component);
         let doubled: Vec<bool> = kinds.iter().map(|k| !k.orientable).collect();
         let cover = double(nv, apexes, &closed, &component, &doubled)?;
         Ok((cover, report))
@@ -76,23 +91,26 @@ impl ClosedCover {
 }
 
 /// Cones each boundary loop of `faces` (vertices `0..nv`, consistently oriented on orientable
-/// components) over a new apex vertex `nv + k`: appends a triangle `(b, a, apex)` for each face's
-/// boundary edge `a -> b`, which orients the cone as the face beside it. Returns the number of
-/// apexes; `component` gets the component of each new face.
-fn close_boundary_loops(nv: usize, faces: &mut Vec<[u32; 3]>, component: &mut Vec<u32>) -> usize {
-    let p = CornerPairing::run(nv, faces);
-    let boundary: Vec<u32> = (0..3 * faces.len() as u32)
-        .filter(|&c| p.edges.across(c).is_none())
-        .collect();
+/// components; `boundary` their corners on a boundary edge, increasing) over a new apex vertex
+/// `nv + k`: appends a triangle `(b, a, apex)` for each face's boundary edge `a -> b`, which
+/// orients the cone as the face beside it. Returns the number of apexes; `component` gets the
+/// component of each new face.
+fn close_boundary_loops(
+    nv: usize,
+    faces: &mut Vec<[u32; 3]>,
+    boundary: &[u32],
+    component: &mut Vec<u32>,
+) -> usize {
+    let corner_vertex = |c: u32| faces[(c / 3) as usize][(c % 3) as usize];
     let mut loops = UnionFind::new(nv);
-    for &c in &boundary {
-        loops.union(p.corner_vertex(c), p.corner_vertex(next_corner(c)));
+    for &c in boundary {
+        loops.union(corner_vertex(c), corner_vertex(next_corner(c)));
     }
     let mut apex_of_root = vec![u32::MAX; nv];
     let mut apexes = 0;
     let mut cones = Vec::with_capacity(boundary.len());
-    for &c in &boundary {
-        let (a, b) = (p.corner_vertex(c), p.corner_vertex(next_corner(c)));
+    for &c in boundary {
+        let (a, b) = (corner_vertex(c), corner_vertex(next_corner(c)));
         let root = loops.find(a) as usize;
         if apex_of_root[root] == u32::MAX {
             apex_of_root[root] = (nv + apexes) as u32;
@@ -129,7 +147,7 @@ fn double(
     let mut second = vec![u32::MAX; n];
     let mut next_id = n as u32;
     if doubled.iter().any(|&d| d) {
-        let p = CornerPairing::run(n, faces);
+        let p = CornerPairing::pair_only(n, faces);
         debug_assert!(p.inspection.problems.is_empty() && p.inspection.boundary_edges == 0);
         let mut start = vec![u32::MAX; n];
         for (f, t) in faces.iter().enumerate() {
@@ -170,7 +188,7 @@ fn double(
         mirror_of.push((f, lifted.len()));
         lifted.push([0, 2, 1].map(|i| lift(3 * f + i, true)));
     }
-    let mesh = build_topology_closed(next_id as usize, &lifted, true)?;
+    let mesh = closed_topology_of_trusted(next_id as usize, &lifted);
     let mut class: Vec<u32> = (0..next_id).collect();
     for (v, &s) in second.iter().enumerate() {
         if s != u32::MAX {
