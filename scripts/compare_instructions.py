@@ -7,8 +7,8 @@ the ratio new/base per command and input, and the median ratio per command.
 
 Commands: info, irreducible (rs), schipper, brute-force, quad (ks), quad-sg, quad-ps, quad-lrs,
 quad-ds (`--algorithm`), quad-quality, quad-quality-fast (`--objective`), delaunay (flip, with
-the Laplacian and mass matrix). Each output goes to a temporary folder; the whole process is counted
-(reading, building, the algorithm, writing).
+the Laplacian and mass matrix), delaunay-voronoi (the Voronoi wave, likewise). Each output goes
+to a temporary folder; the whole process is counted (reading, building, the algorithm, writing).
 """
 
 from __future__ import annotations
@@ -34,6 +34,8 @@ COMMANDS = {
        for q in ("quality", "quality-fast")},
     "delaunay": lambda m, o: ["delaunay", m, "-o", f"{o}/d.json", "--laplacian", f"{o}/L.mtx",
                               "--mass", f"{o}/M.mtx"],
+    "delaunay-voronoi": lambda m, o: ["delaunay", m, "--method", "voronoi", "-o", f"{o}/d.json",
+                                      "--laplacian", f"{o}/L.mtx", "--mass", f"{o}/M.mtx"],
 }
 
 

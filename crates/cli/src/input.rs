@@ -393,7 +393,7 @@ fn not_supported(
         _ => return format!("{}{hint}", locate(path, soup, &error)),
     };
     let kinds = surftopo_mesh::inspect(soup.positions.len(), &cut.triangles).surfaces;
-    let names = crate::commands::info::piece_names(kinds.iter().map(|k| k.name()));
+    let names = piece_names(kinds.iter().map(|k| k.name()));
     let name = name(path);
     let located = locate(path, soup, &error);
     let place = located
@@ -468,4 +468,38 @@ pub fn read_covered(path: &Path, weld: bool) -> anyhow::Result<LoadedCovered> {
         stderr_println!("note: {}: {hint}", name(path));
     }
     Ok(loaded)
+}
+
+/// The names of a file's pieces in words: each name once, in the order of first appearance,
+/// with its count when above one (`torus + 3 × disk`), so a soup of 320 triangles reads
+/// `320 × disk`.
+pub fn piece_names(names: impl IntoIterator<Item = String>) -> String {
+    let mut counted: Vec<(String, usize)> = Vec::new();
+    for name in names {
+        match counted.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, count)) => *count += 1,
+            None => counted.push((name, 1)),
+        }
+    }
+    let parts: Vec<String> = counted
+        .into_iter()
+        .map(|(name, count)| {
+            if count == 1 {
+                name
+            } else {
+                format!("{count} × {name}")
+            }
+        })
+        .collect();
+    parts.join(" + ")
+}
+
+/// Whether an input is portalgon JSON: a `.json` file, or standard input starting with `{`.
+pub(crate) fn is_json_input(path: &Path) -> anyhow::Result<bool> {
+    if is_stdio(path) {
+        return stdin_is_json();
+    }
+    Ok(path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json")))
 }

@@ -6,6 +6,7 @@
 use crate::failure::{invalid, shown};
 use std::path::{Component, Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
+use surftopo_intrinsic::SparseMatrix;
 use surftopo_io::{Format, PolygonSoup, StagedFile, WriteOptions};
 use surftopo_mesh::Surface;
 
@@ -601,6 +602,19 @@ fn stage_file(
         (None, Err(e)) => Err(crate::failure::unwritable(path, &e)),
         (None, Ok(staged)) => Ok(staged),
     }
+}
+
+/// Refuses to write a matrix that is not representable
+/// ([`SparseMatrix::check_representable`]: an `inf` entry, or a mass matrix of zeros). (A
+/// Laplacian may have a zero diagonal: a one-vertex torus.)
+pub(crate) fn check_matrix(
+    matrix: &SparseMatrix,
+    what: &str,
+    positive_diagonal: bool,
+) -> anyhow::Result<()> {
+    matrix
+        .check_representable(positive_diagonal)
+        .map_err(|e| invalid(format!("{what}: {e}")))
 }
 
 #[cfg(test)]

@@ -212,7 +212,7 @@ pub fn pillowcase<S: Scalar>(u: &Point<S>, v: &Point<S>) -> Result<Portalgon<S>,
         p.glue(
             p.side(x, i),
             p.side(y, j),
-            crate::portalgon::DEFAULT_LENGTH_TOLERANCE,
+            crate::geometry::Tolerances::DEFAULT.length,
         )?;
     }
     Ok(p)

@@ -11,7 +11,9 @@
 //!
 //! The modules, from the ground up (a module imports only modules listed before it):
 //! - [`geometry`]: the [`geometry::Scalar`] number types (`f64`, double-double, exact rationals)
-//!   and plane geometry with exact-sign predicates; `error`: the typed errors;
+//!   with the exact/rounded decisions as their methods, the tolerances of rounded arithmetic in
+//!   one value ([`geometry::Tolerances`]), and plane geometry with exact-sign predicates;
+//!   `error`: the typed errors;
 //!   [`SparseMatrix`].
 //! - `portalgon/` (Section 2.1): [`Portalgon`], its queries and elementary edits
 //!   ([`Portalgon::cut`], [`Portalgon::shortcut`], [`Portalgon::merge`],
@@ -117,15 +119,15 @@ pub use isometry::{
 };
 pub use laplacian::{cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass};
 pub use portalgon::{
-    Component, DEFAULT_LENGTH_TOLERANCE, EditError, Point2, PolygonId, Portalgon, Regions,
-    SHORTCUT_MIN_SINE, SideId, VertexInfo, check_polygon, signed_area,
+    Component, DEFAULT_LENGTH_TOLERANCE, EditError, Point2, PolygonId, Portalgon, Regions, SideId,
+    VertexInfo, check_polygon, signed_area,
 };
 pub use sparse::SparseMatrix;
+pub use triangulation::IntrinsicTriangulation;
 pub use triangulation::mollify::{MAX_MOLLIFY, mollify};
 pub use triangulation::quality::{
     DEFAULT_ANGLE_TOLERANCE, Quality, flat_vertices, is_singular, quality,
 };
-pub use triangulation::{FLIP_AREA_TOLERANCE, IntrinsicTriangulation};
 pub use tufted::{
     DEFAULT_MOLLIFY_FACTOR, TuftedLaplacian, TuftedOptions, TuftedReport, tufted_laplacian,
 };

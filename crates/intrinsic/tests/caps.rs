@@ -421,7 +421,7 @@ fn dubois_on_a_mesh_metric_equals_flip() {
 }
 
 /// When the wave's point tolerance is coarse for the surface's features, its dual fails and
-/// Theorem 1 in `f64` runs the wave again at a finer tolerance (`CAPS_F64_FINER_TOLERANCE`):
+/// Theorem 1 in `f64` runs the wave again at a finer tolerance (`Tolerances::with_retries`, whose `finer_retry` is 1e-3):
 /// here an icosphere whose faces at one vertex are split at a hundredth of the way to their
 /// centroids, with the wave told points apart only to 1e-3 of the longest side (the dual then
 /// misses a Voronoi vertex, as on `seahorse2_100K.off` at the default 1e-9), gives flipping's
@@ -454,7 +454,7 @@ fn a_wave_tolerance_too_coarse_for_the_features_is_retried_finer() {
         sources: Sources::All,
         ..FlatDelaunayOptions::default()
     };
-    options.wave.point_tolerance = 1e-3;
+    options.tolerances.point = 1e-3;
     check_triangulation_against_flip_with(&tri, "clustered icosphere", 1e-12, &options).unwrap();
 }
 

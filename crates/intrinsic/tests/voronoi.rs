@@ -12,7 +12,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use surftopo_intrinsic::generators::{flat_torus_portalgon, random_flips};
 use surftopo_intrinsic::geometry::{
-    Motion, Point, Rational, Scalar, dist2, dot, incircle, orient, sub,
+    Motion, Point, Rational, Scalar, Tolerances, dist2, dot, incircle, orient, sub,
 };
 use surftopo_intrinsic::voronoi::{
     DualError, Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, is_flat_vertex, to_f64,
@@ -665,7 +665,10 @@ fn jittered_rectangle_torus(m: u32, jitter: f64, seed: u64) -> IntrinsicTriangul
 fn nearly_co_circular_sites_in_f64_give_the_flip_route_or_a_typed_refusal() {
     // Retried at the same tolerance: only the pooling can answer differently.
     let retried = VoronoiOptions {
-        dual_retry_tolerance: Some(VoronoiOptions::default().dual_tolerance),
+        tolerances: Tolerances {
+            dual_retry: Some(Tolerances::DEFAULT.dual),
+            ..Tolerances::DEFAULT
+        },
         ..VoronoiOptions::default()
     };
     let mut rescued = 0;
@@ -733,19 +736,17 @@ fn assert_laplacian_close(
 }
 
 /// When the wave's and the dual's tolerances are coarse for the surface's features they can
-/// refuse it; [`VoronoiOptions::finer_retry`] runs both again finer, which answers with the flip
+/// refuse it; [`Tolerances::finer_retry`] runs both again finer, which answers with the flip
 /// route's tessellation: rectangle-grid tori jittered by 1e-4 to 3e-4 of their side, told apart
 /// to 1e-4 (the jitter is then near-co-circularity at the tolerance, as the default 1e-9 meets
 /// on meshes with features 10⁴ times smaller than their longest side), retried at 1e-7.
 #[test]
 fn coarse_tolerances_are_retried_finer_when_asked() {
     let mut coarse = VoronoiOptions::default();
-    coarse.wave.point_tolerance = 1e-4;
-    coarse.dual_tolerance = 1e-4;
-    let finer = VoronoiOptions {
-        finer_retry: Some(1e-3),
-        ..coarse
-    };
+    coarse.tolerances.point = 1e-4;
+    coarse.tolerances.dual = 1e-4;
+    let mut finer = coarse;
+    finer.tolerances.finer_retry = Some(1e-3);
     let mut rescued = 0;
     for (seed, jitter) in [1e-4, 2e-4, 3e-4].into_iter().enumerate() {
         for m in [5, 8] {

@@ -202,7 +202,7 @@ pub fn problems<'a>(
             positions
                 .get(v as usize)
                 .is_some_and(|p| p.iter().all(|c| c.is_finite()))
-        }) && !crate::polygons::repeats_a_vertex(face)
+        }) && !repeats_a_vertex(face)
     };
     for (face, indices) in faces.into_iter().enumerate() {
         if testable(indices) && is_zero_area_face(positions, indices) {
@@ -443,4 +443,14 @@ pub fn reorder_morton(mesh: &mut SurfaceMesh, positions: &mut Vec<Point3>) -> cr
     }
     *positions = reordered;
     map
+}
+
+/// Whether a face lists a vertex twice (O(k log k)).
+pub(crate) fn repeats_a_vertex(face: &[u32]) -> bool {
+    if face.len() <= 16 {
+        return (1..face.len()).any(|i| face[..i].contains(&face[i]));
+    }
+    let mut sorted = face.to_vec();
+    sorted.sort_unstable();
+    sorted.windows(2).any(|w| w[0] == w[1])
 }

@@ -67,6 +67,7 @@ use std::collections::{BTreeSet, HashMap, HashSet};
 
 use crate::geometry::{
     NEAR_DEGENERATE_RELATIVE_HEIGHT, Point3, is_zero_area_triangle, relative_height,
+    repeats_a_vertex,
 };
 
 /// Triangles of polygon faces by the module's rule, with the face of each triangle.
@@ -241,16 +242,6 @@ pub fn inspect_polygons<'a>(
 /// The triangles of one polygon (corners in the polygon's order), by the module's rule.
 pub fn triangulate_polygon(positions: &[Point3], face: &[u32]) -> Vec<[u32; 3]> {
     triangulate_polygons(positions, [face]).triangles
-}
-
-/// Whether a face lists a vertex twice (O(k log k)).
-pub(crate) fn repeats_a_vertex(face: &[u32]) -> bool {
-    if face.len() <= 16 {
-        return (1..face.len()).any(|i| face[..i].contains(&face[i]));
-    }
-    let mut sorted = face.to_vec();
-    sorted.sort_unstable();
-    sorted.windows(2).any(|w| w[0] == w[1])
 }
 
 /// The undirected side of two vertices.

@@ -9,39 +9,14 @@ use std::fmt::Write as _;
 use std::path::Path;
 use std::time::Instant;
 
-use serde::{Deserialize, Serialize};
 use surftopo_intrinsic::generators::{flat_torus, sheared_torus};
 use surftopo_intrinsic::{DelaunayOptions, IntrinsicTriangulation, flip_to_delaunay};
 
 use super::inputs::{self, Scale};
 use super::plot::{self, Axis, Plot, Series};
+use super::records::IntrinsicRecord as Record;
 use super::report::{header, row, seconds};
 use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
-
-/// One measured surface.
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
-pub struct Record {
-    /// `flat_torus`, `sheared_torus` or `mesh`.
-    pub kind: String,
-    /// x, the shear, or the model name.
-    pub input: String,
-    /// x (flat torus), the shear (sheared torus), 0 for meshes.
-    pub parameter: f64,
-    /// Edges.
-    pub edges: usize,
-    /// Flips made.
-    pub flips: u64,
-    /// Expected flips (flat torus: x − 1).
-    pub expected_flips: Option<u64>,
-    /// Flat torus: max |ℓ − exact| over the three final lengths (1, 2, √5).
-    pub length_error: Option<f64>,
-    /// Edges not Delaunay at the end (0 on success).
-    pub non_delaunay_edges: usize,
-    /// Wall-clock seconds of the flips.
-    pub seconds: f64,
-    /// `ok` or the error.
-    pub status: String,
-}
 
 fn flip(tri: &mut IntrinsicTriangulation) -> (Result<surftopo_intrinsic::FlipReport, String>, f64) {
     let start = Instant::now();

@@ -7,7 +7,6 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use serde::{Deserialize, Serialize};
 use surftopo_irreducible::{Algorithm, SurfaceMesh, check_simplicial, is_irreducible, reduce};
 
 use super::cache::Cache;
@@ -15,51 +14,12 @@ use super::inputs::{self, Described, Input, Scale};
 use super::measure::{fewer_seeds, mean, seeds_for, timed};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
+use super::records::{AlgorithmRun, IrreducibleRow as Row, ratios};
 use super::report::{beside, header, number, row, seconds};
 use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
 /// BF runs per input (Section 5.2).
 pub const BF_RUNS: u64 = 10;
-
-/// One algorithm on one input; counts are means over the runs (BF: its seeds).
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
-pub struct AlgorithmRun {
-    /// ℓ: link-condition tests.
-    pub link_tests: f64,
-    /// ε: edges tested more than once.
-    pub edges_tested_more_than_once: f64,
-    /// Vertices of the irreducible output.
-    pub output_vertices: f64,
-    /// Mean CPU seconds of the algorithm alone (the input check that `reduce` makes is measured
-    /// apart and subtracted).
-    pub cpu_seconds: f64,
-    /// Least wall-clock seconds (`Counters::seconds`, as the paper's `run()`).
-    pub wall_seconds: f64,
-    /// Timed calls.
-    pub calls: u32,
-    /// Seeded runs averaged (BF: [`BF_RUNS`], or fewer on large inputs,
-    /// [`super::measure::seeds_for`]; RS and S: 1).
-    #[serde(default = "one")]
-    pub seeds: u64,
-}
-
-fn one() -> u64 {
-    1
-}
-
-/// One input's row.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Row {
-    /// The input (group, name, how it was made, sizes).
-    #[serde(flatten)]
-    pub about: Described,
-    /// RS.
-    pub rs: AlgorithmRun,
-    /// Schipper.
-    pub s: AlgorithmRun,
-    /// Brute force (means over its seeds, [`AlgorithmRun::seeds`]).
-    pub bf: AlgorithmRun,
-}
 
 fn min_total(scale: Scale) -> f64 {
     if scale == Scale::Tiny { 0.0 } else { 0.5 }
@@ -211,19 +171,6 @@ pub fn run(options: &Options, cache: &Cache, meshes: Option<&Path>) -> anyhow::R
 
 fn find<'a>(rows: &'a [Row], group: &str, input: &str) -> Option<&'a Row> {
     rows.iter().find(|r| r.group == group && r.input == input)
-}
-
-/// Our six ratios of Tables 7, 9 and 11 (CPU times).
-pub fn ratios(r: &Row) -> [f64; 6] {
-    let q = |a: f64, b: f64| if b > 0.0 { a / b } else { f64::NAN };
-    [
-        q(r.s.link_tests, r.rs.link_tests),
-        q(r.bf.link_tests, r.rs.link_tests),
-        q(r.s.link_tests, r.bf.link_tests),
-        q(r.s.cpu_seconds, r.rs.cpu_seconds),
-        q(r.bf.cpu_seconds, r.rs.cpu_seconds),
-        q(r.s.cpu_seconds, r.bf.cpu_seconds),
-    ]
 }
 
 fn markdown(
@@ -580,13 +527,4 @@ fn write_plots(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<(String, String)>
 /// "Where we differ from the paper": the measured facts behind each disagreement.
 fn differences(rows: &[Row]) -> String {
     super::differences::irreducible(rows)
-}
-
-impl std::ops::Deref for Row {
-    type Target = Described;
-
-    /// The input's description, so that `row.faces` reads as a field of the row.
-    fn deref(&self) -> &Described {
-        &self.about
-    }
 }

@@ -22,6 +22,7 @@ pub mod measure;
 pub mod numbers;
 pub mod plot;
 pub mod quad;
+pub mod records;
 pub mod report;
 pub mod surfaces;
 

@@ -7,7 +7,6 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use serde::{Deserialize, Serialize};
 use surftopo_quad::{AugmentStrategy, QuadAlgorithm, QuadOptions, quadrangulate_with};
 
 use super::cache::Cache;
@@ -15,6 +14,7 @@ use super::inputs::{self, Described, Input, Scale};
 use super::measure::{fewer_seeds, mean, seeds_for, thread_cpu_seconds};
 use super::numbers::{self, value};
 use super::plot::{self, Axis, Plot, Series};
+use super::records::QuadRecord as Record;
 use super::report::{beside, header, number, row, seconds};
 use super::{Measured, Options, RunInfo, finish, measured_or_rendered, preamble};
 
@@ -23,39 +23,6 @@ pub const SEEDS: u64 = 10;
 
 /// The paper's algorithms, in its order.
 pub const ALGORITHMS: [&str; 4] = ["SG", "PS", "DS", "LRS"];
-
-/// One algorithm on one input: means over the runs.
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
-pub struct Record {
-    /// The input (group, name, how it was made, sizes).
-    #[serde(flatten)]
-    pub about: Described,
-    /// `SG`, `PS`, `DS` or `LRS`.
-    pub algorithm: String,
-    /// Augmenting search: `forest` (the library's default) or `global` (the paper's procedure,
-    /// [`AugmentStrategy::Global`]).
-    pub augment: String,
-    /// Runs (seeds 1..=runs for SG and PS).
-    pub runs: u64,
-    /// (a) initial pairing seconds (wall-clock, mean).
-    pub initial_pairing_seconds: f64,
-    /// (b) percentage paired by the initial pairing.
-    pub paired_percent: f64,
-    /// (c) unpaired triangles after the initial pairing.
-    pub unpaired: f64,
-    /// (d) augmentation seconds.
-    pub augmentation_seconds: f64,
-    /// (e) total seconds.
-    pub total_seconds: f64,
-    /// Mean CPU seconds of the whole call.
-    pub cpu_seconds: f64,
-    /// LRS: edges of the input whose flip is in K.
-    pub flipped_edges: f64,
-    /// Nodes reached by the augmenting searches.
-    pub augment_reached: f64,
-    /// Augmenting searches started.
-    pub augment_searches: f64,
-}
 
 fn algorithm(name: &str, seed: u64) -> QuadAlgorithm {
     match name {

@@ -67,30 +67,6 @@ impl From<&SurfaceKind> for SurfaceJson {
     }
 }
 
-/// The names of a file's pieces in words: each name once, in the order of first appearance,
-/// with its count when above one (`torus + 3 × disk`), so a soup of 320 triangles reads
-/// `320 × disk`.
-pub fn piece_names(names: impl IntoIterator<Item = String>) -> String {
-    let mut counted: Vec<(String, usize)> = Vec::new();
-    for name in names {
-        match counted.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, count)) => *count += 1,
-            None => counted.push((name, 1)),
-        }
-    }
-    let parts: Vec<String> = counted
-        .into_iter()
-        .map(|(name, count)| {
-            if count == 1 {
-                name
-            } else {
-                format!("{count} × {name}")
-            }
-        })
-        .collect();
-    parts.join(" + ")
-}
-
 /// The facts `info` reports (JSON keys as named; the text labels are the same words).
 #[derive(Serialize)]
 pub struct Info {

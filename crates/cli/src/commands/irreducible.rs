@@ -72,9 +72,9 @@ impl Counts {
         }
     }
 
-    /// The surfaces' names ([`crate::commands::info::piece_names`]).
+    /// The surfaces' names ([`crate::input::piece_names`]).
     pub fn names(&self) -> String {
-        crate::commands::info::piece_names(self.surfaces.iter().map(|s| s.name.clone()))
+        crate::input::piece_names(self.surfaces.iter().map(|s| s.name.clone()))
     }
 }
 

@@ -3,6 +3,7 @@
 pub mod census;
 pub mod convert;
 pub mod delaunay;
+pub mod delaunay_args;
 pub mod demo;
 pub mod generate;
 pub mod info;

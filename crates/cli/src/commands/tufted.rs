@@ -2,9 +2,10 @@
 //! and mass matrix of the tufted cover (Sharp & Crane, "A Laplacian for Nonmanifold Triangle
 //! Meshes", 2020), a thin layer over `surftopo_intrinsic::tufted_laplacian`.
 
-use super::delaunay::{Args, Method, check_matrix};
+use super::delaunay_args::{Args, Method};
 use crate::failure::invalid;
-use crate::output::Outputs;
+use crate::input::is_json_input;
+use crate::output::{Outputs, check_matrix};
 use std::time::Instant;
 use surftopo_intrinsic::{
     DEFAULT_MOLLIFY_FACTOR, DelaunayError, TuftedError, TuftedOptions, TuftedReport,
@@ -16,7 +17,7 @@ use surftopo_io::PolygonSoup;
 /// cover, with a note on stderr, when the input is a mesh that is not a manifold (a non-manifold
 /// edge or vertex, a duplicate face); otherwise returns `error`.
 pub fn run_if_not_manifold(options: &Args, error: anyhow::Error) -> anyhow::Result<()> {
-    if options.method.exact || super::delaunay::is_json_input(&options.input)? {
+    if options.method.exact || is_json_input(&options.input)? {
         return Err(error);
     }
     let Ok((soup, _)) = crate::input::read_soup(&options.input, options.weld.weld) else {
@@ -75,7 +76,7 @@ fn check_options(options: &Args, automatic: bool) -> anyhow::Result<()> {
             crate::input::name(&options.input)
         )));
     }
-    if super::delaunay::is_json_input(&options.input)? {
+    if is_json_input(&options.input)? {
         return Err(invalid(format!(
             "{}: --tufted takes a mesh file (a portalgon is a closed surface already)",
             crate::input::name(&options.input)

@@ -25,10 +25,9 @@
 
 use super::DelaunayMethod;
 use crate::flip::needle::{AUTO_ASPECT_LIMIT, is_needle};
-use crate::geometry::Scalar;
+use crate::geometry::{Scalar, Tolerances};
 use crate::portalgon::Portalgon;
 use crate::triangulation::IntrinsicTriangulation;
-use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 
 /// Whether [`choose_method`] sends needles with cone points to [`crate::dubois`]. Section 8's
 /// caps run in both arithmetics ([`crate::dubois::delaunay_tessellation_dubois`]), but on meshes
@@ -77,7 +76,7 @@ pub(crate) fn method_for(needle: bool, flat: impl FnOnce() -> bool) -> DelaunayM
 /// tolerance in `f64`, exactly in exact mode). O(n).
 pub fn choose_method<S: Scalar>(p: &Portalgon<S>) -> DelaunayMethod {
     method_for(largest_aspect_ratio(p) > AUTO_ASPECT_LIMIT, || {
-        crate::dubois::first_cone_point(p, DEFAULT_ANGLE_TOLERANCE).is_none()
+        crate::dubois::first_cone_point(p, Tolerances::DEFAULT.angle).is_none()
     })
 }
 
@@ -105,5 +104,5 @@ pub(crate) fn choose_method_for_needle(tri: &IntrinsicTriangulation) -> Delaunay
 fn is_flat(tri: &IntrinsicTriangulation) -> bool {
     tri.mesh()
         .vertices()
-        .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= DEFAULT_ANGLE_TOLERANCE)
+        .all(|v| (tri.angle_sum(v) - std::f64::consts::TAU).abs() <= Tolerances::DEFAULT.angle)
 }

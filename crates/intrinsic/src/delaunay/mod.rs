@@ -28,12 +28,10 @@ use crate::covered::CoveredTriangulation;
 use crate::dubois::{CapsError, DuboisReport, FlatDelaunayOptions, ReduceOptions};
 use crate::error::{DelaunayError, GeometryError, PortalgonError};
 use crate::flip::stats::DelaunayStats;
-use crate::flip::tessellation::{
-    DEFAULT_COCIRCULAR_TOLERANCE, Tessellation, delaunay_tessellation,
-};
-use crate::flip::{DEFAULT_TOLERANCE, DelaunayOptions, FlipReport, flip_unless};
+use crate::flip::tessellation::{Tessellation, delaunay_tessellation};
+use crate::flip::{DelaunayOptions, FlipReport, flip_unless};
 use crate::formats::portalgon_json::PortalgonDoc;
-use crate::geometry::{Motion, Rational, Scalar, incircle};
+use crate::geometry::{Motion, Rational, Scalar, Tolerances, incircle};
 use crate::laplacian::{cotan_laplacian, laplacian_from_tan_half_sq, lumped_mass};
 use crate::portalgon::Portalgon;
 use crate::sparse::SparseMatrix;
@@ -411,7 +409,7 @@ fn flipped_output(
         .then(|| DelaunayStats::new(&tri, &report, seconds));
     let tessellation = wanted.tessellation.then(|| {
         progress("merging co-circular triangles");
-        let t = delaunay_tessellation(&tri, DEFAULT_COCIRCULAR_TOLERANCE);
+        let t = delaunay_tessellation(&tri, Tolerances::DEFAULT.cocircular);
         AnyPortalgon::F64(t.portalgon)
     });
     let laplacian = wanted.laplacian.then(|| {
@@ -463,7 +461,7 @@ fn covered(
     let stats = wanted.figures.then(|| tri.stats(&report, seconds));
     let covered_tessellation = wanted.tessellation.then(|| {
         progress("merging co-circular triangles");
-        tri.tessellation(DEFAULT_COCIRCULAR_TOLERANCE)
+        tri.tessellation(Tolerances::DEFAULT.cocircular)
     });
     let laplacian = wanted.laplacian.then(|| {
         progress("building the Laplacian");
@@ -584,7 +582,7 @@ where
                 flips: 0,
                 mollify_delta: None,
                 non_delaunay_edges: exact_count
-                    .unwrap_or_else(|| tri.non_delaunay_edges(DEFAULT_TOLERANCE)),
+                    .unwrap_or_else(|| tri.non_delaunay_edges(Tolerances::DEFAULT.delaunay)),
             };
             DelaunayStats::new(tri, &report, start.elapsed().as_secs_f64())
         });

@@ -53,7 +53,7 @@
 //!   re-glued side keeps its length by construction, so ALGORITHM's checks of them (a deleted
 //!   vertex's corners meeting, matched lengths) only measure the rounding accumulated by the
 //!   motions of many merges (rigid in `f64`: [`crate::geometry::Motion::gluing`]); on `T₁` they
-//!   use a relative tolerance of at least [`CAPS_F64_CLOSING_TOLERANCE`] (1e-6) rather than
+//!   use a relative tolerance of at least [`Tolerances::closing`] (1e-6) rather than
 //!   1e-9. A cap is glued back to its side of `T₁` with that tolerance relative to the longest
 //!   side of that side's polygon, in `T₁` or after ALGORITHM, whichever is longer
 //!   ([`Portalgon::glue_at_scale`]): cap sides are far shorter than the polygons around them,
@@ -82,23 +82,9 @@ use super::{
     DuboisError, DuboisReport, FlatDelaunayOptions, Reduction, reduce_with_boundary_until,
 };
 
-use crate::geometry::{DoubleDouble, Scalar};
+use crate::geometry::{DoubleDouble, Scalar, Tolerances};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 use crate::voronoi::{Sources, VoronoiError, is_flat_vertex};
-
-/// In `f64`, the least relative tolerance with which ALGORITHM on `T₁` and [`put_caps_back`]
-/// check their closings (a deleted vertex's corners meeting, re-glued sides of equal length):
-/// see the module doc.
-pub const CAPS_F64_CLOSING_TOLERANCE: f64 = 1e-6;
-
-/// In `f64`, the tolerance at which the dual of the wave on `T′` is built again when it fails
-/// at its own ([`crate::voronoi::VoronoiOptions::dual_retry_tolerance`]): see the module doc.
-pub const CAPS_F64_DUAL_RETRY_TOLERANCE: f64 = 1e-8;
-
-/// In `f64`, when the wave and its dual on `T′` fail, they run again at their tolerances times
-/// this ([`crate::voronoi::VoronoiOptions::finer_retry`]; points 1e-9 by default, then 1e-12): see the module
-/// doc.
-pub const CAPS_F64_FINER_TOLERANCE: f64 = 1e-3;
 
 /// Why [`cut_caps`], [`put_caps_back`] or [`super::delaunay_tessellation_dubois`] failed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -201,11 +187,7 @@ fn dyadic<S: Scalar>(k: u32) -> S {
 /// The least `N ≥ 1` with `((2^N − 2)·d²)² ≥ 144·L₁²·L²` (`2^N ≥ 2 + L₁/s`, `s = d²/(12L)`); in
 /// `f64` the right side enlarged by a relative 1e-9. Capped at 4096.
 fn outer_iterations_with_caps<S: Scalar>(d2: &S, l2: &S, l1_2: &S) -> u32 {
-    let margin = if S::EXACT {
-        S::one()
-    } else {
-        S::one() + S::from_f64(1e-9).expect("finite")
-    };
+    let margin = S::upward_margin(Tolerances::DEFAULT.bound_margin);
     let rhs = S::from_i64(144) * l1_2.clone() * l2.clone() * margin;
     let mut n = 1u32;
     let mut power = S::from_i64(2);
@@ -347,7 +329,7 @@ pub fn cut_caps_at<S: Scalar>(
     let is_cap = |p: PolygonId| is_cap.get(p.idx()).copied().unwrap_or(false);
     let remaining: Vec<PolygonId> = t0.polygons().filter(|&p| !is_cap(p)).collect();
     let (remainder, to_remainder) = t0.sub_portalgon(&remaining);
-    let remainder = in_local_frames(&remainder, 1e-9)?;
+    let remainder = in_local_frames(&remainder, Tolerances::DEFAULT.length)?;
     let l1_2 = remainder
         .sides()
         .map(|s| remainder.side_length2(s))
@@ -522,7 +504,7 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     options: &FlatDelaunayOptions,
 ) -> Result<WithApexes<S>, CapsError> {
     check_triangular_closed(t)?;
-    let cone = cone_points(t, options.angle_tolerance);
+    let cone = cone_points(t, options.tolerances.angle);
     let capped = if S::EXACT && options.sources == Sources::Singular {
         cone.clone()
     } else {
@@ -531,9 +513,9 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     let cut = cut_caps_at(t, &capped, &cone)?;
     let mut reduce = options.reduce;
     reduce.outer_iterations = reduce.outer_iterations.or(Some(cut.outer_iterations));
-    if !S::EXACT {
-        reduce.tolerance = reduce.tolerance.max(CAPS_F64_CLOSING_TOLERANCE);
-    }
+    reduce.tolerance = reduce
+        .tolerance
+        .max(S::slack(|| options.tolerances.closing));
     // Exact mode: the Delaunay exit (`delaunay_exit`), `T″` and its apex sides once found.
     let mut flipped: Option<(Portalgon<S>, Vec<SideId>)> = None;
     let tolerance = reduce.tolerance;

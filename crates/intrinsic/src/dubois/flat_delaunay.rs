@@ -15,9 +15,8 @@
 //!   translation).
 
 use super::{DuboisError, DuboisReport, ReduceOptions, reduce};
-use crate::geometry::Scalar;
+use crate::geometry::{Scalar, Tolerances};
 use crate::portalgon::{Portalgon, SideId};
-use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, WaveOptions, is_flat_vertex,
     voronoi_delaunay,
@@ -30,9 +29,11 @@ pub struct FlatDelaunayOptions {
     pub reduce: ReduceOptions,
     /// Proposition 3's wave.
     pub wave: WaveOptions,
-    /// In `f64`: a vertex is a cone point when its angle sum is more than this many radians from
-    /// 2π (exact mode decides exactly).
-    pub angle_tolerance: f64,
+    /// In `f64` (exact mode decides exactly): a vertex is a cone point when its angle sum is more
+    /// than [`Tolerances::angle`] from 2π; the wave's and the dual's tolerances; on a surface with
+    /// cone points, the least tolerance of the closing checks on `T₁`
+    /// ([`Tolerances::closing`]). The wave on `T′` adds [`Tolerances::with_retries`].
+    pub tolerances: Tolerances,
     /// V of Proposition 3 on a surface with cone points ([`super::delaunay_tessellation_dubois`]):
     /// [`Sources::Singular`] (the default: Theorem 1's canonical tessellation) or
     /// [`Sources::All`], every vertex of the input (Section 1's footnote 1: the flip route's
@@ -46,7 +47,7 @@ impl Default for FlatDelaunayOptions {
         Self {
             reduce: ReduceOptions::default(),
             wave: WaveOptions::default(),
-            angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
+            tolerances: Tolerances::DEFAULT,
             sources: Sources::Singular,
         }
     }
@@ -119,7 +120,7 @@ pub fn delaunay_tessellation_flat<S: Scalar>(
 ) -> Result<FlatDelaunay<S>, FlatDelaunayError> {
     p.check_invariants().map_err(DuboisError::from)?;
     p.check_closed().map_err(DuboisError::from)?;
-    if let Some((label, class, side)) = first_cone_point(p, options.angle_tolerance) {
+    if let Some((label, class, side)) = first_cone_point(p, options.tolerances.angle) {
         return Err(FlatDelaunayError::ConePoint {
             label,
             class,
@@ -132,9 +133,8 @@ pub fn delaunay_tessellation_flat<S: Scalar>(
         &reduced,
         &VoronoiOptions {
             sources: Sources::Singular,
-            angle_tolerance: options.angle_tolerance,
             wave: options.wave,
-            ..VoronoiOptions::default()
+            tolerances: options.tolerances,
         },
     )?;
     Ok(FlatDelaunay {

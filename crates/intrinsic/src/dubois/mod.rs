@@ -44,9 +44,9 @@
 //!   longest side; that merged distinct sites of near-co-circular configurations, which broke
 //!   the dual on `chassis_upright.off`.) When the traced Voronoi edges do not close up, the dual
 //!   is built again pooling the sites of Voronoi vertices taken for one, then at
-//!   [`caps::CAPS_F64_DUAL_RETRY_TOLERANCE`] (1e-8, [`crate::voronoi::VoronoiOptions::dual_retry_tolerance`]).
+//!   1e-8 ([`crate::geometry::Tolerances::dual_retry`], set by [`crate::geometry::Tolerances::with_retries`]).
 //!   When all three fail, the wave and the dual run again at tolerances
-//!   [`caps::CAPS_F64_FINER_TOLERANCE`] times finer ([`crate::voronoi::VoronoiOptions::finer_retry`]: points 1e-12,
+//!   1000 times finer ([`crate::geometry::Tolerances::finer_retry`]: points 1e-12,
 //!   the dual 1e-12 and 1e-11). The tolerance
 //!   is taken at the scale of the longest side, and a surface with features thousands of times
 //!   smaller can have whole clusters of sites within it: on `seahorse2_100K.off`'s `T′`
@@ -78,17 +78,12 @@ pub use reduction::{
     reduce_with_boundary_until,
 };
 
-use std::any::TypeId;
-
 use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon};
 use crate::voronoi::{
     Sources, VoronoiDelaunay, VoronoiOptions, voronoi_delaunay, voronoi_delaunay_from,
 };
-use caps::{
-    CAPS_F64_CLOSING_TOLERANCE, CAPS_F64_DUAL_RETRY_TOLERANCE, CAPS_F64_FINER_TOLERANCE,
-    in_local_frames, laid_out_in_double_double, proposition_2_with_apexes,
-};
+use caps::{in_local_frames, laid_out_in_double_double, proposition_2_with_apexes};
 
 /// Theorem 1's output on a closed surface: the tessellation (with the wave's data), ALGORITHM's
 /// report, and the caps.
@@ -123,7 +118,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
 ) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
-    if first_cone_point(t, options.angle_tolerance).is_none() {
+    if first_cone_point(t, options.tolerances.angle).is_none() {
         let flat = delaunay_tessellation_flat(t, options).map_err(|e| match e {
             FlatDelaunayError::Reduction(e) => CapsError::Reduction(e),
             FlatDelaunayError::Voronoi(e) => CapsError::Voronoi(e),
@@ -139,11 +134,11 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             reduced: flat.reduced,
         });
     }
-    let (t_prime, reduction, cut, apexes) = if TypeId::of::<S>() == TypeId::of::<f64>() {
+    let (t_prime, reduction, cut, apexes) = if S::REDUCES_IN_DOUBLE_DOUBLE {
         // The reduction in double-double, `T′` rounded back in local frames (module doc).
         let t_dd = laid_out_in_double_double(t);
         let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
-        let t_prime = in_local_frames(&t_prime, CAPS_F64_CLOSING_TOLERANCE)?
+        let t_prime = in_local_frames(&t_prime, options.tolerances.closing)?
             .map_coordinates(|x| S::from_f64(x.to_f64()).unwrap_or_else(S::zero));
         let cut = (cut.cone_points, cut.caps.len());
         (t_prime, reduction, cut, apexes)
@@ -156,7 +151,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
             apexes,
         )
     };
-    let wave_options = wave_options::<S>(options, Sources::Singular);
+    let wave_options = wave_options(options, Sources::Singular);
     let mut delaunay = match options.sources {
         Sources::Singular => voronoi_delaunay(&t_prime, &wave_options)?,
         Sources::All => voronoi_delaunay_from(&t_prime, apexes, &wave_options)?,
@@ -173,21 +168,15 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
 
 /// Proposition 3's options on `T′`: the sources, `options`' angle tolerance and wave budget, and
 /// in `f64` the dual's retries (module doc).
-fn wave_options<S: Scalar>(options: &FlatDelaunayOptions, sources: Sources) -> VoronoiOptions {
-    let mut wave_options = VoronoiOptions {
+fn wave_options(options: &FlatDelaunayOptions, sources: Sources) -> VoronoiOptions {
+    // `T′` from the double-double reduction closes up to far below the wave's own point
+    // tolerance (module doc), which is kept; its features can be far below it: the rounded
+    // wave's retries (exact arithmetic has none).
+    VoronoiOptions {
         sources,
-        angle_tolerance: options.angle_tolerance,
         wave: options.wave,
-        ..VoronoiOptions::default()
-    };
-    if !S::EXACT {
-        // `T′` from the double-double reduction closes up to far below the wave's own point
-        // tolerance (module doc), which is kept.
-        wave_options.dual_retry_tolerance = Some(CAPS_F64_DUAL_RETRY_TOLERANCE);
-        // Features far below the default tolerance (module doc): the wave again, finer.
-        wave_options.finer_retry = Some(CAPS_F64_FINER_TOLERANCE);
+        tolerances: options.tolerances.with_retries(),
     }
-    wave_options
 }
 
 /// Theorem 1 on the metric of a mesh in ℝ³ (every triangle of `t` a face with those side
@@ -210,11 +199,11 @@ pub fn delaunay_tessellation_of_mesh<S: Scalar>(
 ) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
-    let cone_points = caps::cone_points(t, options.angle_tolerance)
+    let cone_points = caps::cone_points(t, options.tolerances.angle)
         .iter()
         .filter(|&&c| c)
         .count();
-    let wave_options = wave_options::<S>(options, options.sources);
+    let wave_options = wave_options(options, options.sources);
     let mut delaunay = match voronoi_delaunay(t, &wave_options) {
         Ok(delaunay) => delaunay,
         // In `f64` the wave's dual can refuse a mesh whose rounding makes the traced Voronoi

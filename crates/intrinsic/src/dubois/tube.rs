@@ -381,12 +381,9 @@ impl<S: Scalar> Portalgon<S> {
         // g must also take the b₁ side's start to its end (docs/dubois.md §3.1(c), step 2).
         let q1 = m1.apply(self.end_ref(beta1));
         let err_b1 = dist2(&g.apply(&q0), &q1);
-        let acceptable = if S::EXACT {
-            err.is_zero() && err_b1.is_zero()
-        } else {
-            let limit = (tolerance * tolerance) * scale2.to_f64().max(dist2(&q0, &q1).to_f64());
-            err.to_f64() <= limit && err_b1.to_f64() <= limit
-        };
+        // Squared errors: zero exactly; rounded, within the tolerance at the sides' scale.
+        let limit = || (tolerance * tolerance) * scale2.to_f64().max(dist2(&q0, &q1).to_f64());
+        let acceptable = S::at_most_zero(&err, limit) && S::at_most_zero(&err_b1, limit);
         if !acceptable {
             return Err(TubeError::NoHolonomy { side: beta0.idx() });
         }

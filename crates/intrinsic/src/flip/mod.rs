@@ -24,17 +24,14 @@ pub(crate) mod stats;
 pub(crate) mod tessellation;
 
 use crate::error::DelaunayError;
+use crate::geometry::Tolerances;
 use crate::triangulation::mollify::mollify;
 use crate::triangulation::{IntrinsicTriangulation, store_tan_half_sq};
 use surftopo_mesh::{EdgeId, HalfedgeId, SurfaceMesh};
 
-/// Default [`DelaunayOptions::tolerance`]: an edge is flipped when `tan(γ/2) tan(δ/2)` exceeds
-/// `1 + 1e-10` (γ + δ > π + about 1e-10 radians for well-shaped triangles). Lengths computed by
-/// flips carry rounding errors that grow with the triangles' aspect ratios (on T_x, about
-/// `1e-16 · x³` in relative terms); a tolerance well above them keeps co-circular configurations
-/// from being flipped back and forth. 1e-10 leaves T_x's flip count exact up to x ≈ 10³ (see the
-/// benchmark for where it breaks down).
-pub const DEFAULT_TOLERANCE: f64 = 1e-10;
+/// Default [`DelaunayOptions::tolerance`], [`Tolerances::delaunay`]'s default (its doc says why
+/// 1e-10), as a constant for the callers that take one.
+pub const DEFAULT_TOLERANCE: f64 = Tolerances::DEFAULT.delaunay;
 
 /// Default flip budget: `10_000_000 + 1000 · edges` (see [`DelaunayOptions::max_flips`]).
 pub fn default_max_flips(edges: usize) -> u64 {
@@ -59,7 +56,7 @@ impl Default for DelaunayOptions {
         Self {
             max_flips: None,
             mollify: None,
-            tolerance: DEFAULT_TOLERANCE,
+            tolerance: Tolerances::DEFAULT.delaunay,
         }
     }
 }

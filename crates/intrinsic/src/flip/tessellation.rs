@@ -31,14 +31,16 @@
 //! canonical tessellation has V = the singular vertices (see [`crate::canonical_tessellation`],
 //! which removes the flat ones first).
 
+use crate::geometry::Tolerances;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::dense_vertex_index;
 use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind, VertexId};
 
-/// Default tolerance for co-circularity: `|tan(γ/2) tan(δ/2) - 1| <= 1e-9`.
-pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = 1e-9;
+/// [`Tolerances::cocircular`]'s default, the tolerance for co-circularity
+/// (`|tan(γ/2) tan(δ/2) - 1| <= 1e-9`), as a constant for the callers that take one.
+pub const DEFAULT_COCIRCULAR_TOLERANCE: f64 = Tolerances::DEFAULT.cocircular;
 
 /// A Delaunay tessellation with its relation to the triangulation it came from; `P` holds the
 /// polygons and their gluing: a [`Portalgon`] on a closed oriented surface, a
@@ -185,9 +187,38 @@ pub(crate) fn tessellate<C: CellSurface>(
     tolerance: f64,
     surface: &C,
 ) -> Tessellation<Cells> {
+    let merge = merge_cocircular(tri, tolerance, surface);
+    let layout = lay_out_regions(tri, surface, &merge.merged);
+    let (cells, side_halfedge) = walk_sides(tri, surface, &merge.merged, &layout);
+    Tessellation {
+        portalgon: cells,
+        faces: layout.faces,
+        face_start: layout.face_start,
+        side_halfedge,
+        merged_edges: merge.merged_edges,
+        cycle_edges: merge.cycle_edges,
+    }
+}
+
+/// The co-circular interior edges merged by [`merge_cocircular`].
+struct Merge {
+    /// Per edge slot: merged (both lifts of a surface edge alike).
+    merged: Vec<bool>,
+    /// The merged edges, first lifts, in the order merged.
+    merged_edges: Vec<EdgeId>,
+    /// Co-circular edges left unmerged because they would close a cycle.
+    cycle_edges: usize,
+}
+
+/// Merges co-circular interior edges of the surface along a spanning forest over its triangles
+/// (an edge whose two triangles are already one region is left, counted in `cycle_edges`).
+fn merge_cocircular<C: CellSurface>(
+    tri: &IntrinsicTriangulation,
+    tolerance: f64,
+    surface: &C,
+) -> Merge {
     let mesh = tri.mesh();
-    let nf = mesh.face_slots();
-    let mut regions = UnionFind::new(nf);
+    let mut regions = UnionFind::new(mesh.face_slots());
     let mut merged = vec![false; mesh.edge_slots()];
     let mut merged_edges = Vec::new();
     let mut cycle_edges = 0usize;
@@ -220,9 +251,36 @@ pub(crate) fn tessellate<C: CellSurface>(
             merged[e.idx()] = merged[first.idx()];
         }
     }
+    Merge {
+        merged,
+        merged_edges,
+        cycle_edges,
+    }
+}
 
-    // Lay out each region on one lift: position of origin(h) in the placement of face(h), per
-    // half-edge; `placed` by surface triangle, the lift's faces in `lifts`.
+/// Each region laid out on one lift by [`lay_out_regions`].
+struct Layout {
+    /// Per half-edge: the position of its origin in the placement of its face.
+    pos: Vec<[f64; 2]>,
+    /// The surface triangles of each region, sorted, region `r` at
+    /// `faces[face_start[r]..face_start[r + 1]]`.
+    faces: Vec<FaceId>,
+    face_start: Vec<u32>,
+    /// The faces of the lift each region was laid out on, region `r` at
+    /// `lifts[lift_start[r]..lift_start[r + 1]]`.
+    lifts: Vec<FaceId>,
+    lift_start: Vec<usize>,
+}
+
+/// Lays out each region on one lift, breadth first across merged edges from its first face.
+fn lay_out_regions<C: CellSurface>(
+    tri: &IntrinsicTriangulation,
+    surface: &C,
+    merged: &[bool],
+) -> Layout {
+    let mesh = tri.mesh();
+    let nf = mesh.face_slots();
+    // `placed` by surface triangle, the lift's faces in `lifts`.
     let mut pos = vec![[f64::NAN; 2]; mesh.halfedge_slots()];
     let mut placed = vec![false; nf];
     let mut faces: Vec<FaceId> = Vec::with_capacity(mesh.face_count());
@@ -284,15 +342,33 @@ pub(crate) fn tessellate<C: CellSurface>(
         faces[region..].sort_unstable();
         face_start.push(faces.len() as u32);
     }
+    Layout {
+        pos,
+        faces,
+        face_start,
+        lifts,
+        lift_start,
+    }
+}
 
-    // Boundary walks on the lifts.
+/// The polygons: the boundary walk of each region on its lift (the sides, from the least
+/// unmerged half-edge), then each side glued to the side across its edge. Returns the cells and
+/// the half-edge of each side.
+fn walk_sides<C: CellSurface>(
+    tri: &IntrinsicTriangulation,
+    surface: &C,
+    merged: &[bool],
+    layout: &Layout,
+) -> (Cells, Vec<HalfedgeId>) {
+    let mesh = tri.mesh();
+    let (pos, lifts) = (&layout.pos, &layout.lifts);
     let mut side_of = vec![u32::MAX; mesh.halfedge_slots()];
     let mut side_halfedge = Vec::with_capacity(mesh.halfedge_slots());
     let mut cells = Cells {
         side_start: vec![0],
         ..Cells::default()
     };
-    for region in lift_start.windows(2) {
+    for region in layout.lift_start.windows(2) {
         let region = &lifts[region[0]..region[1]];
         let start = region
             .iter()
@@ -338,12 +414,5 @@ pub(crate) fn tessellate<C: CellSurface>(
             cells.gluings.push((s as u32, other, reversed));
         }
     }
-    Tessellation {
-        portalgon: cells,
-        faces,
-        face_start,
-        side_halfedge,
-        merged_edges,
-        cycle_edges,
-    }
+    (cells, side_halfedge)
 }

@@ -23,12 +23,14 @@
 mod double_double;
 mod rational;
 mod scalar;
+mod tolerances;
 mod triangulate;
 
 pub use double_double::DoubleDouble;
 pub(crate) use rational::small_literal;
 pub use rational::{MAX_INPUT_BITS, ParseRationalError, Rational};
 pub use scalar::Scalar;
+pub use tolerances::Tolerances;
 pub use triangulate::triangulate_polygon;
 
 use std::cmp::Ordering;

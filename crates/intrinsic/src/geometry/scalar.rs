@@ -24,8 +24,14 @@ pub trait Scalar:
     + Sync
     + 'static
 {
-    /// Whether arithmetic is exact (`false` for `f64`).
+    /// Whether arithmetic is exact (`false` for `f64`). Algorithms ask the decision methods
+    /// below (`same_value`, `same_point`, `tie`, ...) rather than this constant.
     const EXACT: bool;
+    /// Whether Dubois' reduction (Proposition 2) on input of this type runs in
+    /// [`super::DoubleDouble`] and rounds its result back: `true` for `f64` only
+    /// (`docs/dubois.md` §4); exact types need no more precision, and `DoubleDouble` is that
+    /// precision.
+    const REDUCES_IN_DOUBLE_DOUBLE: bool = false;
     /// `"f64"` or `"exact"`, as reports and the CLI's `--json` name the arithmetic.
     const ARITHMETIC: &'static str;
 
@@ -83,6 +89,80 @@ pub trait Scalar:
     /// relative tolerance `|a − b| ≤ tolerance · max(|a|, |b|)`.
     fn lengths_match(a: &Self, b: &Self, tolerance: f64) -> bool;
 
+    // The exact/rounded decisions: exact arithmetic decides exactly and never evaluates the
+    // tolerance (a closure, often a computation); rounded arithmetic decides on doubles within
+    // it. Tolerances come from [`super::Tolerances`].
+
+    /// Whether `a` and `b` are one value: `a == b` exactly; rounded, `|a − b| ≤ tolerance`.
+    fn same_value(a: &Self, b: &Self, tolerance: impl FnOnce() -> f64) -> bool {
+        if Self::EXACT {
+            a == b
+        } else {
+            (a.to_f64() - b.to_f64()).abs() <= tolerance()
+        }
+    }
+
+    /// Whether `a ≤ b`: exactly; rounded, `a ≤ b + tolerance`.
+    fn at_most(a: &Self, b: &Self, tolerance: impl FnOnce() -> f64) -> bool {
+        if Self::EXACT {
+            a <= b
+        } else {
+            a.to_f64() <= b.to_f64() + tolerance()
+        }
+    }
+
+    /// Whether `x ≤ 0`: exactly; rounded, `x ≤ tolerance`.
+    fn at_most_zero(x: &Self, tolerance: impl FnOnce() -> f64) -> bool {
+        if Self::EXACT {
+            x.sign() != Ordering::Greater
+        } else {
+            x.to_f64() <= tolerance()
+        }
+    }
+
+    /// Whether `x` is zero: exactly; rounded, `|x| ≤ tolerance`.
+    fn negligible(x: &Self, tolerance: impl FnOnce() -> f64) -> bool {
+        if Self::EXACT {
+            x.is_zero()
+        } else {
+            x.to_f64().abs() <= tolerance()
+        }
+    }
+
+    /// Whether `a` and `b` are one point: exactly; rounded, when their squared distance is at
+    /// most `tolerance2` (a squared distance).
+    fn same_point(a: &Point<Self>, b: &Point<Self>, tolerance2: impl FnOnce() -> f64) -> bool {
+        if Self::EXACT {
+            a == b
+        } else {
+            super::dist2(a, b).to_f64() <= tolerance2()
+        }
+    }
+
+    /// The margin within which a difference is a tie: zero exactly; rounded, `tolerance` (zero
+    /// when not finite).
+    fn tie(tolerance: impl FnOnce() -> f64) -> Self {
+        if Self::EXACT {
+            Self::zero()
+        } else {
+            Self::from_f64(tolerance()).unwrap_or_else(Self::zero)
+        }
+    }
+
+    /// A tolerance that only rounded arithmetic uses: 0 exactly; rounded, `tolerance`.
+    fn slack(tolerance: impl FnOnce() -> f64) -> f64 {
+        if Self::EXACT { 0.0 } else { tolerance() }
+    }
+
+    /// The factor that keeps a computed upper bound a bound: 1 exactly; rounded, `1 + relative`.
+    fn upward_margin(relative: f64) -> Self {
+        if Self::EXACT {
+            Self::one()
+        } else {
+            Self::one() + Self::from_f64(relative).expect("a finite margin")
+        }
+    }
+
     /// `|a − b|²` (see [`super::dist2`]). The default forms the differences, squares and sum in
     /// the type's arithmetic.
     fn squared_distance(a: &Point<Self>, b: &Point<Self>) -> Self {
@@ -110,6 +190,7 @@ pub trait Scalar:
 
 impl Scalar for f64 {
     const EXACT: bool = false;
+    const REDUCES_IN_DOUBLE_DOUBLE: bool = true;
     const ARITHMETIC: &'static str = "f64";
 
     fn zero() -> Self {

@@ -7,11 +7,13 @@ use std::cmp::Ordering;
 
 use crate::error::PortalgonError;
 use crate::geometry::{
-    Motion, Point, Scalar, dist_f64, dist2, dot, orient, segments_intersect, sub, twice_signed_area,
+    Motion, Point, Scalar, Tolerances, dist_f64, dist2, dot, orient, segments_intersect, sub,
+    twice_signed_area,
 };
 
-/// Default relative tolerance on the lengths of matched sides: `|a - b| <= 1e-9 · max(a, b)`.
-pub const DEFAULT_LENGTH_TOLERANCE: f64 = 1e-9;
+/// [`Tolerances::length`]'s default, the relative tolerance on the lengths of matched sides
+/// (`|a - b| <= 1e-9 · max(a, b)`), as a constant for the callers that take one.
+pub const DEFAULT_LENGTH_TOLERANCE: f64 = Tolerances::DEFAULT.length;
 
 surftopo_mesh::id_type!(
     /// A side of a polygon of a portalgon.
@@ -51,12 +53,8 @@ pub(crate) fn points_inside<S: Scalar>(
     }
 }
 
-/// In `f64`, the least sine of the angle between a shortcut and a side at either of its
-/// endpoints ([`Portalgon::shortcut`]): below it the arc runs along the side up to rounding.
-pub const SHORTCUT_MIN_SINE: f64 = 1e-9;
-
 /// Whether the segment from corner `i` to corner `j` of `c` makes, at `i` or at `j`, an angle of
-/// sine below [`SHORTCUT_MIN_SINE`] (and positive cosine) with one of the two sides there
+/// sine below [`Tolerances::shortcut_sine`] (and positive cosine) with one of the two sides there
 /// (evaluated in `f64`; [`Portalgon::shortcut`]).
 fn arc_leaves_along_a_side<S: Scalar>(c: &[Point<S>], i: usize, j: usize) -> bool {
     let k = c.len();
@@ -75,7 +73,7 @@ fn arc_leaves_along_a_side<S: Scalar>(c: &[Point<S>], i: usize, j: usize) -> boo
                 let cross = arc[0] * s[1] - arc[1] * s[0];
                 let dot = arc[0] * s[0] + arc[1] * s[1];
                 let norms = arc[0].hypot(arc[1]) * s[0].hypot(s[1]);
-                dot > 0.0 && cross.abs() < SHORTCUT_MIN_SINE * norms
+                dot > 0.0 && cross.abs() < Tolerances::DEFAULT.shortcut_sine * norms
             })
     };
     along(i, j) || along(j, i)
@@ -670,7 +668,7 @@ impl<S: Scalar> Portalgon<S> {
     /// it lies on the boundary: no arc. In `f64` the rounded corner is off the line by an ulp and
     /// [`Self::is_arc`] (exact signs on the rounded values) accepts that segment, whose piece is a
     /// triangle of area ~1e-16 relative to its sides (zero when evaluated in `f64`). So in `f64`
-    /// an arc that leaves one of its endpoints within [`SHORTCUT_MIN_SINE`] of a side there
+    /// an arc that leaves one of its endpoints within [`Tolerances::shortcut_sine`] of a side there
     /// (the angle's sine below it, cosine positive: a sharp piece corner) is skipped when a
     /// non-degenerate arc exists; only when every arc is degenerate is the shortest of them
     /// taken (a polygon that is itself a needle of aspect ratio beyond 1e9). Exact mode is the
@@ -904,16 +902,14 @@ impl<S: Scalar> Portalgon<S> {
         let into = self.prev_side(out);
         let p = self.owner(out);
         let (a, b) = (self.start(into), self.end(out));
-        let apart = if S::EXACT {
-            a != b
-        } else {
-            // gap > tolerance · longest side, squared (no square root per side).
+        // Rounded: the gap within tolerance · longest side, squared (no square root per side).
+        let apart = !S::same_point(&a, &b, || {
             let longest2 = self.polygons[p.idx()]
                 .iter()
                 .map(|&x| self.side_length2(x).to_f64())
                 .fold(0.0, f64::max);
-            dist2(&a, &b).to_f64() > tolerance * tolerance * longest2
-        };
+            tolerance * tolerance * longest2
+        });
         if apart || self.polygons[p.idx()].len() < 5 {
             return Err(PortalgonError::NotFlat {
                 polygon: p.idx(),

@@ -47,8 +47,7 @@ mod regions;
 
 pub(crate) use self::core::points_inside;
 pub use self::core::{
-    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, SHORTCUT_MIN_SINE, SideId,
-    check_polygon, signed_area,
+    DEFAULT_LENGTH_TOLERANCE, Point2, PolygonId, Portalgon, SideId, check_polygon, signed_area,
 };
 pub use edits::{Component, EditError, VertexInfo};
 pub use regions::Regions;

@@ -15,6 +15,7 @@ pub(crate) mod quality;
 pub(crate) mod trig;
 
 use crate::error::{GeometryError, SoupError};
+use crate::geometry::Tolerances;
 use surftopo_mesh::geometry::{Point3, check_finite, edge_lengths};
 use surftopo_mesh::{BuildReport, EdgeId, FaceId, HalfedgeId, SurfaceMesh, VertexId};
 use trig::Quad;
@@ -254,7 +255,7 @@ impl IntrinsicTriangulation {
     /// Flips the edge intrinsically if its two faces differ, the quad they form is strictly
     /// convex, both new triangles, with the rounded new length, satisfy the strict triangle
     /// inequality (so the result is always a valid triangulation) and their areas add up to the
-    /// quad's within [`FLIP_AREA_TOLERANCE`] (so rounding on needle-like quads cannot change the
+    /// quad's within [`Tolerances::flip_area`] (so rounding on needle-like quads cannot change the
     /// metric: the result stays isometric to double precision); returns whether it flipped.
     pub fn flip_if_convex(&mut self, e: EdgeId) -> bool {
         self.flip_if_convex_with_margin(e, 1.0)
@@ -319,18 +320,15 @@ pub(crate) fn dense_vertex_index(tri: &IntrinsicTriangulation) -> (Vec<u32>, usi
     (index, n)
 }
 
-/// Relative change of a quad's area beyond which [`IntrinsicTriangulation::flip_if_convex`]
-/// refuses a flip: on needle-like quads the rounded new diagonal can change the area by far more
-/// than rounding of the area itself (errors grow with the squared aspect ratio), and repeated
-/// flips would drift away from the surface.
-pub const FLIP_AREA_TOLERANCE: f64 = 1e-12;
-
 /// Whether flipping the quad's diagonal to `length` keeps its area within
-/// [`FLIP_AREA_TOLERANCE`] (Kahan's areas of the two old and the two new triangles).
+/// [`Tolerances::flip_area`] (Kahan's areas of the two old and the two new triangles): on
+/// needle-like quads the rounded new diagonal can change the area by far more than rounding of
+/// the area itself (errors grow with the squared aspect ratio), and repeated flips would drift
+/// away from the surface.
 fn keeps_area(q: &Quad, length: f64) -> bool {
     let before = trig::area(q.ab, q.bc, q.ca) + trig::area(q.ab, q.ad, q.db);
     let after = trig::area(length, q.ca, q.ad) + trig::area(length, q.db, q.bc);
-    (after - before).abs() <= FLIP_AREA_TOLERANCE * before
+    (after - before).abs() <= Tolerances::DEFAULT.flip_area * before
 }
 
 /// Stores the half-angle tangents squared of the triangle with sides `lengths` into `t2`, entry

@@ -8,13 +8,15 @@
 //!   boundary vertices). Numerically: `|Θ_v - 2π| > angle_tolerance` radians, with
 //!   [`DEFAULT_ANGLE_TOLERANCE`] unless told otherwise.
 
+use crate::geometry::Tolerances;
 use crate::triangulation::IntrinsicTriangulation;
 use serde::Serialize;
 use std::f64::consts::TAU;
 use surftopo_mesh::VertexId;
 
-/// Default absolute tolerance (radians) on `|Θ_v - 2π|` below which a vertex is flat.
-pub const DEFAULT_ANGLE_TOLERANCE: f64 = 1e-9;
+/// [`Tolerances::angle`]'s default, the absolute tolerance (radians) on `|Θ_v - 2π|` below which a
+/// vertex is flat, as a constant for the callers that take one.
+pub const DEFAULT_ANGLE_TOLERANCE: f64 = Tolerances::DEFAULT.angle;
 
 /// Shape figures of an intrinsic triangulation.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -58,8 +58,7 @@ use std::cmp::Ordering;
 
 use super::wave::{SideCell, Wave};
 use crate::error::PortalgonError;
-use crate::geometry::{Motion, Point, Scalar, add, cross, dist2, dot, scale, sub};
-use crate::portalgon::DEFAULT_LENGTH_TOLERANCE;
+use crate::geometry::{Motion, Point, Scalar, Tolerances, add, cross, dist2, dot, scale, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Where a Voronoi vertex lies in its triangle.
@@ -273,15 +272,7 @@ pub(crate) fn build_dual<S: Scalar>(
                     "the edge ends at side {side2} of polygon {polygon2}, already matched"
                 )));
             }
-            out.glue(
-                s,
-                t,
-                if S::EXACT {
-                    0.0
-                } else {
-                    1e3 * DEFAULT_LENGTH_TOLERANCE
-                },
-            )?;
+            out.glue(s, t, S::slack(|| 1e3 * Tolerances::DEFAULT.length))?;
             diagram.edges.push(segments);
         }
     }
@@ -323,19 +314,7 @@ impl<S: Scalar> Dual<'_, S> {
     }
 
     fn zero_or_less(&self, x: &S, scale2: f64) -> bool {
-        if S::EXACT {
-            x.sign() != Ordering::Greater
-        } else {
-            x.to_f64() <= self.eps * scale2.sqrt()
-        }
-    }
-
-    fn same_value(&self, a: &S, b: &S, tol: f64) -> bool {
-        if S::EXACT {
-            a == b
-        } else {
-            (a.to_f64() - b.to_f64()).abs() <= tol
-        }
+        S::at_most_zero(x, || self.eps * scale2.sqrt())
     }
 
     /// The sites nearest to `x` among X_q, and their squared distance.
@@ -353,7 +332,7 @@ impl<S: Scalar> Dual<'_, S> {
         let pts = self.pts(q);
         out.extend(
             (0..pts.len() as u32)
-                .filter(|&i| self.same_value(&dist2(x, &pts[i as usize]), &best, tol)),
+                .filter(|&i| S::same_value(&dist2(x, &pts[i as usize]), &best, || tol)),
         );
     }
 
@@ -415,9 +394,9 @@ impl<S: Scalar> Dual<'_, S> {
         let point = add(x, &scale(&t, dir));
         let u = dot(&sub(&point, a), &e) / dot(&e, &e);
         let tol = self.eps / self.wave.side_length[s.idx()].max(f64::MIN_POSITIVE);
-        if self.same_value(&u, &S::zero(), tol) {
+        if S::same_value(&u, &S::zero(), || tol) {
             (Exit::Corner(s), t)
-        } else if self.same_value(&u, &S::one(), tol) {
+        } else if S::same_value(&u, &S::one(), || tol) {
             (Exit::Corner(p.next_side(s)), t)
         } else {
             (Exit::Side(s, u), t)
@@ -463,7 +442,7 @@ impl<S: Scalar> Dual<'_, S> {
             let (best, tol) = self.nearest_distance(q, &x);
             let pts = self.pts(q);
             (0..pts.len() as u32)
-                .filter(|&k| self.same_value(&dist2(&x, &pts[k as usize]), &best, tol))
+                .filter(|&k| S::same_value(&dist2(&x, &pts[k as usize]), &best, || tol))
                 .all(two_at_most)
         };
         at_most_two && count == 2 && found.contains(&i) && found.contains(&j)
@@ -519,11 +498,7 @@ impl<S: Scalar> Dual<'_, S> {
             }
         }
         let t = best?;
-        let slack = if S::EXACT {
-            S::zero()
-        } else {
-            S::from_f64(self.eps / dir2.sqrt()).unwrap_or_else(S::zero)
-        };
+        let slack = S::tie(|| self.eps / dir2.sqrt());
         (t <= t_max.clone() + slack).then(|| add(x, &scale(&t, dir)))
     }
 
@@ -538,12 +513,7 @@ impl<S: Scalar> Dual<'_, S> {
         for &s in p.polygon_sides(q) {
             let (a, b) = (p.start_ref(s), p.end_ref(s));
             let c = cross(&sub(b, a), &sub(v, a));
-            let on = if S::EXACT {
-                c.is_zero()
-            } else {
-                c.to_f64().abs() <= self.eps * self.wave.side_length[s.idx()]
-            };
-            if on {
+            if S::negligible(&c, || self.eps * self.wave.side_length[s.idx()]) {
                 return Place::Side(s);
             }
         }
@@ -551,11 +521,7 @@ impl<S: Scalar> Dual<'_, S> {
     }
 
     fn same_point(&self, a: &Point<S>, b: &Point<S>) -> bool {
-        if S::EXACT {
-            a == b
-        } else {
-            dist2(a, b).to_f64() <= 16.0 * self.eps * self.eps
-        }
+        S::same_point(a, b, || 16.0 * self.eps * self.eps)
     }
 
     /// Records the vertex at `v` in triangle `q` unless known; returns its index and whether it

@@ -48,10 +48,9 @@ pub use singular::{is_flat_vertex, wave_sources};
 pub use wave::{SideCell, Wave, WaveError, WaveOptions, run_wave};
 
 use crate::error::PortalgonError;
-use crate::geometry::Scalar;
+use crate::geometry::{Scalar, Tolerances};
 use crate::portalgon::Portalgon;
 use crate::triangulation::IntrinsicTriangulation;
-use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 
 /// The vertex set V the wave starts from.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -66,42 +65,20 @@ pub enum Sources {
 }
 
 /// Options of [`voronoi_delaunay`].
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct VoronoiOptions {
     /// V: every vertex, or the singular ones.
     pub sources: Sources,
-    /// In `f64`: a vertex is flat when its angle sum is within this many radians of 2π (exact
-    /// mode decides exactly).
-    pub angle_tolerance: f64,
-    /// The wave's options.
+    /// The wave's budget.
     pub wave: WaveOptions,
-    /// In `f64`: sites of the dual closer than this times the longest side are one point (so
-    /// near-co-circular sites make one polygon of the tessellation).
-    pub dual_tolerance: f64,
-    /// In `f64`: when the dual fails at `dual_tolerance` (traced Voronoi edges that do not close
-    /// up), it is built again at `dual_tolerance` pooling the sites of Voronoi vertices taken
-    /// for one (see the dual's module doc), then at this tolerance; the first error is reported
-    /// if both fail.
-    pub dual_retry_tolerance: Option<f64>,
-    /// In `f64`: when the wave and its dual still fail (a numerical refusal), they run again with
-    /// the wave's point tolerance and the dual's tolerances multiplied by this (e.g. 1e-3, for a
-    /// surface whose features are thousands of times smaller than its longest side, where the
-    /// tolerances taken at the longest side's scale swallow whole clusters of sites); the first
-    /// error is reported if that fails too.
-    pub finer_retry: Option<f64>,
-}
-
-impl Default for VoronoiOptions {
-    fn default() -> Self {
-        Self {
-            sources: Sources::All,
-            angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
-            wave: WaveOptions::default(),
-            dual_tolerance: WaveOptions::default().point_tolerance,
-            dual_retry_tolerance: None,
-            finer_retry: None,
-        }
-    }
+    /// In `f64` (exact mode decides exactly): flat vertices ([`Tolerances::angle`]), points of
+    /// the wave ([`Tolerances::point`]), sites of the dual ([`Tolerances::dual`]), and the
+    /// retries when the traced Voronoi edges do not close up: the dual again pooling the sites of
+    /// Voronoi vertices taken for one (see the dual's module doc), then at
+    /// [`Tolerances::dual_retry`]; then the wave and the dual again at
+    /// [`Tolerances::finer_retry`] times their tolerances. The first error is reported when
+    /// every attempt fails.
+    pub tolerances: Tolerances,
 }
 
 /// Why [`voronoi_delaunay`] failed.
@@ -208,7 +185,7 @@ pub fn voronoi_delaunay<S: Scalar>(
 ) -> Result<VoronoiDelaunay<S>, VoronoiError> {
     wave::check_input(p)?;
     let (sources, class) = match options.sources {
-        Sources::Singular => wave_sources(p, options.angle_tolerance),
+        Sources::Singular => wave_sources(p, options.tolerances.angle),
         Sources::All => {
             let (class, count) = p.vertex_classes();
             ((0..count as u32).collect(), class)
@@ -237,7 +214,7 @@ pub fn voronoi_delaunay_from<S: Scalar>(
 
 /// The wave from `sources` and its dual; corners labelled with the source index, or with `p`'s
 /// labels when `input_labels` and every corner of `p` has one. In `f64`, a numerical refusal
-/// runs both again with [`VoronoiOptions::finer_retry`]'s tolerances, when set.
+/// runs both again with [`Tolerances::finer_retry`]'s tolerances, when set.
 fn wave_and_dual<S: Scalar>(
     p: &Portalgon<S>,
     sources: Vec<u32>,
@@ -245,32 +222,31 @@ fn wave_and_dual<S: Scalar>(
     options: &VoronoiOptions,
     input_labels: bool,
 ) -> Result<VoronoiDelaunay<S>, VoronoiError> {
-    let factor = options.finer_retry.filter(|_| !S::EXACT);
+    let (wave, tolerances) = (&options.wave, &options.tolerances);
+    let factor = tolerances.finer_retry.filter(|_| !S::EXACT);
     let retry_sources = factor.map(|_| sources.clone());
-    match wave_and_dual_at(p, sources, class, options, input_labels) {
+    match wave_and_dual_at(p, sources, class, wave, tolerances, input_labels) {
         Err(first) if first.is_numerical() => {
             let (Some(factor), Some(sources)) = (factor, retry_sources) else {
                 return Err(first);
             };
-            let mut finer = *options;
-            finer.wave.point_tolerance *= factor;
-            finer.dual_tolerance *= factor;
-            finer.dual_retry_tolerance = finer.dual_retry_tolerance.map(|t| t * factor);
-            wave_and_dual_at(p, sources, class, &finer, input_labels).map_err(|_| first)
+            let finer = tolerances.finer_wave(factor);
+            wave_and_dual_at(p, sources, class, wave, &finer, input_labels).map_err(|_| first)
         }
         result => result,
     }
 }
 
-/// [`wave_and_dual`] at the tolerances of `options` (the dual retried as they say).
+/// [`wave_and_dual`] at the given tolerances (the dual retried as they say).
 fn wave_and_dual_at<S: Scalar>(
     p: &Portalgon<S>,
     sources: Vec<u32>,
     class: &[u32],
-    options: &VoronoiOptions,
+    wave_options: &WaveOptions,
+    tolerances: &Tolerances,
     input_labels: bool,
 ) -> Result<VoronoiDelaunay<S>, VoronoiError> {
-    let wave = run_wave(p, &sources, class, &options.wave)?;
+    let wave = run_wave(p, &sources, class, wave_options, tolerances)?;
     let mut labels = vec![u32::MAX; class.iter().map(|&c| c as usize + 1).max().unwrap_or(0)];
     let labelled = p.sides().all(|s| p.vertex_label(s).is_some());
     for (k, &c) in sources.iter().enumerate() {
@@ -283,14 +259,14 @@ fn wave_and_dual_at<S: Scalar>(
             labels[class[s.idx()] as usize] = p.vertex_label(s).expect("labelled");
         }
     }
-    let tolerance = options.dual_tolerance;
+    let tolerance = tolerances.dual;
     // |V|: the sources that are vertex classes of `p` (others are ignored).
     let in_v = sources
         .iter()
         .filter(|&&c| (c as usize) < labels.len())
         .count();
     let out = match dual::build_dual(p, &wave, &labels, tolerance, false, in_v) {
-        Err(first) if !S::EXACT => match options.dual_retry_tolerance {
+        Err(first) if !S::EXACT => match tolerances.dual_retry {
             Some(t) => dual::build_dual(p, &wave, &labels, tolerance, true, in_v)
                 .or_else(|_| dual::build_dual(p, &wave, &labels, t, false, in_v))
                 .map_err(|_| first)?,

@@ -25,7 +25,7 @@
 //! deletions).
 //!
 //! Deviations and decisions:
-//! - In `f64`, "x ∈ X_Δ" is decided up to `point_tolerance · L` (L the longest side of the
+//! - In `f64`, "x ∈ X_Δ" is decided up to `point_tolerance · L` ([`Tolerances::point`]) (L the longest side of the
 //!   portalgon): the same surface point reached along two routes differs by rounding. In exact
 //!   mode it is equality.
 //! - In `f64`, two sites tie on a side where their squared distances differ by at most
@@ -41,7 +41,7 @@ use std::cmp::{Ordering, Reverse};
 use std::collections::{BinaryHeap, HashMap};
 
 use super::flat::FlatLists;
-use crate::geometry::{Motion, Point, Scalar, dist2, dot, sub};
+use crate::geometry::{Motion, Point, Scalar, Tolerances, dist2, dot, sub};
 use crate::portalgon::{PolygonId, Portalgon, SideId};
 
 /// Constellations up to this size are searched by a scan; larger ones through a hash grid.
@@ -160,25 +160,13 @@ impl<S: Scalar> Ord for Event<S> {
 }
 
 /// Options of [`run_wave`].
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WaveOptions {
-    /// In `f64`: points of a constellation closer than this times the longest side are the same.
-    pub point_tolerance: f64,
     /// Give up after this many events (points added); `None`: `64 n + 4·10⁶` for `n` triangles
     /// (T_x needs about `2x`; a mesh near Delaunay about one per triangle).
     pub max_events: Option<u64>,
     /// Give up once the work exceeds this; `None`: [`MAX_WAVE_WORK`].
     pub max_work: Option<u64>,
-}
-
-impl Default for WaveOptions {
-    fn default() -> Self {
-        Self {
-            point_tolerance: 1e-9,
-            max_events: None,
-            max_work: None,
-        }
-    }
 }
 
 /// Checks that `p` is a closed triangular portalgon with dense ids.
@@ -201,7 +189,8 @@ pub(crate) fn check_input<S: Scalar>(p: &Portalgon<S>) -> Result<(), WaveError> 
 }
 
 /// Runs the wave from the vertex classes `sources` (V; see [`super::wave_sources`]) on a closed
-/// triangular portalgon with dense ids; `class` gives the vertex class of each side's start.
+/// triangular portalgon with dense ids; `class` gives the vertex class of each side's start. In
+/// `f64`, points closer than [`Tolerances::point`] times the longest side are one.
 ///
 /// # Errors
 /// [`WaveError::Input`] for another portalgon, [`WaveError::Budget`].
@@ -210,6 +199,7 @@ pub fn run_wave<S: Scalar>(
     sources: &[u32],
     class: &[u32],
     options: &WaveOptions,
+    tolerances: &Tolerances,
 ) -> Result<Wave<S>, WaveError> {
     check_input(p)?;
     let n = p.polygon_slots();
@@ -239,7 +229,7 @@ pub fn run_wave<S: Scalar>(
         to_mate,
         events: 0,
         stale_events: 0,
-        point_tolerance: options.point_tolerance,
+        point_tolerance: tolerances.point,
         scale,
         side_length,
         index: HashMap::new(),
@@ -356,11 +346,7 @@ impl<S: Scalar> Wave<S> {
     /// Whether two points are the same point of a constellation (exactly, or within the tolerance
     /// in `f64`).
     pub fn same_point(&self, a: &Point<S>, b: &Point<S>) -> bool {
-        if S::EXACT {
-            a == b
-        } else {
-            dist2(a, b).to_f64() <= self.eps() * self.eps()
-        }
+        S::same_point(a, b, || self.eps() * self.eps())
     }
 
     /// The index of point `x` in the constellation of triangle `q`, if present.
@@ -511,12 +497,7 @@ impl<S: Scalar> Wave<S> {
         let side_len = self.side_length[s.idx()];
         let eps = self.eps();
         let tie = |j: u32| -> S {
-            if S::EXACT {
-                S::zero()
-            } else {
-                let r = dist2(a, &pts[j as usize]).to_f64().sqrt() + side_len;
-                S::from_f64(4.0 * eps * r).unwrap_or_else(S::zero)
-            }
+            S::tie(|| 4.0 * eps * (dist2(a, &pts[j as usize]).to_f64().sqrt() + side_len))
         };
         let sgn = |x: &S, tol: &S| {
             if *x > *tol {
