@@ -204,7 +204,9 @@ impl CubicGraph {
         time += 1;
         stack.push((0, u32::MAX, 0));
         let mut bridge: Option<u32> = None;
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         while let Some(top) = stack.last_mut() {
+            ticker.tick();
             let (v, via, slot) = *top;
             if slot < 3 {
                 top.2 += 1;

@@ -8,7 +8,8 @@
 //! (`KeyboardInterrupt` for Ctrl-C) within one slice, and the call returns nothing. The work
 //! touches no Python object, so nothing Python sees is left half-done. The work then stops too:
 //! it runs under [`surftopo_mesh::stop::run_stoppable`] with the [`Stop`] flag the interrupt
-//! sets, and the long loops of the libraries (flips, the wave, Dubois' reduction, Diks–Stanczyk,
+//! sets, and the long loops of the libraries (flips, the wave, Dubois' reduction, Diks–Stanczyk
+//! with its dual's bridge check and its dynamic connectivity's build, the mesh build's steps,
 //! the irreducible reductions) read it every [`surftopo_mesh::stop::CHECK_EVERY`] steps and
 //! unwind; the census reads the same flag through its `stop` hook.
 

@@ -267,11 +267,15 @@ fn exact_portalgon(
 #[pyclass(frozen, module = "surftopo", name = "Portalgon")]
 pub struct Portalgon {
     doc: PortalgonDoc,
+    /// Why doubles cannot hold the document's exact corners (it is valid exactly): the error
+    /// every double-precision use gives.
+    exact_only: Option<surftopo_intrinsic::PortalgonError>,
 }
 
 #[pymethods]
 impl Portalgon {
-    /// Parses and validates a portalgon JSON text.
+    /// Parses and validates a portalgon JSON text (exact corners valid exactly are kept even
+    /// where doubles cannot hold them, for `exact=True`).
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
         let doc =
@@ -279,11 +283,24 @@ impl Portalgon {
         if doc.needs_cover() {
             // Triangles with free sides, reversed gluings (version 2) or several pieces.
             Covered::from_doc(&doc).map_err(|f| f.into_pyerr(py))?;
-        } else {
-            doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE)
-                .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
+            return Ok(Self {
+                doc,
+                exact_only: None,
+            });
         }
-        Ok(Self { doc })
+        // Exact corners that doubles cannot hold (a side of 10^30 + 1 rounds to a zero side)
+        // are kept when they are valid exactly: `exact=True` computes on them, the
+        // double-precision methods refuse them with this error.
+        let exact_only = doc.to_portalgon(DEFAULT_LENGTH_TOLERANCE).err();
+        if let Some(e) = &exact_only {
+            let exact_ok = doc
+                .to_portalgon_in::<Rational>(0.0)
+                .is_ok_and(|p| p.check_closed().is_ok());
+            if !exact_ok {
+                return Err(Failure::Portalgon(e.clone()).into_pyerr(py));
+            }
+        }
+        Ok(Self { doc, exact_only })
     }
 
     /// The JSON text (compact, one line).
@@ -345,6 +362,9 @@ impl Portalgon {
 impl Portalgon {
     /// The intrinsic triangulation of a triangular portalgon.
     fn triangulation(&self) -> Result<IntrinsicTriangulation, Failure> {
+        if let Some(e) = &self.exact_only {
+            return Err(Failure::Portalgon(e.clone()));
+        }
         self.doc
             .to_triangulation(DEFAULT_LENGTH_TOLERANCE)
             .map_err(Failure::Portalgon)
@@ -468,7 +488,10 @@ impl Intrinsic {
                 PortalgonDoc::from_portalgon(&t.portalgon)
             }
         });
-        Ok(Portalgon { doc })
+        Ok(Portalgon {
+            doc,
+            exact_only: None,
+        })
     }
 
     /// The triangulation as portalgon JSON (triangles by their side lengths), as
@@ -482,7 +505,10 @@ impl Intrinsic {
     /// The triangulation as a [`Portalgon`].
     fn to_portalgon(&self, py: Python<'_>) -> PyResult<Portalgon> {
         let doc = self.doc().map_err(|f| f.into_pyerr(py))?;
-        Ok(Portalgon { doc })
+        Ok(Portalgon {
+            doc,
+            exact_only: None,
+        })
     }
 
     /// The faces `(m, 3)` as output vertex indices, corner `i` to corner `i + 1` being side `i`.
@@ -1186,5 +1212,6 @@ pub fn flat_torus(py: Python<'_>, x: f64, m: u32) -> PyResult<Portalgon> {
         .map_err(|e| Failure::Portalgon(e).into_pyerr(py))?;
     Ok(Portalgon {
         doc: PortalgonDoc::from_triangulation(&tri, TriangleStyle::Lengths),
+        exact_only: None,
     })
 }

@@ -11,6 +11,7 @@ second over the next second (a worker still running would add up to a second per
 
 from __future__ import annotations
 
+import json
 import signal
 import subprocess
 import sys
@@ -59,22 +60,32 @@ CALLS = {
     "isometric": ("T = surftopo.flat_torus(10000.0, 100)", "surftopo.isometric(T, T)"),
     # Irreducible genus-2 triangulations up to 11 vertices: 35 s debug (its search also stops).
     "census": ("", "surftopo.census('genus-2', max_vertices=11)"),
-    # Theorem 1 in exact arithmetic on a doubled right triangle of height 1e-12: minutes.
+    # Theorem 1 in exact arithmetic on a pillowcase sheared by 10^100: about 15 s of CPU in a
+    # release build (results/exact_growth.md), longer in debug.
     "dubois": (
-        "T = surftopo.Portalgon.from_json(THIN_PILLOWCASE)",
+        "T = surftopo.Portalgon.from_json(SHEARED_PILLOWCASE)",
         "surftopo.intrinsic_delaunay(T, method='dubois', exact=True)",
     ),
 }
 
-THIN_PILLOWCASE = """{"polygons": [
-  {"corners": [[0, 0], [1, 0], [0, "1/1000000000000"]]},
-  {"corners": [[0, 0], [0, "-1/1000000000000"], [1, 0]]}],
- "matching": [[[0, 0], [1, 2]], [[0, 1], [1, 1]], [[0, 2], [1, 0]]]}"""
+# Two unit squares sheared by X = 10^100, glued into a pillowcase (four cone points of angle
+# pi): the triangles of `surftopo_intrinsic::pillowcase` for u = (1, 0), v = (X, 1).
+X = 10**100
+SHEARED_PILLOWCASE = json.dumps({
+    "polygons": [
+        {"corners": [[0, 0], [1, 0], [str(X), 1]]},
+        {"corners": [[1, 0], [str(X + 1), 1], [str(X), 1]]},
+        {"corners": [[1, 0], [2, 0], [str(X + 1), 1]]},
+        {"corners": [[2, 0], [str(X + 2), 1], [str(X + 1), 1]]},
+    ],
+    "matching": [[[0, 0], [2, 0]], [[1, 1], [3, 1]], [[0, 2], [3, 0]],
+                 [[0, 1], [1, 2]], [[1, 0], [2, 2]], [[2, 1], [3, 2]]],
+})
 
 SCRIPT = """
 import sys, time
 import surftopo
-THIN_PILLOWCASE = {pillowcase!r}
+SHEARED_PILLOWCASE = {pillowcase!r}
 {grid}
 {setup}
 print("calling", flush=True)
@@ -98,7 +109,7 @@ print("after", Q.shape[0], stats["paired_percent"], flush=True)
 @pytest.mark.parametrize("name", sorted(CALLS))
 def test_ctrl_c_stops_a_long_call_promptly(name):
     setup, call = CALLS[name]
-    script = SCRIPT.format(grid=GRID, setup=setup, call=call, pillowcase=THIN_PILLOWCASE)
+    script = SCRIPT.format(grid=GRID, setup=setup, call=call, pillowcase=SHEARED_PILLOWCASE)
     child = subprocess.Popen(
         [sys.executable, "-c", textwrap.dedent(script)],
         stdout=subprocess.PIPE,

@@ -158,3 +158,22 @@ def test_refused_methods_and_arithmetics_say_why():
         surftopo.intrinsic_delaunay(V, F, method="delaunay")
     with pytest.raises(surftopo.InvalidInputError, match="flip"):
         surftopo.intrinsic_delaunay(V, F, method="voronoi", max_flips=10)
+
+
+def test_exact_corners_beyond_doubles_are_kept_for_exact_runs():
+    # T_x for x = 10^30 + 1 by exact corners: in doubles x + 1 rounds to x (a zero side), so
+    # only the exact methods can take it; the document is read, and the double-precision run
+    # refuses it with the rounding's error.
+    x = 10**30
+    text = (
+        '{"polygons": [{"corners": [["0", "0"], ["1", "0"], ["%d", "2"]]},'
+        ' {"corners": [["1", "0"], ["%d", "2"], ["%d", "2"]]}],'
+        ' "matching": [[[0, 0], [1, 1]], [[0, 1], [1, 2]], [[0, 2], [1, 0]]]}' % (x, x + 1, x)
+    )
+    t = surftopo.Portalgon.from_json(text)
+    assert t.polygon_count == 2
+    with pytest.raises(surftopo.PortalgonError):
+        surftopo.intrinsic_delaunay(t)
+    d = surftopo.intrinsic_delaunay(t, method="dubois", exact=True)
+    # D_x of an integer x is the rectangle 1 x 2 cut by a diagonal: lengths 1, 2 and sqrt(5).
+    assert sorted(np.round(d.edge_lengths, 12)) == pytest.approx([1.0, 2.0, math.sqrt(5)])

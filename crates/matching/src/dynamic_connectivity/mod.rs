@@ -165,6 +165,7 @@ impl DynamicConnectivity {
         let mut seen = vec![false; n];
         let mut stack: Vec<(u32, u32, u32)> = Vec::new(); // (vertex, entering edge, next adj index)
         let mut seq: Vec<u32> = Vec::new();
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         for root in 0..node_count {
             if seen[root as usize] {
                 continue;
@@ -177,6 +178,7 @@ impl DynamicConnectivity {
             seq.push(dc.vbase[root as usize]);
             stack.push((root, NIL, start[root as usize]));
             while let Some(top) = stack.last_mut() {
+                ticker.tick();
                 let (v, via, idx) = *top;
                 if idx < start[v as usize + 1] {
                     top.2 += 1;

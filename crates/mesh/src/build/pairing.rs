@@ -117,16 +117,23 @@ impl<'a> CornerPairing<'a> {
             });
             return refused(ins, refusals);
         }
+        // Between the steps, a stop asked for ends the work (`crate::stop`).
         let indexed = check_indices(vertex_count, triangles, &mut ins);
+        crate::stop::check();
         let sorted = sort_corners(&indexed);
+        crate::stop::check();
         let mut edges = pair_edges(&indexed, sorted, &mut ins, &mut refusals);
+        crate::stop::check();
         let all_valid = indexed.valid.iter().all(|&ok| ok);
         let consistent = !edges.same_direction.iter().any(|&same| same);
         if all_valid {
             check_fans(&indexed, &edges, consistent, &mut ins);
         }
+        crate::stop::check();
         count_components(&indexed, &mut edges, all_valid, &mut ins, &mut refusals);
+        crate::stop::check();
         let flip = orient(&indexed, &edges, consistent, &mut ins, &mut refusals);
+        crate::stop::check();
         CornerPairing {
             inspection: ins,
             remapped: indexed.remapped,

@@ -507,6 +507,10 @@ class Portalgon:
     def from_json(text: str) -> Portalgon:
         """Parse and validate a portalgon JSON text (:class:`PortalgonError` otherwise).
 
+        Exact corners (strings such as ``"1/3"`` or ``"1e100"``) that are valid exactly are
+        kept even where doubles cannot hold them: ``intrinsic_delaunay(..., exact=True)``
+        computes on them; the double-precision methods refuse them with the rounding's error.
+
         Version 2 is read: a file of triangles with unmatched sides (boundary), gluings flagged
         ``true`` (orientation-reversing) or several pieces, as ``surftopo delaunay -o`` writes
         it for such a mesh, is a surface for :func:`intrinsic_delaunay` and :func:`isometric`.
