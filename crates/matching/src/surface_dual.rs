@@ -30,6 +30,9 @@
 
 use surftopo_mesh::{ClosedCover, FaceId, HalfedgeId, Lifting};
 
+use prefetch_index::prefetch_index;
+
+use crate::augment::PREFETCH_AHEAD;
 use crate::dual_graph::{DualGraph, NONE, flat_adjacency_methods};
 
 /// The dual graph of a compact surface (see the module doc), as flat arrays.
@@ -136,32 +139,58 @@ impl SurfaceDual {
 }
 
 /// The connected components of any [`DualGraph`]: per node slot its component (`u32::MAX` for
-/// removed slots), numbered in the order of their first node, and their number. A depth-first
+/// removed slots), numbered in the order of their first node, and their number. A breadth-first
 /// search over the adjacency ([`DualGraph::adjacent`]; boundary sides and loops join nothing):
-/// one read of each node's neighbours, in the order of the node ids where neighbours have close
-/// ids, rather than a disjoint-set union per edge with its random finds. O(n).
+/// one read of each node's neighbours, rather than a disjoint-set union per edge with its random
+/// finds. O(n).
 pub fn components_of<G: DualGraph + ?Sized>(graph: &G) -> (Vec<u32>, usize) {
+    let mut component = vec![NONE; graph.node_slots()];
+    let count = label_components(graph, &mut component, |_| {});
+    (component, count)
+}
+
+/// The search of [`components_of`]: labels `component` (all `NONE` on entry, one entry per node
+/// slot), calls `on_component` with the number of nodes of each component once it is labelled,
+/// and returns the number of components.
+///
+/// Breadth-first, because the queue tells which nodes come next: the adjacency of the node
+/// [`PREFETCH_AHEAD`] places ahead is asked for early, so the reads of a large graph overlap
+/// instead of stalling one after the other (a depth-first stack knows its next node only when
+/// it pops it; on a 100k-face open mesh that search waited on those reads most of its time).
+/// The labels do not depend on the order of the search.
+pub(crate) fn label_components<G: DualGraph + ?Sized>(
+    graph: &G,
+    component: &mut [u32],
+    mut on_component: impl FnMut(usize),
+) -> usize {
     let slots = graph.node_slots();
-    let mut component = vec![NONE; slots];
-    let mut stack = Vec::new();
+    let flat = graph.flat_adjacency();
+    let mut queue = Vec::with_capacity(slots);
     let mut count = 0;
     for start in 0..slots as u32 {
         if component[start as usize] != NONE || !graph.is_node(start) {
             continue;
         }
         component[start as usize] = count;
-        stack.push(start);
-        while let Some(v) = stack.pop() {
+        queue.clear();
+        queue.push(start);
+        let mut head = 0;
+        while let Some(&v) = queue.get(head) {
+            if let (Some(adjacency), Some(&ahead)) = (flat, queue.get(head + PREFETCH_AHEAD)) {
+                prefetch_index(adjacency, ahead as usize);
+            }
+            head += 1;
             for (_, w) in graph.adjacent(v) {
                 if w != NONE && component[w as usize] == NONE {
                     component[w as usize] = count;
-                    stack.push(w);
+                    queue.push(w);
                 }
             }
         }
+        on_component(queue.len());
         count += 1;
     }
-    (component, count as usize)
+    count as usize
 }
 
 impl DualGraph for SurfaceDual {

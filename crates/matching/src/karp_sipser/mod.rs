@@ -51,7 +51,7 @@ use std::time::Instant;
 
 use crate::augment::{AugmentError, AugmentStats, Goal, OnPath, Outcome, Search, complete};
 use crate::dual_graph::{CompactDual, DualGraph, NONE, Pairing};
-use crate::surface_dual::components_of;
+use crate::surface_dual::label_components;
 use file_order::file_order_pairing;
 use greedy::Greedy;
 use guided::GuidedCompletion;
@@ -286,14 +286,13 @@ fn unpaired_nodes<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) -> Vec<u
 }
 
 /// The connected components of `graph` with an odd number of nodes: every matching leaves at
-/// least this many nodes unmatched.
+/// least this many nodes unmatched. Counted as the components are found
+/// ([`label_components`]), without a pass over their labels.
 fn odd_pieces<G: DualGraph + ?Sized>(graph: &G) -> usize {
-    let (component, count) = components_of(graph);
-    let mut odd = vec![false; count];
-    for &c in component.iter().filter(|&&c| c != NONE) {
-        odd[c as usize] ^= true;
-    }
-    odd.iter().filter(|&&o| o).count()
+    let mut component = vec![NONE; graph.node_slots()];
+    let mut odd = 0;
+    label_components(graph, &mut component, |size| odd += size % 2);
+    odd
 }
 
 /// [`Pairs::free`] of a paired node.
