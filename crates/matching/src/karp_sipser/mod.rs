@@ -224,6 +224,8 @@ fn run<G: DualGraph + ?Sized>(
     if goal == Goal::Maximum {
         greedy.seed_low_degrees(&mut pairs);
     }
+    // The nodes without a neighbour, each a piece of one node (stranded by the seeding).
+    let lone = pairs.stranded;
     let mut repairs = Repairs::new(compact.node_slots(), options.repair_budget);
     greedy.run(&mut pairs, &mut repairs);
     let mut deferred = greedy.into_deferred();
@@ -238,9 +240,12 @@ fn run<G: DualGraph + ?Sized>(
     let mut barrier_nodes = Vec::new();
     // To a maximum: from every unpaired node, down to the floor of Tutte–Berge with an empty
     // barrier (a maximum matching leaves at least one node of every odd piece unpaired); when KS
-    // leaves exactly that many, it is maximum without a search.
+    // leaves exactly that many, it is maximum without a search. The pieces are counted only when
+    // KS leaves more than the lone nodes plus the parity of the others: that many odd pieces
+    // there are at least, so leaving no more, KS has left exactly one node per odd piece (the
+    // same floor, without a pass over the graph).
     let pending = match goal {
-        Goal::Maximum if pairs.unpaired > 0 => {
+        Goal::Maximum if pairs.unpaired > lone + (nodes - lone) % 2 => {
             let floor = odd_pieces(&compact);
             let unpaired = unpaired_nodes(&compact, &pairs.mates);
             (unpaired.len() > floor).then_some((unpaired, Some(floor)))
@@ -250,7 +255,11 @@ fn run<G: DualGraph + ?Sized>(
     };
     if let Some((pending, floor)) = pending {
         let complete_start = Instant::now();
-        let before = stats.augment.reached;
+        let (before, paths_before, pending_count) = (
+            stats.augment.reached,
+            stats.augment.augmentations,
+            pending.len(),
+        );
         let search = pairs
             .search
             .get_or_insert_with(|| Search::new(graph.node_slots()));
@@ -264,8 +273,10 @@ fn run<G: DualGraph + ?Sized>(
             &mut stats.augment,
         )?;
         // Above the floor, the completion ended with a search from every unpaired node that
-        // found no augmenting path: its odd nodes are the barrier.
-        if floor.is_some_and(|f| unpaired_nodes(&compact, &pairs.mates).len() > f) {
+        // found no augmenting path: its odd nodes are the barrier. (With a floor the pending
+        // nodes were every unpaired node, and each path paired two of them.)
+        let paths = stats.augment.augmentations - paths_before;
+        if floor.is_some_and(|f| pending_count - 2 * paths > f) {
             barrier_nodes = search.odd_nodes();
         }
         stats.augmentation_seconds += complete_start.elapsed().as_secs_f64();
