@@ -153,14 +153,16 @@ impl Greedy {
     /// free degree 0, which no path reaches, count as stranded (never repaired, never deferred:
     /// they stay unpaired).
     pub(super) fn seed_low_degrees<G: DualGraph + ?Sized>(&mut self, pairs: &mut Pairs<G>) {
-        for v in 0..pairs.graph.node_slots() as u32 {
-            if !pairs.graph.is_node(v) {
+        // The degree first: most nodes have two or three neighbours, and only the others need
+        // the test of a live slot (a removed slot has degree 0).
+        for (v, &degree) in pairs.free.iter().enumerate() {
+            if degree > 1 || !pairs.graph.is_node(v as u32) {
                 continue;
             }
-            match pairs.free[v as usize] {
-                0 => pairs.stranded += 1,
-                1 => self.forced.push(v),
-                _ => {}
+            if degree == 0 {
+                pairs.stranded += 1;
+            } else {
+                self.forced.push(v as u32);
             }
         }
         // The forced stack is taken from its top: the lowest ids first.

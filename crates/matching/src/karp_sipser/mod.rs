@@ -292,7 +292,7 @@ fn run<G: DualGraph + ?Sized>(
 /// The live nodes of `graph` that `mates` leaves unpaired, in increasing order.
 fn unpaired_nodes<G: DualGraph + ?Sized>(graph: &G, mates: &[[u32; 2]]) -> Vec<u32> {
     (0..graph.node_slots() as u32)
-        .filter(|&v| graph.is_node(v) && mates[v as usize][0] == NONE)
+        .filter(|&v| mates[v as usize][0] == NONE && graph.is_node(v))
         .collect()
 }
 
