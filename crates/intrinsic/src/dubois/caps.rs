@@ -145,7 +145,7 @@ fn smallest_height2<S: Scalar>(t: &Portalgon<S>, p: PolygonId) -> S {
 }
 
 /// The squared smallest height `d²` and squared longest side `L²` of a triangular portalgon.
-fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
+pub(crate) fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
     let mut d2: Option<S> = None;
     let mut l2 = S::zero();
     for p in t.polygons() {
