@@ -370,26 +370,13 @@ fn thin_pillowcase_in_double_precision_stops_naming_exact() {
     let dir = tempfile::tempdir().unwrap();
     let input = write(dir.path(), "pillowcase.json", THIN_RIGHT_PILLOWCASE);
     assert!(std::fs::metadata(&input).unwrap().len() < 300);
-    let out = run(&[
-        "delaunay",
-        s(&input),
-        "--json",
-        "--method",
-        "dubois",
-        "--time-limit",
-        "120",
-    ]);
+    let dubois = |arithmetic: &[&str]| {
+        let base = ["delaunay", s(&input), "--json", "--method", "dubois"];
+        run(&[&base[..], arithmetic, &["--time-limit", "120"]].concat())
+    };
+    let out = dubois(&[]);
     assert_code(&out, 4, &[s(&input), "cannot resolve", "--exact"]);
-    let out = run(&[
-        "delaunay",
-        s(&input),
-        "--json",
-        "--method",
-        "dubois",
-        "--exact",
-        "--time-limit",
-        "120",
-    ]);
+    let out = dubois(&["--exact"]);
     assert_code(&out, 0, &[]);
     let report: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
     assert_eq!(report["non_delaunay_edges"], 0, "{report}");
