@@ -81,7 +81,8 @@ pub use reduction::{
 use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon};
 use crate::voronoi::{
-    Sources, VoronoiDelaunay, VoronoiOptions, voronoi_delaunay, voronoi_delaunay_from,
+    Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, WaveError, voronoi_delaunay,
+    voronoi_delaunay_from,
 };
 use caps::{in_local_frames, laid_out_in_double_double, proposition_2_with_apexes};
 
@@ -113,6 +114,17 @@ pub struct ConeDelaunay<S: Scalar> {
 /// # Errors
 /// [`CapsError`]: bad input, ALGORITHM's or the wave's errors.
 pub fn delaunay_tessellation_dubois<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<ConeDelaunay<S>, CapsError> {
+    theorem_1(t, options).map_err(|e| match e {
+        CapsError::Voronoi(VoronoiError::Wave(WaveError::Work(work))) => CapsError::WaveWork(work),
+        e => e,
+    })
+}
+
+/// [`delaunay_tessellation_dubois`], the wave's work budget reported as the wave's.
+fn theorem_1<S: Scalar>(
     t: &Portalgon<S>,
     options: &FlatDelaunayOptions,
 ) -> Result<ConeDelaunay<S>, CapsError> {
