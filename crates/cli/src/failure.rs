@@ -6,7 +6,7 @@
 //! | 1 | internal failure (`isometric`: not isometric) |
 //! | 2 | invalid input or usage, or an output that cannot be written (missing folder, read-only or full disk, a full or closed stdout or pipe): something the user must fix |
 //! | 3 | `isometric` only: double precision cannot decide |
-//! | 4 | numerical failure: double precision could not finish on valid input (flipping's breakdown, the f64 wave, exact corners that doubles flatten); `isometric`: internal failure ([`ISOMETRIC_INTERNAL_FAILURE`]) |
+//! | 4 | numerical failure: double precision could not finish on valid input (flipping's breakdown, the f64 wave, exact corners that doubles flatten or cannot hold, Theorem 1 in f64 below the wave's resolution); `isometric`: internal failure ([`ISOMETRIC_INTERNAL_FAILURE`]) |
 //! | 128 + N | stopped by signal N (SIGHUP 129, SIGINT 130, SIGTERM 143) after removing temporary files |
 
 use std::fmt;

@@ -283,8 +283,9 @@ fn item4_matrices_are_finite_and_scale_free() {
     let out = delaunay(&dir.path().join("m1e0.obj"), &["--mollify", "1e308"]);
     assert_fails(&out, 2, &["mollification epsilon 1e308"]);
     let torus = dir.path().join("t.json");
-    // T_x with x = 1e300 is written by its exact corners; flipping in double precision refuses
-    // it (exit 2, nothing written). (The exact methods' D_x is tested in the intrinsic crate.)
+    // T_x with x = 1e300 is written by its exact corners; its lengths overflow doubles, so
+    // flipping in double precision refuses it as a numerical failure naming --exact (exit 4,
+    // nothing written). (The exact methods' D_x is tested in the intrinsic crate.)
     let out = run(&["generate", "flat-torus", "--x", "1e300", "-o", s(&torus)]);
     assert_eq!(
         out.status.code(),
@@ -294,7 +295,7 @@ fn item4_matrices_are_finite_and_scale_free() {
     );
     let tri = dir.path().join("t-delaunay.json");
     let out = run(&["delaunay", s(&torus), "-o", s(&tri)]);
-    assert_fails(&out, 2, &["not finite"]);
+    assert_fails(&out, 4, &["cannot hold", "--exact"]);
     assert!(!tri.exists());
 }
 

@@ -275,3 +275,109 @@ fn item5_a_vertex_near_another_is_not_a_proof_of_difference() {
         );
     }
 }
+
+/// Item 2 of the remaining list: exact corners that doubles cannot hold (Dubois' `T_x` for
+/// `x = 10³⁰` by exact integers, whose rounded lengths make a triangle of area 5·10²⁹ instead of
+/// 1; a square torus offset by 10³⁰, whose rounded corners collapse) are never computed on
+/// silently without `--exact`: `delaunay` by every method, with or without `--tessellation`,
+/// exits 4 naming `--exact` and writes nothing; `isometric` says undecidable in double
+/// precision (exit 3) naming `--exact`; a surface with boundary (which exact arithmetic does
+/// not take) exits 4 saying so. With `--exact` the same files are computed; exact corners that
+/// doubles hold closely enough (`x = 1000/3`) still run in double precision.
+#[test]
+fn exact_corners_beyond_doubles_are_not_rounded_silently() {
+    let dir = tempfile::tempdir().unwrap();
+    let (x, x1) = (
+        "1000000000000000000000000000000",
+        "1000000000000000000000000000001",
+    );
+    let torus = flat_torus(dir.path(), x);
+    let square = write(
+        dir.path(),
+        "square.json",
+        &format!(
+            r#"{{"polygons":[{{"corners":[["{x}",0],["{x1}",0],["{x1}",1],["{x}",1]]}}],
+                "matching":[[[0,0],[0,2]],[[0,1],[0,3]]]}}"#
+        ),
+    );
+    // The same torus cut into two triangles: their lengths (measured exactly, rounded once:
+    // 1, 1, √2) are what double precision computes on, and they hold the surface, so every
+    // method runs; exactly, the same.
+    let halves = write(
+        dir.path(),
+        "halves.json",
+        &format!(
+            r#"{{"polygons":[{{"corners":[["{x}",0],["{x1}",0],["{x1}",1]]}},
+                             {{"corners":[["{x}",0],["{x1}",1],["{x}",1]]}}],
+                "matching":[[[0,0],[1,1]],[[0,1],[1,2]],[[0,2],[1,0]]]}}"#
+        ),
+    );
+    let tess = dir.path().join("tess.json");
+    for file in [&torus, &square] {
+        for method in ["auto", "flip", "voronoi", "dubois"] {
+            let out = run(&["delaunay", s(file), "--json", "--method", method]);
+            assert_code(&out, 4, &[s(file), "cannot hold", "--exact"]);
+            let out = run(&[
+                "delaunay",
+                s(file),
+                "--method",
+                method,
+                "--tessellation",
+                s(&tess),
+            ]);
+            assert_code(&out, 4, &[s(file), "cannot hold", "--exact"]);
+            assert!(!tess.exists());
+            let out = run(&["isometric", s(file), s(&torus), "--method", method]);
+            assert_code(&out, 3, &["cannot hold", "--exact"]);
+            assert_eq!(stdout(&out), "undecidable in double precision\n");
+        }
+    }
+    for method in ["auto", "flip", "voronoi", "dubois"] {
+        let out = run(&["delaunay", s(&halves), "--json", "--method", method]);
+        assert_code(&out, 0, &[]);
+    }
+    for file in [&torus, &halves] {
+        let exact = run(&["delaunay", s(file), "--json", "--method", "auto", "--exact"]);
+        assert_code(&exact, 0, &[]);
+        let report: serde_json::Value = serde_json::from_str(&stdout(&exact)).unwrap();
+        assert_eq!(report["non_delaunay_edges"], 0, "{report}");
+    }
+    // A triangle with free sides: read on its cover in double precision only.
+    let open = write(
+        dir.path(),
+        "open.json",
+        &format!(
+            r#"{{"polygons":[{{"corners":[["0","0"],["1","0"],["{x}","2"]]}}],"matching":[]}}"#
+        ),
+    );
+    let out = run(&["delaunay", s(&open), "--json"]);
+    assert_code(&out, 4, &[s(&open), "cannot hold", "closed orientable"]);
+    // Exact corners doubles hold to far below the tolerances: computed in double precision.
+    let third = flat_torus(dir.path(), "1000/3");
+    let text = std::fs::read_to_string(&third).unwrap();
+    assert!(text.contains("\"1000/3\""), "{text}");
+    let out = run(&["delaunay", s(&third), "--json", "--method", "flip"]);
+    assert_code(&out, 0, &[]);
+}
+
+/// Item 3 of the remaining list: the thin pillowcase (about 200 bytes; a right triangle of
+/// height 10⁻¹², whose Section 8 caps are far below the rounded wave's resolution) under
+/// `--method dubois` in double precision stops at once with a numerical failure naming `--exact`
+/// (exit 4), well within the test's own generous `--time-limit` (which would be exit 2);
+/// `--exact` computes it.
+#[test]
+fn thin_pillowcase_in_double_precision_stops_naming_exact() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "pillowcase.json", THIN_RIGHT_PILLOWCASE);
+    assert!(std::fs::metadata(&input).unwrap().len() < 300);
+    let dubois = |arithmetic: &[&str]| {
+        let base = ["delaunay", s(&input), "--json", "--method", "dubois"];
+        run(&[&base[..], arithmetic, &["--time-limit", "120"]].concat())
+    };
+    let out = dubois(&[]);
+    assert_code(&out, 4, &[s(&input), "cannot resolve", "--exact"]);
+    let out = dubois(&["--exact"]);
+    assert_code(&out, 0, &[]);
+    let report: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(report["non_delaunay_edges"], 0, "{report}");
+}

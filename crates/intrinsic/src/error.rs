@@ -209,6 +209,22 @@ pub enum PortalgonError {
         /// Its signed area.
         area: f64,
     },
+    /// A polygon given by exact corners that double precision cannot hold: what doubles hold
+    /// of it (rounded lengths or corners) has not its exact area
+    /// ([`crate::geometry::Tolerances::exact_rounding`]); valid exactly, so exact arithmetic
+    /// computes on it.
+    #[error(
+        "polygon {polygon}: double precision cannot hold its exact corners (area {exact_area:e} \
+         exactly, {rounded_area:e} once rounded to doubles): compute in exact arithmetic"
+    )]
+    BeyondDoubles {
+        /// Polygon index.
+        polygon: usize,
+        /// Its exact area (rounded for the message).
+        exact_area: f64,
+        /// The area of what doubles hold of it (NaN or 0 when that is not a valid polygon).
+        rounded_area: f64,
+    },
     /// Two sides of a polygon intersect: the polygon is not simple.
     #[error("polygon {polygon}: sides {a} and {b} intersect (not a simple polygon)")]
     NotSimple {

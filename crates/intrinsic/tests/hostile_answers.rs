@@ -212,3 +212,35 @@ fn the_wave_stops_at_its_work_budget_and_names_dubois() {
         other => panic!("{other:?}"),
     }
 }
+
+/// Theorem 1's own wave past its work budget says so (`CapsError::WaveWork`), without the wave's
+/// advice to run Theorem 1 (what ran): on T_200 with a work budget of 10, exactly and on the
+/// pillowcase of `pillowcase` with cone points.
+#[test]
+fn theorem_1s_wave_past_its_budget_does_not_advise_theorem_1() {
+    use surftopo_intrinsic::dubois::{
+        CapsError, FlatDelaunayOptions, delaunay_tessellation_dubois,
+    };
+    use surftopo_intrinsic::generators::{flat_torus_portalgon, pillowcase};
+    use surftopo_intrinsic::voronoi::WaveOptions;
+    let options = FlatDelaunayOptions {
+        wave: WaveOptions {
+            max_work: Some(10),
+            ..WaveOptions::default()
+        },
+        ..FlatDelaunayOptions::default()
+    };
+    let q = |x: i64| Rational::from_i64(x);
+    let torus = flat_torus_portalgon(&q(200), 1).unwrap();
+    let pillow = pillowcase(&[q(1), q(0)], &[q(1000), q(1)]).unwrap();
+    for t in [torus, pillow] {
+        match delaunay_tessellation_dubois(&t, &options) {
+            Err(e @ CapsError::WaveWork(10)) => {
+                let text = e.to_string();
+                assert!(text.contains("Theorem 1's wave"), "{text}");
+                assert!(!text.contains("--method dubois"), "{text}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+}

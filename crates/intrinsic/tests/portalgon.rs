@@ -688,10 +688,26 @@ fn exact_coordinates_round_trip_through_json() {
 }
 
 /// T_x by exact corners: for x = 10⁴ + 1/3 the two triangles, glued exactly, area 2, one vertex;
-/// written and read back as the same portalgon, and as a triangulation close to [`flat_torus`].
+/// written and read back as the same portalgon. In double precision its lengths (exact, rounded
+/// once) make triangles whose area is off by 2·10⁻⁵, beyond `Tolerances::exact_rounding`: refused
+/// as beyond doubles; at x = 333 + 2/3 (off by 3·10⁻¹¹) read as a triangulation close to
+/// [`flat_torus`].
 #[test]
 fn exact_flat_torus_by_corners() {
     let x: Rational = "30001/3".parse().unwrap();
+    let doc = PortalgonDoc::from_portalgon(&flat_torus_portalgon(&x, 1).unwrap());
+    match doc.to_triangulation(1e-9) {
+        Err(PortalgonError::BeyondDoubles {
+            polygon: 0,
+            exact_area,
+            rounded_area,
+        }) => {
+            assert_eq!(exact_area, 1.0);
+            assert!((rounded_area - 1.0).abs() > 1e-6, "{rounded_area}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let x: Rational = "1001/3".parse().unwrap();
     for m in [1, 3] {
         let p = flat_torus_portalgon(&x, m).unwrap();
         p.check_invariants().unwrap();

@@ -796,7 +796,10 @@ impl Search {
         let keep_going = on_path != OnPath::Stop;
         let mut paths = 0;
         let mut head = 0;
+        // A cooperative stop (Ctrl-C from Python) is read every few thousand nodes scanned.
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         'scan: while head < self.queue.len() {
+            ticker.tick();
             self.prefetch_ahead(graph, mates, head);
             let v = self.queue[head];
             head += 1;

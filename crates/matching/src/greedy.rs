@@ -29,7 +29,10 @@ pub fn simple_greedy<G: DualGraph + ?Sized>(graph: &G, seed: u64) -> Pairing {
         .collect();
     order.shuffle(&mut ChaCha8Rng::seed_from_u64(seed));
     let mut pairing = Pairing::empty(graph.node_slots());
+    // A cooperative stop (Ctrl-C from Python) is read every few thousand edges.
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for e in order {
+        ticker.tick();
         let [a, b] = graph.endpoints(e);
         if a != b && pairing.mate[a as usize] == NONE && pairing.mate[b as usize] == NONE {
             pairing.join(e, a, b);

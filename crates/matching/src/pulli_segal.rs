@@ -134,7 +134,11 @@ impl<'g, G: DualGraph + ?Sized> PulliSegal<'g, G> {
     }
 
     fn run(mut self) -> Pairing {
-        while self.step() {}
+        // A cooperative stop (Ctrl-C from Python) is read every few thousand steps.
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
+        while self.step() {
+            ticker.tick();
+        }
         self.pairing
     }
 

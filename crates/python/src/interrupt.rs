@@ -10,7 +10,8 @@
 //! it runs under [`surftopo_mesh::stop::run_stoppable`] with the [`Stop`] flag the interrupt
 //! sets, and the long loops of the libraries (flips, the wave, Dubois' reduction, Diks–Stanczyk
 //! with its dual's bridge check and its dynamic connectivity's build, the mesh build's steps,
-//! the irreducible reductions) read it every [`surftopo_mesh::stop::CHECK_EVERY`] steps and
+//! the irreducible reductions, the pairings: SG, Pulli–Segal, Karp–Sipser and its shortcuts, the augmenting
+//! paths, LRS's expansion, the quality pairing's blossom and its fast mode) read it every [`surftopo_mesh::stop::CHECK_EVERY`] steps and
 //! unwind; the census reads the same flag through its `stop` hook.
 
 use pyo3::prelude::*;

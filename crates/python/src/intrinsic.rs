@@ -363,7 +363,14 @@ impl Portalgon {
     /// The intrinsic triangulation of a triangular portalgon.
     fn triangulation(&self) -> Result<IntrinsicTriangulation, Failure> {
         if let Some(e) = &self.exact_only {
-            return Err(Failure::Portalgon(e.clone()));
+            // Valid exactly, not in doubles: a numerical failure of double precision, as the
+            // CLI's exit 4.
+            return Err(Failure::Invalid(
+                "NumericalBreakdownError",
+                format!(
+                    "{e} (its exact corners are valid: use exact=True with method='voronoi' or 'dubois')"
+                ),
+            ));
         }
         self.doc
             .to_triangulation(DEFAULT_LENGTH_TOLERANCE)

@@ -163,7 +163,8 @@ def test_refused_methods_and_arithmetics_say_why():
 def test_exact_corners_beyond_doubles_are_kept_for_exact_runs():
     # T_x for x = 10^30 + 1 by exact corners: in doubles x + 1 rounds to x (a zero side), so
     # only the exact methods can take it; the document is read, and the double-precision run
-    # refuses it with the rounding's error.
+    # refuses it as a numerical failure naming exact=True (never a silently different surface:
+    # its rounded lengths make a triangle of area 5e29 instead of 1).
     x = 10**30
     text = (
         '{"polygons": [{"corners": [["0", "0"], ["1", "0"], ["%d", "2"]]},'
@@ -172,8 +173,11 @@ def test_exact_corners_beyond_doubles_are_kept_for_exact_runs():
     )
     t = surftopo.Portalgon.from_json(text)
     assert t.polygon_count == 2
-    with pytest.raises(surftopo.PortalgonError):
-        surftopo.intrinsic_delaunay(t)
+    for method in ["auto", "flip", "voronoi", "dubois"]:
+        with pytest.raises(surftopo.NumericalBreakdownError, match="exact=True"):
+            surftopo.intrinsic_delaunay(t, method=method)
+    with pytest.raises(surftopo.NumericalBreakdownError, match="exact=True"):
+        surftopo.isometric(t, t)
     d = surftopo.intrinsic_delaunay(t, method="dubois", exact=True)
     # D_x of an integer x is the rectangle 1 x 2 cut by a diagonal: lengths 1, 2 and sqrt(5).
     assert sorted(np.round(d.edge_lengths, 12)) == pytest.approx([1.0, 2.0, math.sqrt(5)])

@@ -138,7 +138,10 @@ pub(crate) fn expand_guarded<G: Guard>(
         flipped[e.idx()] ^= true;
         operations.push(e);
     };
+    // A cooperative stop (Ctrl-C from Python) is read every few thousand expansion steps.
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for (index, record) in history.iter().enumerate().rev() {
+        ticker.tick();
         let fail = |what: &str| {
             QuadError::Internal(format!(
                 "LRS expansion, contraction record {index} (kept {:?}, removed {:?}): {what}",
@@ -260,6 +263,7 @@ pub(crate) fn expand_guarded<G: Guard>(
         }
     }
     for (i, &e) in operations.iter().enumerate() {
+        ticker.tick();
         mesh.flip(e).map_err(|err| {
             QuadError::Internal(format!(
                 "LRS: flip operation {i} of {} ({e:?}) does not replay on T: {err}",

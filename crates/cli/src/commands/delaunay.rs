@@ -128,7 +128,7 @@ fn read_doc(path: &Path) -> anyhow::Result<PortalgonDoc> {
 /// triangulation, or a tessellation (`delaunay --tessellation`) whose polygons are cut into
 /// triangles.
 fn closed_from_doc(name: &str, doc: &PortalgonDoc) -> anyhow::Result<IntrinsicTriangulation> {
-    let fail = |e: PortalgonError| invalid(format!("{name}: {e}"));
+    let fail = |e: PortalgonError| doc_error(name, e, true);
     match doc.to_triangulation(Tolerances::DEFAULT.length) {
         Err(PortalgonError::NotTriangle { .. }) => {
             // Every side glued before any polygon is checked or cut: a missing gluing is
@@ -143,6 +143,22 @@ fn closed_from_doc(name: &str, doc: &PortalgonDoc) -> anyhow::Result<IntrinsicTr
     }
 }
 
+/// An error reading a portalgon file in double precision: invalid input (exit 2), but exact
+/// corners that doubles cannot hold ([`PortalgonError::BeyondDoubles`]: `T_x` for `x = 10³⁰`,
+/// whose rounded lengths make a triangle of area 5·10²⁹ instead of 1) are a numerical failure
+/// (exit 4), never a silently different surface; the advice is `--exact` for a `closed` surface
+/// (exact arithmetic takes closed oriented ones only).
+fn doc_error(name: &str, e: PortalgonError, closed: bool) -> anyhow::Error {
+    match e {
+        PortalgonError::BeyondDoubles { .. } => crate::failure::numerical(if closed {
+            format!("{name}: {e} (use --exact, with --method voronoi or dubois)")
+        } else {
+            format!("{name}: {e} (--exact takes closed orientable surfaces only)")
+        }),
+        e => invalid(format!("{name}: {e}")),
+    }
+}
+
 /// Reads a portalgon JSON file of any surface kind: one closed oriented piece as an intrinsic
 /// triangulation ([`load_intrinsic`]: every method), triangles glued with boundary sides,
 /// orientation-reversing gluings (format version 2) or in several pieces on their closed cover
@@ -151,7 +167,7 @@ pub fn load_json(path: &Path) -> anyhow::Result<DelaunayInput> {
     let (name, doc) = (crate::input::name(path), read_doc(path)?);
     if doc.needs_cover() {
         let tri = CoveredTriangulation::from_doc(&doc, Tolerances::DEFAULT.length)
-            .map_err(|e| invalid(format!("{name}: {e}")))?;
+            .map_err(|e| doc_error(&name, e, false))?;
         return Ok(DelaunayInput::Covered(tri));
     }
     closed_from_doc(&name, &doc).map(DelaunayInput::Lengths)

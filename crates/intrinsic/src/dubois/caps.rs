@@ -95,6 +95,16 @@ pub enum CapsError {
     /// Proposition 3's wave or its dual failed.
     #[error(transparent)]
     Voronoi(#[from] VoronoiError),
+    /// Proposition 3's wave on `T′` exceeded its work budget
+    /// ([`crate::voronoi::MAX_WAVE_WORK`]): `T′` is far from Proposition 2's happiness bound, as
+    /// rounding can leave it on a very thin input in double precision. (The wave's own message
+    /// advises Theorem 1, which is what ran.)
+    #[error(
+        "Theorem 1's wave on the reduced triangulation T′ exceeded its work budget of {0} (the \
+         sizes of the constellations its events land in, summed): T′ is far from Proposition \
+         2's happiness bound, as rounding can leave it on a very thin input in double precision"
+    )]
+    WaveWork(u64),
 }
 
 impl From<crate::error::PortalgonError> for CapsError {
@@ -145,7 +155,7 @@ fn smallest_height2<S: Scalar>(t: &Portalgon<S>, p: PolygonId) -> S {
 }
 
 /// The squared smallest height `d²` and squared longest side `L²` of a triangular portalgon.
-fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
+pub(crate) fn heights_and_lengths<S: Scalar>(t: &Portalgon<S>) -> (S, S) {
     let mut d2: Option<S> = None;
     let mut l2 = S::zero();
     for p in t.polygons() {
@@ -522,7 +532,9 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     let mut delaunay_exit = |r: &Reduction<S>| -> Result<bool, DuboisError> {
         let (mut t2, new_side) = put_caps_back_mapped(r, &cut, tolerance).map_err(|e| match e {
             CapsError::Reduction(e) => e,
-            CapsError::Voronoi(e) => DuboisError::Invariant(e.to_string()),
+            e @ (CapsError::Voronoi(_) | CapsError::WaveWork(_)) => {
+                DuboisError::Invariant(e.to_string())
+            }
         })?;
         let mut apex_sides: Vec<SideId> =
             cut.apex_sides.iter().map(|&x| new_side[x.idx()]).collect();

@@ -81,7 +81,8 @@ pub use reduction::{
 use crate::geometry::Scalar;
 use crate::portalgon::{PolygonId, Portalgon};
 use crate::voronoi::{
-    Sources, VoronoiDelaunay, VoronoiOptions, voronoi_delaunay, voronoi_delaunay_from,
+    Sources, VoronoiDelaunay, VoronoiError, VoronoiOptions, WaveError, voronoi_delaunay,
+    voronoi_delaunay_from,
 };
 use caps::{in_local_frames, laid_out_in_double_double, proposition_2_with_apexes};
 
@@ -116,6 +117,17 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
     t: &Portalgon<S>,
     options: &FlatDelaunayOptions,
 ) -> Result<ConeDelaunay<S>, CapsError> {
+    theorem_1(t, options).map_err(|e| match e {
+        CapsError::Voronoi(VoronoiError::Wave(WaveError::Work(work))) => CapsError::WaveWork(work),
+        e => e,
+    })
+}
+
+/// [`delaunay_tessellation_dubois`], the wave's work budget reported as the wave's.
+fn theorem_1<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<ConeDelaunay<S>, CapsError> {
     t.check_invariants()?;
     t.check_closed()?;
     if first_cone_point(t, options.tolerances.angle).is_none() {
@@ -135,6 +147,7 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         });
     }
     let (t_prime, reduction, cut, apexes) = if S::REDUCES_IN_DOUBLE_DOUBLE {
+        resolvable_in_double(t, options)?;
         // The reduction in double-double, `T′` rounded back in local frames (module doc).
         let t_dd = laid_out_in_double_double(t);
         let (t_prime, reduction, cut, apexes) = proposition_2_with_apexes(&t_dd, options)?;
@@ -164,6 +177,34 @@ pub fn delaunay_tessellation_dubois<S: Scalar>(
         cap_triangles: cut.1,
         reduced: t_prime,
     })
+}
+
+/// In double precision, whether Section 8's caps can be told from their cone points by the
+/// rounded wave: their radius is above `d/12` (`d` the smallest height, §3.4 of docs/dubois.md),
+/// and the wave takes points within [`Tolerances::point`](crate::geometry::Tolerances::point)
+/// of the longest side for one, [`Tolerances::finer_retry`](crate::geometry::Tolerances::finer_retry)
+/// times that on its last retry. Below it (a pillowcase of a right triangle of height 10⁻¹²:
+/// `d/(12L)` about 10⁻¹³) the wave could not resolve `T′` and ran on for minutes; refused at once
+/// instead.
+///
+/// # Errors
+/// [`DuboisError::Unresolvable`].
+fn resolvable_in_double<S: Scalar>(
+    t: &Portalgon<S>,
+    options: &FlatDelaunayOptions,
+) -> Result<(), CapsError> {
+    let (d2, l2) = caps::heights_and_lengths(t);
+    let cap = (d2.to_f64() / l2.to_f64()).sqrt() / 12.0;
+    let tolerances = options.tolerances.with_retries();
+    let tolerance = tolerances.point * tolerances.finer_retry.unwrap_or(1.0);
+    if cap >= tolerance {
+        Ok(())
+    } else {
+        Err(CapsError::Reduction(DuboisError::Unresolvable {
+            cap,
+            tolerance,
+        }))
+    }
 }
 
 /// Proposition 3's options on `T′`: the sources, `options`' angle tolerance and wave budget, and

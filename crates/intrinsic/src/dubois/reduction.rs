@@ -147,6 +147,21 @@ pub enum DuboisError {
     /// A Section 4.4 invariant does not hold.
     #[error("Section 4.4 invariant: {0}")]
     Invariant(String),
+    /// In double precision: Section 8's caps (radius above `d/12`, `d` the smallest height)
+    /// would be smaller, relative to the longest side, than the rounded wave's finest point
+    /// tolerance, so the wave could not tell a cap's points from its cone point; refused before
+    /// any work (exact arithmetic resolves any size).
+    #[error(
+        "the caps of Section 8 would have radius {cap:e} of the longest side (the smallest \
+         height over 12), below the finest point tolerance {tolerance:e} of the wave in double \
+         precision: double precision cannot resolve this surface"
+    )]
+    Unresolvable {
+        /// `d / (12 L)`.
+        cap: f64,
+        /// The wave's finest point tolerance (relative to the longest side).
+        tolerance: f64,
+    },
 }
 
 /// Options of [`reduce`].

@@ -684,6 +684,9 @@ impl PortalgonDoc {
         for (polygon, p) in self.polygons.iter().enumerate() {
             let corners: Vec<Point<S>> = match (&p.corners, &p.lengths) {
                 (Some(c), _) => {
+                    if !S::EXACT {
+                        corners_held_by_doubles(polygon, c)?;
+                    }
                     let c = scalar_corners(polygon, c)?;
                     check_polygon(polygon, &c)?;
                     c
@@ -801,11 +804,13 @@ impl PortalgonDoc {
                             area: area.to_f64(),
                         });
                     }
-                    [0, 1, 2].map(|i| {
+                    let l = [0, 1, 2].map(|i| {
                         crate::geometry::dist2(&c[i], &c[(i + 1) % 3])
                             .to_f64()
                             .sqrt()
-                    })
+                    });
+                    held_by_doubles(polygon, &area, trig::area(l[0], l[1], l[2]))?;
+                    l
                 }
                 (None, Some(l)) => [l[0].to_f64(), l[1].to_f64(), l[2].to_f64()],
                 (None, None) => unreachable!("side_counts checked the shape"),
@@ -922,6 +927,7 @@ impl PortalgonDoc {
             let k = counts[polygon];
             let corners = match &p.corners {
                 Some(c) => {
+                    corners_held_by_doubles(polygon, c)?;
                     let points: Vec<Point<f64>> = scalar_corners(polygon, c)?;
                     check_polygon(polygon, &points)?;
                     for i in 0..k {
@@ -1314,6 +1320,63 @@ fn io_error(e: std::io::Error) -> PortalgonError {
 }
 
 /// The corners of polygon `polygon` in the scalar type `S`.
+/// Whether what doubles hold of a polygon given by exact corners, of area `exact` (a positive
+/// area: a polygon degenerate exactly is refused as such later), has area `rounded` within
+/// [`Tolerances::exact_rounding`](crate::geometry::Tolerances::exact_rounding) of it.
+///
+/// # Errors
+/// [`PortalgonError::BeyondDoubles`].
+fn held_by_doubles(polygon: usize, exact: &Rational, rounded: f64) -> Result<(), PortalgonError> {
+    if exact.sign() != std::cmp::Ordering::Greater {
+        return Ok(());
+    }
+    let exact_area = exact.to_f64();
+    let tolerance = crate::geometry::Tolerances::DEFAULT.exact_rounding;
+    // NaN (not a triangle once rounded) fails the comparison too.
+    if (rounded - exact_area).abs() <= tolerance * exact_area {
+        Ok(())
+    } else {
+        Err(PortalgonError::BeyondDoubles {
+            polygon,
+            exact_area,
+            rounded_area: rounded,
+        })
+    }
+}
+
+/// For a polygon read in double precision whose corners include an exact string (not a double,
+/// not a number literal): its corners rounded to doubles are a valid polygon
+/// ([`check_polygon`]) of its exact area ([`held_by_doubles`]). Corners all given as numbers
+/// are doubles already: nothing to check.
+///
+/// # Errors
+/// The polygon's own [`check_polygon`] error when it is invalid exactly;
+/// [`PortalgonError::BeyondDoubles`] when only its rounding is.
+fn corners_held_by_doubles(polygon: usize, corners: &[[Number; 2]]) -> Result<(), PortalgonError> {
+    if corners.iter().flatten().all(Number::is_literal) {
+        return Ok(());
+    }
+    let exact: Vec<Point<Rational>> = scalar_corners(polygon, corners)?;
+    check_polygon(polygon, &exact)?;
+    let rounded: Vec<Point<f64>> = scalar_corners(polygon, corners)?;
+    let rounded_area = if check_polygon(polygon, &rounded).is_ok() {
+        // The exact area of the rounded corners: only their rounding is measured.
+        let as_rational = |x: &f64| Rational::from_f64(*x).expect("finite: checked");
+        let r: Vec<Point<Rational>> = rounded
+            .iter()
+            .map(|p| p.each_ref().map(as_rational))
+            .collect();
+        crate::portalgon::signed_area(&r).to_f64()
+    } else {
+        f64::NAN
+    };
+    held_by_doubles(
+        polygon,
+        &crate::portalgon::signed_area(&exact),
+        rounded_area,
+    )
+}
+
 fn scalar_corners<S: Scalar>(
     polygon: usize,
     corners: &[[Number; 2]],

@@ -23,6 +23,7 @@
 mod double_double;
 mod rational;
 mod scalar;
+mod simple;
 mod tolerances;
 mod triangulate;
 
@@ -30,6 +31,7 @@ pub use double_double::DoubleDouble;
 pub(crate) use rational::small_literal;
 pub use rational::{MAX_INPUT_BITS, ParseRationalError, Rational};
 pub use scalar::Scalar;
+pub(crate) use simple::crossing_sides;
 pub use tolerances::Tolerances;
 pub use triangulate::triangulate_polygon;
 

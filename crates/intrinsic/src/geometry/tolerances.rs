@@ -60,6 +60,14 @@ pub struct Tolerances {
     /// A bound computed in rounded arithmetic is enlarged by this relative margin so that it
     /// stays a bound (the number of outer iterations `N` with caps). 1e-9.
     pub bound_margin: f64,
+    /// A polygon of a portalgon file given by exact corners (strings) is read in double
+    /// precision only if what doubles hold of it (a triangle's rounded lengths, a larger
+    /// polygon's rounded corners) has its exact area to this relative tolerance; else double
+    /// precision cannot hold it (`T_x` for `x = 10³⁰` becomes a triangle of area 5·10²⁹ instead
+    /// of 1) and the reading refuses it ([`crate::PortalgonError::BeyondDoubles`]: compute
+    /// exactly). The rounding of a length moves a triangle's area by about `2⁻⁵³ · L² / A`
+    /// relative, so this keeps needles of aspect ratio up to about 10⁷. 1e-9.
+    pub exact_rounding: f64,
 }
 
 impl Tolerances {
@@ -77,6 +85,7 @@ impl Tolerances {
         finer_retry: None,
         closing: 1e-6,
         bound_margin: 1e-9,
+        exact_rounding: 1e-9,
     };
 
     /// The wave's retries, as Dubois' rounded route sets them (`docs/dubois.md` §4): the dual

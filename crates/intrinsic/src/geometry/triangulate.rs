@@ -25,14 +25,26 @@ fn above<S: Scalar>(c: &[Point<S>], a: usize, b: usize) -> bool {
     }
 }
 
-/// The sweep order of two corners: `Less` when `a` comes first ([`above`]).
-fn sweep_order<S: Scalar>(c: &[Point<S>], a: usize, b: usize) -> Ordering {
-    if a == b {
-        Ordering::Equal
-    } else if above(c, a, b) {
+/// The sweep order of two corners: `Less` when `a` comes first ([`above`]); two equal corners
+/// (only in a polygon that is not simple) in index order, so the order is total.
+pub(super) fn sweep_order<S: Scalar>(c: &[Point<S>], a: usize, b: usize) -> Ordering {
+    if above(c, a, b) {
         Ordering::Less
-    } else {
+    } else if above(c, b, a) {
         Ordering::Greater
+    } else {
+        a.cmp(&b)
+    }
+}
+
+/// The ends of side `e` (from corner `e` to corner `e + 1` of a polygon of `c.len()` corners) in
+/// sweep order: (the one the sweep meets first, the other).
+pub(super) fn side_ends<S: Scalar>(c: &[Point<S>], e: usize) -> (usize, usize) {
+    let next = (e + 1) % c.len();
+    if above(c, e, next) {
+        (e, next)
+    } else {
+        (next, e)
     }
 }
 
@@ -65,13 +77,7 @@ fn monotone_diagonals<S: Scalar>(c: &[Point<S>], order: &[usize]) -> Option<Vec<
         .collect();
     // Edge `e` runs from corner `e` to corner `e + 1`; the status holds the edges with the
     // interior on their right that cross the sweep line, left to right.
-    let ends = |e: usize| {
-        if above(c, e, next(e)) {
-            (e, next(e))
-        } else {
-            (next(e), e)
-        }
-    };
+    let ends = |e: usize| side_ends(c, e);
     // Whether edge `e` passes left of corner `v` (`v` strictly on its east side).
     let left_of = |e: usize, v: usize| {
         let (top, bottom) = ends(e);

@@ -7,8 +7,8 @@ use std::cmp::Ordering;
 
 use crate::error::PortalgonError;
 use crate::geometry::{
-    Motion, Point, Scalar, Tolerances, dist_f64, dist2, dot, orient, segments_intersect, sub,
-    twice_signed_area,
+    Motion, Point, Scalar, Tolerances, crossing_sides, dist_f64, dist2, dot, orient,
+    segments_intersect, sub, twice_signed_area,
 };
 
 /// [`Tolerances::length`]'s default, the relative tolerance on the lengths of matched sides
@@ -80,10 +80,13 @@ fn arc_leaves_along_a_side<S: Scalar>(c: &[Point<S>], i: usize, j: usize) -> boo
 }
 
 /// Validates the corners of a polygon: at least three, finite, no zero side, counter-clockwise and
-/// simple (no two sides meet except consecutive ones at their common corner). O(k²).
+/// simple (no two sides meet except consecutive ones at their common corner). O(k log k) exact
+/// predicates: consecutive sides folding back onto each other in one pass, then the sweep of
+/// Shamos and Hoey over the other pairs ([`crate::geometry::crossing_sides`]).
 ///
 /// # Errors
-/// The first problem, naming `polygon` and the corner or side.
+/// The first problem, naming `polygon` and the corner or side; for a polygon that is not simple,
+/// the first consecutive pair that folds back, else the pair of sides the sweep meets first.
 pub fn check_polygon<S: Scalar>(
     polygon: usize,
     corners: &[Point<S>],
@@ -114,9 +117,8 @@ pub fn check_polygon<S: Scalar>(
         });
     }
     for a in 0..k {
-        let (p, q) = (&corners[a], &corners[(a + 1) % k]);
+        let (p, q, r) = (&corners[a], &corners[(a + 1) % k], &corners[(a + 2) % k]);
         // Consecutive sides must not fold back onto each other.
-        let r = &corners[(a + 2) % k];
         if orient(p, q, r) == Ordering::Equal
             && dot(&sub(q, p), &sub(r, q)).sign() == Ordering::Less
         {
@@ -126,16 +128,11 @@ pub fn check_polygon<S: Scalar>(
                 b: (a + 1) % k,
             });
         }
-        for b in a + 2..k {
-            if a == 0 && b == k - 1 {
-                continue;
-            }
-            if segments_intersect(p, q, &corners[b], &corners[(b + 1) % k]) {
-                return Err(PortalgonError::NotSimple { polygon, a, b });
-            }
-        }
     }
-    Ok(())
+    match crossing_sides(corners) {
+        Some((a, b)) => Err(PortalgonError::NotSimple { polygon, a, b }),
+        None => Ok(()),
+    }
 }
 
 /// A portalgon: polygons with a partial matching of their sides (see the module doc), corners

@@ -23,7 +23,10 @@ pub(super) fn file_order_pairing<G: DualGraph + ?Sized>(graph: &G) -> Option<Pai
         return None;
     }
     let mut mate = Vec::with_capacity(slots);
+    // A cooperative stop (Ctrl-C from Python) is read every few thousand pairs.
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for first in (0..slots as u32).step_by(2) {
+        ticker.tick();
         let (e, _) = graph
             .adjacent(first)
             .into_iter()

@@ -180,7 +180,10 @@ impl Greedy {
             self.drain(pairs, repairs);
         }
         let mut head = 0;
+        // A cooperative stop (Ctrl-C from Python) is read every few thousand starts and pairs.
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         while let Some(s) = self.next_start(pairs, &mut head) {
+            ticker.tick();
             let mut best: Option<(u8, u32, u32, u32)> = None;
             // Ties: the side already swept. In id order the smallest id, or the largest once
             // the sweep runs down; in breadth-first order the node the front met first.
@@ -289,7 +292,9 @@ impl Greedy {
 
     /// Pairs the forced nodes and repairs the isolated ones until neither is left.
     fn drain<G: DualGraph + ?Sized>(&mut self, pairs: &mut Pairs<G>, repairs: &mut Repairs) {
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         loop {
+            ticker.tick();
             if let Some(a) = self.forced.pop() {
                 if pairs.free[a as usize] != 1 {
                     continue;

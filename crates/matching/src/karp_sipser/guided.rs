@@ -164,10 +164,13 @@ impl GuidedCompletion {
         let mut left = sources.len();
         let mut head = 0;
         let mut even_contacts = 0;
+        // A cooperative stop (Ctrl-C from Python) is read every few thousand nodes scanned.
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         'search: while left >= 2
             && even_contacts <= GUIDED_EVEN_CONTACTS
             && let Some(&x) = queue.get(head)
         {
+            ticker.tick();
             self.prefetch_wave_ahead(pairs, &queue, head);
             head += 1;
             let label = self.owner[x as usize];

@@ -85,7 +85,10 @@ pub(super) fn coarsen<G: DualGraph + ?Sized>(graph: &G) -> Option<SubdivisionLev
     let mut adjacency = vec![[(NONE, NONE); 3]; blocks];
     let mut ends = Vec::with_capacity(blocks * 3 / 2);
     let mut centres = Vec::with_capacity(blocks);
+    // A cooperative stop (Ctrl-C from Python) is read every few thousand blocks.
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for k in 0..blocks as u32 {
+        ticker.tick();
         let first = 4 * k;
         let nodes: [[u32; 3]; 4] =
             std::array::from_fn(|i| graph.adjacent(first + i as u32).map(|(_, w)| w));
@@ -153,7 +156,9 @@ impl SubdivisionLevel {
         coarse_pairing: &Pairing,
     ) -> Pairing {
         let mut mate = vec![NONE; graph.node_slots()];
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         for (k, &centre) in self.centres.iter().enumerate() {
+            ticker.tick();
             let k = k as u32;
             let partner = self.coarse.opposite(coarse_pairing.mate[k as usize], k);
             let centre = 4 * k + u32::from(centre);

@@ -738,7 +738,10 @@ impl<X: Extra> Solver<X> {
         for &r in &roots {
             self.scan_plus(r);
         }
+        // A cooperative stop (Ctrl-C from Python) is read every few thousand events.
+        let mut ticker = surftopo_mesh::stop::Ticker::default();
         while self.active_trees > 0 {
+            ticker.tick();
             let Some((time, event)) = self.heap.pop() else {
                 let node = (0..self.n as u32)
                     .find(|&v| self.is_live[v as usize] && self.slots[v as usize].mate == NONE)

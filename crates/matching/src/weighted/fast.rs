@@ -108,7 +108,10 @@ fn fast<G: DualGraph + ?Sized>(
     let start = Instant::now();
     order.sort_unstable_by_key(|&e| (costs[e as usize], e));
     let mut mate = vec![NONE; graph.node_slots()];
+    // A cooperative stop (Ctrl-C from Python) is read every few thousand edges examined.
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for &e in &order {
+        ticker.tick();
         let [a, b] = graph.endpoints(e);
         if mate[a as usize] == NONE && mate[b as usize] == NONE {
             mate[a as usize] = e;

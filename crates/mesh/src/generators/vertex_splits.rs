@@ -15,8 +15,10 @@ use rand_chacha::ChaCha8Rng;
 /// adds 1 vertex, 3 edges and 2 faces and keeps the genus. The new vertex is placed at the
 /// midpoint of `u` and the centroid of its other neighbours (`x`, `y` and the moved ones), or,
 /// when that makes a triangle at `v` of (nearly) zero area (neighbours balanced around `u`), at
-/// the centroid of the face of `u` at `x` or at `y`, so that written meshes have no zero-length
-/// edge or flat triangle where a placement avoids them.
+/// the centroid of the face of `u` at `x` or at `y`, or at points ever closer to `u` inside the
+/// faces that moved from `u` to `v`: the first whose triangles at `v` all have a height above
+/// 1e-12 of their longest side (none of exactly zero area, an exact predicate), so that written
+/// meshes have no zero-length edge or flat triangle.
 ///
 /// A simplicial input stays simplicial (the new edges all end at the new vertex, and every moved
 /// neighbour was adjacent to `u` once); a vertex whose outgoing half-edges all reach one
@@ -96,33 +98,70 @@ pub fn random_vertex_splits_covered(
         // The midpoint of u and the centroid of the other neighbours, unless that makes a
         // (nearly) zero-area triangle at v (neighbours balanced around u, as on a regular grid,
         // put it on u or on a line through two of them): then the centroid of a face of u, which
-        // lies strictly inside that face.
-        let candidates = [Some(midpoint), centroid(face_at_x), centroid(face_at_y)];
+        // lies strictly inside that face; then points ever closer to u inside each face that
+        // moved from u to v (near u, v's triangles are close to u's old ones, none flat, and
+        // inside a face in the middle of the moved wedge v is on the right side of u–x and u–y).
+        let mut candidates: Vec<Point3> =
+            [Some(midpoint), centroid(face_at_x), centroid(face_at_y)]
+                .into_iter()
+                .flatten()
+                .collect();
+        let moved: Vec<Point3> = mesh
+            .outgoing(v)
+            .map(|h| mesh.face_vertices(mesh.face(h)))
+            .filter(|f| !f.contains(&u))
+            .filter_map(|f| centroid(f.map(|w| if w == v { u } else { w })))
+            .collect();
+        for t in [0.5, 0.125, 1.0 / 64.0] {
+            candidates.extend(
+                moved
+                    .iter()
+                    .map(|c| [0, 1, 2].map(|k| pu[k] + t * (c[k] - pu[k]))),
+            );
+        }
         debug_assert_eq!(new_class as usize, positions.len());
         positions.push(midpoint);
-        for p in candidates.into_iter().flatten() {
+        let mut best = (f64::NEG_INFINITY, midpoint);
+        for p in candidates {
             positions[new_class as usize] = p;
-            if star_has_area(cover, positions, v) {
+            let flatness = star_flatness(cover, positions, v);
+            if flatness > best.0 {
+                best = (flatness, p);
+            }
+            if flatness > STAR_HEIGHT {
                 break;
             }
         }
+        positions[new_class as usize] = best.1;
     }
     debug_assert!(!simplicial_input || out.cover.mesh.is_simplicial());
     out
 }
 
-/// Whether every face of the surface around `v` has an area above 1e-12 of its longest side
-/// squared.
-fn star_has_area(cover: &crate::ClosedCover, positions: &[Point3], v: VertexId) -> bool {
-    use crate::geometry::{distance, triangle_area};
+/// A triangle made by a split is kept only if twice its area exceeds this times its longest side
+/// squared (its height is above this fraction of that side): far above the rounding of lengths
+/// computed from positions (about 1e-16), so that every reader, the ones that measure lengths in
+/// double precision included, takes it as a triangle. 1e-12.
+const STAR_HEIGHT: f64 = 1e-12;
+
+/// The smallest height over longest side among the faces around `v` (apex faces aside), 0 for a
+/// face of exactly zero area ([`crate::geometry::is_zero_area_triangle`]: an exact predicate,
+/// so a flat face never passes for rounding's sake).
+fn star_flatness(cover: &crate::ClosedCover, positions: &[Point3], v: VertexId) -> f64 {
+    use crate::geometry::{distance, is_zero_area_triangle, triangle_area};
     let mesh = &cover.mesh;
-    mesh.outgoing(v).all(|h| {
-        let face = mesh.face_vertices(mesh.face(h));
-        if face.iter().any(|&w| cover.sheets.is_apex(w)) {
-            return true;
-        }
-        let [a, b, c] = face.map(|w| positions[cover.class(w) as usize]);
-        let longest = distance(a, b).max(distance(b, c)).max(distance(c, a));
-        triangle_area(a, b, c) > 0.5e-12 * longest * longest
-    })
+    mesh.outgoing(v)
+        .map(|h| {
+            let face = mesh.face_vertices(mesh.face(h));
+            if face.iter().any(|&w| cover.sheets.is_apex(w)) {
+                return f64::INFINITY;
+            }
+            let [a, b, c] = face.map(|w| positions[cover.class(w) as usize]);
+            if is_zero_area_triangle(a, b, c) {
+                return 0.0;
+            }
+            let longest = distance(a, b).max(distance(b, c)).max(distance(c, a));
+            2.0 * triangle_area(a, b, c) / (longest * longest)
+        })
+        .fold(f64::INFINITY, f64::min)
 }

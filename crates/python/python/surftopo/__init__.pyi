@@ -509,7 +509,9 @@ class Portalgon:
 
         Exact corners (strings such as ``"1/3"`` or ``"1e100"``) that are valid exactly are
         kept even where doubles cannot hold them: ``intrinsic_delaunay(..., exact=True)``
-        computes on them; the double-precision methods refuse them with the rounding's error.
+        computes on them; the double-precision methods refuse them with
+        :class:`NumericalBreakdownError` naming ``exact=True`` (the rounding's error: a triangle
+        whose rounded lengths or corners have not its exact area, ``T_x`` for ``x = 10**30``).
 
         Version 2 is read: a file of triangles with unmatched sides (boundary), gluings flagged
         ``true`` (orientation-reversing) or several pieces, as ``surftopo delaunay -o`` writes
