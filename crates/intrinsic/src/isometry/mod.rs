@@ -464,26 +464,7 @@ pub fn compare_tessellations(
         });
     }
     let mut tried = 0usize;
-    // Seed: the side of a with the fewest candidates in b (same polygon size, same length within
-    // eps), found by sweeping both sorted lists with two pointers.
-    let (mut lo, mut hi) = (0usize, 0usize);
-    let mut best: Option<(usize, SideId, std::ops::Range<usize>)> = None;
-    for &(k, l, s) in &keyed_a {
-        while lo < keyed_b.len() && (keyed_b[lo].0, keyed_b[lo].1) < (k, l - eps) {
-            lo += 1;
-        }
-        hi = hi.max(lo);
-        while hi < keyed_b.len() && (keyed_b[hi].0, keyed_b[hi].1) <= (k, l + eps) {
-            hi += 1;
-        }
-        if best
-            .as_ref()
-            .is_none_or(|(count, s0, _)| (hi - lo, s.0) < (*count, s0.0))
-        {
-            best = Some((hi - lo, s, lo..hi));
-        }
-    }
-    let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    let (seed, candidates) = seed_side(&keyed_a, &keyed_b, eps);
     let seed_sides = a.polygon_sides(a.owner(seed)).len();
     if candidates.is_empty() {
         return Ok(Outcome::NoCandidate {
@@ -543,6 +524,36 @@ pub fn compare_tessellations(
         candidates: tried,
         closest: closest.expect("at least one candidate was tried"),
     })
+}
+
+/// The seed of [`compare_tessellations`]' search: the side of `a` with the fewest candidates in
+/// `b` (same polygon size, same length within `eps`; ties to the lower side id), and the range of
+/// `keyed_b` holding those candidates, found by sweeping both lists (sorted by polygon size,
+/// then length) with two pointers.
+fn seed_side(
+    keyed_a: &[(usize, f64, SideId)],
+    keyed_b: &[(usize, f64, SideId)],
+    eps: f64,
+) -> (SideId, std::ops::Range<usize>) {
+    let (mut lo, mut hi) = (0usize, 0usize);
+    let mut best: Option<(usize, SideId, std::ops::Range<usize>)> = None;
+    for &(k, l, s) in keyed_a {
+        while lo < keyed_b.len() && (keyed_b[lo].0, keyed_b[lo].1) < (k, l - eps) {
+            lo += 1;
+        }
+        hi = hi.max(lo);
+        while hi < keyed_b.len() && (keyed_b[hi].0, keyed_b[hi].1) <= (k, l + eps) {
+            hi += 1;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|(count, s0, _)| (hi - lo, s.0) < (*count, s0.0))
+        {
+            best = Some((hi - lo, s, lo..hi));
+        }
+    }
+    let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    (seed, candidates)
 }
 
 /// Tries to build the side correspondence from `seed_a ↦ seed_b` by propagation through polygons
