@@ -30,25 +30,12 @@ pub(crate) mod twisted;
 use crate::error::{IsometryError, PortalgonError};
 use crate::flip::tessellation::delaunay_tessellation;
 use crate::flip::{DelaunayOptions, flip_to_delaunay};
-use crate::geometry::Motion;
+use crate::geometry::{Motion, Tolerances};
 use crate::isometry::flat_vertices::remove_flat_vertices;
 use crate::portalgon::{Point2, Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 use std::fmt;
-
-/// Default co-circularity tolerance of the isometry test (looser than the tessellation's
-/// [`crate::DEFAULT_COCIRCULAR_TOLERANCE`]): removing "flat" vertices whose angle sums are only
-/// within [`DEFAULT_ANGLE_TOLERANCE`] of 2π perturbs the metric slightly, differently for
-/// different triangulations of the same surface; on real meshes (fandisk) exactly co-circular
-/// quads then come out up to ~1e-8 off. The two tessellations compared must make the same
-/// merging decisions, so the test merges up to 1e-6.
-pub const ISOMETRY_COCIRCULAR_TOLERANCE: f64 = 1e-6;
-
-/// Default [`IsometryOptions::length_tolerance`]: lengths and corners agree within this fraction
-/// of the longest side (well above the rounding of the flips and the flat-vertex removal, well
-/// below any difference a real surface shows).
-pub const ISOMETRY_LENGTH_TOLERANCE: f64 = 1e-7;
 
 /// Options of [`isometric`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,8 +57,8 @@ impl Default for IsometryOptions {
         Self {
             delaunay: DelaunayOptions::default(),
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
-            cocircular_tolerance: ISOMETRY_COCIRCULAR_TOLERANCE,
-            length_tolerance: ISOMETRY_LENGTH_TOLERANCE,
+            cocircular_tolerance: Tolerances::DEFAULT.isometry_cocircular,
+            length_tolerance: Tolerances::DEFAULT.isometry_length,
             allow_reflection: true,
         }
     }
