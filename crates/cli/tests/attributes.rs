@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{surftopo, write};
+use common::{run_ok, surftopo, write};
 use std::collections::HashMap;
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -62,14 +62,10 @@ fn quad_and_irreducible_keep_each_vertex_attributes() {
     assert_eq!(expected.len(), lines(&text, "v").len());
     for (command, name) in [("quad", "q.obj"), ("irreducible", "i.obj")] {
         let output = dir.path().join(name);
-        let run = surftopo()
-            .arg(command)
-            .arg(&input)
-            .arg("-o")
-            .arg(&output)
-            .output()
-            .unwrap();
-        assert!(run.status.success(), "{command}");
+        let run = run_ok(
+            surftopo().arg(command).arg(&input).arg("-o").arg(&output),
+            command,
+        );
         let stderr = String::from_utf8_lossy(&run.stderr);
         assert!(!stderr.contains("warning"), "{command}: {stderr}");
         let written = std::fs::read_to_string(&output).unwrap();

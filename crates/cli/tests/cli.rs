@@ -1552,14 +1552,10 @@ fn times_are_short_decimals_in_json_and_carry_a_unit_in_summaries() {
         }
         assert!(times >= 1, "{command}: no time in {text}");
 
-        let out = surftopo()
-            .arg(command)
-            .arg(&input)
-            .arg("-o")
-            .arg(&output)
-            .output()
-            .unwrap();
-        assert!(out.status.success());
+        let out = common::run_ok(
+            surftopo().arg(command).arg(&input).arg("-o").arg(&output),
+            command,
+        );
         let summary = String::from_utf8(out.stdout).unwrap();
         assert!(
             [" µs", " ms", " s"]

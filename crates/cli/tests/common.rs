@@ -10,14 +10,31 @@ pub fn surftopo() -> Command {
     Command::cargo_bin("surftopo").expect("binary built")
 }
 
-/// Runs a command that must succeed and prints JSON with at least `keys`; returns the JSON.
-pub fn json_of(cmd: &mut Command, keys: &[&str]) -> serde_json::Value {
+/// Runs a command that must succeed (its standard error shown otherwise, after `context`);
+/// returns its output.
+pub fn run_ok(cmd: &mut Command, context: &str) -> std::process::Output {
     let out = cmd.output().unwrap();
     assert!(
         out.status.success(),
-        "{}",
+        "{context}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
+    out
+}
+
+/// Runs a command that must be refused as invalid input (exit 2) with a message containing
+/// `message`; returns its standard error. `context` prefixes the assertions' messages.
+pub fn refused(cmd: &mut Command, message: &str, context: &str) -> String {
+    let out = cmd.output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{context}: {stderr}");
+    assert!(stderr.contains(message), "{context}: {stderr}");
+    stderr
+}
+
+/// Runs a command that must succeed and prints JSON with at least `keys`; returns the JSON.
+pub fn json_of(cmd: &mut Command, keys: &[&str]) -> serde_json::Value {
+    let out = run_ok(cmd, "json_of");
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in keys {
         assert!(v.get(key).is_some(), "missing key {key} in {v}");

@@ -90,6 +90,13 @@ fn quad_json(input: &Path, output: &Path, args: &[&str]) -> Value {
     json_of(&mut quad, &[])
 }
 
+/// `surftopo quad INPUT -o OUTPUT ARGS`.
+fn quad(input: &Path, output: &Path, args: &[&str]) -> assert_cmd::Command {
+    let mut cmd = surftopo();
+    cmd.arg("quad").arg(input).arg("-o").arg(output).args(args);
+    cmd
+}
+
 #[test]
 fn quad_takes_every_surface_generate_makes() {
     let dir = tempfile::tempdir().unwrap();
@@ -160,17 +167,8 @@ fn quad_takes_every_surface_generate_makes() {
                 let _ = std::fs::remove_file(&output);
                 let lrs = run[1] == "lrs";
                 if lrs && non_orientable {
-                    let out = surftopo()
-                        .arg("quad")
-                        .arg(&input)
-                        .arg("-o")
-                        .arg(&output)
-                        .args(&args)
-                        .output()
-                        .unwrap();
-                    let stderr = String::from_utf8_lossy(&out.stderr);
-                    assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
-                    assert!(stderr.contains("is non-orientable"), "{name}: {stderr}");
+                    let mut cmd = quad(&input, &output, &args);
+                    common::refused(&mut cmd, "is non-orientable", &name);
                     assert!(!output.exists(), "{name}");
                     continue;
                 }
@@ -255,17 +253,7 @@ fn a_non_manifold_edge_is_refused_with_its_location() {
     );
     let output = dir.path().join("q.obj");
     for args in [vec![], vec!["--objective", "quality"], vec!["--all-quads"]] {
-        let out = surftopo()
-            .arg("quad")
-            .arg(&input)
-            .arg("-o")
-            .arg(&output)
-            .args(&args)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{stderr}");
-        assert!(stderr.contains("fin.obj: line 6"), "{stderr}");
+        let stderr = common::refused(&mut quad(&input, &output, &args), "fin.obj: line 6", "quad");
         assert!(stderr.contains("non-manifold edge (0, 1)"), "{stderr}");
         assert!(stderr.contains("face 0"), "{stderr}");
         assert!(!output.exists());

@@ -333,14 +333,9 @@ fn a_mesh_for_stdout_needs_format_and_is_refused_before_reading() {
     }
     let dir = tempfile::tempdir().unwrap();
     let refused = |args: &[&str], message: &str| {
-        let out = surftopo()
-            .current_dir(dir.path())
-            .args(args)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(stderr.contains(message), "{args:?}: {stderr}");
+        let mut cmd = surftopo();
+        cmd.current_dir(dir.path()).args(args);
+        common::refused(&mut cmd, message, &format!("{args:?}"));
     };
     refused(
         &["convert", "absent.off", "x.obj", "--format", "ply"],

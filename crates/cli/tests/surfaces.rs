@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{json_of, surftopo};
+use common::{generate, json_of, refused, run_ok, surftopo};
 use serde_json::Value;
 use std::path::Path;
 
@@ -36,24 +36,6 @@ fn names(v: &Value) -> Vec<String> {
         .iter()
         .map(|s| s["name"].as_str().unwrap().to_string())
         .collect()
-}
-
-/// `generate ARGS -o DIR/NAME`, which must succeed; returns the path.
-fn generate(dir: &Path, name: &str, args: &[&str]) -> std::path::PathBuf {
-    let path = dir.join(name);
-    let out = surftopo()
-        .arg("generate")
-        .args(args)
-        .arg("-o")
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    path
 }
 
 #[test]
@@ -267,16 +249,12 @@ fn delaunay_flips_every_surface_kind_and_refuses_the_methods_of_closed_orientabl
         (&["--method", "dubois", "--json"], "--method flip"),
     ];
     for (args, message) in refusals {
-        let out = surftopo()
-            .current_dir(dir.path())
+        let mut cmd = surftopo();
+        cmd.current_dir(dir.path())
             .arg("delaunay")
             .arg(&input)
-            .args(args)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(stderr.contains(message), "{args:?}: {stderr}");
+            .args(args);
+        refused(&mut cmd, message, &format!("{args:?}"));
         assert!(!dir.path().join("t.json").exists());
     }
 }
@@ -286,17 +264,13 @@ fn delaunay_writes_a_non_orientable_triangulation_with_reversed_gluings() {
     let dir = tempfile::tempdir().unwrap();
     let input = generate(dir.path(), "mb.obj", &["mobius-band", "--flips", "20"]);
     let output = dir.path().join("mb.json");
-    let out = surftopo()
-        .arg("delaunay")
-        .arg(&input)
-        .arg("-o")
-        .arg(&output)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    run_ok(
+        surftopo()
+            .arg("delaunay")
+            .arg(&input)
+            .arg("-o")
+            .arg(&output),
+        "delaunay",
     );
     let doc: Value = serde_json::from_slice(&std::fs::read(&output).unwrap()).unwrap();
     assert_eq!(doc["version"], 2);

@@ -78,7 +78,7 @@ mod tufted;
 pub mod voronoi;
 
 pub use covered::CoveredTriangulation;
-pub use covered::isometry::{FLAT_MARGIN_FACTOR, decide_isometry_on_cover, piece_tessellations};
+pub use covered::isometry::{decide_isometry_on_cover, piece_tessellations};
 pub use delaunay::choice::{
     DUBOIS_TAKES_CONE_POINTS, choose_method, choose_method_for_triangulation, largest_aspect_ratio,
 };
@@ -109,13 +109,13 @@ pub use formats::numpy::{write_npy, write_npz};
 pub use formats::portalgon_json::{
     FORMAT_NAME, FORMAT_VERSION, Number, ORIENTED_VERSION, PolygonDoc, PortalgonDoc, TriangleStyle,
 };
-pub use isometry::decision::{AREA_CERTIFICATE, IsometryDecision, decide_isometry};
+pub use isometry::decision::{IsometryDecision, decide_isometry};
 pub use isometry::flat_torus_lattice::flat_torus_invariants;
 pub use isometry::flat_vertices::{RemovalReport, remove_flat_vertices};
 pub use isometry::twisted::{MapDifference, MapMatch, TwistedMap, compare_twisted};
 pub use isometry::{
-    ISOMETRY_COCIRCULAR_TOLERANCE, ISOMETRY_LENGTH_TOLERANCE, IsometryOptions, Mismatch,
-    MismatchKind, Outcome, canonical_tessellation, compare_tessellations, isometric,
+    IsometryOptions, Mismatch, MismatchKind, Outcome, canonical_tessellation,
+    compare_tessellations, isometric,
 };
 pub use laplacian::{cotan_laplacian, cotan_weights, intrinsic_delaunay_laplacian, lumped_mass};
 pub use portalgon::{

@@ -41,23 +41,7 @@ fn bumpy_sphere(seed: u64) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
 
 fn cube_subdivided() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
     // Unit cube with a vertex at the centre of each face (flat, degree 4).
-    let mut positions: Vec<[f64; 3]> = (0..8)
-        .map(|k| {
-            [
-                f64::from(k & 1),
-                f64::from((k >> 1) & 1),
-                f64::from((k >> 2) & 1),
-            ]
-        })
-        .collect();
-    let quads = [
-        [0u32, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
+    let (mut positions, quads) = surftopo_testkit::unit_cube();
     let mut triangles = Vec::new();
     for q in quads {
         let c = positions.len() as u32;

@@ -22,24 +22,9 @@ fn t_x_aspect_ratio_is_x_squared_over_2_plus_2() {
 fn aspect_ratio_compares_different_triangles() {
     // A unit cube split into right isosceles triangles: longest side √2, smallest height √2/2,
     // aspect ratio 2; every corner is singular (angle 3π/2).
-    let positions: Vec<[f64; 3]> = (0..8)
-        .map(|k| {
-            [
-                f64::from(k & 1),
-                f64::from((k >> 1) & 1),
-                f64::from((k >> 2) & 1),
-            ]
-        })
-        .collect();
+    let (positions, quads) = surftopo_testkit::unit_cube();
     let mut triangles = Vec::new();
-    for [a, b, c, d] in [
-        [0u32, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ] {
+    for [a, b, c, d] in quads {
         triangles.extend([[a, b, c], [a, c, d]]);
     }
     let (tri, _) = IntrinsicTriangulation::from_soup(&positions, &triangles).unwrap();

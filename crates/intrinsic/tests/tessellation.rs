@@ -12,23 +12,7 @@ use surftopo_mesh::generators::icosphere;
 
 /// A unit cube, each square face split along one diagonal.
 pub fn cube(flip_diagonals: bool) -> IntrinsicTriangulation {
-    let positions: Vec<[f64; 3]> = (0..8)
-        .map(|k| {
-            [
-                f64::from(k & 1),
-                f64::from((k >> 1) & 1),
-                f64::from((k >> 2) & 1),
-            ]
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
+    let (positions, quads) = surftopo_testkit::unit_cube();
     let mut triangles = Vec::new();
     for [a, b, c, d] in quads {
         if flip_diagonals {

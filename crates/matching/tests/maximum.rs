@@ -3,6 +3,8 @@
 //! independent verifier (its Tutte–Berge barrier), the number of unpaired triangles compared
 //! with `petgraph`'s maximum matching, and the surface dual compared with the triangles.
 
+mod common;
+
 use std::collections::HashMap;
 
 use petgraph::algo::maximum_matching;
@@ -267,21 +269,7 @@ struct Sparse {
 impl Sparse {
     fn random(n: u32, drop: f64, seed: u64) -> Self {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let mut edges = vec![[0u32, 1u32]; 3];
-        let mut next = 2;
-        while next < n {
-            let i = rng.random_range(0..edges.len());
-            let j = rng.random_range(0..edges.len());
-            let (s, t) = (next, next + 1);
-            next += 2;
-            let [a, b] = edges[i];
-            edges[i] = [a, s];
-            edges.push([s, b]);
-            let [c, d] = edges[j];
-            edges[j] = [c, t];
-            edges.push([t, d]);
-            edges.push([s, t]);
-        }
+        let (mut edges, next) = common::ears(n, &mut rng);
         edges.shuffle(&mut rng);
         let mut adjacency = vec![Vec::new(); next as usize];
         let mut ends = Vec::new();

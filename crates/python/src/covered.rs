@@ -3,11 +3,8 @@
 //! beside closed orientable meshes.
 
 use crate::errors::Failure;
-use crate::intrinsic::Csr;
 use crate::surface::input_index;
-use surftopo_intrinsic::{
-    CoveredTriangulation, DelaunayInput, DelaunayOutput, DelaunayRequest, SparseMatrix,
-};
+use surftopo_intrinsic::{CoveredTriangulation, DelaunayInput, DelaunayOutput, DelaunayRequest};
 use surftopo_mesh::{BuildReport, CoveredSurface, EdgeId};
 
 /// A surface K on its closed cover and where its vertices go in the output matrices.
@@ -64,11 +61,6 @@ impl Covered {
             count: self.count,
         };
         Ok((flipped, out))
-    }
-
-    /// A matrix of K (rows by vertex of K) on the output rows.
-    pub fn csr(&self, m: SparseMatrix) -> Csr {
-        Csr::new(m, &self.rows, self.count)
     }
 
     /// The output row of each corner of K's triangles, corner `i` to corner `i + 1` being side

@@ -451,7 +451,9 @@ impl Intrinsic {
                 &located.dense_rows(),
                 located.rows,
             ),
-            Held::Covered(covered) => covered.csr(covered.tri.laplacian()),
+            Held::Covered(covered) => {
+                Csr::new(covered.tri.laplacian(), &covered.rows, covered.count)
+            }
             Held::Tufted {
                 located, laplacian, ..
             } => input_rows(laplacian, located.rows),
@@ -467,7 +469,7 @@ impl Intrinsic {
                 &located.dense_rows(),
                 located.rows,
             ),
-            Held::Covered(covered) => covered.csr(covered.tri.mass()),
+            Held::Covered(covered) => Csr::new(covered.tri.mass(), &covered.rows, covered.count),
             Held::Tufted { located, mass, .. } => input_rows(mass, located.rows),
         }
         .into_scipy(py)

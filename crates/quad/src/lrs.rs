@@ -262,6 +262,20 @@ pub(crate) fn expand_guarded<G: Guard>(
             in_m[pair.idx()] = true;
         }
     }
+    replay(mesh, in_m, flipped, &operations, cases)
+}
+
+/// The end of [`expand_guarded`]: the flip operations (in `operations`' order) replayed on the
+/// split mesh `mesh` (giving T), and M (`in_m`) checked to hold no flipped edge (Claim 3.1 (ii))
+/// and to be a matching of K.
+fn replay(
+    mut mesh: SurfaceMesh,
+    in_m: Vec<bool>,
+    flipped: Vec<bool>,
+    operations: &[EdgeId],
+    cases: ExpansionCases,
+) -> Result<Expansion, QuadError> {
+    let slots = in_m.len();
     for (i, &e) in operations.iter().enumerate() {
         ticker.tick();
         mesh.flip(e).map_err(|err| {

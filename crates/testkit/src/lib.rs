@@ -183,6 +183,23 @@ pub fn load(mesh: &SharedMesh) -> Surface {
     surface
 }
 
+/// The unit cube `[0, 1]³`: corner `k` at `(k & 1, (k >> 1) & 1, (k >> 2) & 1)` and its six
+/// square faces, each counter-clockwise seen from outside.
+pub fn unit_cube() -> (Vec<[f64; 3]>, [[u32; 4]; 6]) {
+    let corners = (0..8u32)
+        .map(|k| [k & 1, (k >> 1) & 1, (k >> 2) & 1].map(f64::from))
+        .collect();
+    let faces = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    (corners, faces)
+}
+
 /// Independent check that polygons (any sizes) form a closed, connected, consistently oriented
 /// 2-manifold: every directed edge used once and its reverse used once, every vertex's faces one
 /// fan. Returns `V - E + F` over the referenced vertices. Uses only hash maps over index pairs.

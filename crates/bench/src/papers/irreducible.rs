@@ -119,14 +119,8 @@ fn measure_all(options: &Options, cache: &Cache, meshes: Option<&Path>) -> (Vec<
             Err(e) => failures.push(format!("{}: {e}", input.name)),
         }
     };
-    let models: Vec<(&str, u64)> = numbers::IRREDUCIBLE_TABLE_2
-        .iter()
-        .map(|m| (m.0, value(m.3) as u64))
-        .collect();
-    let sizes: Vec<(&str, u64)> = numbers::IRREDUCIBLE_SIZES
-        .iter()
-        .map(|s| (s.0, value(s.3) as u64))
-        .collect();
+    let models = numbers::face_counts(numbers::IRREDUCIBLE_TABLE_2.iter().map(|m| (m.0, m.3)));
+    let sizes = numbers::face_counts(numbers::IRREDUCIBLE_SIZES.iter().map(|s| (s.0, s.3)));
     let groups = [("B", 3844, 0), ("C", 344, 3500)];
     inputs::paper_inputs(options, cache, meshes, &models, &sizes, &groups, |g, i| {
         record(g, i, &mut rows)

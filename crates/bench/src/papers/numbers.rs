@@ -28,6 +28,13 @@ pub fn value(text: &str) -> f64 {
     cleaned.parse().unwrap_or(f64::NAN)
 }
 
+/// `(name, triangles)` of a paper table's rows given as `(name, triangle count as printed)`:
+/// what [`super::inputs::paper_inputs`] takes.
+pub fn face_counts<'a>(rows: impl Iterator<Item = (&'a str, &'a str)>) -> Vec<(&'a str, u64)> {
+    rows.map(|(name, faces)| (name, value(faces) as u64))
+        .collect()
+}
+
 /// Irreducible-triangulations paper, Table 2: (model, V, E, F, genus).
 pub const IRREDUCIBLE_TABLE_2: [(&str, &str, &str, &str, &str); 10] = [
     ("Armadillo", "171,889", "515,661", "342,774", "0"),

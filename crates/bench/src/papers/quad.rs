@@ -134,14 +134,8 @@ fn measure_all(
             }
         }
     };
-    let models: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_1
-        .iter()
-        .map(|m| (m.0, value(m.3) as u64))
-        .collect();
-    let sizes: Vec<(&str, u64)> = numbers::QUAD_TABLE_4_2
-        .iter()
-        .map(|s| (s.0, value(s.3) as u64))
-        .collect();
+    let models = numbers::face_counts(numbers::QUAD_TABLE_4_1.iter().map(|m| (m.0, m.3)));
+    let sizes = numbers::face_counts(numbers::QUAD_TABLE_4_2.iter().map(|s| (s.0, s.3)));
     let groups = [("A", 3844, 0), ("B", 344, 3500)];
     inputs::paper_inputs(options, cache, meshes, &models, &sizes, &groups, |g, i| {
         record(g, i, &mut records)

@@ -632,7 +632,7 @@ impl Demo {
                     exact,
                     faithful: false,
                 },
-                tolerance: surftopo_intrinsic::ISOMETRY_LENGTH_TOLERANCE,
+                tolerance: surftopo_intrinsic::geometry::Tolerances::DEFAULT.isometry_length,
                 json: crate::args::JsonArg { json: false },
             })?;
             let method = crate::args::value_name(&method);

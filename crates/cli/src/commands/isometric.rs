@@ -16,12 +16,13 @@ use crate::commands::delaunay::{
 use crate::failure::{invalid, shown};
 use std::path::{Path, PathBuf};
 use surftopo_intrinsic::dubois::{FlatDelaunayError, first_cone_point};
+use surftopo_intrinsic::geometry::Tolerances;
 use surftopo_intrinsic::voronoi::Sources;
 use surftopo_intrinsic::{
     CoveredTriangulation, DEFAULT_ANGLE_TOLERANCE, DelaunayInput, DelaunayMethod, DelaunayOutputs,
-    DelaunayRequest, ISOMETRY_LENGTH_TOLERANCE, IntrinsicTriangulation, IsometryDecision,
-    IsometryOptions, Portalgon, choose_method, choose_method_for_triangulation,
-    compare_tessellations, decide_isometry, decide_isometry_on_cover, intrinsic_delaunay_reporting,
+    DelaunayRequest, IntrinsicTriangulation, IsometryDecision, IsometryOptions, Portalgon,
+    choose_method, choose_method_for_triangulation, compare_tessellations, decide_isometry,
+    decide_isometry_on_cover, intrinsic_delaunay_reporting,
 };
 
 /// The arguments of `isometric`.
@@ -39,7 +40,7 @@ pub struct Args {
     /// Lengths and polygon corners of the two canonical tessellations agree when they are
     /// within this fraction of the longest side (0 < T < 1; the undecidable check also tries it
     /// 100 times larger and smaller).
-    #[arg(long, value_name = "T", default_value_t = ISOMETRY_LENGTH_TOLERANCE)]
+    #[arg(long, value_name = "T", default_value_t = Tolerances::DEFAULT.isometry_length)]
     pub tolerance: f64,
     /// Print `isometric` (true, false, or null when undecided), `verdict`, `reason`, `method`
     /// and `tolerance` as JSON instead of the verdict line and the reason on stderr.

@@ -282,6 +282,32 @@ pub struct DelaunayOutput {
     pub wave: Option<WaveFigures>,
 }
 
+impl DelaunayOutput {
+    /// The output of flipping in `f64` with these matrices and figures and nothing else (the
+    /// callers add the triangulation and the tessellation of their kind of surface).
+    fn flipped(
+        laplacian: Option<SparseMatrix>,
+        mass: Option<SparseMatrix>,
+        stats: Option<DelaunayStats>,
+    ) -> Self {
+        Self {
+            method: DelaunayMethod::Flip,
+            arithmetic: f64::ARITHMETIC,
+            triangulation: None,
+            covered: None,
+            exact_triangulation: None,
+            tessellation: None,
+            covered_tessellation: None,
+            reduced: None,
+            laplacian,
+            mass,
+            stats,
+            reduction: None,
+            wave: None,
+        }
+    }
+}
+
 impl DelaunayRequest {
     /// Refuses what no input can run: flipping on exact input, `faithful` without `dubois`.
     ///
@@ -421,19 +447,9 @@ fn flipped_output(
         lumped_mass(&tri)
     });
     DelaunayOutput {
-        method: DelaunayMethod::Flip,
-        arithmetic: f64::ARITHMETIC,
         triangulation: wanted.triangulation.then_some(tri),
-        covered: None,
-        exact_triangulation: None,
         tessellation,
-        covered_tessellation: None,
-        reduced: None,
-        laplacian,
-        mass,
-        stats,
-        reduction: None,
-        wave: None,
+        ..DelaunayOutput::flipped(laplacian, mass, stats)
     }
 }
 
@@ -472,19 +488,9 @@ fn covered(
         tri.mass()
     });
     Ok(DelaunayOutput {
-        method: DelaunayMethod::Flip,
-        arithmetic: f64::ARITHMETIC,
-        triangulation: None,
         covered: wanted.triangulation.then_some(tri),
-        exact_triangulation: None,
-        tessellation: None,
         covered_tessellation,
-        reduced: None,
-        laplacian,
-        mass,
-        stats,
-        reduction: None,
-        wave: None,
+        ..DelaunayOutput::flipped(laplacian, mass, stats)
     })
 }
 

@@ -523,12 +523,13 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     let cut = cut_caps_at(t, &capped, &cone)?;
     let mut reduce = options.reduce;
     reduce.outer_iterations = reduce.outer_iterations.or(Some(cut.outer_iterations));
-    reduce.tolerance = reduce
-        .tolerance
+    reduce.tolerances.length = reduce
+        .tolerances
+        .length
         .max(S::slack(|| options.tolerances.closing));
     // Exact mode: the Delaunay exit (`delaunay_exit`), `T″` and its apex sides once found.
     let mut flipped: Option<(Portalgon<S>, Vec<SideId>)> = None;
-    let tolerance = reduce.tolerance;
+    let tolerance = reduce.tolerances.length;
     let mut delaunay_exit = |r: &Reduction<S>| -> Result<bool, DuboisError> {
         let (mut t2, new_side) = put_caps_back_mapped(r, &cut, tolerance).map_err(|e| match e {
             CapsError::Reduction(e) => e,
@@ -551,7 +552,7 @@ pub(super) fn proposition_2_with_apexes<S: Scalar>(
     let (t_prime, apex_sides) = match flipped {
         Some(found) => found,
         None => {
-            let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerance)?;
+            let (t_prime, new_side) = put_caps_back_mapped(&r, &cut, reduce.tolerances.length)?;
             let apex_sides = cut.apex_sides.iter().map(|&x| new_side[x.idx()]).collect();
             (t_prime, apex_sides)
         }

@@ -81,7 +81,7 @@
 use crate::dubois::biface::{Biface, BifaceError, BifaceKind};
 use crate::dubois::tube::{Tube, TubeError, TubeRoute, sides_by_vertex};
 use crate::error::PortalgonError;
-use crate::geometry::{MAX_INPUT_BITS, Scalar};
+use crate::geometry::{MAX_INPUT_BITS, Scalar, Tolerances};
 use crate::portalgon::{EditError, VertexInfo};
 use crate::portalgon::{PolygonId, Portalgon, Regions, SideId};
 
@@ -172,8 +172,9 @@ pub struct ReduceOptions {
     pub faithful: bool,
     /// How tubes become good bifaces (Proposition 4).
     pub route: TubeRoute,
-    /// Relative tolerance on lengths and angles in `f64` (unused in exact mode).
-    pub tolerance: f64,
+    /// The tolerances of `f64` (unused in exact mode): the reduction reads
+    /// [`Tolerances::length`], its relative tolerance on lengths and angles.
+    pub tolerances: Tolerances,
     /// Outer iterations; `None` = [`outer_iterations`] of the input.
     pub outer_iterations: Option<u32>,
 }
@@ -183,7 +184,7 @@ impl Default for ReduceOptions {
         Self {
             faithful: false,
             route: TubeRoute::Direct,
-            tolerance: crate::portalgon::DEFAULT_LENGTH_TOLERANCE,
+            tolerances: Tolerances::DEFAULT,
             outer_iterations: None,
         }
     }
@@ -935,7 +936,7 @@ pub fn reduce<S: Scalar>(
     t: &Portalgon<S>,
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
-    check_input(t, options.tolerance, false)?;
+    check_input(t, options.tolerances.length, false)?;
     reduce_checked(t, options, &mut |_| Ok(false))
 }
 
@@ -951,7 +952,7 @@ pub fn reduce_with_boundary<S: Scalar>(
     t: &Portalgon<S>,
     options: &ReduceOptions,
 ) -> Result<Reduction<S>, DuboisError> {
-    check_input(t, options.tolerance, true)?;
+    check_input(t, options.tolerances.length, true)?;
     reduce_checked(t, options, &mut |_| Ok(false))
 }
 
@@ -967,7 +968,7 @@ pub fn reduce_with_boundary_until<S: Scalar>(
     options: &ReduceOptions,
     done: &mut dyn FnMut(&Reduction<S>) -> Result<bool, DuboisError>,
 ) -> Result<Reduction<S>, DuboisError> {
-    check_input(t, options.tolerance, true)?;
+    check_input(t, options.tolerances.length, true)?;
     reduce_checked(t, options, done)
 }
 
@@ -976,7 +977,7 @@ fn reduce_checked<S: Scalar>(
     options: &ReduceOptions,
     done: &mut dyn FnMut(&Reduction<S>) -> Result<bool, DuboisError>,
 ) -> Result<Reduction<S>, DuboisError> {
-    let mut r = Reduction::new(t.clone(), options.route, options.tolerance);
+    let mut r = Reduction::new(t.clone(), options.route, options.tolerances.length);
     r.check_growth("reading the input")?;
     let n = options
         .outer_iterations

@@ -35,7 +35,6 @@ use crate::geometry::Tolerances;
 use crate::portalgon::{Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::dense_vertex_index;
-use crate::triangulation::trig;
 use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, UnionFind, VertexId};
 
 /// [`Tolerances::cocircular`]'s default, the tolerance for co-circularity
@@ -293,44 +292,8 @@ fn lay_out_regions<C: CellSurface>(
             continue;
         }
         placed[f0.idx()] = true;
-        let corners = tri.layout_face(f0);
-        for (h, c) in mesh.face_halfedges(f0).into_iter().zip(corners) {
-            pos[h.idx()] = c;
-        }
-        queue.clear();
-        queue.push(f0);
-        let mut head = 0;
-        while head < queue.len() {
-            let f = queue[head];
-            head += 1;
-            for h in mesh.face_halfedges(f) {
-                let t = h.twin();
-                let g = mesh.face(t);
-                if !merged[h.edge().idx()] {
-                    continue;
-                }
-                let first = surface.surface_face(g).expect("a merged edge is interior");
-                if placed[first.idx()] {
-                    continue;
-                }
-                placed[first.idx()] = true;
-                // t runs from dest(h) to origin(h).
-                let p = pos[mesh.next(h).idx()];
-                let q = pos[h.idx()];
-                pos[t.idx()] = p;
-                pos[mesh.next(t).idx()] = q;
-                let [x, y] = trig::third_corner(
-                    tri.halfedge_length(t),
-                    tri.halfedge_length(mesh.next(t)),
-                    tri.halfedge_length(mesh.prev(t)),
-                );
-                let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-                let norm = dx.hypot(dy);
-                let (ux, uy) = (dx / norm, dy / norm);
-                pos[mesh.prev(t).idx()] = [p[0] + x * ux - y * uy, p[1] + x * uy + y * ux];
-                queue.push(g);
-            }
-        }
+        let key = |g| surface.surface_face(g).expect("a merged edge is interior");
+        tri.lay_out_region(f0, merged, &mut placed, key, &mut pos, &mut queue);
         lifts.extend_from_slice(&queue);
         lift_start.push(lifts.len());
         let region = faces.len();

@@ -433,6 +433,19 @@ pub enum TriangleStyle {
 }
 
 impl PortalgonDoc {
+    /// A document of the oriented format (no reversed pairs, no comment) with these polygons and
+    /// this matching: the header every writer here puts out.
+    fn oriented(polygons: Vec<PolygonDoc>, matching: Vec<[[usize; 2]; 2]>) -> Self {
+        Self {
+            format: format_name(),
+            version: ORIENTED_VERSION,
+            comment: None,
+            polygons,
+            matching,
+            reversed: Vec::new(),
+        }
+    }
+
     /// Parses JSON text.
     ///
     /// # Errors
@@ -1057,14 +1070,7 @@ impl PortalgonDoc {
                 (s < t).then(|| [s, t].map(|x| [dense.owner(x).idx(), dense.side_index(x)]))
             })
             .collect();
-        Self {
-            format: format_name(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons,
-            matching,
-            reversed: Vec::new(),
-        }
+        Self::oriented(polygons, matching)
     }
 
     /// The document of a triangulation: live faces in id order, side `i` = `face_halfedges(f)[i]`,
@@ -1105,14 +1111,7 @@ impl PortalgonDoc {
         }
         let sides = TriangulationSides::new(tri);
         let matching = (0..sides.edges.len()).map(|k| sides.pair(k)).collect();
-        Self {
-            format: format_name(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons,
-            matching,
-            reversed: Vec::new(),
-        }
+        Self::oriented(polygons, matching)
     }
 }
 
@@ -1508,17 +1507,13 @@ mod tests {
 
     #[test]
     fn non_finite_lengths_are_refused_before_writing() {
-        let doc = PortalgonDoc {
-            format: format_name(),
-            version: ORIENTED_VERSION,
-            comment: None,
-            polygons: vec![PolygonDoc {
+        let doc = PortalgonDoc::oriented(
+            vec![PolygonDoc {
                 lengths: Some(vec![1.0.into(), f64::NAN.into(), 1.0.into()]),
                 ..PolygonDoc::default()
             }],
-            matching: Vec::new(),
-            reversed: Vec::new(),
-        };
+            Vec::new(),
+        );
         let mut out = Vec::new();
         assert!(matches!(
             doc.write(&mut out, false),

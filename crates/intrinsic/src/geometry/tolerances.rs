@@ -68,6 +68,26 @@ pub struct Tolerances {
     /// exactly). The rounding of a length moves a triangle's area by about `2⁻⁵³ · L² / A`
     /// relative, so this keeps needles of aspect ratio up to about 10⁷. 1e-9.
     pub exact_rounding: f64,
+    /// The isometry test (`IsometryOptions::cocircular_tolerance`'s default; looser than
+    /// [`Tolerances::cocircular`]): removing "flat" vertices whose angle sums are only within
+    /// [`Tolerances::angle`] of 2π perturbs the metric slightly, differently for different
+    /// triangulations of the same surface; on real meshes (fandisk) exactly co-circular quads
+    /// then come out up to ~1e-8 off. The two tessellations compared must make the same merging
+    /// decisions, so the test merges up to this. 1e-6.
+    pub isometry_cocircular: f64,
+    /// The isometry test (`IsometryOptions::length_tolerance`'s default, the CLI's
+    /// `isometric --tolerance`): lengths and corners agree within this fraction of the longest
+    /// side (well above the rounding of the flips and the flat-vertex removal, well below any
+    /// difference a real surface shows). 1e-7.
+    pub isometry_length: f64,
+    /// The isometry test's certificate: total areas (and, per piece on the cover, boundary
+    /// lengths and areas) differing by more than this relative amount prove two surfaces not
+    /// isometric (far above the rounding of a sum of Kahan-accurate triangle areas). 1e-6.
+    pub area_certificate: f64,
+    /// The isometry test on the cover: a vertex counts as possibly flat when its angle sum is
+    /// within this many times `IsometryOptions::angle_tolerance` of 2π (π on the boundary), the
+    /// largest angle tolerance `decide_isometry`'s variants try. A factor, not a tolerance. 1e3.
+    pub flat_margin: f64,
 }
 
 impl Tolerances {
@@ -86,6 +106,10 @@ impl Tolerances {
         closing: 1e-6,
         bound_margin: 1e-9,
         exact_rounding: 1e-9,
+        isometry_cocircular: 1e-6,
+        isometry_length: 1e-7,
+        area_certificate: 1e-6,
+        flat_margin: 1e3,
     };
 
     /// The wave's retries, as Dubois' rounded route sets them (`docs/dubois.md` §4): the dual
@@ -103,10 +127,11 @@ impl Tolerances {
     }
 
     /// The tolerances that identify things (lengths, shortcut sines, angles, the flip test,
-    /// co-circularity, points and the dual's sites, with its retry) times `factor`: below 1,
-    /// stricter decisions, for inputs whose features are far below the defaults' scale (e.g.
-    /// `Tolerances::default().finer(1e-3)`). The flip's area check, the closing checks and the
-    /// bound margin are kept.
+    /// co-circularity, points and the dual's sites, with its retry, the isometry test's
+    /// co-circularity and lengths) times `factor`: below 1, stricter decisions, for inputs whose
+    /// features are far below the defaults' scale (e.g. `Tolerances::default().finer(1e-3)`).
+    /// The flip's area check, the closing checks, the bound margin, the area certificate and
+    /// the flat margin are kept.
     pub fn finer(self, factor: f64) -> Self {
         Self {
             length: self.length * factor,
@@ -114,6 +139,8 @@ impl Tolerances {
             angle: self.angle * factor,
             delaunay: self.delaunay * factor,
             cocircular: self.cocircular * factor,
+            isometry_cocircular: self.isometry_cocircular * factor,
+            isometry_length: self.isometry_length * factor,
             ..self.finer_wave(factor)
         }
     }
@@ -153,12 +180,18 @@ mod tests {
             (f.point, d.point),
             (f.dual, d.dual),
             (f.dual_retry.unwrap(), d.dual_retry.unwrap()),
+            (f.isometry_cocircular, d.isometry_cocircular),
+            (f.isometry_length, d.isometry_length),
         ] {
             assert!((fine / coarse - 1e-3).abs() < 1e-12, "{fine} {coarse}");
         }
         assert_eq!(
             (f.flip_area, f.closing, f.bound_margin, f.finer_retry),
             (d.flip_area, d.closing, d.bound_margin, d.finer_retry)
+        );
+        assert_eq!(
+            (f.area_certificate, f.flat_margin),
+            (d.area_certificate, d.flat_margin)
         );
         assert_eq!(Tolerances::default().dual_retry, None);
     }

@@ -37,13 +37,11 @@
 
 use crate::error::{DelaunayError, IsometryError, RemovalError};
 use crate::flip::flip_to_delaunay;
+use crate::geometry::Tolerances;
 use crate::isometry::flat_torus_lattice::flat_torus_invariants;
 use crate::isometry::{IsometryOptions, Outcome, isometric};
 use crate::triangulation::IntrinsicTriangulation;
 use std::fmt;
-
-/// Relative difference of total areas beyond which two surfaces are certainly not isometric.
-pub const AREA_CERTIFICATE: f64 = 1e-6;
 
 /// The verdict of [`decide_isometry`].
 #[derive(Clone, Debug, PartialEq)]
@@ -111,7 +109,7 @@ pub fn decide_isometry(
         )));
     }
     let (area_a, area_b) = (a.total_area(), b.total_area());
-    if (area_a - area_b).abs() > AREA_CERTIFICATE * area_a.max(area_b) {
+    if (area_a - area_b).abs() > Tolerances::DEFAULT.area_certificate * area_a.max(area_b) {
         return Ok(IsometryDecision::NotIsometric(format!(
             "total areas {area_a} and {area_b} differ"
         )));

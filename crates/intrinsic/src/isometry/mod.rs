@@ -30,25 +30,12 @@ pub(crate) mod twisted;
 use crate::error::{IsometryError, PortalgonError};
 use crate::flip::tessellation::delaunay_tessellation;
 use crate::flip::{DelaunayOptions, flip_to_delaunay};
-use crate::geometry::Motion;
+use crate::geometry::{Motion, Tolerances};
 use crate::isometry::flat_vertices::remove_flat_vertices;
 use crate::portalgon::{Point2, Portalgon, SideId};
 use crate::triangulation::IntrinsicTriangulation;
 use crate::triangulation::quality::DEFAULT_ANGLE_TOLERANCE;
 use std::fmt;
-
-/// Default co-circularity tolerance of the isometry test (looser than the tessellation's
-/// [`crate::DEFAULT_COCIRCULAR_TOLERANCE`]): removing "flat" vertices whose angle sums are only
-/// within [`DEFAULT_ANGLE_TOLERANCE`] of 2π perturbs the metric slightly, differently for
-/// different triangulations of the same surface; on real meshes (fandisk) exactly co-circular
-/// quads then come out up to ~1e-8 off. The two tessellations compared must make the same
-/// merging decisions, so the test merges up to 1e-6.
-pub const ISOMETRY_COCIRCULAR_TOLERANCE: f64 = 1e-6;
-
-/// Default [`IsometryOptions::length_tolerance`]: lengths and corners agree within this fraction
-/// of the longest side (well above the rounding of the flips and the flat-vertex removal, well
-/// below any difference a real surface shows).
-pub const ISOMETRY_LENGTH_TOLERANCE: f64 = 1e-7;
 
 /// Options of [`isometric`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,8 +57,8 @@ impl Default for IsometryOptions {
         Self {
             delaunay: DelaunayOptions::default(),
             angle_tolerance: DEFAULT_ANGLE_TOLERANCE,
-            cocircular_tolerance: ISOMETRY_COCIRCULAR_TOLERANCE,
-            length_tolerance: ISOMETRY_LENGTH_TOLERANCE,
+            cocircular_tolerance: Tolerances::DEFAULT.isometry_cocircular,
+            length_tolerance: Tolerances::DEFAULT.isometry_length,
             allow_reflection: true,
         }
     }
@@ -464,26 +451,7 @@ pub fn compare_tessellations(
         });
     }
     let mut tried = 0usize;
-    // Seed: the side of a with the fewest candidates in b (same polygon size, same length within
-    // eps), found by sweeping both sorted lists with two pointers.
-    let (mut lo, mut hi) = (0usize, 0usize);
-    let mut best: Option<(usize, SideId, std::ops::Range<usize>)> = None;
-    for &(k, l, s) in &keyed_a {
-        while lo < keyed_b.len() && (keyed_b[lo].0, keyed_b[lo].1) < (k, l - eps) {
-            lo += 1;
-        }
-        hi = hi.max(lo);
-        while hi < keyed_b.len() && (keyed_b[hi].0, keyed_b[hi].1) <= (k, l + eps) {
-            hi += 1;
-        }
-        if best
-            .as_ref()
-            .is_none_or(|(count, s0, _)| (hi - lo, s.0) < (*count, s0.0))
-        {
-            best = Some((hi - lo, s, lo..hi));
-        }
-    }
-    let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    let (seed, candidates) = seed_side(&keyed_a, &keyed_b, eps);
     let seed_sides = a.polygon_sides(a.owner(seed)).len();
     if candidates.is_empty() {
         return Ok(Outcome::NoCandidate {
@@ -543,6 +511,36 @@ pub fn compare_tessellations(
         candidates: tried,
         closest: closest.expect("at least one candidate was tried"),
     })
+}
+
+/// The seed of [`compare_tessellations`]' search: the side of `a` with the fewest candidates in
+/// `b` (same polygon size, same length within `eps`; ties to the lower side id), and the range of
+/// `keyed_b` holding those candidates, found by sweeping both lists (sorted by polygon size,
+/// then length) with two pointers.
+fn seed_side(
+    keyed_a: &[(usize, f64, SideId)],
+    keyed_b: &[(usize, f64, SideId)],
+    eps: f64,
+) -> (SideId, std::ops::Range<usize>) {
+    let (mut lo, mut hi) = (0usize, 0usize);
+    let mut best: Option<(usize, SideId, std::ops::Range<usize>)> = None;
+    for &(k, l, s) in keyed_a {
+        while lo < keyed_b.len() && (keyed_b[lo].0, keyed_b[lo].1) < (k, l - eps) {
+            lo += 1;
+        }
+        hi = hi.max(lo);
+        while hi < keyed_b.len() && (keyed_b[hi].0, keyed_b[hi].1) <= (k, l + eps) {
+            hi += 1;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|(count, s0, _)| (hi - lo, s.0) < (*count, s0.0))
+        {
+            best = Some((hi - lo, s, lo..hi));
+        }
+    }
+    let (_, seed, candidates) = best.expect("a closed portalgon has sides");
+    (seed, candidates)
 }
 
 /// Tries to build the side correspondence from `seed_a ↦ seed_b` by propagation through polygons

@@ -252,6 +252,74 @@ impl IntrinsicTriangulation {
         [[0.0, 0.0], [l0, 0.0], trig::third_corner(l0, l1, l2)]
     }
 
+    /// Lays out in the plane the region of face `f0` whose faces are joined by the `merged`
+    /// edges, breadth first: `f0` as [`Self::layout_face`] places it, then each face across a
+    /// merged edge of a face laid out, unless the face it stands for (`key(face)`: itself, or the
+    /// surface triangle a lift of a cover stands for) is `placed` already; that one is marked
+    /// placed and unfolded across the edge. The position of the origin of each half-edge of the
+    /// region's faces, in its face's placement, goes to `pos`; `queue` ends holding the region's
+    /// faces in the order they were laid out. The caller marks `f0`'s own key placed.
+    pub(crate) fn lay_out_region(
+        &self,
+        f0: FaceId,
+        merged: &[bool],
+        placed: &mut [bool],
+        key: impl Fn(FaceId) -> FaceId,
+        pos: &mut [[f64; 2]],
+        queue: &mut Vec<FaceId>,
+    ) {
+        let mesh = &self.mesh;
+        for (h, c) in mesh
+            .face_halfedges(f0)
+            .into_iter()
+            .zip(self.layout_face(f0))
+        {
+            pos[h.idx()] = c;
+        }
+        queue.clear();
+        queue.push(f0);
+        let mut head = 0;
+        while head < queue.len() {
+            let f = queue[head];
+            head += 1;
+            for h in mesh.face_halfedges(f) {
+                if !merged[h.edge().idx()] {
+                    continue;
+                }
+                let g = mesh.face(h.twin());
+                let k = key(g);
+                if !placed[k.idx()] {
+                    placed[k.idx()] = true;
+                    self.unfold_across(h, pos);
+                    queue.push(g);
+                }
+            }
+        }
+    }
+
+    /// Places the face across half-edge `h` (of a face placed in `pos`) in the plane of `h`'s
+    /// face: its twin runs from the end of `h` to its start, the third corner to its left.
+    fn unfold_across(&self, h: HalfedgeId, pos: &mut [[f64; 2]]) {
+        let mesh = &self.mesh;
+        let t = h.twin();
+        let from = pos[mesh.next(h).idx()];
+        let to = pos[h.idx()];
+        let [along, across] = trig::third_corner(
+            self.halfedge_length(t),
+            self.halfedge_length(mesh.next(t)),
+            self.halfedge_length(mesh.prev(t)),
+        );
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let scale = dx.hypot(dy);
+        let (cos, sin) = (dx / scale, dy / scale);
+        pos[t.idx()] = from;
+        pos[mesh.next(t).idx()] = to;
+        pos[mesh.prev(t).idx()] = [
+            from[0] + along * cos - across * sin,
+            from[1] + along * sin + across * cos,
+        ];
+    }
+
     /// Flips the edge intrinsically if its two faces differ, the quad they form is strictly
     /// convex, both new triangles, with the rounded new length, satisfy the strict triangle
     /// inequality (so the result is always a valid triangulation) and their areas add up to the

@@ -60,6 +60,18 @@ pub struct SideCell<S> {
     stamp: u64,
 }
 
+impl<S> SideCell<S> {
+    /// The cell of `site` over `lo ..= hi`, its event stamped `stamp`.
+    fn new(site: u32, lo: S, hi: S, stamp: u64) -> Self {
+        Self {
+            site,
+            lo,
+            hi,
+            stamp,
+        }
+    }
+}
+
 /// The wave's result: the constellations X_Δ and the side diagrams (Lemma 41's lists at the end).
 #[derive(Clone, Debug)]
 pub struct Wave<S: Scalar> {
@@ -216,12 +228,7 @@ pub fn run_wave<S: Scalar>(
     // Room for the three corners and one more point per triangle, four cells per side, in
     // three flat vectors (lists that outgrow their room move to the end).
     let origin = [S::zero(), S::zero()];
-    let no_cell = SideCell {
-        site: u32::MAX,
-        lo: S::zero(),
-        hi: S::zero(),
-        stamp: 0,
-    };
+    let no_cell = SideCell::new(u32::MAX, S::zero(), S::zero(), 0);
     let mut wave = Wave {
         points: FlatLists::new(n, 4, origin),
         sources: FlatLists::new(n, 4, u32::MAX),
@@ -449,6 +456,10 @@ impl<S: Scalar> Wave<S> {
         changed
     }
 
+    /// The body of [`Self::insert_on_side`] (Lemma 41): the new site's interval on the side is
+    /// found from the least point of the convex function h (below), the run of cells it reaches
+    /// is split cell by cell ([`split_cell`]), and the run is replaced by the kept parts before
+    /// it, the new site's cell, and the kept parts after it.
     fn update_side(
         &mut self,
         p: &Portalgon<S>,
@@ -470,15 +481,8 @@ impl<S: Scalar> Wave<S> {
         };
         if cells.is_empty() {
             let stamp = fresh(alive);
-            self.cells.push(
-                s.idx(),
-                SideCell {
-                    site,
-                    lo: S::zero(),
-                    hi: S::one(),
-                    stamp,
-                },
-            );
+            self.cells
+                .push(s.idx(), SideCell::new(site, S::zero(), S::one(), stamp));
             changed.push(0);
             return changed;
         }
@@ -490,7 +494,6 @@ impl<S: Scalar> Wave<S> {
             let e = dot(&d, &sub(y, z));
             (c, e)
         };
-        let h = |c: &S, e: &S, u: &S| c.clone() + (e.clone() + e.clone()) * u.clone();
         // Ties: exact in exact mode; in f64 a difference of squared distances within
         // `4 eps (|a − y| + |d|)` (distances within about 2 eps) counts as a tie, so that a site
         // tied at a point keeps (or gets) its closed cell there despite rounding.
@@ -498,15 +501,6 @@ impl<S: Scalar> Wave<S> {
         let eps = self.eps();
         let tie = |j: u32| -> S {
             S::tie(|| 4.0 * eps * (dist2(a, &pts[j as usize]).to_f64().sqrt() + side_len))
-        };
-        let sgn = |x: &S, tol: &S| {
-            if *x > *tol {
-                Ordering::Greater
-            } else if *x < -tol.clone() {
-                Ordering::Less
-            } else {
-                Ordering::Equal
-            }
         };
         // The least point of the convex function: first cell with a non-negative slope.
         let first = cells.partition_point(|cell| coeffs(cell.site).1.sign() == Ordering::Less);
@@ -559,57 +553,13 @@ impl<S: Scalar> Wave<S> {
             let (c, e) = coeffs(cell.site);
             let t = tie(cell.site);
             let (lo, hi) = (&cell.lo, &cell.hi);
-            let clamp = |u: S| {
-                if u < *lo {
-                    lo.clone()
-                } else if u > *hi {
-                    hi.clone()
-                } else {
-                    u
-                }
-            };
-            // Within the cell h is linear: z takes {h ≤ 0}, the site keeps {h ≥ 0} (with the
-            // tie tolerance in f64).
-            let keep: Option<(S, S)>;
-            match e.sign() {
-                Ordering::Equal => match sgn(&c, &t) {
-                    Ordering::Less => {
-                        widen(lo.clone(), hi.clone());
-                        keep = None;
-                    }
-                    _ => {
-                        // A tie everywhere (z mirrors the site across the side's line).
-                        widen(lo.clone(), hi.clone());
-                        keep = Some((lo.clone(), hi.clone()));
-                    }
-                },
-                sign => {
-                    let two_e = e.clone() + e.clone();
-                    let take_end = clamp((t.clone() - c.clone()) / two_e.clone());
-                    let keep_end = clamp((-t.clone() - c.clone()) / two_e);
-                    let (h_lo, h_hi) = (sgn(&h(&c, &e, lo), &t), sgn(&h(&c, &e, hi), &t));
-                    if sign == Ordering::Greater {
-                        // h increasing: z on the left part.
-                        if h_lo != Ordering::Greater {
-                            widen(lo.clone(), take_end);
-                        }
-                        keep = (h_hi != Ordering::Less).then(|| (keep_end, hi.clone()));
-                    } else {
-                        if h_hi != Ordering::Greater {
-                            widen(take_end, hi.clone());
-                        }
-                        keep = (h_lo != Ordering::Less).then(|| (lo.clone(), keep_end));
-                    }
-                }
+            let (take, keep) = split_cell(&c, &e, &t, lo, hi);
+            if let Some((take_lo, take_hi)) = take {
+                widen(take_lo, take_hi);
             }
             if let Some((klo, khi)) = keep {
                 let same = klo == *lo && khi == *hi;
-                let kept = SideCell {
-                    site: cell.site,
-                    lo: klo,
-                    hi: khi,
-                    stamp: cell.stamp,
-                };
+                let kept = SideCell::new(cell.site, klo, khi, cell.stamp);
                 if e.sign() == Ordering::Greater {
                     after.push((kept, same));
                 } else {
@@ -635,12 +585,7 @@ impl<S: Scalar> Wave<S> {
         for (cell, same) in before.drain(..) {
             push(&mut run, cell, same);
         }
-        let new_cell = SideCell {
-            site,
-            lo: z_lo,
-            hi: z_hi,
-            stamp: 0,
-        };
+        let new_cell = SideCell::new(site, z_lo, z_hi, 0);
         push(&mut run, new_cell, false);
         for (cell, same) in after.drain(..) {
             push(&mut run, cell, same);
@@ -653,6 +598,70 @@ impl<S: Scalar> Wave<S> {
             changed: Vec::new(),
         };
         changed
+    }
+}
+
+/// `h(u) = c + 2u·e`: on a side, the squared distance to the new site minus the squared distance
+/// to a cell's site (negative where the new site is closer; Lemma 41).
+fn h<S: Scalar>(c: &S, e: &S, u: &S) -> S {
+    c.clone() + (e.clone() + e.clone()) * u.clone()
+}
+
+/// The sign of `x` with `-tol ..= tol` counting as zero (`tol` is zero in exact arithmetic).
+fn sgn<S: Scalar>(x: &S, tol: &S) -> Ordering {
+    if *x > *tol {
+        Ordering::Greater
+    } else if *x < -tol.clone() {
+        Ordering::Less
+    } else {
+        Ordering::Equal
+    }
+}
+
+/// One cell `lo ..= hi` of the run the new site reaches (Lemma 41): within it h (of [`h`], with
+/// coefficients `c`, `e`) is linear, the new site takes `{h ≤ 0}` and the cell's site keeps
+/// `{h ≥ 0}` (each with the tie tolerance `t` of f64, zero when exact). Returns the part taken
+/// and the part kept, each `None` when empty.
+#[allow(clippy::type_complexity)]
+fn split_cell<S: Scalar>(c: &S, e: &S, t: &S, lo: &S, hi: &S) -> (Option<(S, S)>, Option<(S, S)>) {
+    let clamp = |u: S| {
+        if u < *lo {
+            lo.clone()
+        } else if u > *hi {
+            hi.clone()
+        } else {
+            u
+        }
+    };
+    match e.sign() {
+        Ordering::Equal => match sgn(c, t) {
+            Ordering::Less => (Some((lo.clone(), hi.clone())), None),
+            // A tie everywhere (z mirrors the site across the side's line).
+            _ => (
+                Some((lo.clone(), hi.clone())),
+                Some((lo.clone(), hi.clone())),
+            ),
+        },
+        sign => {
+            let two_e = e.clone() + e.clone();
+            let take_end = clamp((t.clone() - c.clone()) / two_e.clone());
+            let keep_end = clamp((-t.clone() - c.clone()) / two_e);
+            let (h_lo, h_hi) = (sgn(&h(c, e, lo), t), sgn(&h(c, e, hi), t));
+            if sign == Ordering::Greater {
+                // h increasing: z on the left part.
+                let take = (h_lo != Ordering::Greater).then(|| (lo.clone(), take_end));
+                (
+                    take,
+                    (h_hi != Ordering::Less).then(|| (keep_end, hi.clone())),
+                )
+            } else {
+                let take = (h_hi != Ordering::Greater).then(|| (take_end, hi.clone()));
+                (
+                    take,
+                    (h_lo != Ordering::Less).then(|| (lo.clone(), keep_end)),
+                )
+            }
+        }
     }
 }
 

@@ -17,22 +17,12 @@ pub fn assert_same(a: &PolygonSoup, b: &PolygonSoup) {
 
 /// A closed cube made of 6 quads.
 pub fn cube_quads() -> PolygonSoup {
+    let (corners, faces) = surftopo_testkit::unit_cube();
     let mut s = PolygonSoup::new();
-    for i in 0..8u32 {
-        s.push_vertex([
-            f64::from(i & 1),
-            f64::from((i >> 1) & 1),
-            f64::from((i >> 2) & 1),
-        ]);
+    for p in corners {
+        s.push_vertex(p);
     }
-    for f in [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ] {
+    for f in faces {
         s.push_face(&f);
     }
     s

@@ -572,20 +572,41 @@ impl DynamicConnectivity {
     }
 
     /// Checks every invariant of the structure against a recomputation from scratch; returns a
-    /// description of the first violation. O((n + m) log n); meant for tests.
+    /// description of the first violation. O((n + m) log n); meant for tests. The checks, in
+    /// order: the edges against union-find recomputations of the graph's and the forest's
+    /// components (`check_edges`); each vertex's node per level and its non-tree lists
+    /// (`check_vertex_levels`); each tree edge's arcs per level
+    /// (`check_tree_edges`); the node count; each tour as a closed walk
+    /// (`check_tours`); the link-cut trees against `F_0` (`check_link_cut`).
     ///
     /// # Errors
     /// A message naming the violated invariant.
     pub fn check_invariants(&mut self) -> Result<(), String> {
-        let n = self.n as usize;
-        // Union-find over all present edges and over forest edges.
-        fn find(p: &mut [u32], mut x: u32) -> u32 {
-            while p[x as usize] != x {
-                p[x as usize] = p[p[x as usize] as usize];
-                x = p[x as usize];
+        let (mut all, mut forest) = self.check_edges()?;
+        let mut comp_size = vec![0u32; self.n as usize];
+        for v in 0..self.n {
+            let (ra, rf) = (find(&mut all, v), find(&mut forest, v));
+            if find(&mut all, rf) != ra {
+                return Err(format!("vertex {v}: forest component differs"));
             }
-            x
+            comp_size[ra as usize] += 1;
         }
+        let expected_nodes =
+            self.check_vertex_levels(&mut all, &comp_size)? + self.check_tree_edges()?;
+        if expected_nodes != self.et.live_nodes() {
+            return Err(format!(
+                "{} live Euler-tour nodes, {expected_nodes} expected",
+                self.et.live_nodes()
+            ));
+        }
+        self.check_tours()?;
+        self.check_link_cut(&mut forest)
+    }
+
+    /// [`Self::check_invariants`]' first phase: forest edges close no cycle, loops are loops,
+    /// the edge count is right. Returns the union-find parents over all present edges and over
+    /// the forest edges.
+    fn check_edges(&self) -> Result<(Vec<u32>, Vec<u32>), String> {
         let mut all: Vec<u32> = (0..self.n).collect();
         let mut forest: Vec<u32> = (0..self.n).collect();
         let mut present = 0usize;
@@ -610,14 +631,15 @@ impl DynamicConnectivity {
         if present != self.edge_count {
             return Err(format!("edge count {} != {present}", self.edge_count));
         }
-        let mut comp_size = vec![0u32; n];
-        for v in 0..self.n {
-            let (ra, rf) = (find(&mut all, v), find(&mut forest, v));
-            if find(&mut all, rf) != ra {
-                return Err(format!("vertex {v}: forest component differs"));
-            }
-            comp_size[ra as usize] += 1;
-        }
+        Ok((all, forest))
+    }
+
+    /// [`Self::check_invariants`]' second phase: each vertex's node at each level (the level-0
+    /// tour spans its component of `comp_size`, a level-i tree has at most n / 2^i vertices) and
+    /// its non-tree list (entries of its level, linked both ways, within one tree; two entries
+    /// per non-tree edge in all). `all` is [`Self::check_edges`]' union-find of the graph.
+    /// Returns the number of vertex nodes.
+    fn check_vertex_levels(&mut self, all: &mut [u32], comp_size: &[u32]) -> Result<usize, String> {
         // Non-tree edges connect vertices of one forest component: implied by the checks below.
         let mut nt_count_by_level: Vec<usize> = Vec::new();
         let mut expected_nodes = 0usize;
@@ -629,7 +651,7 @@ impl DynamicConnectivity {
                 expected_nodes += 1;
                 let s = self.et.tree_size(x);
                 if lvl == 0 {
-                    let c = comp_size[find(&mut all, v) as usize];
+                    let c = comp_size[find(all, v) as usize];
                     if s != c {
                         return Err(format!(
                             "vertex {v}: level-0 tour has {s} vertices, component {c}"
@@ -683,6 +705,14 @@ impl DynamicConnectivity {
                 "{listed} list entries for {nontree} non-tree edges"
             ));
         }
+        Ok(expected_nodes)
+    }
+
+    /// [`Self::check_invariants`]' third phase: each tree edge has an arc pair at every level up
+    /// to its own, in the trees of its endpoints, with the TREE flag at its level only. Returns
+    /// the number of arc nodes.
+    fn check_tree_edges(&mut self) -> Result<usize, String> {
+        let mut expected_nodes = 0usize;
         for e in 0..self.state.len() as u32 {
             if self.state[e as usize] != State::Tree {
                 continue;
@@ -719,14 +749,12 @@ impl DynamicConnectivity {
                 return Err(format!("tree edge {e}: {lvl} forests for level {top}"));
             }
         }
-        if expected_nodes != self.et.live_nodes() {
-            return Err(format!(
-                "{} live Euler-tour nodes, {expected_nodes} expected",
-                self.et.live_nodes()
-            ));
-        }
-        // Each tour is a closed walk: consecutive arcs chain up (cyclically) and every vertex node
-        // sits where the walk is at its vertex.
+        Ok(expected_nodes)
+    }
+
+    /// [`Self::check_invariants`]' fourth phase: each tour is a closed walk (consecutive arcs
+    /// chain up, cyclically) and every vertex node sits where the walk is at its vertex.
+    fn check_tours(&mut self) -> Result<(), String> {
         let mut arc_dir = vec![[NIL; 2]; self.et.pool_len()]; // node -> [tail, head]
         for e in 0..self.state.len() {
             if self.state[e] != State::Tree {
@@ -782,11 +810,17 @@ impl DynamicConnectivity {
                 x = self.et.up(x);
             }
         }
-        // Link-cut trees mirror F_0.
+        Ok(())
+    }
+
+    /// [`Self::check_invariants`]' last phase: the link-cut trees mirror `F_0` (one root per
+    /// forest component of `forest`, [`Self::check_edges`]' union-find, and no root shared).
+    fn check_link_cut(&mut self, forest: &mut [u32]) -> Result<(), String> {
+        let n = self.n as usize;
         let mut rep = vec![NIL; n];
         for v in 0..self.n {
             let r = self.lct.find_root(v);
-            let c = find(&mut forest, v);
+            let c = find(forest, v);
             if rep[c as usize] == NIL {
                 rep[c as usize] = r;
             } else if rep[c as usize] != r {
@@ -806,4 +840,14 @@ impl DynamicConnectivity {
         }
         Ok(())
     }
+}
+
+/// Union-find's root of `x` in the parent array `p`, halving the path (for
+/// [`DynamicConnectivity::check_invariants`]' recomputations).
+fn find(p: &mut [u32], mut x: u32) -> u32 {
+    while p[x as usize] != x {
+        p[x as usize] = p[p[x as usize] as usize];
+        x = p[x as usize];
+    }
+    x
 }

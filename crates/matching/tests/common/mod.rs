@@ -11,6 +11,23 @@ use rand_chacha::ChaCha8Rng;
 pub fn ear_graph(n: u32, seed: u64) -> Vec<[u32; 2]> {
     assert!(n >= 2 && n.is_multiple_of(2));
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed_0001);
+    let (mut edges, _) = ears(n, &mut rng);
+    let mut perm: Vec<u32> = (0..n).collect();
+    perm.shuffle(&mut rng);
+    for e in edges.iter_mut() {
+        *e = [perm[e[0] as usize], perm[e[1] as usize]];
+        if rng.random_bool(0.5) {
+            e.swap(0, 1);
+        }
+    }
+    edges.shuffle(&mut rng);
+    edges
+}
+
+/// The growth of [`ear_graph`]: from the theta graph on nodes 0 and 1, each step subdivides two
+/// edges drawn from `rng` (maybe the same one) and joins the two new nodes, until there are at
+/// least `n` nodes. Returns the edges (ids in order of creation) and the node count.
+pub fn ears(n: u32, rng: &mut ChaCha8Rng) -> (Vec<[u32; 2]>, u32) {
     let mut edges = vec![[0u32, 1u32]; 3];
     let mut next = 2u32;
     while next < n {
@@ -27,16 +44,7 @@ pub fn ear_graph(n: u32, seed: u64) -> Vec<[u32; 2]> {
         edges.push([t, d]);
         edges.push([s, t]);
     }
-    let mut perm: Vec<u32> = (0..n).collect();
-    perm.shuffle(&mut rng);
-    for e in edges.iter_mut() {
-        *e = [perm[e[0] as usize], perm[e[1] as usize]];
-        if rng.random_bool(0.5) {
-            e.swap(0, 1);
-        }
-    }
-    edges.shuffle(&mut rng);
-    edges
+    (edges, next)
 }
 
 /// Configuration-model cubic multigraph, redrawn until loop-free, connected and bridgeless.

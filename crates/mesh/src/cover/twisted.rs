@@ -309,6 +309,96 @@ fn around_fan(mate: &[Option<(u32, bool)>], s: u32, at_start: bool) -> Option<(u
     None
 }
 
+/// The labels of the closed gluing's corners ([`ClosedCover::from_twisted_gluing`]): K's
+/// `labels` for its `n` triangles, then a cone `(b, a, apex)` over each boundary side `a -> b`
+/// of `cone` takes b's and a's labels and its loop's apex label (`vertex_count` + the loop's
+/// rank; the cones of one boundary loop are glued to each other by `cone_pairs`). Returns the
+/// labels and the number of apexes.
+fn closed_labels(
+    n: usize,
+    cone: &[u32],
+    cone_pairs: &[(Side, Side)],
+    labels: &[u32],
+    vertex_count: usize,
+) -> (Vec<u32>, u32) {
+    let mut loops = UnionFind::new(cone.len());
+    for &(s, t) in cone_pairs {
+        if s.face as usize >= n && t.face as usize >= n {
+            loops.union(s.face - n as u32, t.face - n as u32);
+        }
+    }
+    let mut apex_of_root = vec![u32::MAX; cone.len()];
+    let mut apexes = 0u32;
+    let mut label = labels.to_vec();
+    for (k, &s) in cone.iter().enumerate() {
+        let root = loops.find(k as u32) as usize;
+        if apex_of_root[root] == u32::MAX {
+            apex_of_root[root] = vertex_count as u32 + apexes;
+            apexes += 1;
+        }
+        let (a, b) = (labels[s as usize], labels[next_in_face(s) as usize]);
+        label.extend([b, a, apex_of_root[root]]);
+    }
+    (label, apexes)
+}
+
+/// The vertex ids of the cover ([`ClosedCover::from_twisted_gluing`]), from the vertex of each
+/// corner (`corner_vertex`) and its class (`corner_class`, `0..classes`): the lift at each
+/// class's first corner (first lifts in face order) keeps the class; the other lifts follow, in
+/// class order. Returns the new id of each of the `slots` vertices and the class of each new
+/// id; `None` when that does not number the vertices `0..slots` (labels that are no bijection
+/// of the gluing's vertices).
+fn lift_ids(
+    corner_vertex: &[VertexId],
+    slots: usize,
+    classes: usize,
+    corner_class: impl Fn(usize) -> u32,
+) -> Option<(Vec<VertexId>, Vec<u32>)> {
+    let mut first = vec![VertexId::INVALID; classes];
+    let mut class = vec![u32::MAX; slots];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        let k = corner_class(c);
+        class[v.idx()] = k;
+        if !first[k as usize].is_valid() {
+            first[k as usize] = v;
+        }
+    }
+    let mut second = vec![u32::MAX; classes];
+    let mut next_id = classes as u32;
+    let mut has_second = vec![false; classes];
+    for (v, &k) in class.iter().enumerate() {
+        if first[k as usize] != VertexId::new(v) {
+            has_second[k as usize] = true;
+        }
+    }
+    for k in 0..classes {
+        if has_second[k] {
+            second[k] = next_id;
+            next_id += 1;
+        }
+    }
+    let vertices: Vec<VertexId> = (0..slots)
+        .map(|v| {
+            let k = class[v] as usize;
+            VertexId(if first[k] == VertexId::new(v) {
+                k as u32
+            } else {
+                second[k]
+            })
+        })
+        .collect();
+    if next_id as usize != slots {
+        return None;
+    }
+    let mut sheet_class: Vec<u32> = (0..next_id).collect();
+    for k in 0..classes {
+        if has_second[k] {
+            sheet_class[second[k] as usize] = k as u32;
+        }
+    }
+    Some((vertices, sheet_class))
+}
+
 impl ClosedCover {
     /// The cover of the surface K of a [`TwistedGluing`] (see the [module
     /// documentation](self)), K's vertex at corner `3f + i` being `labels[3f + i]`: the
@@ -343,26 +433,7 @@ impl ClosedCover {
             sign.push(sign[f]);
             doubled.push(doubled[f]);
         }
-        // Labels of the closed gluing's corners: a cone (b, a, apex) over side a -> b takes
-        // b's and a's labels, and its loop's apex label (vertex_count + the loop's rank).
-        let mut loops = UnionFind::new(cone.len());
-        for &(s, t) in &cone_pairs {
-            if s.face as usize >= n && t.face as usize >= n {
-                loops.union(s.face - n as u32, t.face - n as u32);
-            }
-        }
-        let mut apex_of_root = vec![u32::MAX; cone.len()];
-        let mut apexes = 0u32;
-        let mut label = labels.to_vec();
-        for (k, &s) in cone.iter().enumerate() {
-            let root = loops.find(k as u32) as usize;
-            if apex_of_root[root] == u32::MAX {
-                apex_of_root[root] = vertex_count as u32 + apexes;
-                apexes += 1;
-            }
-            let (a, b) = (labels[s as usize], labels[next_in_face(s) as usize]);
-            label.extend([b, a, apex_of_root[root]]);
-        }
+        let (label, apexes) = closed_labels(n, &cone, &cone_pairs, labels, vertex_count);
         let classes = vertex_count + apexes as usize;
         // Step 3: the copies, first lifts then mirror copies.
         let mut mirror_face = vec![u32::MAX; total];
@@ -414,58 +485,21 @@ impl ClosedCover {
             label[3 * original + copy_corner(copy_sense[f], c % 3)]
         };
         let slots = mesh.vertex_slots();
-        let mut first = vec![VertexId::INVALID; classes];
-        let mut class = vec![u32::MAX; slots];
-        for (c, &v) in corner_vertex.iter().enumerate() {
-            let k = corner_class(c);
-            class[v.idx()] = k;
-            if !first[k as usize].is_valid() {
-                first[k as usize] = v;
-            }
-        }
-        let mut second = vec![u32::MAX; classes];
-        let mut next_id = classes as u32;
-        let mut has_second = vec![false; classes];
-        for (v, &k) in class.iter().enumerate() {
-            if first[k as usize] != VertexId::new(v) {
-                has_second[k as usize] = true;
-            }
-        }
-        for k in 0..classes {
-            if has_second[k] {
-                second[k] = next_id;
-                next_id += 1;
-            }
-        }
-        let vertices: Vec<VertexId> = (0..slots)
-            .map(|v| {
-                let k = class[v] as usize;
-                VertexId(if first[k] == VertexId::new(v) {
-                    k as u32
-                } else {
-                    second[k]
-                })
-            })
-            .collect();
-        if next_id as usize != slots {
+        let Some((vertices, mut sheet_class)) =
+            lift_ids(&corner_vertex, slots, classes, corner_class)
+        else {
             // Labels that are no bijection of the gluing's vertices (a caller's error).
             return Err(BuildError::NotAsGiven {
                 reoriented_faces: 0,
                 dropped_vertices: 0,
             });
-        }
+        };
         let map = Renumbering {
             edges: (0..mesh.edge_slots()).map(EdgeId::new).collect(),
             faces: (0..mesh.face_slots()).map(FaceId::new).collect(),
             vertices,
         };
         mesh.renumber(&map);
-        let mut sheet_class: Vec<u32> = (0..next_id).collect();
-        for k in 0..classes {
-            if has_second[k] {
-                sheet_class[second[k] as usize] = k as u32;
-            }
-        }
         for c in sheet_class
             .iter_mut()
             .filter(|c| **c as usize >= vertex_count)

@@ -11,7 +11,7 @@
 //! vertex whose angle sum is not 2π, a boundary vertex whose angle sum is not π). So the number
 //! of pieces, and per piece its topology (χ, orientability, boundary loops: exact counts), the
 //! length of each boundary loop and the area, agree between isometric surfaces: when they do
-//! not, "not isometric" is proven (lengths and areas by more than [`crate::AREA_CERTIFICATE`]
+//! not, "not isometric" is proven (lengths and areas by more than [`Tolerances::area_certificate`]
 //! relative, far beyond their rounding).
 //!
 //! **A canonical tessellation per piece.** Given a vertex set V containing the corners of the
@@ -31,7 +31,7 @@
 //! The tessellation is canonical when V is canonical: the singular points. Removing flat
 //! vertices on K's cover is not done: V is the vertex set of K, and the tessellation is
 //! canonical exactly when no vertex is flat (angle sum within a margin of 2π inside, π on the
-//! boundary: [`FLAT_MARGIN_FACTOR`] times the angle tolerance).
+//! boundary: [`Tolerances::flat_margin`] times the angle tolerance).
 //!
 //! **Comparison.** Each piece's tessellation becomes a [`TwistedMap`] (polygons, plain and
 //! reversed gluings, boundary sides) and two are compared by [`compare_twisted`], Appendix A.3's
@@ -56,15 +56,11 @@ mod pieces;
 
 use crate::covered::CoveredTriangulation;
 use crate::error::{DelaunayError, IsometryError};
-use crate::isometry::decision::{AREA_CERTIFICATE, IsometryDecision};
+use crate::geometry::Tolerances;
+use crate::isometry::decision::IsometryDecision;
 use crate::isometry::twisted::{MapMatch, TwistedMap, compare_twisted};
 use crate::isometry::{IsometryOptions, ordinal};
 use pieces::{FlatVertex, Piece, components, pieces, tessellations};
-
-/// A vertex counts as possibly flat when its angle sum is within this many times
-/// [`IsometryOptions::angle_tolerance`] of 2π (π on the boundary): the largest angle tolerance
-/// [`crate::decide_isometry`]'s variants try.
-pub const FLAT_MARGIN_FACTOR: f64 = 1e3;
 
 /// One of the two surfaces: its cover (flipped to Delaunay when first needed), its pieces and
 /// their tessellations per co-circularity tolerance.
@@ -80,7 +76,7 @@ struct Surface<'a> {
 impl<'a> Surface<'a> {
     fn new(input: &'a CoveredTriangulation, index: usize, options: &IsometryOptions) -> Self {
         let component = components(input);
-        let margin = FLAT_MARGIN_FACTOR * options.angle_tolerance;
+        let margin = Tolerances::DEFAULT.flat_margin * options.angle_tolerance;
         let pieces = pieces(input, &component, margin);
         Self {
             input,
@@ -226,7 +222,7 @@ fn topology_differs(a: &[Piece], b: &[Piece]) -> Option<String> {
 
 /// Relative difference beyond rounding.
 fn differ(x: f64, y: f64) -> bool {
-    (x - y).abs() > AREA_CERTIFICATE * x.abs().max(y.abs())
+    (x - y).abs() > Tolerances::DEFAULT.area_certificate * x.abs().max(y.abs())
 }
 
 /// The verdict on piece `i` of the first against piece `j` of the second.

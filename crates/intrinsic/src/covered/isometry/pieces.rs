@@ -4,9 +4,8 @@
 use crate::covered::CoveredTriangulation;
 use crate::flip::tessellation::is_cocircular;
 use crate::isometry::twisted::TwistedMap;
-use crate::triangulation::trig;
 use std::f64::consts::{PI, TAU};
-use surftopo_mesh::{EdgeId, FaceId, HalfedgeId, SurfaceKind, UnionFind};
+use surftopo_mesh::{EdgeId, FaceId, SurfaceKind, UnionFind};
 
 /// A vertex that may be flat: its angle sum is within the flatness margin of 2π (inside) or π
 /// (on the boundary).
@@ -224,29 +223,14 @@ pub(crate) fn tessellations(
             continue;
         }
         placed[f0.idx()] = true;
-        let [a, b, c] = cover.layout_face(f0);
-        for (h, p) in mesh.face_halfedges(f0).into_iter().zip([a, b, c]) {
-            position[h.idx()] = p;
-        }
-        queue.clear();
-        queue.push(f0);
-        let mut head = 0;
-        while head < queue.len() {
-            let f = queue[head];
-            head += 1;
-            for h in mesh.face_halfedges(f) {
-                if !merged[h.edge().idx()] {
-                    continue;
-                }
-                let g = mesh.face(h.twin());
-                let k = surface_face(g);
-                if !placed[k.idx()] {
-                    placed[k.idx()] = true;
-                    unfold_across(tri, h, &mut position);
-                    queue.push(g);
-                }
-            }
-        }
+        cover.lay_out_region(
+            f0,
+            &merged,
+            &mut placed,
+            surface_face,
+            &mut position,
+            &mut queue,
+        );
         let start = queue
             .iter()
             .flat_map(|&f| mesh.face_halfedges(f))
@@ -295,29 +279,4 @@ pub(crate) fn tessellations(
         }
     }
     maps
-}
-
-/// Lays out the face across `h` (whose face is laid out): its corners as the unfolding across
-/// the shared edge puts them.
-fn unfold_across(tri: &CoveredTriangulation, h: HalfedgeId, position: &mut [[f64; 2]]) {
-    let cover = &tri.tri;
-    let mesh = cover.mesh();
-    let t = h.twin();
-    // t runs from the end of h to its start; the third corner lies to the left of t.
-    let from = position[mesh.next(h).idx()];
-    let to = position[h.idx()];
-    let [along, across] = trig::third_corner(
-        cover.halfedge_length(t),
-        cover.halfedge_length(mesh.next(t)),
-        cover.halfedge_length(mesh.prev(t)),
-    );
-    let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
-    let scale = dx.hypot(dy);
-    let (cos, sin) = (dx / scale, dy / scale);
-    position[t.idx()] = from;
-    position[mesh.next(t).idx()] = to;
-    position[mesh.prev(t).idx()] = [
-        from[0] + along * cos - across * sin,
-        from[1] + along * sin + across * cos,
-    ];
 }
