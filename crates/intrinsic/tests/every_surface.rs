@@ -256,6 +256,9 @@ fn the_laplacian_from_the_flips_cache_is_the_recomputed_one_bit_for_bit() {
     };
     for (name, s) in surfaces() {
         let tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+        // Taking the cover's mesh gives the same triangulation as copying it.
+        let taken = CoveredTriangulation::from_surface(s.clone()).unwrap();
+        assert_eq!(taken, tri, "{name}");
         let out = intrinsic_delaunay(DelaunayInput::Covered(tri), &request).unwrap();
         let flipped = out.covered.expect("the triangulation is asked for");
         assert_eq!(out.laplacian, Some(flipped.laplacian()), "{name}");
