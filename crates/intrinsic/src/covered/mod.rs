@@ -384,31 +384,46 @@ impl CoveredTriangulation {
     }
 
     /// [`Self::cotan_weights`] from the half-angle tangents squared `t2` of D (by half-edge id).
+    /// Edge e's half-edges are `2e` and `2e + 1`: one pass over all of them (it vectorises, as
+    /// [`crate::cotan_laplacian`]'s), then the frozen edges again, the only ones a virtual
+    /// triangle can touch (a cone face has an apex corner, so each of its edges has an apex
+    /// in its quad), summing their real triangles' halves alone. The sums are those of a pass
+    /// over the real faces (two terms at most, and `0.5 x + 0.5 y = 0.5 (x + y)` exactly).
     fn weights_from_tan_half_sq(&self, t2: &[f64]) -> Vec<f64> {
-        self.face_pass(Some(t2), false).0
+        let mesh = self.tri.mesh();
+        let half_cot = |h: HalfedgeId| 0.5 * trig::cot_from_tan_half_sq(t2[h.idx()]);
+        let mut w: Vec<f64> = t2
+            .chunks_exact(2)
+            .map(|t| 0.5 * (trig::cot_from_tan_half_sq(t[0]) + trig::cot_from_tan_half_sq(t[1])))
+            .collect();
+        for (e, &frozen) in self.frozen.iter().enumerate() {
+            let e = EdgeId::new(e);
+            if !mesh.is_edge_live(e) {
+                w[e.idx()] = 0.0;
+            } else if frozen {
+                let h = e.halfedge();
+                w[e.idx()] = [h, h.twin()]
+                    .into_iter()
+                    .filter(|&g| self.is_real_face(mesh.face(g)))
+                    .map(half_cot)
+                    .sum();
+            }
+        }
+        w
     }
 
-    /// One pass over the faces of D: the cotan weights of its edges from `t2` (when given:
-    /// half the cotangent of each opposite angle in a real triangle) and the lumped mass of K's
-    /// vertices (when `with_mass`: a third of each triangle of K's area per corner), each
-    /// summed in face id order as [`Self::cotan_weights`] and [`Self::mass`] document it.
-    fn face_pass(&self, t2: Option<&[f64]>, with_mass: bool) -> (Vec<f64>, Vec<f64>) {
+    /// The lumped mass of K's vertices: a third of each triangle of K's area per corner, in
+    /// face id order (one pass over D's faces, cone faces and mirror copies skipped).
+    fn lumped_mass(&self) -> Vec<f64> {
         let mesh = self.tri.mesh();
-        let mut w = vec![0.0; if t2.is_some() { mesh.edge_slots() } else { 0 }];
-        let mut mass = vec![0.0; if with_mass { self.surface_vertices } else { 0 }];
+        let mut mass = vec![0.0; self.surface_vertices];
         for f in mesh.faces() {
             let halfedges = mesh.face_halfedges(f);
             let rows = halfedges.map(|h| self.class[mesh.origin(h).idx()] as usize);
             if rows.contains(&self.surface_vertices) {
                 continue; // a cone face (virtual)
             }
-            if let Some(t2) = t2 {
-                for h in halfedges {
-                    w[h.edge().idx()] += 0.5 * trig::cot_from_tan_half_sq(t2[h.idx()]);
-                }
-            }
-            let first_lift = || self.mirror(halfedges[0]).is_none_or(|m| f <= mesh.face(m));
-            if with_mass && first_lift() {
+            if self.mirror(halfedges[0]).is_none_or(|m| f <= mesh.face(m)) {
                 let [a, b, c] = halfedges.map(|h| self.tri.halfedge_length(h));
                 let third = trig::area(a, b, c) / 3.0;
                 for r in rows {
@@ -416,13 +431,7 @@ impl CoveredTriangulation {
                 }
             }
         }
-        (w, mass)
-    }
-
-    /// [`Self::laplacian_from_tan_half_sq`] and [`Self::mass`] in one pass over the faces.
-    pub(crate) fn matrices_from_tan_half_sq(&self, t2: &[f64]) -> (SparseMatrix, SparseMatrix) {
-        let (weights, mass) = self.face_pass(Some(t2), true);
-        (self.assemble(&weights), SparseMatrix::diagonal(mass))
+        mass
     }
 
     /// The cotan Laplacian of K (positive semidefinite, as [`crate::cotan_laplacian`]): one row
@@ -453,7 +462,7 @@ impl CoveredTriangulation {
 
     /// The lumped (barycentric) mass matrix of K: a third of each triangle's area per corner.
     pub fn mass(&self) -> SparseMatrix {
-        SparseMatrix::diagonal(self.face_pass(None, true).1)
+        SparseMatrix::diagonal(self.lumped_mass())
     }
 }
 

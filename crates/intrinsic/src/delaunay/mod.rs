@@ -463,21 +463,14 @@ fn covered(
         progress("merging co-circular triangles");
         tri.tessellation(Tolerances::DEFAULT.cocircular)
     });
-    let (laplacian, mass) = if wanted.laplacian && wanted.mass {
-        progress("building the Laplacian and the mass matrix");
-        let (laplacian, mass) = tri.matrices_from_tan_half_sq(&tan_half_sq);
-        (Some(laplacian), Some(mass))
-    } else {
-        let laplacian = wanted.laplacian.then(|| {
-            progress("building the Laplacian");
-            tri.laplacian_from_tan_half_sq(&tan_half_sq)
-        });
-        let mass = wanted.mass.then(|| {
-            progress("building the mass matrix");
-            tri.mass()
-        });
-        (laplacian, mass)
-    };
+    let laplacian = wanted.laplacian.then(|| {
+        progress("building the Laplacian");
+        tri.laplacian_from_tan_half_sq(&tan_half_sq)
+    });
+    let mass = wanted.mass.then(|| {
+        progress("building the mass matrix");
+        tri.mass()
+    });
     Ok(DelaunayOutput {
         method: DelaunayMethod::Flip,
         arithmetic: f64::ARITHMETIC,
