@@ -518,20 +518,16 @@ impl CoverParts {
                 *l = l.max(lengths[mesh.next(h).edge().idx()]);
             }
         }
+        // An edge is frozen when its quad (the corners of its two faces) has an apex: when it
+        // is a side of a face with an apex corner (a cone face), marked from the apexes' side.
         let mut frozen = vec![false; mesh.edge_slots()];
-        for e in mesh.edges() {
-            let h = e.halfedge();
-            let [a, b] = mesh.edge_vertices(e);
-            if let Some(apex) = [a, b].into_iter().find(|&v| is_apex(v)) {
-                lengths[e.idx()] = longest[apex.idx()];
+        for h in mesh.halfedges() {
+            if is_apex(mesh.origin(h)) {
+                lengths[h.edge().idx()] = longest[mesh.origin(h).idx()];
+                for g in mesh.face_halfedges(mesh.face(h)) {
+                    frozen[g.edge().idx()] = true;
+                }
             }
-            let quad = [
-                a,
-                b,
-                mesh.opposite_vertex(h),
-                mesh.opposite_vertex(h.twin()),
-            ];
-            frozen[e.idx()] = quad.into_iter().any(is_apex);
         }
         let mirror = if sheets.doubled() {
             (0..mesh.halfedge_slots())
