@@ -260,34 +260,13 @@ fn coned(p: &CornerPairing<'_>) -> Result<ClosedCover, BuildError> {
             }
         }
     };
-    let (faces, sides) = (nf + nc, 3 * (nf + nc));
     let vertices = nv + apexes as usize;
-    let mut next = vec![HalfedgeId::INVALID; sides];
-    let mut origin = vec![VertexId::INVALID; sides];
-    let mut face = vec![FaceId::INVALID; sides];
-    let mut vertex_halfedge = vec![HalfedgeId::INVALID; vertices];
-    let mut face_halfedge = vec![HalfedgeId::INVALID; faces];
-    for d in 0..sides {
-        let h = halfedge(d);
-        let v = label(d);
-        next[h.idx()] = halfedge(next_corner(d as u32) as usize);
-        origin[h.idx()] = VertexId(v);
-        face[h.idx()] = FaceId::new(d / 3);
-        vertex_halfedge[v as usize] = h;
-        if d.is_multiple_of(3) {
-            face_halfedge[d / 3] = h;
-        }
-    }
-    let mesh = SurfaceMesh {
-        next,
-        origin,
-        face,
-        vertex_halfedge,
-        face_halfedge,
-        live_vertices: vertices,
-        live_edges: sides / 2,
-        live_faces: faces,
-    };
+    let mesh = SurfaceMesh::from_sides(
+        nf + nc,
+        vertices,
+        |f, i| halfedge(3 * f + i),
+        |f, i| VertexId(label(3 * f + i)),
+    );
     let sheets = Sheets {
         class: (0..vertices as u32).map(|v| v.min(nv as u32)).collect(),
         lift: (0..=nv as u32).map(VertexId).collect(),
