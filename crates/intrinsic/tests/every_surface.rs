@@ -256,6 +256,21 @@ fn the_laplacian_from_the_flips_cache_is_the_recomputed_one_bit_for_bit() {
     };
     for (name, s) in surfaces() {
         let tri = CoveredTriangulation::from_cover(&s.cover, &s.positions).unwrap();
+        // Taking the cover's mesh gives the same triangulation as copying it.
+        let taken = CoveredTriangulation::from_surface(s.clone()).unwrap();
+        assert_eq!(taken, tri, "{name}");
+        // An edge may flip iff no apex is among the corners of its two faces (and they are not
+        // each other's mirror).
+        let mesh = tri.cover().mesh();
+        for e in mesh.edges() {
+            let h = e.halfedge();
+            let corners = [mesh.face(h), mesh.face(h.twin())].map(|f| mesh.face_vertices(f));
+            let apex = corners.iter().flatten().any(|&v| tri.is_apex(v));
+            let self_mirror = tri
+                .mirror(h)
+                .is_some_and(|m| mesh.face(m) == mesh.face(h.twin()));
+            assert_eq!(tri.may_flip(e), !apex && !self_mirror, "{name}: edge {e:?}");
+        }
         let out = intrinsic_delaunay(DelaunayInput::Covered(tri), &request).unwrap();
         let flipped = out.covered.expect("the triangulation is asked for");
         assert_eq!(out.laplacian, Some(flipped.laplacian()), "{name}");

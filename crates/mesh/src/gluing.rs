@@ -54,6 +54,46 @@ impl SurfaceMesh {
         Self::glue(face_count, pairs, false)
     }
 
+    /// The closed mesh of `face_count` triangles whose side `i` of face `f` (from corner `i` to
+    /// corner `i + 1`) is half-edge `halfedge(f, i)`, leaving vertex `vertex(f, i)` (below
+    /// `vertex_count`): each half-edge's tables from its side, each face's half-edge its side
+    /// 0's, each vertex's half-edge its last corner's (in face and corner order). The caller
+    /// pairs the sides (half-edges `2e`, `2e + 1` glued) and numbers the vertices.
+    #[inline]
+    pub(crate) fn from_sides(
+        face_count: usize,
+        vertex_count: usize,
+        halfedge: impl Fn(usize, usize) -> HalfedgeId,
+        vertex: impl Fn(usize, usize) -> VertexId,
+    ) -> SurfaceMesh {
+        let sides = 3 * face_count;
+        let mut next = vec![HalfedgeId::INVALID; sides];
+        let mut origin = vec![VertexId::INVALID; sides];
+        let mut face = vec![FaceId::INVALID; sides];
+        let mut vertex_halfedge = vec![HalfedgeId::INVALID; vertex_count];
+        let mut face_halfedge = vec![HalfedgeId::INVALID; face_count];
+        for (f, first) in face_halfedge.iter_mut().enumerate() {
+            for i in 0..3 {
+                let (h, v) = (halfedge(f, i), vertex(f, i));
+                next[h.idx()] = halfedge(f, (i + 1) % 3);
+                origin[h.idx()] = v;
+                face[h.idx()] = FaceId::new(f);
+                vertex_halfedge[v.idx()] = h;
+            }
+            *first = halfedge(f, 0);
+        }
+        SurfaceMesh {
+            next,
+            origin,
+            face,
+            vertex_halfedge,
+            face_halfedge,
+            live_vertices: vertex_count,
+            live_edges: sides / 2,
+            live_faces: face_count,
+        }
+    }
+
     /// The gluing of [`Self::from_gluing`]; refuses several pieces when `connected`.
     fn glue(
         face_count: usize,
@@ -96,7 +136,6 @@ impl SurfaceMesh {
             v
         };
         // Corner c = 3f + i is the start of side c. The side glued to side c starts where c ends.
-        let next_side = |c: usize| c - c % 3 + (c % 3 + 1) % 3;
         let glued = |c: usize| glued_to[c] as usize;
         // Vertices: orbits of corners under "rotate": corner c -> the corner after the side glued
         // to the side entering c. Each orbit is one fan; orbits are the vertices.
@@ -119,32 +158,12 @@ impl SurfaceMesh {
                 }
             }
         }
-        let nh = sides;
-        let mut next = vec![HalfedgeId::INVALID; nh];
-        let mut origin = vec![VertexId::INVALID; nh];
-        let mut face = vec![FaceId::INVALID; nh];
-        let mut vertex_halfedge = vec![HalfedgeId::INVALID; vertex_count];
-        let mut face_halfedge = vec![HalfedgeId::INVALID; face_count];
-        for c in 0..sides {
-            let h = halfedge_of_side[c];
-            next[h.idx()] = halfedge_of_side[next_side(c)];
-            origin[h.idx()] = corner_vertex[c];
-            face[h.idx()] = FaceId::new(c / 3);
-            vertex_halfedge[corner_vertex[c].idx()] = h;
-            if c % 3 == 0 {
-                face_halfedge[c / 3] = h;
-            }
-        }
-        let mesh = SurfaceMesh {
-            next,
-            origin,
-            face,
-            vertex_halfedge,
-            face_halfedge,
-            live_vertices: vertex_count,
-            live_edges: nh / 2,
-            live_faces: face_count,
-        };
+        let mesh = Self::from_sides(
+            face_count,
+            vertex_count,
+            |f, i| halfedge_of_side[3 * f + i],
+            |f, i| corner_vertex[3 * f + i],
+        );
         if !connected {
             return Ok((mesh, corner_vertex));
         }

@@ -22,12 +22,11 @@ impl Covered {
     /// input vertices ([`CoveredSurface::from_triangles`] and its report); rows are the input
     /// vertex indices.
     pub fn from_surface(
-        surface: &CoveredSurface,
+        surface: CoveredSurface,
         report: &BuildReport,
         count: usize,
     ) -> Result<Self, Failure> {
-        let tri = CoveredTriangulation::from_cover(&surface.cover, &surface.positions)
-            .map_err(Failure::Geometry)?;
+        let tri = CoveredTriangulation::from_surface(surface).map_err(Failure::Geometry)?;
         Ok(Self {
             tri,
             rows: input_index(report),

@@ -415,7 +415,7 @@ impl Held {
                 .map_err(Failure::Geometry)?;
             return Ok(Held::Closed(Located::built(tri, &report, positions.len())));
         }
-        Covered::from_surface(&surface, &report, positions.len()).map(Held::Covered)
+        Covered::from_surface(surface, &report, positions.len()).map(Held::Covered)
     }
 
     /// The intrinsic triangulation of a closed oriented surface held: the surface's, or the

@@ -46,7 +46,8 @@ use crate::triangulation::convert::{
 use crate::triangulation::{IntrinsicTriangulation, trig};
 use surftopo_mesh::geometry::Point3;
 use surftopo_mesh::{
-    ClosedCover, EdgeId, FaceId, HalfedgeId, Lifting, SurfaceMesh, TwistedGluing, VertexId,
+    ClosedCover, CoveredSurface, EdgeId, FaceId, HalfedgeId, Lifting, Sheets, SurfaceMesh,
+    TwistedGluing, VertexId,
 };
 
 /// An intrinsic triangulation of a compact surface on its closed cover (see the module doc).
@@ -73,10 +74,7 @@ impl CoveredTriangulation {
     /// # Errors
     /// [`GeometryError::NonFiniteLength`] (huge coordinates).
     pub fn from_cover(cover: &ClosedCover, positions: &[Point3]) -> Result<Self, GeometryError> {
-        Self::from_cover_lengths(cover, |a, b| {
-            let [p, q] = [a, b].map(|v| positions[v as usize]);
-            ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
-        })
+        Self::from_cover_lengths(cover, |a, b| euclidean(positions, a, b))
     }
 
     /// The intrinsic triangulation of K with each edge as long as `length(a, b)` says for its
@@ -107,73 +105,23 @@ impl CoveredTriangulation {
         cover: &ClosedCover,
         length: impl Fn(EdgeId) -> f64,
     ) -> Result<Self, GeometryError> {
-        let mesh = &cover.mesh;
-        let sheets = &cover.sheets;
-        let surface_vertices = sheets
-            .apex_class()
-            .map_or(sheets.class_count(), |a| a as usize);
-        let class: Vec<u32> = (0..mesh.vertex_slots())
-            .map(|v| {
-                let v = VertexId::new(v);
-                if mesh.is_vertex_live(v) {
-                    sheets.class(v)
-                } else {
-                    u32::MAX
-                }
-            })
-            .collect();
-        let is_apex = |v: VertexId| class[v.idx()] as usize == surface_vertices;
-        let mut lengths = vec![0.0; mesh.edge_slots()];
-        for e in mesh.edges() {
-            let [a, b] = mesh.edge_vertices(e);
-            if !is_apex(a) && !is_apex(b) {
-                lengths[e.idx()] = length(e);
-            }
-        }
-        // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
-        // (boundary edge ab, apex edges L, L) is then valid, ab ≤ L < 2L.
-        let mut longest = vec![0.0f64; mesh.vertex_slots()];
-        for h in mesh.halfedges() {
-            let apex = mesh.origin(h);
-            if is_apex(apex) {
-                let l = &mut longest[apex.idx()];
-                *l = l.max(lengths[mesh.next(h).edge().idx()]);
-            }
-        }
-        let mut frozen = vec![false; mesh.edge_slots()];
-        for e in mesh.edges() {
-            let h = e.halfedge();
-            let [a, b] = mesh.edge_vertices(e);
-            if let Some(apex) = [a, b].into_iter().find(|&v| is_apex(v)) {
-                lengths[e.idx()] = longest[apex.idx()];
-            }
-            let quad = [
-                a,
-                b,
-                mesh.opposite_vertex(h),
-                mesh.opposite_vertex(h.twin()),
-            ];
-            frozen[e.idx()] = quad.into_iter().any(is_apex);
-        }
-        let mirror = if sheets.doubled() {
-            (0..mesh.halfedge_slots())
-                .map(|h| {
-                    sheets
-                        .mirror(HalfedgeId::new(h))
-                        .unwrap_or(HalfedgeId::INVALID)
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
-        let tri = IntrinsicTriangulation::from_parts(mesh.clone(), lengths)?;
-        Ok(Self {
-            tri,
-            class,
-            surface_vertices,
-            mirror,
-            frozen,
-        })
+        let parts = CoverParts::new(&cover.mesh, &cover.sheets, length);
+        parts.with_mesh(cover.mesh.clone())
+    }
+
+    /// [`Self::from_cover`] of a surface in space, taking its cover's mesh instead of copying
+    /// it (the same triangulation).
+    ///
+    /// # Errors
+    /// As [`Self::from_cover`].
+    pub fn from_surface(surface: CoveredSurface) -> Result<Self, GeometryError> {
+        let CoveredSurface { cover, positions } = surface;
+        let ClosedCover { mesh, sheets } = cover;
+        let parts = CoverParts::new(&mesh, &sheets, |e| {
+            let [a, b] = mesh.edge_vertices(e).map(|v| sheets.class(v));
+            euclidean(&positions, a, b)
+        });
+        parts.with_mesh(mesh)
     }
 
     /// The surface a portalgon file describes, glued in any way (format version 2:
@@ -436,15 +384,54 @@ impl CoveredTriangulation {
     }
 
     /// [`Self::cotan_weights`] from the half-angle tangents squared `t2` of D (by half-edge id).
+    /// Edge e's half-edges are `2e` and `2e + 1`: one pass over all of them (it vectorises, as
+    /// [`crate::cotan_laplacian`]'s), then the frozen edges again, the only ones a virtual
+    /// triangle can touch (a cone face has an apex corner, so each of its edges has an apex
+    /// in its quad), summing their real triangles' halves alone. The sums are those of a pass
+    /// over the real faces (two terms at most, and `0.5 x + 0.5 y = 0.5 (x + y)` exactly).
     fn weights_from_tan_half_sq(&self, t2: &[f64]) -> Vec<f64> {
         let mesh = self.tri.mesh();
-        let mut w = vec![0.0; mesh.edge_slots()];
-        for f in mesh.faces().filter(|&f| self.is_real_face(f)) {
-            for h in mesh.face_halfedges(f) {
-                w[h.edge().idx()] += 0.5 * trig::cot_from_tan_half_sq(t2[h.idx()]);
+        let half_cot = |h: HalfedgeId| 0.5 * trig::cot_from_tan_half_sq(t2[h.idx()]);
+        let mut w: Vec<f64> = t2
+            .chunks_exact(2)
+            .map(|t| 0.5 * (trig::cot_from_tan_half_sq(t[0]) + trig::cot_from_tan_half_sq(t[1])))
+            .collect();
+        for (e, &frozen) in self.frozen.iter().enumerate() {
+            let e = EdgeId::new(e);
+            if !mesh.is_edge_live(e) {
+                w[e.idx()] = 0.0;
+            } else if frozen {
+                let h = e.halfedge();
+                w[e.idx()] = [h, h.twin()]
+                    .into_iter()
+                    .filter(|&g| self.is_real_face(mesh.face(g)))
+                    .map(half_cot)
+                    .sum();
             }
         }
         w
+    }
+
+    /// The lumped mass of K's vertices: a third of each triangle of K's area per corner, in
+    /// face id order (one pass over D's faces, cone faces and mirror copies skipped).
+    fn lumped_mass(&self) -> Vec<f64> {
+        let mesh = self.tri.mesh();
+        let mut mass = vec![0.0; self.surface_vertices];
+        for f in mesh.faces() {
+            let halfedges = mesh.face_halfedges(f);
+            let rows = halfedges.map(|h| self.class[mesh.origin(h).idx()] as usize);
+            if rows.contains(&self.surface_vertices) {
+                continue; // a cone face (virtual)
+            }
+            if self.mirror(halfedges[0]).is_none_or(|m| f <= mesh.face(m)) {
+                let [a, b, c] = halfedges.map(|h| self.tri.halfedge_length(h));
+                let third = trig::area(a, b, c) / 3.0;
+                for r in rows {
+                    mass[r] += third;
+                }
+            }
+        }
+        mass
     }
 
     /// The cotan Laplacian of K (positive semidefinite, as [`crate::cotan_laplacian`]): one row
@@ -456,30 +443,121 @@ impl CoveredTriangulation {
     /// [`Self::laplacian`] from the half-angle tangents squared `t2` of D (by half-edge id), as
     /// [`Self::flip_keeping_tan_half_sq`] returns them.
     pub(crate) fn laplacian_from_tan_half_sq(&self, t2: &[f64]) -> SparseMatrix {
-        let weights = self.weights_from_tan_half_sq(t2);
+        self.assemble(&self.weights_from_tan_half_sq(t2))
+    }
+
+    /// The Laplacian of K from the cotan weights of D's edges (by edge id).
+    fn assemble(&self, weights: &[f64]) -> SparseMatrix {
         let mesh = self.tri.mesh();
         let class = &self.class;
-        let edges: Vec<EdgeId> = self.surface_edges().collect();
-        assemble_laplacian(self.surface_vertices, || {
-            edges.iter().map(|&e| {
+        let entries: Vec<(usize, usize, f64)> = self
+            .surface_edges()
+            .map(|e| {
                 let [a, b] = mesh.edge_vertices(e).map(|v| class[v.idx()] as usize);
                 (a, b, weights[e.idx()])
             })
-        })
+            .collect();
+        assemble_laplacian(self.surface_vertices, || entries.iter().copied())
     }
 
     /// The lumped (barycentric) mass matrix of K: a third of each triangle's area per corner.
     pub fn mass(&self) -> SparseMatrix {
-        let mesh = self.tri.mesh();
-        let mut mass = vec![0.0; self.surface_vertices];
-        for f in self.surface_faces() {
-            let [a, b, c] = self.tri.face_sides(f);
-            let third = trig::area(a, b, c) / 3.0;
-            for v in mesh.face_vertices(f) {
-                mass[self.class[v.idx()] as usize] += third;
+        SparseMatrix::diagonal(self.lumped_mass())
+    }
+}
+
+/// The distance between the positions of vertex classes `a` and `b`.
+fn euclidean(positions: &[Point3], a: u32, b: u32) -> f64 {
+    let [p, q] = [a, b].map(|v| positions[v as usize]);
+    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+}
+
+/// A [`CoveredTriangulation`] but its mesh: what [`CoveredTriangulation::from_cover_edge_lengths`]
+/// reads off the cover.
+struct CoverParts {
+    lengths: Vec<f64>,
+    class: Vec<u32>,
+    surface_vertices: usize,
+    mirror: Vec<HalfedgeId>,
+    frozen: Vec<bool>,
+}
+
+impl CoverParts {
+    /// Each edge of D without an apex end as long as `length(e)` says, each apex edge as long
+    /// as the longest boundary edge of its loop; classes, mirrors and frozen edges from the
+    /// cover.
+    fn new(mesh: &SurfaceMesh, sheets: &Sheets, length: impl Fn(EdgeId) -> f64) -> Self {
+        let surface_vertices = sheets
+            .apex_class()
+            .map_or(sheets.class_count(), |a| a as usize);
+        let class: Vec<u32> = (0..mesh.vertex_slots())
+            .map(|v| {
+                let v = VertexId::new(v);
+                if mesh.is_vertex_live(v) {
+                    sheets.class(v)
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        let is_apex = |v: VertexId| class[v.idx()] as usize == surface_vertices;
+        let mut lengths = vec![0.0; mesh.edge_slots()];
+        for e in mesh.edges() {
+            let [a, b] = mesh.edge_vertices(e);
+            if !is_apex(a) && !is_apex(b) {
+                lengths[e.idx()] = length(e);
             }
         }
-        SparseMatrix::diagonal(mass)
+        // Each apex edge as long as the longest boundary edge of its loop: every cone triangle
+        // (boundary edge ab, apex edges L, L) is then valid, ab ≤ L < 2L.
+        let mut longest = vec![0.0f64; mesh.vertex_slots()];
+        for h in mesh.halfedges() {
+            let apex = mesh.origin(h);
+            if is_apex(apex) {
+                let l = &mut longest[apex.idx()];
+                *l = l.max(lengths[mesh.next(h).edge().idx()]);
+            }
+        }
+        // An edge is frozen when its quad (the corners of its two faces) has an apex: when it
+        // is a side of a face with an apex corner (a cone face), marked from the apexes' side.
+        let mut frozen = vec![false; mesh.edge_slots()];
+        for h in mesh.halfedges() {
+            if is_apex(mesh.origin(h)) {
+                lengths[h.edge().idx()] = longest[mesh.origin(h).idx()];
+                for g in mesh.face_halfedges(mesh.face(h)) {
+                    frozen[g.edge().idx()] = true;
+                }
+            }
+        }
+        let mirror = if sheets.doubled() {
+            (0..mesh.halfedge_slots())
+                .map(|h| {
+                    sheets
+                        .mirror(HalfedgeId::new(h))
+                        .unwrap_or(HalfedgeId::INVALID)
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Self {
+            lengths,
+            class,
+            surface_vertices,
+            mirror,
+            frozen,
+        }
+    }
+
+    /// The triangulation on `mesh` (the cover's).
+    fn with_mesh(self, mesh: SurfaceMesh) -> Result<CoveredTriangulation, GeometryError> {
+        Ok(CoveredTriangulation {
+            tri: IntrinsicTriangulation::from_parts(mesh, self.lengths)?,
+            class: self.class,
+            surface_vertices: self.surface_vertices,
+            mirror: self.mirror,
+            frozen: self.frozen,
+        })
     }
 }
 

@@ -3,7 +3,7 @@
 
 use super::Inspection;
 use crate::error::BuildError;
-use crate::ids::{FaceId, HalfedgeId, VertexId};
+use crate::ids::{HalfedgeId, VertexId};
 use crate::topology::SurfaceMesh;
 use crate::union_find::UnionFind;
 use std::borrow::Cow;
@@ -187,34 +187,13 @@ impl<'a> CornerPairing<'a> {
     /// reorientation).
     pub(crate) fn into_mesh(self) -> SurfaceMesh {
         let corner_halfedge = &self.edges.corner_halfedge;
-        let nh = self.edges.halfedge_corner.len();
-        let nf = self.remapped.len();
-        let nv = self.new_to_old.len();
-        let mut next = vec![HalfedgeId::INVALID; nh];
-        let mut origin = vec![VertexId::INVALID; nh];
-        let mut face = vec![FaceId::INVALID; nh];
-        let mut vertex_halfedge = vec![HalfedgeId::INVALID; nv];
-        let mut face_halfedge = vec![HalfedgeId::INVALID; nf];
-        for (f, t) in self.remapped.iter().enumerate() {
-            for i in 0..3 {
-                let h = corner_halfedge[3 * f + i];
-                next[h.idx()] = corner_halfedge[3 * f + (i + 1) % 3];
-                origin[h.idx()] = VertexId(t[i]);
-                face[h.idx()] = FaceId::new(f);
-                vertex_halfedge[t[i] as usize] = h;
-            }
-            face_halfedge[f] = corner_halfedge[3 * f];
-        }
-        SurfaceMesh {
-            next,
-            origin,
-            face,
-            vertex_halfedge,
-            face_halfedge,
-            live_vertices: nv,
-            live_edges: nh / 2,
-            live_faces: nf,
-        }
+        let remapped = &self.remapped;
+        SurfaceMesh::from_sides(
+            remapped.len(),
+            self.new_to_old.len(),
+            |f, i| corner_halfedge[3 * f + i],
+            |f, i| VertexId(remapped[f][i]),
+        )
     }
 
     /// The vertex (new id) at corner `c`.
