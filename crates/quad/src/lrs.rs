@@ -276,6 +276,7 @@ fn replay(
     cases: ExpansionCases,
 ) -> Result<Expansion, QuadError> {
     let slots = in_m.len();
+    let mut ticker = surftopo_mesh::stop::Ticker::default();
     for (i, &e) in operations.iter().enumerate() {
         ticker.tick();
         mesh.flip(e).map_err(|err| {
