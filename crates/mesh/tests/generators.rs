@@ -623,3 +623,64 @@ fn shuffled_faces_are_the_same_surface_in_another_order() {
         shuffled_triangles
     );
 }
+
+/// The smallest height over longest side (twice the area over the longest side squared) of the
+/// faces around `w`, 0 when one has exactly zero area (the exact predicate).
+fn star_height(s: &Surface, w: surftopo_mesh::VertexId) -> f64 {
+    use surftopo_mesh::geometry::{distance, is_zero_area_triangle, triangle_area};
+    s.mesh
+        .outgoing(w)
+        .map(|h| {
+            let [a, b, c] = s
+                .mesh
+                .face_vertices(s.mesh.face(h))
+                .map(|v| s.positions[v.idx()]);
+            if is_zero_area_triangle(a, b, c) {
+                return 0.0;
+            }
+            let l = distance(a, b).max(distance(b, c)).max(distance(c, a));
+            2.0 * triangle_area(a, b, c) / (l * l)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn random_vertex_splits_are_not_made_without_a_non_flat_placement() {
+    // Every vertex on one line: every placement of a new vertex makes a flat triangle, so no
+    // split is made, whatever the seed (each split's 8 draws all fail).
+    let mut line = tetrahedron();
+    for (i, p) in line.positions.iter_mut().enumerate() {
+        *p = [i as f64, 2.0 * i as f64, 0.0];
+    }
+    for seed in 0..20 {
+        assert_eq!(random_vertex_splits(&line, 30, seed), line, "seed {seed}");
+    }
+    // Half an icosphere collapsed onto one point: splits there have no non-flat placement and
+    // are redrawn; the splits made elsewhere leave no flat triangle at a new vertex.
+    let mut half = icosphere(1);
+    for p in half.positions.iter_mut().filter(|p| p[2] > 0.0) {
+        *p = [0.0, 0.0, 1.0];
+    }
+    let (v, g) = (half.mesh.vertex_count(), 0);
+    for seed in 0..20 {
+        let split = random_vertex_splits(&half, 40, seed);
+        let added = split.mesh.vertex_count() - v;
+        assert!(added > 0, "seed {seed}: no split made");
+        check_surface(
+            &split,
+            v + added,
+            half.mesh.edge_count() + 3 * added,
+            half.mesh.face_count() + 2 * added,
+            g,
+        );
+        assert_eq!(split.positions[..v], half.positions[..]);
+        for w in (v..v + added).map(surftopo_mesh::VertexId::new) {
+            let h = star_height(&split, w);
+            assert!(
+                h > 1e-12,
+                "seed {seed}: new vertex {w:?} has a face of height {h}"
+            );
+        }
+        assert_eq!(split, random_vertex_splits(&half, 40, seed));
+    }
+}
