@@ -14,7 +14,7 @@ use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox};
 use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, SurfaceKind, geometry};
-use surftopo_quad::quality::QualityObjective;
+use surftopo_quad::quality::{QualityMeasured, QualityObjective};
 use surftopo_quad::{OwnQuads, QuadAlgorithm, positions_with_added, quadrangulate_polygons};
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
