@@ -26,7 +26,6 @@ condition").
 from __future__ import annotations
 
 import argparse
-import datetime
 import itertools
 import json
 import os
@@ -39,8 +38,8 @@ from pathlib import Path
 import numpy as np
 
 import surftopo
+from bench_support import REPOSITORY, command_line, header, publish, shared_meshes
 
-REPOSITORY = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(REPOSITORY / "crates" / "python" / "tests"))
 from test_boundary_condition import boundary_edges  # noqa: E402  (the tests' count)
 SHARED = [
@@ -55,17 +54,9 @@ SHARED = [
 
 def inputs(limit_faces: tuple[int, int]):
     """(name, V, F) of the shared meshes within the face range, then generated ones."""
-    folder = os.environ.get("SURFTOPO_MESHES")
-    if folder:
-        root = Path(folder) if Path(folder).is_absolute() else REPOSITORY / folder
-        for name in SHARED:
-            path = root / name
-            if path.is_file():
-                V, F = surftopo.read_mesh(path)
-                if limit_faces[0] <= len(F) <= limit_faces[1]:
-                    yield name.split(".")[0], V, F
-    else:
-        print("note: SURFTOPO_MESHES is not set: generated inputs only", file=sys.stderr)
+    for name, V, F in shared_meshes(SHARED):
+        if limit_faces[0] <= len(F) <= limit_faces[1]:
+            yield name, V, F
     yield "icosphere(6)", *surftopo.icosphere(6)
     yield "torus(250, 200)", *surftopo.torus(250, 200)
 
@@ -254,22 +245,15 @@ def main():
         r = measure(name, V, F, args.rounds, contenders)
         results.append(r)
         print(json.dumps({k: v for k, v in r.items() if k != "rounds"}), file=sys.stderr)
-    command = "python " + " ".join([str(Path(sys.argv[0]))] + sys.argv[1:])
+    command = command_line()
     versions = {"python": platform.python_version(), "numpy": np.__version__}
     for module in ("scipy", "robust_laplacian", "igl"):
         try:
             versions[module] = getattr(__import__(module), "__version__", "installed")
         except ImportError:
             pass
-    report = "\n".join([
-        "# surftopo.laplacian against robust_laplacian and libigl",
-        "",
-        f"Command: `SURFTOPO_MESHES={os.environ.get('SURFTOPO_MESHES', '')} {command}`",
-        "",
-        f"Date: {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "
-        f"{os.cpu_count()} cores, load average {load_start:.2f} at the start and "
-        f"{os.getloadavg()[0]:.2f} at the end; "
-        + ", ".join(f"{k} {v}" for k, v in versions.items()),
+    title = "# surftopo.laplacian against robust_laplacian and libigl"
+    report = "\n".join(header(title, command, load_start, versions) + [
         "",
         f"Median wall time over {args.rounds} rounds (each round calls every contender once, the "
         "first one rotating, after one warm-up call each); the ratios are the ratio of the "
@@ -293,13 +277,7 @@ def main():
         summary(results, contenders),
         "",
     ])
-    print(report)
-    if args.out:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text(report)
-        args.out.with_suffix(".jsonl").write_text(
-            "".join(json.dumps({**r, "command": command}) + "\n" for r in results)
-        )
+    publish(report, results, command, args.out)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,6 @@ difference over the largest entry, referenced vertices).
 from __future__ import annotations
 
 import argparse
-import datetime
 import json
 import os
 import platform
@@ -30,8 +29,8 @@ from pathlib import Path
 import numpy as np
 
 import surftopo
+from bench_support import REPOSITORY, command_line, header, publish, shared_meshes
 
-REPOSITORY = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(REPOSITORY / "crates" / "python" / "tests"))
 from test_tufted import _made_non_manifold  # noqa: E402  (the tests' non-manifold maker)
 
@@ -55,18 +54,9 @@ def with_books_and_duplicates(V, F, seed):
 
 
 def inputs(seed):
-    folder = os.environ.get("SURFTOPO_MESHES")
-    if folder:
-        root = Path(folder) if Path(folder).is_absolute() else REPOSITORY / folder
-        for name in SHARED:
-            path = root / name
-            if path.is_file():
-                V, F = surftopo.read_mesh(path)
-                short = name.split(".")[0]
-                yield short, V, F
-                yield f"{short} made non-manifold", *_made_non_manifold(V, F, seed)
-    else:
-        print("note: SURFTOPO_MESHES is not set: generated inputs only", file=sys.stderr)
+    for short, V, F in shared_meshes(SHARED):
+        yield short, V, F
+        yield f"{short} made non-manifold", *_made_non_manifold(V, F, seed)
     V, F = surftopo.icosphere(5)
     yield "icosphere(5), no shared vertex", *unshared(V, F)
     V, F = surftopo.icosphere(6)
@@ -144,19 +134,16 @@ def main():
         r = measure(name, V, F, args.rounds, robust_laplacian)
         results.append(r)
         print(json.dumps(r), file=sys.stderr)
-    command = "python " + " ".join([str(Path(sys.argv[0]))] + sys.argv[1:])
+    command = command_line()
     ratios = [r["ratio_of_medians"] for r in results]
     paired = [r["median_paired_ratio"] for r in results]
-    report = "\n".join([
-        "# The tufted-cover Laplacian: surftopo against robust_laplacian",
-        "",
-        f"Command: `SURFTOPO_MESHES={os.environ.get('SURFTOPO_MESHES', '')} {command}`",
-        "",
-        f"Date: {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC; "
-        f"{os.cpu_count()} cores, load average {load_start:.2f} at the start and "
-        f"{os.getloadavg()[0]:.2f} at the end; python "
-        f"{platform.python_version()}, numpy {np.__version__}, robust_laplacian "
-        f"{getattr(robust_laplacian, '__version__', 'installed')}",
+    versions = {
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "robust_laplacian": getattr(robust_laplacian, "__version__", "installed"),
+    }
+    title = "# The tufted-cover Laplacian: surftopo against robust_laplacian"
+    report = "\n".join(header(title, command, load_start, versions) + [
         "",
         f"Median wall time over {args.rounds} rounds of `surftopo.laplacian(V, F, tufted=True, "
         "mollify_factor=1e-5)` and `robust_laplacian.mesh_laplacian(V, F, mollify_factor=1e-5)`, "
@@ -174,13 +161,7 @@ def main():
         f"{min(paired):.1f}x to {max(paired):.1f}x (median {statistics.median(paired):.1f}x).",
         "",
     ])
-    print(report)
-    if args.out:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        args.out.write_text(report)
-        args.out.with_suffix(".jsonl").write_text(
-            "".join(json.dumps({**r, "command": command}) + "\n" for r in results)
-        )
+    publish(report, results, command, args.out)
 
 
 if __name__ == "__main__":

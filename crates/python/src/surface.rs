@@ -14,7 +14,7 @@ use surftopo_io::{PolygonSoup, WriteOptions};
 use surftopo_irreducible::Algorithm;
 use surftopo_mesh::generators::{self, CavityBox};
 use surftopo_mesh::{BuildReport, CoveredSurface, Inspection, SurfaceKind, geometry};
-use surftopo_quad::quality::QualityObjective;
+use surftopo_quad::quality::{QualityMeasured, QualityObjective};
 use surftopo_quad::{OwnQuads, QuadAlgorithm, positions_with_added, quadrangulate_polygons};
 
 /// The input index of each vertex id of a mesh built by `surftopo_mesh::build`.
@@ -340,11 +340,7 @@ pub fn irreducible<'py>(
         surftopo_mesh::inspect(n, t)
     };
     let reduced = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
-        let cut = faces.triangulated(&positions);
-        surftopo_mesh::stop::check();
-        let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
-            .map_err(|e| cut.on_faces(e.into()))?;
-        surftopo_mesh::stop::check();
+        let (_, surface, report) = built(faces, positions)?;
         let input_index = input_index(&report);
         let input = count(&surface.cover.surface_triangles());
         let reduction = surftopo_irreducible::reduce_surface(surface.cover, algorithm)
@@ -402,6 +398,20 @@ pub fn irreducible<'py>(
     ))
 }
 
+/// The faces cut into triangles (polygons by the CLI's rule) and built into a surface, with the
+/// build's report; Python's stop is checked after each step. Call without the GIL.
+fn built(
+    faces: arrays::FaceArg,
+    positions: Vec<[f64; 3]>,
+) -> Result<(arrays::Triangulated, CoveredSurface, BuildReport), Failure> {
+    let cut = faces.triangulated(&positions);
+    surftopo_mesh::stop::check();
+    let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
+        .map_err(|e| cut.on_faces(e.into()))?;
+    surftopo_mesh::stop::check();
+    Ok((cut, surface, report))
+}
+
 /// Parses a JSON text with Python's `json` module (keeps the key order of the Rust struct).
 pub fn json_to_python<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
     py.import("json")?.call_method1("loads", (text,))
@@ -453,11 +463,7 @@ pub fn quadrangulate<'py>(
     let positions = vertices.positions().into_owned();
     let input_vertices = vertices.len() as u32;
     let done = crate::interrupt::interruptible(py, move |_| -> Result<_, Failure> {
-        let cut = faces.triangulated(&positions);
-        surftopo_mesh::stop::check();
-        let (surface, report) = CoveredSurface::from_triangles(positions, &cut.triangles)
-            .map_err(|e| cut.on_faces(e.into()))?;
-        surftopo_mesh::stop::check();
+        let (cut, surface, report) = built(faces, positions)?;
         let input_index = input_index(&report);
         let polygons: Box<dyn Iterator<Item = &[u32]>> = match &cut.polygons {
             Some(p) => Box::new(p.faces()),
@@ -505,6 +511,9 @@ pub fn quadrangulate<'py>(
     Ok((index_array(py, &quads).into_any(), stats))
 }
 
+/// A generated mesh as Python gets it: the positions `(n, 3)` and the triangles `(m, 3)`.
+type Mesh<'py> = (Bound<'py, PyAny>, Bound<'py, PyAny>);
+
 /// The most triangles a generator makes (ids are `u32`; memory is the practical bound).
 const MAX_TRIANGLES: u64 = 200_000_000;
 
@@ -514,7 +523,7 @@ fn generated<'py, S: Into<CoveredSurface>>(
     py: Python<'py>,
     triangles: u64,
     make: impl FnOnce() -> S + Send,
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+) -> PyResult<Mesh<'py>> {
     if triangles > MAX_TRIANGLES {
         return Err(invalid(format!(
             "about {triangles} triangles asked for; at most {MAX_TRIANGLES} are supported"
@@ -530,17 +539,14 @@ fn generated<'py, S: Into<CoveredSurface>>(
 
 /// The boundary of a tetrahedron (4 vertices, genus 0).
 #[pyfunction]
-pub fn tetrahedron(py: Python<'_>) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn tetrahedron(py: Python<'_>) -> PyResult<Mesh<'_>> {
     generated(py, 4, generators::tetrahedron)
 }
 
 /// An icosahedron refined `subdivisions` times by 1-to-4 splits, on the unit sphere.
 #[pyfunction]
 #[pyo3(signature = (subdivisions = 3))]
-pub fn icosphere(
-    py: Python<'_>,
-    subdivisions: u32,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn icosphere(py: Python<'_>, subdivisions: u32) -> PyResult<Mesh<'_>> {
     let triangles = 20u64.saturating_mul(4u64.saturating_pow(subdivisions));
     generated(py, triangles, move || generators::icosphere(subdivisions))
 }
@@ -548,7 +554,7 @@ pub fn icosphere(
 /// A torus of revolution as an `m x n` grid (`2 m n` triangles, genus 1); `m, n >= 3`.
 #[pyfunction]
 #[pyo3(signature = (m = 24, n = 12))]
-pub fn torus(py: Python<'_>, m: u32, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn torus(py: Python<'_>, m: u32, n: u32) -> PyResult<Mesh<'_>> {
     if m < 3 || n < 3 {
         return Err(invalid("torus: m and n must be at least 3").into_pyerr(py));
     }
@@ -560,11 +566,7 @@ pub fn torus(py: Python<'_>, m: u32, n: u32) -> PyResult<(Bound<'_, PyAny>, Boun
 /// A closed surface of genus `genus`: a slab with `genus` square through-holes, resolution `size`.
 #[pyfunction]
 #[pyo3(signature = (genus = 2, size = 2))]
-pub fn genus_surface(
-    py: Python<'_>,
-    genus: u32,
-    size: u32,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn genus_surface(py: Python<'_>, genus: u32, size: u32) -> PyResult<Mesh<'_>> {
     let s = size.max(1);
     let triangles = CavityBox::new(0, genus, s, s, s, s).triangle_count();
     generated(py, triangles, move || {
@@ -576,12 +578,7 @@ pub fn genus_surface(
 /// refined to about `triangles` triangles.
 #[pyfunction]
 #[pyo3(signature = (cavities = 3844, holes = 0, triangles = 100_000))]
-pub fn cavity_box(
-    py: Python<'_>,
-    cavities: u32,
-    holes: u32,
-    triangles: u64,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn cavity_box(py: Python<'_>, cavities: u32, holes: u32, triangles: u64) -> PyResult<Mesh<'_>> {
     let fitted = CavityBox::fit(cavities, holes, triangles.min(MAX_TRIANGLES + 1));
     generated(py, fitted.triangle_count().max(triangles), move || {
         fitted.generate()
@@ -600,66 +597,58 @@ fn check_grid(py: Python<'_>, what: &str, m: u32, n: u32, least: (u32, u32)) -> 
     Ok(())
 }
 
+/// The `m x n` grid surface `make(m, n)` (`2 m n` triangles), refused below the least sizes
+/// `least` as [`check_grid`] says.
+fn grid<'py, S: Into<CoveredSurface>>(
+    py: Python<'py>,
+    what: &str,
+    (m, n): (u32, u32),
+    least: (u32, u32),
+    make: fn(u32, u32) -> S,
+) -> PyResult<Mesh<'py>> {
+    check_grid(py, what, m, n, least)?;
+    generated(py, 2 * u64::from(m) * u64::from(n), move || make(m, n))
+}
+
 /// The unit square as an `n x n` grid: a disk (`2 n^2` triangles), `n >= 1`.
 #[pyfunction]
 #[pyo3(signature = (n = 8))]
-pub fn disk(py: Python<'_>, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
-    check_grid(py, "disk", n, n, (1, 1))?;
-    generated(py, 2 * u64::from(n).pow(2), move || generators::disk(n))
+pub fn disk(py: Python<'_>, n: u32) -> PyResult<Mesh<'_>> {
+    grid(py, "disk", (n, n), (1, 1), |n, _| generators::disk(n))
 }
 
 /// An open cylinder: an annulus as an `m x n` grid (`2 m n` triangles), `m >= 3`, `n >= 1`.
 #[pyfunction]
 #[pyo3(signature = (m = 24, n = 4))]
-pub fn annulus(py: Python<'_>, m: u32, n: u32) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
-    check_grid(py, "annulus", m, n, (3, 1))?;
-    generated(py, 2 * u64::from(m) * u64::from(n), move || {
-        generators::annulus(m, n)
-    })
+pub fn annulus(py: Python<'_>, m: u32, n: u32) -> PyResult<Mesh<'_>> {
+    grid(py, "annulus", (m, n), (3, 1), generators::annulus)
 }
 
 /// A Möbius band as an `m x n` grid glued with a half twist (`2 m n` triangles), `m >= 5`,
 /// `n >= 1`.
 #[pyfunction]
 #[pyo3(signature = (m = 24, n = 4))]
-pub fn mobius_band(
-    py: Python<'_>,
-    m: u32,
-    n: u32,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
-    check_grid(py, "mobius_band", m, n, (5, 1))?;
-    generated(py, 2 * u64::from(m) * u64::from(n), move || {
-        generators::mobius_band(m, n)
-    })
+pub fn mobius_band(py: Python<'_>, m: u32, n: u32) -> PyResult<Mesh<'_>> {
+    grid(py, "mobius_band", (m, n), (5, 1), generators::mobius_band)
 }
 
 /// The 6-vertex projective plane (10 triangles).
 #[pyfunction]
-pub fn projective_plane(py: Python<'_>) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn projective_plane(py: Python<'_>) -> PyResult<Mesh<'_>> {
     generated(py, 10, generators::projective_plane)
 }
 
 /// A Klein bottle as an `m x n` grid on the figure-8 immersion (`2 m n` triangles), `m, n >= 3`.
 #[pyfunction]
 #[pyo3(signature = (m = 24, n = 12))]
-pub fn klein_bottle(
-    py: Python<'_>,
-    m: u32,
-    n: u32,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
-    check_grid(py, "klein_bottle", m, n, (3, 3))?;
-    generated(py, 2 * u64::from(m) * u64::from(n), move || {
-        generators::klein_bottle(m, n)
-    })
+pub fn klein_bottle(py: Python<'_>, m: u32, n: u32) -> PyResult<Mesh<'_>> {
+    grid(py, "klein_bottle", (m, n), (3, 3), generators::klein_bottle)
 }
 
 /// The non-orientable surface N_k with `crosscaps >= 1` crosscaps (`8k + 2` triangles).
 #[pyfunction]
 #[pyo3(signature = (crosscaps = 3))]
-pub fn non_orientable(
-    py: Python<'_>,
-    crosscaps: u32,
-) -> PyResult<(Bound<'_, PyAny>, Bound<'_, PyAny>)> {
+pub fn non_orientable(py: Python<'_>, crosscaps: u32) -> PyResult<Mesh<'_>> {
     if crosscaps == 0 {
         return Err(invalid("non_orientable: crosscaps must be at least 1").into_pyerr(py));
     }

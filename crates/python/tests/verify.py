@@ -147,6 +147,19 @@ def quads_pair_triangles(Q: np.ndarray, F: np.ndarray) -> bool:
     return len(used) == len(triangles) == 2 * len(Q)
 
 
+def laplacian_spectrum(L) -> tuple[np.ndarray, np.ndarray, float]:
+    """Checks what every cotan Laplacian is (symmetric, rows summing to zero, positive
+    semi-definite) and returns its dense form, its eigenvalues (ascending) and its largest
+    absolute entry, the scale of the tolerances."""
+    dense = L.toarray()
+    scale = np.abs(dense).max()
+    assert np.abs(dense - dense.T).max() <= 1e-14 * scale
+    assert np.abs(dense.sum(axis=1)).max() <= 1e-12 * scale
+    eigenvalues = np.linalg.eigvalsh(dense)
+    assert eigenvalues[0] >= -1e-10 * scale
+    return dense, eigenvalues, scale
+
+
 def triangle_areas(V: np.ndarray, F: np.ndarray) -> np.ndarray:
     return 0.5 * np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]), axis=1)
 

@@ -33,8 +33,8 @@ pub use quadrangulate::{
     QuadAlgorithm, QuadOptions, QuadResult, QuadStats, quadrangulate, quadrangulate_with,
 };
 pub use quality::{
-    QuadFigures, QualityObjective, QualityQuads, QualityReport, QualitySummary, pair_costs,
-    quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
+    QuadFigures, QualityMeasured, QualityObjective, QualityQuads, QualityReport, QualitySummary,
+    pair_costs, quadrangulate_by_quality, quadrangulate_with_quality, quality_report,
 };
 pub use surface::{
     AllQuads, ComponentQuads, OwnQuads, PolygonQuads, SurfaceOptions, SurfaceQuads,

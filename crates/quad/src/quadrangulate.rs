@@ -226,28 +226,16 @@ pub fn quadrangulate_with(
         ))
     })?;
     let (quads, diagonals) = quads_of(paired_mesh, &pairing);
-    let stats = QuadStats {
-        algorithm: algorithm.name().to_string(),
-        faces,
-        initial_pairing_seconds: paired.initial_pairing_seconds,
-        paired_percent: 100.0 * (faces - paired.unpaired) as f64 / faces as f64,
-        unpaired: paired.unpaired,
-        augmentation_seconds: paired.augmentation_seconds,
-        total_seconds: start.elapsed().as_secs_f64(),
-        flipped_edges: paired.flipped_edges,
-        file_order: paired.karp_sipser.is_some_and(|ks| ks.file_order),
-        subdivision_levels: paired.karp_sipser.map_or(0, |ks| ks.subdivision_levels),
-        ..QuadStats::default()
-    };
+    let stats = paired.run.stats(algorithm, faces, start);
     Ok(QuadResult {
         quads,
         diagonals,
         triangulation: paired.triangulation,
         pairing,
         stats,
-        augmentation: paired.augmentation,
-        expansion: paired.expansion,
-        karp_sipser: paired.karp_sipser,
+        augmentation: paired.run.augmentation,
+        expansion: paired.run.expansion,
+        karp_sipser: paired.run.karp_sipser,
     })
 }
 
@@ -255,13 +243,87 @@ pub fn quadrangulate_with(
 struct Paired {
     triangulation: Option<SurfaceMesh>,
     pairing: Pairing,
-    unpaired: usize,
-    initial_pairing_seconds: f64,
-    augmentation_seconds: f64,
-    augmentation: AugmentStats,
-    flipped_edges: usize,
-    expansion: Option<ExpansionCases>,
-    karp_sipser: Option<KarpSipserStats>,
+    run: PairingRun,
+}
+
+/// How a pairing was reached, as both pipelines report it (closed here, every surface in
+/// [`crate::surface`]).
+#[derive(Debug)]
+pub(crate) struct PairingRun {
+    /// Triangles the initial pairing left unpaired.
+    pub(crate) unpaired: usize,
+    pub(crate) initial_pairing_seconds: f64,
+    pub(crate) augmentation_seconds: f64,
+    pub(crate) augmentation: AugmentStats,
+    /// Edges LRS's expansion flipped (0 for the others).
+    pub(crate) flipped_edges: usize,
+    pub(crate) expansion: Option<ExpansionCases>,
+    pub(crate) karp_sipser: Option<KarpSipserStats>,
+}
+
+impl PairingRun {
+    /// KS, timed by its own clocks: greedy = initial pairing, repairs and completion =
+    /// augmentation.
+    pub(crate) fn karp_sipser(ks: KarpSipserStats) -> Self {
+        PairingRun {
+            unpaired: ks.isolated,
+            initial_pairing_seconds: ks.greedy_seconds,
+            augmentation_seconds: ks.augmentation_seconds,
+            augmentation: ks.augment,
+            flipped_edges: 0,
+            expansion: None,
+            karp_sipser: Some(ks),
+        }
+    }
+
+    /// Times the augmenting paths that follow an initial pairing begun at `start` (the initial
+    /// pairing's time ends here): `unpaired` counts the triangles it left, `augment` runs the
+    /// paths on it. `flipped_edges` and `expansion` are LRS's (0 and `None` for the others).
+    pub(crate) fn augment<T>(
+        start: Instant,
+        pairing: &mut Pairing,
+        flipped_edges: usize,
+        expansion: Option<ExpansionCases>,
+        unpaired: impl FnOnce(&Pairing) -> usize,
+        augment: impl FnOnce(&mut Pairing) -> Result<(AugmentStats, T), QuadError>,
+    ) -> Result<(Self, T), QuadError> {
+        let initial_pairing_seconds = start.elapsed().as_secs_f64();
+        let unpaired = unpaired(pairing);
+        let augment_start = Instant::now();
+        let (augmentation, more) = augment(pairing)?;
+        let run = PairingRun {
+            unpaired,
+            initial_pairing_seconds,
+            augmentation_seconds: augment_start.elapsed().as_secs_f64(),
+            augmentation,
+            flipped_edges,
+            expansion,
+            karp_sipser: None,
+        };
+        Ok((run, more))
+    }
+
+    /// The figures of `faces` triangles paired by `algorithm`, the total timed from `start`.
+    pub(crate) fn stats(
+        &self,
+        algorithm: QuadAlgorithm,
+        faces: usize,
+        start: Instant,
+    ) -> QuadStats {
+        QuadStats {
+            algorithm: algorithm.name().to_string(),
+            faces,
+            initial_pairing_seconds: self.initial_pairing_seconds,
+            paired_percent: 100.0 * (faces - self.unpaired) as f64 / faces as f64,
+            unpaired: self.unpaired,
+            augmentation_seconds: self.augmentation_seconds,
+            total_seconds: start.elapsed().as_secs_f64(),
+            flipped_edges: self.flipped_edges,
+            file_order: self.karp_sipser.is_some_and(|ks| ks.file_order),
+            subdivision_levels: self.karp_sipser.map_or(0, |ks| ks.subdivision_levels),
+            ..QuadStats::default()
+        }
+    }
 }
 
 /// The initial pairing by `algorithm`, then augmenting paths (KS: its own repairs and completion,
@@ -300,32 +362,26 @@ fn pair(
             return Ok(Paired {
                 triangulation: None,
                 pairing,
-                unpaired: ks.isolated,
-                initial_pairing_seconds: ks.greedy_seconds,
-                augmentation_seconds: ks.augmentation_seconds,
-                augmentation: ks.augment,
-                flipped_edges: 0,
-                expansion: None,
-                karp_sipser: Some(ks),
+                run: PairingRun::karp_sipser(ks),
             });
         }
     };
-    let initial_pairing_seconds = start.elapsed().as_secs_f64();
     let paired_mesh = triangulation.as_ref().unwrap_or(mesh);
-    let unpaired = pairing.unmatched_count(paired_mesh);
-    let augment_start = Instant::now();
-    let augmentation = augment_to_perfect(paired_mesh, &mut pairing, options.augment)
-        .map_err(|err| augmentation_error(paired_mesh, err))?;
+    let (run, ()) = PairingRun::augment(
+        start,
+        &mut pairing,
+        flipped_edges,
+        expansion,
+        |p| p.unmatched_count(paired_mesh),
+        |p| match augment_to_perfect(paired_mesh, p, options.augment) {
+            Ok(augmentation) => Ok((augmentation, ())),
+            Err(err) => Err(augmentation_error(paired_mesh, err)),
+        },
+    )?;
     Ok(Paired {
         triangulation,
         pairing,
-        unpaired,
-        initial_pairing_seconds,
-        augmentation_seconds: augment_start.elapsed().as_secs_f64(),
-        augmentation,
-        flipped_edges,
-        expansion,
-        karp_sipser: None,
+        run,
     })
 }
 

@@ -322,15 +322,16 @@ pub struct QuadFigures<'a> {
     pub median_max_angle_deviation: f64,
 }
 
-impl<'a> QuadFigures<'a> {
-    /// The figures of a pairing's quads: its statistics, objective, cost and quality report.
-    pub(crate) fn of(
-        stats: &'a crate::QuadStats,
-        objective: &'a str,
-        cost: f64,
-        optimality_gap: Option<f64>,
-        r: &QualityReport,
-    ) -> Self {
+/// A quadrangulation measured by quality, closed ([`QualityQuads`]) or of any surface
+/// ([`crate::SurfaceQualityQuads`]): where its figures are, and the figures of
+/// `surftopo quad --json` read from them.
+pub trait QualityMeasured {
+    /// Table 4.3's columns, the total cost `Σ (1 − η)`, the optimality gap and the quality.
+    fn measures(&self) -> (&crate::QuadStats, f64, Option<f64>, &QualityReport);
+
+    /// The figures of `surftopo quad --json`, for the objective named `objective`.
+    fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
+        let (stats, cost, optimality_gap, r) = self.measures();
         QuadFigures {
             stats,
             objective,
@@ -348,12 +349,10 @@ impl<'a> QuadFigures<'a> {
     }
 }
 
-impl QualityQuads {
-    /// The figures of `surftopo quad --json`, for the objective named `objective`.
-    pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
-        QuadFigures::of(
+impl QualityMeasured for QualityQuads {
+    fn measures(&self) -> (&crate::QuadStats, f64, Option<f64>, &QualityReport) {
+        (
             &self.result.stats,
-            objective,
             self.cost,
             self.optimality_gap,
             &self.report,

@@ -4,7 +4,7 @@
 use crate::args::{MeshJobArgs, names};
 use crate::failure::invalid;
 use surftopo_io::PolygonSoup;
-use surftopo_quad::quality::QualityObjective;
+use surftopo_quad::quality::{QualityMeasured, QualityObjective};
 use surftopo_quad::{
     OwnQuads, QuadAlgorithm, QuadError, QuadResult, SurfaceQuads, quadrangulate_polygons,
 };

@@ -53,6 +53,7 @@ use surftopo_matching::{
 use surftopo_mesh::{ClosedCover, FaceId, Lifting, SurfaceKind};
 
 use crate::lrs::ExpansionCases;
+use crate::quadrangulate::PairingRun;
 use crate::{QuadAlgorithm, QuadError, QuadOptions, QuadStats};
 
 pub use all_quads::{AllQuads, all_quads};
@@ -162,13 +163,7 @@ pub fn quadrangulate_surface(
         dual,
         pairing,
         barrier,
-        unpaired,
-        initial_pairing_seconds,
-        augmentation_seconds,
-        augmentation,
-        flipped_edges,
-        expansion,
-        karp_sipser,
+        run,
     } = pair_surface(cover, pieces, algorithm, &options.quad, start)?;
     let paired_cover = flipped.as_ref().unwrap_or(cover);
     let verified = verify_maximum_pairing(&dual, pairing, &barrier).map_err(|err| {
@@ -182,24 +177,12 @@ pub fn quadrangulate_surface(
         result.complete(paired_cover, &dual, verified)?;
     }
     let faces = dual.node_count();
-    result.stats = QuadStats {
-        algorithm: algorithm.name().to_string(),
-        faces,
-        initial_pairing_seconds,
-        paired_percent: 100.0 * (faces - unpaired) as f64 / faces as f64,
-        unpaired,
-        augmentation_seconds,
-        total_seconds: start.elapsed().as_secs_f64(),
-        flipped_edges,
-        file_order: karp_sipser.is_some_and(|ks| ks.file_order),
-        subdivision_levels: karp_sipser.map_or(0, |ks| ks.subdivision_levels),
-        ..QuadStats::default()
-    };
+    result.stats = run.stats(algorithm, faces, start);
     result.fill_totals();
     result.triangulation = flipped;
-    result.augmentation = augmentation;
-    result.expansion = expansion;
-    result.karp_sipser = karp_sipser;
+    result.augmentation = run.augmentation;
+    result.expansion = run.expansion;
+    result.karp_sipser = run.karp_sipser;
     Ok(result)
 }
 
@@ -241,13 +224,7 @@ struct Paired {
     dual: SurfaceDual,
     pairing: Pairing,
     barrier: Vec<u32>,
-    unpaired: usize,
-    initial_pairing_seconds: f64,
-    augmentation_seconds: f64,
-    augmentation: AugmentStats,
-    flipped_edges: usize,
-    expansion: Option<ExpansionCases>,
-    karp_sipser: Option<KarpSipserStats>,
+    run: PairingRun,
 }
 
 /// The initial pairing of `algorithm` on the surface's dual, then augmenting paths to a maximum
@@ -295,33 +272,27 @@ fn pair_surface(
                 dual,
                 pairing,
                 barrier,
-                unpaired: ks.isolated,
-                initial_pairing_seconds: ks.greedy_seconds,
-                augmentation_seconds: ks.augmentation_seconds,
-                augmentation: ks.augment,
-                flipped_edges: 0,
-                expansion: None,
-                karp_sipser: Some(ks),
+                run: PairingRun::karp_sipser(ks),
             });
         }
     };
-    let initial_pairing_seconds = start.elapsed().as_secs_f64();
-    let unpaired = pairing.unmatched_count(&dual);
-    let augment_start = Instant::now();
-    let (augmentation, barrier) = augment_to_maximum(&dual, &mut pairing, options.augment)
-        .map_err(|err| QuadError::Internal(format!("augmenting to a maximum: {err}")))?;
+    let (run, barrier) = PairingRun::augment(
+        start,
+        &mut pairing,
+        flipped_edges,
+        expansion,
+        |p| p.unmatched_count(&dual),
+        |p| {
+            augment_to_maximum(&dual, p, options.augment)
+                .map_err(|err| QuadError::Internal(format!("augmenting to a maximum: {err}")))
+        },
+    )?;
     Ok(Paired {
         cover: flipped_cover,
         dual,
         pairing,
         barrier,
-        unpaired,
-        initial_pairing_seconds,
-        augmentation_seconds: augment_start.elapsed().as_secs_f64(),
-        augmentation,
-        flipped_edges,
-        expansion,
-        karp_sipser: None,
+        run,
     })
 }
 

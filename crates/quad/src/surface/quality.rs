@@ -28,10 +28,10 @@ use surftopo_mesh::{CoveredSurface, SurfaceKind};
 
 use super::{SurfaceOptions, SurfaceQuads, quad_of_edge, quads_of_pairing};
 use crate::quality::{
-    COST_RESOLUTION, QualityObjective, QualityReport, cost_of_angles, diagonal_quad_angles,
-    diagonal_quality_report,
+    COST_RESOLUTION, QualityMeasured, QualityObjective, QualityReport, cost_of_angles,
+    diagonal_quad_angles, diagonal_quality_report,
 };
-use crate::{QuadAlgorithm, QuadError, QuadFigures};
+use crate::{QuadAlgorithm, QuadError, QuadStats};
 
 /// A quality-aware quadrangulation of a compact surface: the quads, their total cost and quality.
 #[derive(Clone, Debug)]
@@ -48,18 +48,18 @@ pub struct SurfaceQualityQuads {
     pub report: QualityReport,
 }
 
-impl SurfaceQualityQuads {
-    /// The figures of `surftopo quad --json`, for the objective named `objective`.
-    pub fn figures<'a>(&'a self, objective: &'a str) -> QuadFigures<'a> {
-        QuadFigures::of(
+impl QualityMeasured for SurfaceQualityQuads {
+    fn measures(&self) -> (&QuadStats, f64, Option<f64>, &QualityReport) {
+        (
             &self.result.stats,
-            objective,
             self.cost,
             self.optimality_gap,
             &self.report,
         )
     }
+}
 
+impl SurfaceQualityQuads {
     /// Wraps a quadrangulation with its cost and quality, measured on the quads.
     fn measured(
         result: SurfaceQuads,
