@@ -146,3 +146,55 @@ proptest! {
         read_json_everywhere(dir.path(), &torus);
     }
 }
+
+/// `--splits` never writes a flat face: a split with no non-flat placement of its new vertex is
+/// left out, and the command says how many were made. A tetrahedron with its four corners on one
+/// line has no such placement anywhere: no split is made, the note says so, the file is the input.
+#[test]
+fn splits_left_out_are_noted() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = common::write(
+        dir.path(),
+        "line_tetrahedron.obj",
+        "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 4 2\nf 2 4 3\nf 3 4 1\n",
+    );
+    let out_path = dir.path().join("split.obj");
+    let out = common::run_ok(
+        surftopo().args([
+            "generate",
+            "mesh",
+            "--input",
+            input.to_str().unwrap(),
+            "--splits",
+            "3",
+            "--seed",
+            "1",
+            "-o",
+            out_path.to_str().unwrap(),
+        ]),
+        "splits on a line tetrahedron",
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--splits 3: 0 made"), "{stderr}");
+    let written = std::fs::read_to_string(&out_path).unwrap();
+    assert_eq!(written.lines().filter(|l| l.starts_with("f ")).count(), 4);
+    assert_eq!(written.lines().filter(|l| l.starts_with("v ")).count(), 4);
+    // A surface where every split has a placement gets no note.
+    let sphere = dir.path().join("sphere.obj");
+    let out = common::run_ok(
+        surftopo().args([
+            "generate",
+            "icosphere",
+            "--subdivisions",
+            "1",
+            "--splits",
+            "5",
+            "--seed",
+            "1",
+            "-o",
+            sphere.to_str().unwrap(),
+        ]),
+        "splits on an icosphere",
+    );
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("left out"));
+}

@@ -457,8 +457,18 @@ pub fn modify(
             &format!("--splits {}", modifiers.splits),
             faces(&surface) + 2 * modifiers.splits as u64,
         )?;
+        let before = faces(&surface);
         surface =
             generators::random_vertex_splits_covered(&surface, modifiers.splits, modifiers.seed);
+        // Each split adds two faces; a split with no non-flat placement is left out.
+        let made = (faces(&surface) - before) / 2;
+        if made < modifiers.splits as u64 {
+            stderr_println!(
+                "note: --splits {}: {made} made, the others left out (no placement of the new \
+                 vertex keeps every face around it from being flat)",
+                modifiers.splits
+            );
+        }
     }
     if modifiers.cut_holes > 0 {
         let (holed, cut) = generators::cut_holes(&surface, modifiers.cut_holes, modifiers.seed);
