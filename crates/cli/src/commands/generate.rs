@@ -457,12 +457,13 @@ pub fn modify(
             &format!("--splits {}", modifiers.splits),
             faces(&surface) + 2 * modifiers.splits as u64,
         )?;
-        let before = faces(&surface);
+        let before = surface.positions.len();
         surface =
             generators::random_vertex_splits_covered(&surface, modifiers.splits, modifiers.seed);
-        // Each split adds two faces; a split with no non-flat placement is left out.
-        let made = (faces(&surface) - before) / 2;
-        if made < modifiers.splits as u64 {
+        // Each split adds one vertex (a boundary vertex's split adds one face only, so faces
+        // do not count them); a split with no non-flat placement is left out.
+        let made = surface.positions.len().saturating_sub(before);
+        if made < modifiers.splits {
             stderr_println!(
                 "note: --splits {}: {made} made, the others left out (no placement of the new \
                  vertex keeps every face around it from being flat)",
