@@ -26,8 +26,7 @@ use rand_chacha::ChaCha8Rng;
 /// vertex of a planar surface), that split is not made and another `u`, `y`, `x` is drawn from
 /// the same seeded stream, at most 8 times per split (`SPLIT_DRAWS`); if every draw fails, the
 /// split is left out (then fewer than `splits` vertices are added: seen only when much of the
-/// surface is degenerate). A split whose first draw passes consumes the stream exactly as before
-/// this rule, so outputs are unchanged wherever no draw failed.
+/// surface is degenerate). A split whose first draw passes consumes one draw of the stream.
 ///
 /// A simplicial input stays simplicial (the new edges all end at the new vertex, and every moved
 /// neighbour was adjacent to `u` once); a vertex whose outgoing half-edges all reach one
