@@ -1318,7 +1318,6 @@ fn io_error(e: std::io::Error) -> PortalgonError {
     PortalgonError::Io(e.to_string())
 }
 
-/// The corners of polygon `polygon` in the scalar type `S`.
 /// Whether what doubles hold of a polygon given by exact corners, of area `exact` (a positive
 /// area: a polygon degenerate exactly is refused as such later), has area `rounded` within
 /// [`Tolerances::exact_rounding`](crate::geometry::Tolerances::exact_rounding) of it.
@@ -1376,6 +1375,7 @@ fn corners_held_by_doubles(polygon: usize, corners: &[[Number; 2]]) -> Result<()
     )
 }
 
+/// The corners of polygon `polygon` in the scalar type `S`.
 fn scalar_corners<S: Scalar>(
     polygon: usize,
     corners: &[[Number; 2]],
